@@ -1,0 +1,411 @@
+//! What the program configures before (and while) the card runs: mechanism, encoder and
+//! go-home parameters per channel, the group table and the system maximum feed speed
+//! (user manual §2.4–2.5). Every setter validates first and changes nothing on error.
+
+use crate::error::{McclError, McclResult};
+use crate::vendor::consts as c;
+use crate::vendor::{SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM};
+
+/// Cards the library accepts (`MAX_CARD_NUM`).
+pub const CARDS: usize = c::MAX_CARD_NUM as usize;
+/// Channels (axes) per card and axes per group.
+pub const AXES: usize = c::MAX_AXIS_NUM as usize;
+/// Group slots (`MAX_GROUP_NUM`).
+pub const GROUPS: usize = c::MAX_GROUP_NUM as usize;
+/// Largest command queue a group may ask for (memory guard; the vendor default is 10000).
+pub const MAX_QUEUE_SIZE: usize = 1_000_000;
+
+/// A validated card index.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct CardIx(pub usize);
+
+/// A validated channel index on a card.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct ChannelIx(pub usize);
+
+impl CardIx {
+    /// Checks a card index against `MAX_CARD_NUM` (`PARAMETER_ERR` otherwise).
+    pub fn new(card: impl TryInto<usize>) -> McclResult<CardIx> {
+        match card.try_into() {
+            Ok(c) if c < CARDS => Ok(CardIx(c)),
+            _ => Err(McclError::Parameter),
+        }
+    }
+}
+
+impl ChannelIx {
+    /// Checks a channel index against the 8 channels of a card (`PARAMETER_ERR` otherwise).
+    pub fn new(ch: impl TryInto<usize>) -> McclResult<ChannelIx> {
+        match ch.try_into() {
+            Ok(c) if c < AXES => Ok(ChannelIx(c)),
+            _ => Err(McclError::Parameter),
+        }
+    }
+}
+
+/// The mechanism parameters used until the program sets its own: the example of user
+/// manual §2.4.1 (500 pulses per turn, 3000 rpm, pitch 1, gear ratio 1, ±50000 UU,
+/// pulse/direction output, limit switches unused).
+pub fn default_mac_param() -> SYS_MAC_PARAM {
+    SYS_MAC_PARAM {
+        wPosToEncoderDir: 0,
+        wRPM: 3000,
+        dwPPR: 500,
+        dfPitch: 1.0,
+        dfGearRatio: 1.0,
+        dfHighLimit: 50000.0,
+        dfLowLimit: -50000.0,
+        dfHighLimitOffset: 0.0,
+        dfLowLimitOffset: 0.0,
+        wPulseMode: c::DDA_FMT_PD,
+        wPulseWidth: 100,
+        wCommandMode: c::OCM_PULSE,
+        wPaddle: 0,
+        wOverTravelUpSensorMode: c::SL_UNUSED,
+        wOverTravelDownSensorMode: c::SL_UNUSED,
+    }
+}
+
+/// The encoder configuration used until the program sets its own: the example of user
+/// manual §2.4.2 (A/B phase, no inversion, no swap, x4).
+pub fn default_encoder_config() -> SYS_ENCODER_CONFIG {
+    SYS_ENCODER_CONFIG {
+        wType: c::ENC_TYPE_AB,
+        wAInverse: 0,
+        wBInverse: 0,
+        wCInverse: 0,
+        wABSwap: 0,
+        wInputRate: 4,
+        wPaddle: [0; 2],
+    }
+}
+
+/// The go-home configuration used until the program sets its own: the example of user
+/// manual §2.4.3 (mode 3, negative direction, normally open, index 2, 300 ms ramps,
+/// 10 / 2 UU/s, no offset).
+pub fn default_home_config() -> SYS_HOME_CONFIG {
+    SYS_HOME_CONFIG {
+        wMode: 3,
+        wDirection: 1,
+        wSensorMode: c::SL_NORMAL_OPEN,
+        wPaddel0: 0,
+        nIndexCount: 2,
+        nPaddel1: 0,
+        dfAccTime: 300.0,
+        dfDecTime: 300.0,
+        dfHighSpeed: 10.0,
+        dfLowSpeed: 2.0,
+        dfOffset: 0.0,
+    }
+}
+
+fn check(ok: bool) -> McclResult<()> {
+    if ok {
+        Ok(())
+    } else {
+        Err(McclError::Parameter)
+    }
+}
+
+/// Validates mechanism parameters (§2.4.1): direction 0/1, PPR > 0, pitch and gear ratio
+/// finite and > 0, limits finite with low <= high, pulse mode `DDA_FMT_*`, command mode
+/// `OCM_*`, sensor modes `SL_*`.
+pub fn validate_mac_param(p: &SYS_MAC_PARAM) -> McclResult<()> {
+    check(p.wPosToEncoderDir <= 1)?;
+    check(p.dwPPR > 0)?;
+    check(p.dfPitch.is_finite() && p.dfPitch > 0.0)?;
+    check(p.dfGearRatio.is_finite() && p.dfGearRatio > 0.0)?;
+    check(p.dfHighLimit.is_finite() && p.dfLowLimit.is_finite())?;
+    check(p.dfLowLimit <= p.dfHighLimit)?;
+    check(p.dfHighLimitOffset.is_finite() && p.dfLowLimitOffset.is_finite())?;
+    check(p.wPulseMode <= c::DDA_FMT_AB)?;
+    check(p.wCommandMode <= c::OCM_SWCLOSELOOP)?;
+    check(p.wOverTravelUpSensorMode <= c::SL_UNUSED)?;
+    check(p.wOverTravelDownSensorMode <= c::SL_UNUSED)?;
+    Ok(())
+}
+
+/// Validates an encoder configuration (§2.4.2): type `ENC_TYPE_*`, flags 0/1, input rate
+/// 1, 2 or 4 as the manual writes it (3, `ENC_RATE_X4` of IMCDefine.h, also means x4).
+pub fn validate_encoder_config(e: &SYS_ENCODER_CONFIG) -> McclResult<()> {
+    check(e.wType <= c::ENC_TYPE_AB)?;
+    check(e.wAInverse <= 1 && e.wBInverse <= 1 && e.wCInverse <= 1 && e.wABSwap <= 1)?;
+    check(matches!(e.wInputRate, 1..=4))?;
+    Ok(())
+}
+
+/// Counts per encoder cycle for a validated `wInputRate` (1, 2, or 4 for both 3 and 4).
+pub fn encoder_multiplier(input_rate: u16) -> u32 {
+    match input_rate {
+        1 => 1,
+        2 => 2,
+        _ => 4,
+    }
+}
+
+/// Validates go-home parameters (§2.4.3): mode 3..16, direction 0/1, sensor mode `SL_*`,
+/// index count >= 0, times finite and >= 0, speeds finite and > 0, offset finite.
+pub fn validate_home_config(h: &SYS_HOME_CONFIG) -> McclResult<()> {
+    check((3..=16).contains(&h.wMode))?;
+    check(h.wDirection <= 1)?;
+    check(h.wSensorMode <= c::SL_UNUSED)?;
+    check(h.nIndexCount >= 0)?;
+    check(h.dfAccTime.is_finite() && h.dfAccTime >= 0.0)?;
+    check(h.dfDecTime.is_finite() && h.dfDecTime >= 0.0)?;
+    check(h.dfHighSpeed.is_finite() && h.dfHighSpeed > 0.0)?;
+    check(h.dfLowSpeed.is_finite() && h.dfLowSpeed > 0.0)?;
+    check(h.dfOffset.is_finite())?;
+    Ok(())
+}
+
+/// Pulses per user unit for a channel: dwPPR x dfGearRatio / dfPitch (examples manual §6:
+/// motor coordinate = Cartesian coordinate x (dfGearRatio / dfPitch) x dwPPR).
+pub fn conv_factor(p: &SYS_MAC_PARAM) -> f64 {
+    f64::from(p.dwPPR) * p.dfGearRatio / p.dfPitch
+}
+
+/// One group: which channel of which card each of the 8 axes drives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct GroupDef {
+    /// The card the group's channels belong to.
+    pub card: CardIx,
+    /// Channel per axis X..B, `None` when the axis drives nothing.
+    pub channels: [Option<ChannelIx>; AXES],
+    /// Capacity of the group's motion command queue.
+    pub queue_size: usize,
+}
+
+impl GroupDef {
+    /// Builds a group from `MCC_CreateGroupEx` arguments: each channel is -1 (unused) or
+    /// 0..7 (`PARAMETER_ERR` otherwise), the card 0..11 (`PARAMETER_ERR`), at least one
+    /// axis mapped and no channel used twice (`GROUP_PARAMETER_ERR`), queue size 1..=10^6
+    /// (`PARAMETER_ERR`).
+    pub fn new(map: [i32; AXES], card: i32, queue_size: i32) -> McclResult<GroupDef> {
+        let card = CardIx::new(card)?;
+        let mut channels = [None; AXES];
+        for (slot, &ch) in channels.iter_mut().zip(map.iter()) {
+            *slot = match ch {
+                -1 => None,
+                _ => Some(ChannelIx::new(ch)?),
+            };
+        }
+        let queue_size = match usize::try_from(queue_size) {
+            Ok(q) if (1..=MAX_QUEUE_SIZE).contains(&q) => q,
+            _ => return Err(McclError::Parameter),
+        };
+        let used: Vec<usize> = channels.iter().flatten().map(|c| c.0).collect();
+        if used.is_empty() {
+            return Err(McclError::Group);
+        }
+        for (i, a) in used.iter().enumerate() {
+            if used[i + 1..].contains(a) {
+                return Err(McclError::Group);
+            }
+        }
+        Ok(GroupDef {
+            card,
+            channels,
+            queue_size,
+        })
+    }
+
+    /// The manual's default group: X..B on channels 0..7 of card 0 (§2.4.4).
+    pub fn default_group() -> GroupDef {
+        GroupDef {
+            card: CardIx(0),
+            channels: std::array::from_fn(|i| Some(ChannelIx(i))),
+            queue_size: c::MOTION_QUEUE_SIZE as usize,
+        }
+    }
+}
+
+/// Everything the program has configured.
+#[derive(Debug, Clone)]
+pub struct Config {
+    /// Mechanism parameters per card and channel.
+    pub mac: [[SYS_MAC_PARAM; AXES]; CARDS],
+    /// Encoder configuration per card and channel.
+    pub encoder: [[SYS_ENCODER_CONFIG; AXES]; CARDS],
+    /// Go-home configuration per card and channel.
+    pub home: [[SYS_HOME_CONFIG; AXES]; CARDS],
+    /// Group slots; `None` is a free slot.
+    pub groups: [Option<GroupDef>; GROUPS],
+    /// Upper limit of the general-motion feed speed, UU/s (`MCC_SetSysMaxSpeed`).
+    pub sys_max_speed: f64,
+}
+
+/// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s. The manuals
+/// give no default; this one is high enough not to clamp any example's feed speed.
+pub const DEFAULT_SYS_MAX_SPEED: f64 = 100_000.0;
+
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            mac: [[default_mac_param(); AXES]; CARDS],
+            encoder: [[default_encoder_config(); AXES]; CARDS],
+            home: [[default_home_config(); AXES]; CARDS],
+            groups: [None; GROUPS],
+            sys_max_speed: DEFAULT_SYS_MAX_SPEED,
+        }
+    }
+}
+
+impl Config {
+    /// Puts a group into the lowest free slot and returns its index
+    /// (`GROUP_PARAMETER_ERR` when all 96 are used).
+    pub fn create_group(&mut self, def: GroupDef) -> McclResult<usize> {
+        let slot = self
+            .groups
+            .iter()
+            .position(Option::is_none)
+            .ok_or(McclError::Group)?;
+        self.groups[slot] = Some(def);
+        Ok(slot)
+    }
+
+    /// The groups the card will run: those created, or the default group 0 when none were.
+    pub fn effective_groups(&self) -> Vec<(usize, GroupDef)> {
+        let created: Vec<(usize, GroupDef)> = self
+            .groups
+            .iter()
+            .enumerate()
+            .filter_map(|(i, g)| g.map(|g| (i, g)))
+            .collect();
+        if created.is_empty() {
+            vec![(0, GroupDef::default_group())]
+        } else {
+            created
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn group_rules() {
+        assert!(GroupDef::new([0, 1, 2, -1, -1, -1, -1, -1], 0, 10000).is_ok());
+        assert_eq!(
+            GroupDef::new([-1; 8], 0, 10000),
+            Err(McclError::Group),
+            "at least one axis must be mapped"
+        );
+        assert_eq!(
+            GroupDef::new([0, 0, -1, -1, -1, -1, -1, -1], 0, 10000),
+            Err(McclError::Group),
+            "two axes on one channel"
+        );
+        assert_eq!(
+            GroupDef::new([8, -1, -1, -1, -1, -1, -1, -1], 0, 10000),
+            Err(McclError::Parameter)
+        );
+        assert_eq!(
+            GroupDef::new([-2, 0, -1, -1, -1, -1, -1, -1], 0, 10000),
+            Err(McclError::Parameter)
+        );
+        assert_eq!(GroupDef::new([0; 8], 12, 10000), Err(McclError::Parameter));
+        assert_eq!(
+            GroupDef::new([0, -1, -1, -1, -1, -1, -1, -1], 0, 0),
+            Err(McclError::Parameter)
+        );
+    }
+
+    #[test]
+    fn default_group_when_none_created() {
+        let cfg = Config::default();
+        let g = cfg.effective_groups();
+        assert_eq!(g.len(), 1);
+        assert_eq!(g[0].0, 0);
+        assert_eq!(g[0].1.channels[7], Some(ChannelIx(7)));
+        assert_eq!(g[0].1.queue_size, 10000);
+    }
+
+    #[test]
+    fn lowest_free_slot_and_full_table() {
+        let mut cfg = Config::default();
+        let def = GroupDef::new([0, -1, -1, -1, -1, -1, -1, -1], 0, 10).unwrap();
+        for i in 0..GROUPS {
+            assert_eq!(cfg.create_group(def), Ok(i));
+        }
+        assert_eq!(cfg.create_group(def), Err(McclError::Group));
+        cfg.groups[5] = None;
+        assert_eq!(cfg.create_group(def), Ok(5));
+    }
+
+    #[test]
+    fn conv_factor_is_ppr_times_gear_over_pitch() {
+        // examples manual §6: pulses = UU x (gear / pitch) x PPR; 1000 x 2 / 5 = 400
+        let mut p = default_mac_param();
+        p.dwPPR = 1000;
+        p.dfGearRatio = 2.0;
+        p.dfPitch = 5.0;
+        assert_eq!(conv_factor(&p), 400.0);
+    }
+
+    #[test]
+    fn validation_rejects_bad_values() {
+        let good = default_mac_param();
+        assert!(validate_mac_param(&good).is_ok());
+        let bad = [
+            SYS_MAC_PARAM {
+                dfPitch: f64::NAN,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                dfPitch: 0.0,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                dfGearRatio: f64::INFINITY,
+                ..good
+            },
+            SYS_MAC_PARAM { dwPPR: 0, ..good },
+            SYS_MAC_PARAM {
+                dfLowLimit: 1.0,
+                dfHighLimit: 0.0,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                wPulseMode: 4,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                wCommandMode: 3,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                wOverTravelUpSensorMode: 3,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                wPosToEncoderDir: 2,
+                ..good
+            },
+        ];
+        for b in bad {
+            assert_eq!(validate_mac_param(&b), Err(McclError::Parameter), "{b:?}");
+        }
+        let e = default_encoder_config();
+        assert!(validate_encoder_config(&e).is_ok());
+        for r in [0u16, 5, 8] {
+            let b = SYS_ENCODER_CONFIG { wInputRate: r, ..e };
+            assert_eq!(validate_encoder_config(&b), Err(McclError::Parameter));
+        }
+        assert_eq!(
+            validate_encoder_config(&SYS_ENCODER_CONFIG { wType: 4, ..e }),
+            Err(McclError::Parameter)
+        );
+        let h = default_home_config();
+        assert!(validate_home_config(&h).is_ok());
+        for m in [0u16, 2, 17, 19] {
+            let b = SYS_HOME_CONFIG { wMode: m, ..h };
+            assert_eq!(validate_home_config(&b), Err(McclError::Parameter));
+        }
+        let b = SYS_HOME_CONFIG {
+            dfLowSpeed: f64::NAN,
+            ..h
+        };
+        assert_eq!(validate_home_config(&b), Err(McclError::Parameter));
+    }
+}

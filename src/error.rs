@@ -1,0 +1,77 @@
+//! Errors of the core and their vendor return codes (INTERFACE.md §2.3), and the codes of
+//! the per-group error records (`MCC_GetErrorCode`, §2.4).
+
+use crate::vendor::consts as c;
+
+/// Why a call failed; each maps to one vendor return code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum McclError {
+    /// The system is not initialised (`INITIAL_MOTION_ERR`, -1).
+    NotInitialized,
+    /// The group's command queue is full (`COMMAND_BUFFER_FULL_ERR`, -2).
+    BufferFull,
+    /// The call is not accepted in the current state (`COMMAND_NOTACCEPTED_ERR`, -3).
+    NotAccepted,
+    /// Queued commands are still pending (`COMMAND_NOTFINISHED_ERR`, -4).
+    NotFinished,
+    /// A bad card, channel, axis, pointer, number or range (`PARAMETER_ERR`, -5).
+    Parameter,
+    /// A bad group index or group definition (`GROUP_PARAMETER_ERR`, -6).
+    Group,
+    /// A bad feed rate (`FEED_RATE_ERR`, -7).
+    FeedRate,
+    /// Hold with nothing to hold (`HOLD_ILLEGAL_ERR`, -11).
+    HoldIllegal,
+    /// Continue when not held (`CONTI_ILLEGAL_ERR`, -12).
+    ContiIllegal,
+    /// Abort not allowed now (`ABORT_ILLEGAL_ERR`, -13).
+    AbortIllegal,
+    /// A failure inside the library (`RUN_TIME_ERR`, -14), e.g. a caught panic.
+    RunTime,
+}
+
+impl McclError {
+    /// The vendor return code.
+    pub fn code(self) -> i32 {
+        match self {
+            McclError::NotInitialized => c::INITIAL_MOTION_ERR,
+            McclError::BufferFull => c::COMMAND_BUFFER_FULL_ERR,
+            McclError::NotAccepted => c::COMMAND_NOTACCEPTED_ERR,
+            McclError::NotFinished => c::COMMAND_NOTFINISHED_ERR,
+            McclError::Parameter => c::PARAMETER_ERR,
+            McclError::Group => c::GROUP_PARAMETER_ERR,
+            McclError::FeedRate => c::FEED_RATE_ERR,
+            McclError::HoldIllegal => c::HOLD_ILLEGAL_ERR,
+            McclError::ContiIllegal => c::CONTI_ILLEGAL_ERR,
+            McclError::AbortIllegal => c::ABORT_ILLEGAL_ERR,
+            McclError::RunTime => c::RUN_TIME_ERR,
+        }
+    }
+}
+
+/// Result of a core operation.
+pub type McclResult<T> = Result<T, McclError>;
+
+/// Error-record codes reported by `MCC_GetErrorCode` (DECISIONS.md "Return values").
+pub mod record {
+    /// System not initialised.
+    pub const NOT_INITIALIZED: i32 = 0xF101;
+    /// Emergency stop.
+    pub const EMERGENCY_STOP: i32 = 0xF102;
+    /// Invalid arc or circle command.
+    pub const BAD_ARC: i32 = 0xF104;
+    /// Closed-loop counter overflow.
+    pub const CLOSE_LOOP_OVERFLOW: i32 = 0xF202;
+    /// Pulse speed over the limit.
+    pub const PULSE_SPEED: i32 = 0xF203;
+    /// Pulse acceleration over the limit.
+    pub const PULSE_ACC: i32 = 0xF204;
+    /// Software over-travel; add the axis (0..7 = X..B).
+    pub const OVER_TRAVEL: i32 = 0xF301;
+    /// In-position check failed.
+    pub const IN_POSITION: i32 = 0xF501;
+    /// Hardware limit switch; add the axis.
+    pub const LIMIT_SWITCH: i32 = 0xF701;
+    /// Tracking error; add the axis.
+    pub const TRACKING: i32 = 0xF801;
+}

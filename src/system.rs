@@ -1,0 +1,264 @@
+//! The one process-wide system: the configuration the program sets and, between
+//! `MCC_InitSystem` and `MCC_CloseSystem`, the running virtual card (user manual §2.4–2.5).
+
+use crate::clock::ClockMode;
+use crate::config::{CardIx, ChannelIx, Config, GroupDef, AXES, GROUPS};
+use crate::engine::{Engine, Shared};
+use crate::error::{McclError, McclResult};
+use crate::vendor::consts as c;
+use crate::vendor::{SYS_CARD_CONFIG, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use once_cell::sync::Lazy;
+use parking_lot::{Mutex, RwLock};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// The running part of the system.
+#[derive(Debug)]
+pub struct Running {
+    /// The engine thread and its shared state.
+    pub engine: Engine,
+    /// Number of cards passed to `MCC_InitSystem`.
+    pub cards: usize,
+    /// The card types passed to `MCC_InitSystem`.
+    pub card_types: Vec<u16>,
+    /// Mechanism parameters in effect (taken at init and at `MCC_UpdateParam`).
+    pub mac: [[SYS_MAC_PARAM; AXES]; crate::config::CARDS],
+    /// Encoder configuration in effect.
+    pub encoder: [[SYS_ENCODER_CONFIG; AXES]; crate::config::CARDS],
+    /// The groups running, `(index, definition)`.
+    pub groups: Vec<(usize, GroupDef)>,
+    /// Started by `MCC_InitSimulation` rather than `MCC_InitSystem`.
+    pub simulation: bool,
+}
+
+/// Configuration plus the running card.
+#[derive(Debug, Default)]
+pub struct System {
+    /// What the program has configured.
+    pub config: Config,
+    /// `Some` between a successful init and `MCC_CloseSystem`.
+    pub running: Option<Running>,
+}
+
+static SYSTEM: Lazy<Mutex<System>> = Lazy::new(|| Mutex::new(System::default()));
+
+/// The running engine's shared state, for calls that must not wait for the system lock
+/// (status reads). `None` while the system is closed.
+static ACTIVE: RwLock<Option<Arc<Shared>>> = RwLock::new(None);
+
+/// Runs `f` with the system locked.
+pub fn with<R>(f: impl FnOnce(&mut System) -> R) -> R {
+    f(&mut SYSTEM.lock())
+}
+
+/// The running engine's shared state (`INITIAL_MOTION_ERR` when the system is closed).
+pub fn active() -> McclResult<Arc<Shared>> {
+    ACTIVE.read().clone().ok_or(McclError::NotInitialized)
+}
+
+/// Interpolation period accepted by `MCC_InitSystem`/`MCC_InitSystemEx`: 1..=50 ms.
+pub fn check_period_ms(ms: f64) -> McclResult<Duration> {
+    if ms.is_finite() && (f64::from(c::IPO_PERIOD_MIN)..=f64::from(c::IPO_PERIOD_MAX)).contains(&ms)
+    {
+        Ok(Duration::from_nanos((ms * 1e6).round() as u64))
+    } else {
+        Err(McclError::Parameter)
+    }
+}
+
+/// Card types this library runs: the IMP 8-axis cards (`IMP_II_8_AXIS_PCI_CARD` = 4,
+/// `IMP_III_8_AXIS_PCI_CARD` = 5). EPCIO types are other cards and are refused.
+pub fn check_card_type(t: u16) -> McclResult<()> {
+    match t {
+        c::IMP_II_8_AXIS_PCI_CARD | c::IMP_III_8_AXIS_PCI_CARD => Ok(()),
+        _ => Err(McclError::Parameter),
+    }
+}
+
+/// How `init` was reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InitKind {
+    /// `MCC_InitSystem` / `MCC_InitSystemEx`.
+    System,
+    /// `MCC_InitSimulation`.
+    Simulation,
+}
+
+/// `MCC_InitSystem`: validates everything first, then (re)starts the virtual card. A
+/// running system is closed and started again. Nothing changes when validation fails.
+pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> McclResult<()> {
+    if cards.is_empty() || cards.len() > crate::config::CARDS {
+        return Err(McclError::Parameter);
+    }
+    for card in cards {
+        check_card_type(card.wCardType)?;
+    }
+    let mode = ClockMode::from_env().map_err(|msg| {
+        eprintln!("MCCL: MCC_InitSystem failed: {msg}");
+        McclError::NotInitialized
+    })?;
+    let groups_for = |sys: &System| {
+        let groups = sys.config.effective_groups();
+        if groups.iter().any(|(_, g)| g.card.0 >= cards.len()) {
+            Err(McclError::Group)
+        } else {
+            Ok(groups)
+        }
+    };
+    let old = {
+        let mut sys = SYSTEM.lock();
+        groups_for(&sys)?;
+        *ACTIVE.write() = None;
+        sys.running.take()
+    };
+    // Stop a running card outside the lock (its callbacks may be calling in).
+    if let Some(r) = old {
+        r.engine.shutdown();
+    }
+    let mut sys = SYSTEM.lock();
+    let groups = groups_for(&sys)?;
+    let engine = Engine::start(mode, period, &groups).map_err(|e| {
+        eprintln!("MCCL: cannot start the engine thread: {e}");
+        McclError::RunTime
+    })?;
+    *ACTIVE.write() = Some(engine.shared().clone());
+    sys.running = Some(Running {
+        engine,
+        cards: cards.len(),
+        card_types: cards.iter().map(|c| c.wCardType).collect(),
+        mac: sys.config.mac,
+        encoder: sys.config.encoder,
+        groups,
+        simulation: kind == InitKind::Simulation,
+    });
+    Ok(())
+}
+
+/// `MCC_CloseSystem`: stops the engine and joins its thread (`INITIAL_MOTION_ERR` when
+/// nothing runs). The configuration is kept for the next init.
+pub fn close() -> McclResult<()> {
+    let running = {
+        let mut sys = SYSTEM.lock();
+        let r = sys.running.take().ok_or(McclError::NotInitialized)?;
+        *ACTIVE.write() = None;
+        r
+    };
+    running.engine.shutdown();
+    Ok(())
+}
+
+/// `MCC_ResetMotion`: every group back to its state right after init.
+pub fn reset_motion() -> McclResult<()> {
+    let sys = SYSTEM.lock();
+    let r = sys.running.as_ref().ok_or(McclError::NotInitialized)?;
+    let shared = r.engine.shared();
+    let mut card = shared.card.lock();
+    card.reset();
+    shared.publish(&card);
+    Ok(())
+}
+
+/// `MCC_UpdateParam`: the mechanism and encoder parameters set since init take effect,
+/// and motion resets as with `MCC_ResetMotion` (§2.4.2).
+pub fn update_param() -> McclResult<()> {
+    let mut sys = SYSTEM.lock();
+    let (mac, encoder) = (sys.config.mac, sys.config.encoder);
+    let r = sys.running.as_mut().ok_or(McclError::NotInitialized)?;
+    r.mac = mac;
+    r.encoder = encoder;
+    let shared = r.engine.shared();
+    let mut card = shared.card.lock();
+    card.reset();
+    shared.publish(&card);
+    Ok(())
+}
+
+impl System {
+    /// Fails with `COMMAND_NOTACCEPTED_ERR` while the card runs: the group table may only
+    /// change while the system is closed (groups are created before `MCC_InitSystem`).
+    fn require_closed(&self) -> McclResult<()> {
+        if self.running.is_some() {
+            Err(McclError::NotAccepted)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// `MCC_CreateGroupEx`.
+    pub fn create_group(&mut self, def: GroupDef) -> McclResult<usize> {
+        self.require_closed()?;
+        self.config.create_group(def)
+    }
+
+    /// `MCC_CloseGroup`.
+    pub fn close_group(&mut self, g: i32) -> McclResult<()> {
+        self.require_closed()?;
+        let slot = usize::try_from(g)
+            .ok()
+            .filter(|&g| g < GROUPS)
+            .ok_or(McclError::Group)?;
+        match self.config.groups[slot].take() {
+            Some(_) => Ok(()),
+            None => Err(McclError::Group),
+        }
+    }
+
+    /// `MCC_CloseAllGroups`.
+    pub fn close_all_groups(&mut self) -> McclResult<()> {
+        self.require_closed()?;
+        self.config.groups = [None; GROUPS];
+        Ok(())
+    }
+
+    /// The definition of group `g` as it runs now (running) or will run (closed).
+    pub fn group_def(&self, g: u16) -> McclResult<GroupDef> {
+        let g = usize::from(g);
+        match &self.running {
+            Some(r) => r.groups.iter().find(|(i, _)| *i == g).map(|(_, d)| *d),
+            None => self
+                .config
+                .effective_groups()
+                .into_iter()
+                .find(|(i, _)| *i == g)
+                .map(|(_, d)| d),
+        }
+        .ok_or(McclError::Group)
+    }
+
+    /// `MCC_SetCmdQueueSize`: only while the group has no queued commands (user manual ZH
+    /// §2.3), `COMMAND_NOTFINISHED_ERR` otherwise.
+    pub fn set_queue_size(&mut self, size: i32, g: u16) -> McclResult<()> {
+        let mut def = self.group_def(g)?;
+        let size = usize::try_from(size)
+            .ok()
+            .filter(|s| (1..=crate::config::MAX_QUEUE_SIZE).contains(s))
+            .ok_or(McclError::Parameter)?;
+        let gi = usize::from(g);
+        if let Some(r) = &mut self.running {
+            let shared = r.engine.shared().clone();
+            let mut card = shared.card.lock();
+            let rt = card.group_mut(gi).ok_or(McclError::Group)?;
+            if rt.busy() {
+                return Err(McclError::NotFinished);
+            }
+            def.queue_size = size;
+            rt.def = def;
+            if let Some(e) = r.groups.iter_mut().find(|(i, _)| *i == gi) {
+                e.1 = def;
+            }
+        }
+        def.queue_size = size;
+        // The default group becomes an explicit one so the size survives the next init.
+        self.config.groups[gi] = Some(def);
+        Ok(())
+    }
+
+    /// The mechanism parameters in effect for a channel (running: those applied at init
+    /// or `MCC_UpdateParam`; closed: those set).
+    pub fn mac_in_effect(&self, card: CardIx, ch: ChannelIx) -> SYS_MAC_PARAM {
+        match &self.running {
+            Some(r) => r.mac[card.0][ch.0],
+            None => self.config.mac[card.0][ch.0],
+        }
+    }
+}

@@ -1,0 +1,20 @@
+//! The vendor interface as data: typedefs, constants, struct layouts and callback types of
+//! `MCCL.h` (INTERFACE.md §2–3, IMP values per DECISIONS.md). cbindgen reads these to
+//! generate `include/MCCL.h`.
+
+pub mod callbacks;
+pub mod consts;
+pub mod structs;
+
+pub use callbacks::*;
+pub use consts::*;
+pub use structs::*;
+
+/// 16-bit unsigned (`unsigned short` on Windows).
+pub type WORD = u16;
+/// 32-bit unsigned: `uint32_t`, not `unsigned long`, so structs keep their Windows sizes.
+pub type DWORD = u32;
+/// 8-bit unsigned.
+pub type BYTE = u8;
+/// Win32 `BOOL`: a 4-byte int.
+pub type BOOL = i32;
