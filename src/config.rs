@@ -7,13 +7,13 @@ use crate::vendor::consts as c;
 use crate::vendor::{SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM};
 
 /// Cards the library accepts (`MAX_CARD_NUM`).
-pub const CARDS: usize = c::MAX_CARD_NUM as usize;
+pub(crate) const CARDS: usize = c::MAX_CARD_NUM as usize;
 /// Channels (axes) per card and axes per group.
-pub const AXES: usize = c::MAX_AXIS_NUM as usize;
+pub(crate) const AXES: usize = c::MAX_AXIS_NUM as usize;
 /// Group slots (`MAX_GROUP_NUM`).
-pub const GROUPS: usize = c::MAX_GROUP_NUM as usize;
+pub(crate) const GROUPS: usize = c::MAX_GROUP_NUM as usize;
 /// Largest command queue a group may ask for (memory guard; the vendor default is 10000).
-pub const MAX_QUEUE_SIZE: usize = 1_000_000;
+pub(crate) const MAX_QUEUE_SIZE: usize = 1_000_000;
 
 /// A validated card index.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -236,7 +236,7 @@ pub struct Config {
 
 /// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s. The manuals
 /// give no default; this one is high enough not to clamp any example's feed speed.
-pub const DEFAULT_SYS_MAX_SPEED: f64 = 100_000.0;
+pub(crate) const DEFAULT_SYS_MAX_SPEED: f64 = 100_000.0;
 
 impl Default for Config {
     fn default() -> Self {

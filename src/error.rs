@@ -1,5 +1,4 @@
-//! Errors of the core and their vendor return codes (INTERFACE.md §2.3), and the codes of
-//! the per-group error records (`MCC_GetErrorCode`, §2.4).
+//! Errors of the core and their vendor return codes (INTERFACE.md §2.3).
 
 use crate::vendor::consts as c;
 
@@ -51,27 +50,3 @@ impl McclError {
 
 /// Result of a core operation.
 pub type McclResult<T> = Result<T, McclError>;
-
-/// Error-record codes reported by `MCC_GetErrorCode` (DECISIONS.md "Return values").
-pub mod record {
-    /// System not initialised.
-    pub const NOT_INITIALIZED: i32 = 0xF101;
-    /// Emergency stop.
-    pub const EMERGENCY_STOP: i32 = 0xF102;
-    /// Invalid arc or circle command.
-    pub const BAD_ARC: i32 = 0xF104;
-    /// Closed-loop counter overflow.
-    pub const CLOSE_LOOP_OVERFLOW: i32 = 0xF202;
-    /// Pulse speed over the limit.
-    pub const PULSE_SPEED: i32 = 0xF203;
-    /// Pulse acceleration over the limit.
-    pub const PULSE_ACC: i32 = 0xF204;
-    /// Software over-travel; add the axis (0..7 = X..B).
-    pub const OVER_TRAVEL: i32 = 0xF301;
-    /// In-position check failed.
-    pub const IN_POSITION: i32 = 0xF501;
-    /// Hardware limit switch; add the axis.
-    pub const LIMIT_SWITCH: i32 = 0xF701;
-    /// Tracking error; add the axis.
-    pub const TRACKING: i32 = 0xF801;
-}

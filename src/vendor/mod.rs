@@ -17,4 +17,4 @@ pub type DWORD = u32;
 /// 8-bit unsigned.
 pub type BYTE = u8;
 /// Win32 `BOOL`: a 4-byte int.
-pub type BOOL = i32;
+pub type BOOL = std::os::raw::c_int;

@@ -1,1 +1,421 @@
-fn main() {}
+//! Generates the C headers of libMCCLPCI_IMP from the Rust sources.
+//!
+//! cbindgen reads the crate (vendor types, constants, `#[no_mangle] extern "C"` functions);
+//! this program then adds what cbindgen cannot express and writes:
+//!
+//! * `include/MCCL.h`      typedefs, constants, structs and ISR callback types;
+//! * `include/MCCL_Fun.h`  the `MCC_*` prototypes with `MCC_API`/`MCC_CALL` and the vendor's
+//!   C++ default arguments (visible to C++ only), in the vendor header's section order;
+//! * `include/mccl.h`      the lower-case name the vendor's MCCL_Fun.h includes.
+//!
+//! Every exported `MCC_*` function is checked against `vendor_prototypes.txt` (return type,
+//! parameter count, types and names); every `#define` against the vendor constants of
+//! `src/vendor/consts.rs`. Any mismatch is an error, so the headers cannot drift from the
+//! vendor interface. `--check` compares instead of writing and fails on drift.
+
+use std::collections::{BTreeMap, HashSet};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// One parameter of a prototype.
+#[derive(Debug, Clone, PartialEq)]
+struct Param {
+    /// Type tokens, e.g. `["SYS_MAC_PARAM", "*"]`.
+    ty: Vec<String>,
+    name: String,
+    default: Option<String>,
+}
+
+/// One function prototype.
+#[derive(Debug, Clone)]
+struct Proto {
+    ret: String,
+    name: String,
+    params: Vec<Param>,
+}
+
+/// Splits a C declaration into tokens, with `*` and `&` as tokens of their own.
+fn tokens(s: &str) -> Vec<String> {
+    s.replace('*', " * ")
+        .replace('&', " & ")
+        .split_whitespace()
+        .map(str::to_string)
+        .collect()
+}
+
+fn parse_param(p: &str) -> Result<Param, String> {
+    let (decl, default) = match p.split_once('=') {
+        Some((d, v)) => (d, Some(v.trim().to_string())),
+        None => (p, None),
+    };
+    let mut t = tokens(decl);
+    let name = t.pop().ok_or_else(|| format!("empty parameter in {p:?}"))?;
+    if t.is_empty() {
+        return Err(format!("parameter without a type: {p:?}"));
+    }
+    Ok(Param {
+        ty: t,
+        name,
+        default,
+    })
+}
+
+/// Parses `ret name(params)` (a trailing `;` is allowed).
+fn parse_proto(line: &str) -> Result<Proto, String> {
+    let line = line.trim().trim_end_matches(';');
+    let open = line.find('(').ok_or_else(|| format!("no '(' in {line:?}"))?;
+    let close = line.rfind(')').ok_or_else(|| format!("no ')' in {line:?}"))?;
+    let mut head = tokens(&line[..open]);
+    let name = head.pop().ok_or_else(|| format!("no name in {line:?}"))?;
+    let ret = head.join(" ");
+    let inner = line[open + 1..close].trim();
+    let params = if inner.is_empty() || inner == "void" {
+        Vec::new()
+    } else {
+        inner
+            .split(',')
+            .map(parse_param)
+            .collect::<Result<_, _>>()?
+    };
+    Ok(Proto { ret, name, params })
+}
+
+/// The vendor prototype table: sections in order, each with its prototypes.
+struct Vendor {
+    sections: Vec<(String, Vec<Proto>)>,
+}
+
+impl Vendor {
+    fn load(path: &Path) -> Result<Vendor, String> {
+        let text =
+            std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let mut sections: Vec<(String, Vec<Proto>)> = Vec::new();
+        for (n, line) in text.lines().enumerate() {
+            let line = line.trim();
+            if let Some(s) = line.strip_prefix("# section:") {
+                sections.push((s.trim().to_string(), Vec::new()));
+            } else if line.is_empty() || line.starts_with('#') {
+                continue;
+            } else {
+                let p = parse_proto(line)
+                    .map_err(|e| format!("{}:{}: {e}", path.display(), n + 1))?;
+                match sections.last_mut() {
+                    Some((_, v)) => v.push(p),
+                    None => return Err(format!("{}: prototype before any section", path.display())),
+                }
+            }
+        }
+        Ok(Vendor { sections })
+    }
+
+    fn find(&self, name: &str) -> Option<&Proto> {
+        self.sections
+            .iter()
+            .flat_map(|(_, v)| v.iter())
+            .find(|p| p.name == name)
+    }
+}
+
+/// The names `pub const` declares in a Rust file (the vendor constants).
+fn rust_const_names(path: &Path) -> Result<HashSet<String>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(text
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix("pub const "))
+        .filter_map(|l| l.split(':').next())
+        .map(|n| n.trim().to_string())
+        .collect())
+}
+
+/// cbindgen's output, split into declarations and function prototypes.
+struct Raw {
+    /// Everything but the prototypes (typedefs, defines, structs), cbindgen's order.
+    decls: String,
+    protos: Vec<Proto>,
+}
+
+fn run_cbindgen(root: &Path) -> Result<Raw, String> {
+    let cfg = cbindgen::Config::from_file(root.join("cbindgen.toml"))?;
+    let bindings = cbindgen::Builder::new()
+        .with_crate(root)
+        .with_config(cfg)
+        .generate()
+        .map_err(|e| format!("cbindgen: {e}"))?;
+    let mut out = Vec::new();
+    bindings.write(&mut out);
+    let text = String::from_utf8(out).map_err(|e| e.to_string())?;
+    let mut decls = String::new();
+    let mut protos = Vec::new();
+    for line in text.lines() {
+        let is_proto = line.ends_with(");")
+            && !line.starts_with("typedef")
+            && !line.starts_with('#')
+            && !line.starts_with(' ');
+        if is_proto {
+            protos.push(parse_proto(line)?);
+        } else if !line.starts_with("#include") {
+            decls.push_str(line);
+            decls.push('\n');
+        }
+    }
+    Ok(Raw { decls, protos })
+}
+
+fn check_against_vendor(p: &Proto, v: &Proto) -> Result<(), String> {
+    let same_types = p.params.len() == v.params.len()
+        && p.params
+            .iter()
+            .zip(&v.params)
+            .all(|(a, b)| a.ty == b.ty && a.name == b.name);
+    if p.ret != v.ret || !same_types {
+        return Err(format!(
+            "{}: the Rust signature does not match the vendor prototype\n  rust:   {}\n  vendor: {}",
+            p.name,
+            render(p, None),
+            render(v, None)
+        ));
+    }
+    Ok(())
+}
+
+/// Renders a prototype; with `defaults`, appends `MCC_DEFAULT(v)` where the vendor has one.
+fn render(p: &Proto, defaults: Option<&Proto>) -> String {
+    let params: Vec<String> = p
+        .params
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            let mut s = String::new();
+            for t in &a.ty {
+                let ptr = t == "*" || t == "&";
+                if !s.is_empty() && !(ptr && (s.ends_with('*') || s.ends_with('&'))) {
+                    s.push(' ');
+                }
+                s.push_str(t);
+            }
+            if !(s.ends_with('*') || s.ends_with('&')) {
+                s.push(' ');
+            }
+            s.push_str(&a.name);
+            if let Some(d) = defaults.and_then(|v| v.params.get(i)).and_then(|v| v.default.as_ref()) {
+                let _ = write!(s, " MCC_DEFAULT({d})");
+            }
+            s
+        })
+        .collect();
+    let params = if params.is_empty() {
+        "void".to_string()
+    } else {
+        params.join(", ")
+    };
+    format!("{} {}({})", p.ret, p.name, params)
+}
+
+const BANNER: &str = "/* Generated by tools/mccl-headers from the Rust sources (cbindgen + vendor defaults).\n * Do not edit: run `cargo run -p mccl-headers` to regenerate. */\n";
+
+fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> {
+    // Reject constants that are not vendor constants: they would leak into users' code.
+    for line in raw.decls.lines() {
+        if let Some(rest) = line.strip_prefix("#define ") {
+            let name = rest.split_whitespace().next().unwrap_or_default();
+            if !vendor_consts.contains(name) {
+                return Err(format!(
+                    "constant {name} is not in src/vendor/consts.rs: make it pub(crate) or move it there"
+                ));
+            }
+        }
+    }
+    // Callback typedefs get the vendor's MCC_CALLBACK calling-convention macro.
+    let mut body = String::new();
+    for line in raw.decls.lines() {
+        if line.starts_with("typedef") && line.contains("(*") {
+            body.push_str(&line.replacen("(*", "(MCC_CALLBACK *", 1));
+        } else if let Some(neg) = negative_define(line) {
+            body.push_str(&neg);
+        } else {
+            body.push_str(line);
+        }
+        body.push('\n');
+    }
+    let body = collapse_blank_lines(&body);
+    Ok(format!(
+        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
+        body.trim()
+    ))
+}
+
+/// `#define NAME -1` becomes `#define NAME (-1)`, so `x-NAME` cannot turn into `x--1`.
+fn negative_define(line: &str) -> Option<String> {
+    let rest = line.strip_prefix("#define ")?;
+    let (name, value) = rest.split_once(' ')?;
+    let value = value.trim();
+    if value.starts_with('-') && value[1..].chars().all(|c| c.is_ascii_digit()) {
+        Some(format!("#define {name} ({value})"))
+    } else {
+        None
+    }
+}
+
+fn collapse_blank_lines(s: &str) -> String {
+    let mut out = String::new();
+    let mut blank = 0;
+    for line in s.lines() {
+        if line.trim().is_empty() {
+            blank += 1;
+            if blank > 1 {
+                continue;
+            }
+        } else {
+            blank = 0;
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}
+
+fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
+    let mut exported: BTreeMap<&str, &Proto> = BTreeMap::new();
+    for p in &raw.protos {
+        if !p.name.starts_with("MCC_") {
+            return Err(format!(
+                "{}: exported function without a header to go in (only MCC_* is routed)",
+                p.name
+            ));
+        }
+        let v = vendor
+            .find(&p.name)
+            .ok_or_else(|| format!("{}: not a vendor function (vendor_prototypes.txt)", p.name))?;
+        check_against_vendor(p, v)?;
+        exported.insert(&p.name, p);
+    }
+    let mut out = String::new();
+    out.push_str(BANNER);
+    out.push_str(
+        "/* MCCL_Fun.h: the functions of the IMP-series motion control command library that\n * libMCCLPCI_IMP implements. C++ callers get the vendor's default arguments. */\n#ifndef MCCL_FUN_H_LIBMCCLPCI_IMP\n#define MCCL_FUN_H_LIBMCCLPCI_IMP\n\n#include \"MCCL.h\"\n\n#ifndef MCC_CALL\n#if defined(_WIN32)\n#define MCC_CALL __stdcall\n#else\n#define MCC_CALL\n#endif\n#endif\n\n#ifndef MCC_API\n#if defined(_WIN32) && defined(MCCL_EXPORTS)\n#define MCC_API __declspec(dllexport)\n#elif defined(_WIN32)\n#define MCC_API __declspec(dllimport)\n#else\n#define MCC_API\n#endif\n#endif\n\n#ifdef __cplusplus\n#define MCC_DEFAULT(v) = v\nextern \"C\" {\n#else\n#define MCC_DEFAULT(v)\n#endif\n",
+    );
+    for (section, protos) in &vendor.sections {
+        let present: Vec<&Proto> = protos
+            .iter()
+            .filter(|v| exported.contains_key(v.name.as_str()))
+            .collect();
+        if present.is_empty() {
+            continue;
+        }
+        let _ = write!(out, "\n/* {section} */\n");
+        for v in present {
+            let p = exported[v.name.as_str()];
+            let line = render(p, Some(v));
+            let (ret, rest) = line.split_once(' ').unwrap_or(("", &line));
+            let _ = writeln!(out, "MCC_API {ret} MCC_CALL {rest};");
+        }
+    }
+    out.push_str("\n#ifdef __cplusplus\n} /* extern \"C\" */\n#endif\n\n#endif /* MCCL_FUN_H_LIBMCCLPCI_IMP */\n");
+    Ok(out)
+}
+
+fn mccl_lower_h() -> String {
+    format!("{BANNER}/* mccl.h: the lower-case name the vendor's MCCL_Fun.h includes. */\n#ifndef MCCL_LOWER_H_LIBMCCLPCI_IMP\n#define MCCL_LOWER_H_LIBMCCLPCI_IMP\n#include \"MCCL.h\"\n#endif\n")
+}
+
+fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
+    let here = root.join("tools/mccl-headers");
+    let vendor = Vendor::load(&here.join("vendor_prototypes.txt"))?;
+    let consts = rust_const_names(&root.join("src/vendor/consts.rs"))?;
+    let raw = run_cbindgen(root)?;
+    let inc = root.join("include");
+    Ok(vec![
+        (inc.join("MCCL.h"), mccl_h(&raw, &consts)?),
+        (inc.join("MCCL_Fun.h"), mccl_fun_h(&raw, &vendor)?),
+        (inc.join("mccl.h"), mccl_lower_h()),
+    ])
+}
+
+fn main() -> ExitCode {
+    let check = std::env::args().any(|a| a == "--check");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let root = root.canonicalize().unwrap_or(root);
+    let files = match generate(&root) {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("mccl-headers: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    let mut drift = false;
+    for (path, text) in files {
+        let old = std::fs::read_to_string(&path).unwrap_or_default();
+        if old == text {
+            continue;
+        }
+        if check {
+            eprintln!(
+                "mccl-headers: {} is out of date; run `cargo run -p mccl-headers` and commit it",
+                path.display()
+            );
+            drift = true;
+        } else {
+            if let Some(dir) = path.parent() {
+                if let Err(e) = std::fs::create_dir_all(dir) {
+                    eprintln!("mccl-headers: {}: {e}", dir.display());
+                    return ExitCode::FAILURE;
+                }
+            }
+            if let Err(e) = std::fs::write(&path, text) {
+                eprintln!("mccl-headers: {}: {e}", path.display());
+                return ExitCode::FAILURE;
+            }
+            println!("wrote {}", path.display());
+        }
+    }
+    if drift {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_defaults_and_pointers() {
+        let p = parse_proto("int MCC_SetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex = 0)").unwrap();
+        assert_eq!(p.ret, "int");
+        assert_eq!(p.params.len(), 3);
+        assert_eq!(p.params[0].ty, vec!["SYS_MAC_PARAM", "*"]);
+        assert_eq!(p.params[2].default.as_deref(), Some("0"));
+        assert_eq!(
+            render(&p, Some(&p)),
+            "int MCC_SetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0))"
+        );
+        let q = parse_proto("double MCC_GetSysMaxSpeed(void);").unwrap();
+        assert!(q.params.is_empty());
+        assert_eq!(render(&q, None), "double MCC_GetSysMaxSpeed(void)");
+    }
+
+    #[test]
+    fn mismatch_is_an_error() {
+        let v = parse_proto("int MCC_CloseGroup(int nGroupIndex)").unwrap();
+        let wrong_type = parse_proto("int MCC_CloseGroup(WORD nGroupIndex)").unwrap();
+        let wrong_name = parse_proto("int MCC_CloseGroup(int nGroup)").unwrap();
+        let wrong_ret = parse_proto("double MCC_CloseGroup(int nGroupIndex)").unwrap();
+        let extra = parse_proto("int MCC_CloseGroup(int nGroupIndex, int x)").unwrap();
+        for p in [wrong_type, wrong_name, wrong_ret, extra] {
+            assert!(check_against_vendor(&p, &v).is_err(), "{p:?}");
+        }
+        assert!(check_against_vendor(&v, &v).is_ok());
+    }
+
+    #[test]
+    fn vendor_table_has_all_344_plus_one() {
+        let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let v = Vendor::load(&here.join("vendor_prototypes.txt")).unwrap();
+        let n: usize = v.sections.iter().map(|(_, p)| p.len()).sum();
+        assert_eq!(n, 345);
+        let p = v.find("MCC_CreateGroupEx").unwrap();
+        assert_eq!(p.params[9].default.as_deref(), Some("MOTION_QUEUE_SIZE"));
+    }
+}
