@@ -1,6 +1,54 @@
 //! Motion blending: overlapping two general motions.
 
-use super::{Axes, Path, Profile, NUM_AXES};
+use super::{Axes, Path, PlanError, Profile, Shape, NUM_AXES};
+
+/// One general motion: a [`Path`] traversed with a [`Profile`] over its length.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathMove {
+    /// The geometry.
+    pub path: Path,
+    /// Motion along `path.length()`.
+    pub profile: Profile,
+}
+
+impl PathMove {
+    /// Plan `path` at `feed` (UU/s) with the given acc/dec times (s) and shapes.
+    ///
+    /// Errors: as [`Profile::new`].
+    pub fn new(
+        path: Path,
+        feed: f64,
+        acc_time: f64,
+        dec_time: f64,
+        acc: Shape,
+        dec: Shape,
+    ) -> Result<PathMove, PlanError> {
+        let profile = Profile::new(path.length(), feed, acc_time, dec_time, acc, dec)?;
+        Ok(PathMove { path, profile })
+    }
+
+    /// Total time of the move.
+    pub fn duration(&self) -> f64 {
+        self.profile.duration()
+    }
+
+    /// Time at which deceleration begins (a blended next move starts here).
+    pub fn decel_start(&self) -> f64 {
+        self.profile.decel_start()
+    }
+
+    /// Positions and per-axis velocities at time `t` (clamped to `[0, duration]`);
+    /// exactly `path.end()` with zero velocity at `t >= duration`.
+    pub fn sample(&self, t: f64) -> (Axes, Axes) {
+        let (s, v, _) = self.profile.sample(t);
+        let d = self.path.direction(s);
+        let mut vel = [0.0; NUM_AXES];
+        for (vi, di) in vel.iter_mut().zip(d) {
+            *vi = v * di;
+        }
+        (self.path.point(s), vel)
+    }
+}
 
 /// Position while two general motions overlap (blending on).
 ///

@@ -28,7 +28,7 @@ mod ramp;
 #[cfg(test)]
 mod tests;
 
-pub use blend::{blended_position, blended_velocity};
+pub use blend::{blended_position, blended_velocity, PathMove};
 pub use path::{ArcSeg, LineSeg, Path, Plane};
 pub use profile::Profile;
 pub use ptp::{ptp_axis_speed, PtpMove};

@@ -194,6 +194,14 @@ impl Path {
         })
     }
 
+    /// [`Path::line`] with input validation: `BadParameter` if any coordinate
+    /// is NaN or infinite.
+    pub fn try_line(start: &Axes, end: &Axes) -> Result<Path, PlanError> {
+        check_all_finite(start, "start position")?;
+        check_all_finite(end, "end position")?;
+        Ok(Path::line(start, end))
+    }
+
     /// Arc in `plane` from `start` through the plane point `via` to `end_plane`
     /// (`MCC_ArcXY` etc.). The normal axis does not move; aux axes go to `aux_end`
     /// (U..B, absolute) when given, else stay.
@@ -621,6 +629,22 @@ mod tests {
         let d = p.direction(1.0);
         assert_axes_close(&d, &[0.6, 0.8, 0.0, 2.0, 0.0, -2.4, 0.0, 0.2], 1e-12);
         assert_eq!(p.is_ccw(), None);
+    }
+
+    #[test]
+    fn try_line_rejects_non_finite() {
+        let a = [0.0; 8];
+        let mut b = [1.0; 8];
+        assert!(Path::try_line(&a, &b).is_ok());
+        b[6] = f64::INFINITY;
+        assert!(matches!(
+            Path::try_line(&a, &b),
+            Err(PlanError::BadParameter(_))
+        ));
+        assert!(matches!(
+            Path::try_line(&b, &a),
+            Err(PlanError::BadParameter(_))
+        ));
     }
 
     #[test]

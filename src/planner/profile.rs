@@ -498,6 +498,22 @@ mod tests {
     }
 
     #[test]
+    fn s_curve_short_move_unequal_times() {
+        // L = 1, F = 10, Ta = 0.2, Td = 0.6: Vp = 10 (2/(10*0.8))^(2/3) = 10 * 0.25^(2/3).
+        // Acc jerk 4F/Ta^2 = 1000 over Ta sqrt(Vp/F); dec jerk 4F/Td^2 = 111.1.
+        let p = Profile::new(1.0, 10.0, 0.2, 0.6, Shape::S, Shape::S).unwrap();
+        let vp = 10.0 * 0.25f64.powf(2.0 / 3.0);
+        assert!((p.peak_speed() - vp).abs() < 1e-12);
+        let x = (vp / 10.0).sqrt();
+        assert!((p.acc_time() - 0.2 * x).abs() < 1e-12);
+        assert!((p.dec_time() - 0.6 * x).abs() < 1e-12);
+        assert!((0.5 * vp * (p.acc_time() + p.dec_time()) - 1.0).abs() < 1e-12);
+        // Peak accelerations: 2F/Ta x = 100 x (acc), 2F/Td x = 33.3 x (dec).
+        assert!((p.sample(0.1 * x).2 - 100.0 * x).abs() < 1e-9);
+        check_invariants(&p, vp, 100.0 * x, Some(1000.0));
+    }
+
+    #[test]
     fn mixed_short_moves_end_exactly() {
         for &(sa, sd) in &[(Shape::T, Shape::S), (Shape::S, Shape::T)] {
             // L = 0.5, F = 8, Ta = 0.3, Td = 0.6: full ramps need 3.6 > 0.5.

@@ -148,3 +148,26 @@ fn profiled_helix_per_axis_speed() {
     }
     assert_eq!(h.point(p.sample(p.duration()).0), ax(3.0, 0.0, 4.0));
 }
+
+/// PathMove ties path and profile together: a 3-4-5 line at F = 10 with
+/// Ta = Td = 0.2 lasts 5/10 + 0.2 = 0.7 s; mid-cruise velocity is (6, 8, 0).
+#[test]
+fn path_move_samples() {
+    let m = PathMove::new(
+        Path::line(&ax(0.0, 0.0, 0.0), &ax(3.0, 4.0, 0.0)),
+        10.0,
+        0.2,
+        0.2,
+        Shape::T,
+        Shape::S,
+    )
+    .unwrap();
+    assert!((m.duration() - 0.7).abs() < 1e-12);
+    assert!((m.decel_start() - 0.5).abs() < 1e-12);
+    let (pos, vel) = m.sample(0.35);
+    // s = 1 + 10*0.25 = 2.5 -> (1.5, 2, 0).
+    assert!((pos[0] - 1.5).abs() < 1e-12 && (pos[1] - 2.0).abs() < 1e-12);
+    assert!((vel[0] - 6.0).abs() < 1e-12 && (vel[1] - 8.0).abs() < 1e-12);
+    assert_eq!(m.sample(0.7), (ax(3.0, 4.0, 0.0), [0.0; 8]));
+    assert!(PathMove::new(m.path.clone(), 0.0, 0.1, 0.1, Shape::T, Shape::T).is_err());
+}
