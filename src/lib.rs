@@ -1,5 +1,9 @@
-//! libMCCLPCI_IMP: a drop-in replacement for the EPCIO IMP-series motion card
-//! library, with a virtual card that runs the motion in software.
+//! libMCCLPCI_IMP: a drop-in replacement for the EPCIO IMP-series motion card library,
+//! with a virtual card that runs the motion in software.
+//!
+//! Layers, outermost first: [`ffi`] (the extern "C" entry points), [`system`] (the one
+//! process-wide system), [`engine`] and [`clock`] (the virtual card's tick thread),
+//! [`planner`] (pure trajectory math), [`config`] and [`vendor`] (the vendor's data).
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
 pub mod clock;
@@ -7,5 +11,6 @@ pub mod config;
 pub mod engine;
 pub mod error;
 pub mod ffi;
+pub mod planner;
 pub mod system;
 pub mod vendor;
