@@ -95,3 +95,6 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
     // SAFETY: the caller checked p with out_ok and guarantees it is writable.
     unsafe { p.write_unaligned(v) }
 }
+
+#[cfg(test)]
+mod tests;

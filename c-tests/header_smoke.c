@@ -1,0 +1,18 @@
+/* header_smoke.c: includes every header (both spellings) and uses a little of each, so
+ * that -Wall -Wextra -Werror under every standard sees the declarations. */
+#include "MCCL.h"
+#include "MCCL_Fun.h"
+#include "mccl.h"
+#include "MCCL.h"
+
+static void isr(ENCINT *p) { (void)p; }
+
+int smoke(void);
+int smoke(void)
+{
+    SYS_MAC_PARAM m;
+    ENCISR cb = isr;
+    (void)cb;
+    m.dwPPR = 1;
+    return MCC_GetMacParam(&m, 0, 0) + (int)MCC_GetSysMaxSpeed() + GROUP_INVALID - GROUP_INVALID;
+}

@@ -1,0 +1,17 @@
+// header_smoke.cpp: the headers in C++, using the vendor's default arguments.
+#include "MCCL_Fun.h"
+#include "mccl.h"
+
+static void MCC_CALLBACK isr(ENCINT *p) { (void)p; }
+
+int smoke();
+int smoke()
+{
+    SYS_MAC_PARAM m;
+    ENCISR cb = isr;
+    (void)cb;
+    m.dwPPR = 1;
+    // wCardIndex and wGroupIndex defaulted, as vendor C++ code writes them.
+    return MCC_GetMacParam(&m, 0) + MCC_GetCmdQueueSize() + MCC_GetMotionStatus()
+         + MCC_CreateGroupEx(0, 1, 2, 3, 4, 5, 6, 7, 0);
+}

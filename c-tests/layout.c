@@ -1,0 +1,3 @@
+/* layout.c: struct sizes and offsets seen from C. */
+#include "layout_check.h"
+int main(void) { check_layouts(); return check_done("layout (C)"); }

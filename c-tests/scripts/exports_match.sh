@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The headers declare exactly the functions the library exports (issue #2): compares the
+# MCC_* prototypes of include/MCCL_Fun.h with `nm -D` of the built library, and checks that
+# the library exports nothing without one of our prefixes.
+set -u
+lib=$1
+inc=$(cd "$(dirname "$0")/../../include" && pwd)
+exported=$(nm -D --defined-only "$lib" | awk '$2 == "T" {print $3}' | sort)
+declared=$(cat "$inc"/*.h | grep -o 'MCC_CALL [A-Za-z0-9_]*(' | sed 's/MCC_CALL //; s/(//' | sort)
+mcc_exported=$(echo "$exported" | grep '^MCC_' || true)
+status=0
+if [ "$mcc_exported" != "$declared" ]; then
+  echo "declared vs exported differ (< header only, > library only):"
+  diff <(echo "$declared") <(echo "$mcc_exported")
+  status=1
+fi
+stray=$(echo "$exported" | grep -v -E '^(MCC_|MCCL_|mcl_)' || true)
+if [ -n "$stray" ]; then
+  echo "unexpected exported symbols:"; echo "$stray"; status=1
+fi
+echo "exports: $(echo "$mcc_exported" | grep -c .) MCC_* functions exported and declared"
+exit $status
