@@ -988,7 +988,7 @@ pub fn parse_response(line: &[u8]) -> Result<Response, ProtocolError> {
 
 /// Splits a byte stream into CR-terminated lines, dropping LFs and capping
 /// line length at [`MAX_LINE`].
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct LineSplitter {
     buf: Vec<u8>,
     overflow: bool,
@@ -1044,7 +1044,7 @@ impl LineSplitter {
 }
 
 /// Streaming response parser: feed arbitrary chunks, take parsed frames.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct ResponseParser {
     lines: LineSplitter,
     ready: VecDeque<Result<Response, ProtocolError>>,
@@ -1080,7 +1080,7 @@ impl ResponseParser {
 }
 
 /// Streaming command parser (device side).
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct CommandParser {
     lines: LineSplitter,
     ready: VecDeque<Result<Command, CommandError>>,

@@ -3,3 +3,4 @@
 //! serial client and the MC3B's own C library (§4, `mcl_*`).
 
 pub mod codec;
+pub mod emulator;
