@@ -2,5 +2,6 @@
 //! RS-232 protocol codec (§6 of the MC3B User's Guide), a device emulator, a
 //! serial client and the MC3B's own C library (§4, `mcl_*`).
 
+pub mod client;
 pub mod codec;
 pub mod emulator;
