@@ -91,6 +91,18 @@ impl Transport for Box<dyn SerialPort> {
     }
 }
 
+impl Transport for Box<dyn Transport + Send> {
+    fn send(&mut self, data: &[u8]) -> io::Result<()> {
+        self.as_mut().send(data)
+    }
+    fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        self.as_mut().recv(buf, timeout)
+    }
+    fn discard_input(&mut self) -> io::Result<()> {
+        self.as_mut().discard_input()
+    }
+}
+
 /// Open a serial device at 19200 8N1 without flow control.
 pub fn open_port(path: &str, timeout: Duration) -> Result<TTYPort, serialport::Error> {
     let builder = serialport::new(path, BAUD_RATE)
