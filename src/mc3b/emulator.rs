@@ -330,13 +330,13 @@ impl Emulator {
 
     /// Emulated time since creation (whole ticks).
     pub fn now(&self) -> Duration {
-        TICK * u32::try_from(self.tick).unwrap_or(u32::MAX)
+        Duration::from_millis(self.tick)
     }
 
     /// Advance the clock by `dt`, running one 1 kHz tick per millisecond
     /// (a remainder below 1 ms is kept for the next call).
     pub fn advance(&mut self, dt: Duration) {
-        self.pending += dt;
+        self.pending = self.pending.saturating_add(dt);
         while self.pending >= TICK {
             self.pending -= TICK;
             self.step_tick();
@@ -1488,6 +1488,17 @@ mod tests {
         assert_eq!(e.chain_len(), 0);
         e.advance(ms(1000));
         assert_eq!(e.position(0), 5);
+    }
+
+    #[test]
+    fn clock_is_exact_and_keeps_sub_millisecond_remainders() {
+        let mut e = Emulator::new();
+        e.advance(Duration::from_micros(600));
+        assert_eq!(e.now(), Duration::ZERO);
+        e.advance(Duration::from_micros(600));
+        assert_eq!(e.now(), ms(1));
+        e.advance(Duration::from_secs(86));
+        assert_eq!(e.now(), ms(86_001));
     }
 
     #[test]
