@@ -932,56 +932,45 @@ pub fn parse_response(line: &[u8]) -> Result<Response, ProtocolError> {
     for f in &raw.fields {
         nums.push(parse_u32(f).ok_or(ProtocolError::BadField)?);
     }
-    let want = |n: usize| -> Result<(), ProtocolError> {
-        if nums.len() == n {
-            Ok(())
-        } else {
-            Err(ProtocolError::WrongFieldCount {
-                code: letter,
-                got: nums.len(),
-            })
-        }
+    let wrong = || ProtocolError::WrongFieldCount {
+        code: letter,
+        got: nums.len(),
     };
     let flag = |v: u32| match v {
         0 => Ok(false),
         1 => Ok(true),
         _ => Err(ProtocolError::BadField),
     };
-    match letter {
-        b'E' => {
-            want(1)?;
-            let n = nums[0];
+    match (letter, nums.as_slice()) {
+        (b'E', &[n]) => {
             let code = ErrorCode::from_number(n).ok_or(ProtocolError::UnknownErrorNumber(n))?;
             Ok(Response::Error { id, code })
         }
-        b'Q' => {
-            want(3)?;
-            Ok(Response::Status {
-                id,
-                running: nums[0] != 0,
-                home0: flag(nums[1])?,
-                home1: flag(nums[2])?,
-            })
-        }
-        b'B' => {
-            want(1)?;
-            let bits = u8::try_from(nums[0]).map_err(|_| ProtocolError::BadField)?;
+        (b'Q', &[r, h0, h1]) => Ok(Response::Status {
+            id,
+            running: r != 0,
+            home0: flag(h0)?,
+            home1: flag(h1)?,
+        }),
+        (b'B', &[b]) => {
+            let bits = u8::try_from(b).map_err(|_| ProtocolError::BadField)?;
             Ok(Response::Limits { id, bits })
         }
-        b'P' => {
-            want(2)?;
-            Ok(Response::ProductId {
-                id,
-                product: nums[0],
-                version: nums[1],
-            })
-        }
-        other => {
+        (b'P', &[product, version]) => Ok(Response::ProductId {
+            id,
+            product,
+            version,
+        }),
+        (b'E' | b'Q' | b'B' | b'P', _) => Err(wrong()),
+        (other, fields) => {
             let code = CommandCode::from_letter(other)
                 .filter(|c| c.is_acknowledged())
                 .ok_or(ProtocolError::UnknownCode(Some(other)))?;
-            want(0)?;
-            Ok(Response::Ack { id, code })
+            if fields.is_empty() {
+                Ok(Response::Ack { id, code })
+            } else {
+                Err(wrong())
+            }
         }
     }
 }

@@ -743,6 +743,15 @@ mod tests {
     }
 
     #[test]
+    fn a_panic_becomes_a_status_code() {
+        let hook = std::panic::take_hook();
+        std::panic::set_hook(Box::new(|_| {}));
+        let code = guard(|| panic!("must not cross the C boundary"));
+        std::panic::set_hook(hook);
+        assert_eq!(code, MCL_SERIAL_PORT_ERROR);
+    }
+
+    #[test]
     fn com_port_rule() {
         assert_eq!(com_port_path(0), None);
         // Use a port number nobody sets.
