@@ -4,6 +4,7 @@
 #include "MCCL_Fun.h"
 #include "mccl.h"
 #include "MCCL.h"
+#include "mcl.h"
 
 static void isr(ENCINT *p) { (void)p; }
 
@@ -14,5 +15,7 @@ int smoke(void)
     ENCISR cb = isr;
     (void)cb;
     m.dwPPR = 1;
+    int v = 0;
+    (void)mcl_get_library_version(&v);
     return MCC_GetMacParam(&m, 0, 0) + (int)MCC_GetSysMaxSpeed() + GROUP_INVALID - GROUP_INVALID;
 }

@@ -3,7 +3,8 @@
 //!
 //! Layers, outermost first: [`ffi`] (the extern "C" entry points), [`system`] (the one
 //! process-wide system), [`engine`] and [`clock`] (the virtual card's tick thread),
-//! [`planner`] (pure trajectory math), [`config`] and [`vendor`] (the vendor's data).
+//! [`planner`] (pure trajectory math), [`config`] and [`vendor`] (the vendor's data),
+//! [`mc3b`] (the MC3B stepper controller: protocol, emulator, its `mcl_*` C library).
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
 pub mod clock;
@@ -11,6 +12,7 @@ pub mod config;
 pub mod engine;
 pub mod error;
 pub mod ffi;
+pub mod mc3b;
 pub mod planner;
 pub mod system;
 pub mod vendor;

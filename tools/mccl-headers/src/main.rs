@@ -6,7 +6,8 @@
 //! * `include/MCCL.h`      typedefs, constants, structs and ISR callback types;
 //! * `include/MCCL_Fun.h`  the `MCC_*` prototypes with `MCC_API`/`MCC_CALL` and the vendor's
 //!   C++ default arguments (visible to C++ only), in the vendor header's section order;
-//! * `include/mccl.h`      the lower-case name the vendor's MCCL_Fun.h includes.
+//! * `include/mccl.h`      the lower-case name the vendor's MCCL_Fun.h includes;
+//! * `include/mcl.h`       the MC3B motor control library (`mcl_*`, MC3B User's Guide §4).
 //!
 //! Every exported `MCC_*` function is checked against `vendor_prototypes.txt` (return type,
 //! parameter count, types and names); every `#define` against the vendor constants of
@@ -297,9 +298,12 @@ fn collapse_blank_lines(s: &str) -> String {
 fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
     let mut exported: BTreeMap<&str, &Proto> = BTreeMap::new();
     for p in &raw.protos {
+        if p.name.starts_with("mcl_") {
+            continue; // include/mcl.h
+        }
         if !p.name.starts_with("MCC_") {
             return Err(format!(
-                "{}: exported function without a header to go in (only MCC_* is routed)",
+                "{}: exported function without a header to go in (MCC_* -> MCCL_Fun.h, mcl_* -> mcl.h)",
                 p.name
             ));
         }
@@ -334,6 +338,42 @@ fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
     Ok(out)
 }
 
+/// `include/mcl.h`: the MC3B motor control library (MC3B User's Guide §4): its status
+/// codes (`MCL_*`, named here; the guide only numbers them) and the `mcl_*` functions.
+fn mcl_h(raw: &Raw) -> String {
+    let mut out = String::new();
+    out.push_str(BANNER);
+    out.push_str("/* mcl.h: the MC3B stepper controller's motor control library (MC3B User's Guide\n * section 4), exported by libMCCLPCI_IMP. Every function returns one of the MCL_* codes. */\n#ifndef MCL_H_LIBMCCLPCI_IMP\n#define MCL_H_LIBMCCLPCI_IMP\n\n");
+    out.push_str("#ifdef __cplusplus\n#define MCL_DEFAULT(v) = v\n#else\n#include <stdbool.h>\n#define MCL_DEFAULT(v)\n#endif\n\n");
+    for line in raw.decls.lines() {
+        if line.starts_with("#define MCL_") {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    out.push_str("\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
+    for p in raw.protos.iter().filter(|p| p.name.starts_with("mcl_")) {
+        let mut line = render(p, None);
+        // The guide's two C++ default arguments (§4.6, §4.16).
+        for (f, arg, v) in MCL_DEFAULTS {
+            if p.name == *f {
+                line = line.replace(&format!(" {arg})"), &format!(" {arg} MCL_DEFAULT({v}))"));
+            }
+        }
+        let _ = writeln!(out, "{line};");
+    }
+    out.push_str(
+        "\n#ifdef __cplusplus\n} /* extern \"C\" */\n#endif\n\n#endif /* MCL_H_LIBMCCLPCI_IMP */\n",
+    );
+    out
+}
+
+/// C++ default arguments of the MC3B library (MC3B User's Guide §4.6 and §4.16).
+const MCL_DEFAULTS: &[(&str, &str, &str)] = &[
+    ("mcl_set_motor_maximum_velocity", "direction_modifier", "0"),
+    ("mcl_synchronous_move_motor", "execute", "true"),
+];
+
 fn mccl_lower_h() -> String {
     format!("{BANNER}/* mccl.h: the lower-case name the vendor's MCCL_Fun.h includes. */\n#ifndef MCCL_LOWER_H_LIBMCCLPCI_IMP\n#define MCCL_LOWER_H_LIBMCCLPCI_IMP\n#include \"MCCL.h\"\n#endif\n")
 }
@@ -348,6 +388,7 @@ fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
         (inc.join("MCCL.h"), mccl_h(&raw, &consts)?),
         (inc.join("MCCL_Fun.h"), mccl_fun_h(&raw, &vendor)?),
         (inc.join("mccl.h"), mccl_lower_h()),
+        (inc.join("mcl.h"), mcl_h(&raw)),
     ])
 }
 

@@ -1,0 +1,788 @@
+//! The MC3B motor control library of §4 of the User's Guide, exported with
+//! C linkage (`mcl_*`), talking to the board through [`super::client`].
+//!
+//! Every function returns one of the §4 status codes (`MCL_*` constants,
+//! 0..7) and never lets a panic cross the C boundary (a caught panic is
+//! reported as [`MCL_SERIAL_PORT_ERROR`], the guide's "low-level" error).
+//!
+//! # COM port numbering
+//! `com_port` N (1 = COM1, §4.2) names the device given by the environment
+//! variable `MCL_COM<N>` when it is set (e.g. `MCL_COM1=/dev/pts/7`), and
+//! otherwise `/dev/ttyS<N-1>` (COM1 = `/dev/ttyS0`, the usual Linux
+//! numbering). `com_port` < 1 is a SERIAL PORT ERROR (no such port). The port
+//! is opened at 19200 baud, 8N1, no flow control.
+//!
+//! # Decisions
+//! * Status checks run in this order: NOT INITIALIZED, then parameter
+//!   ranges (PARAMETER OUT-OF-RANGE, checked here before anything is sent,
+//!   null pointers included), then the device's own answer.
+//! * `mcl_get_library_version` works before `mcl_initialize` (§4.2 says
+//!   "most of the other" functions need initialization; the version is a
+//!   property of the library). Every other function, `mcl_deinitialize`
+//!   included, returns NOT INITIALIZED before it.
+//! * `controller_id` must be below the number of controllers found (always
+//!   1 for the MC3B: no daisy chaining, §4.2), else PARAMETER OUT-OF-RANGE.
+//! * A timeout, or a hang-up of the line (the device side went away), is a
+//!   TIMEOUT ERROR; failing to open or configure the port is a SERIAL PORT
+//!   ERROR. A reply that does not fit the command is an INVALID COMMAND
+//!   ERROR (data corruption). Device errors `E0`..`E3` map to 4..7.
+//! * `mcl_initialize` sends `0I` and needs its acknowledgement; if that
+//!   fails the port is released and the library stays uninitialized.
+//! * `mcl_deinitialize` sends `0I` (motors off, §4.3), then releases the port
+//!   and returns to the uninitialized state even if that command failed; it
+//!   returns the command's status.
+//! * `mcl_synchronous_move_motor(.., execute)` sends `Y...,1` for `true`
+//!   (runs the chained-move buffer with this move appended; with an empty
+//!   buffer that is just this move) and `Y...,0` for `false` (stores it).
+//! * `mcl_chained_synchronous_move_motor` sends moves 1..n-1 with execute 0
+//!   and move n with execute 1 (moves stored earlier with execute=false run
+//!   first, as on the device). All parameters are checked before sending.
+//! * The reply timeout is 500 ms, or `MCL_TIMEOUT_MS` milliseconds if that
+//!   environment variable holds a positive integer when `mcl_initialize` runs.
+
+use std::os::raw::c_int;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::time::Duration;
+
+use once_cell::sync::Lazy;
+use parking_lot::Mutex;
+
+use super::client::{open_port, Client, ClientError, Transport, DEFAULT_TIMEOUT};
+use super::codec::{Command, ErrorCode};
+
+/// Status: the call completed.
+pub const MCL_NO_ERROR: c_int = 0;
+/// Status: low-level serial port error (port missing or in use).
+pub const MCL_SERIAL_PORT_ERROR: c_int = 1;
+/// Status: `mcl_initialize` has not been called.
+pub const MCL_NOT_INITIALIZED_ERROR: c_int = 2;
+/// Status: the board did not answer.
+pub const MCL_TIMEOUT_ERROR: c_int = 3;
+/// Status: the board did not recognize a command.
+pub const MCL_INVALID_COMMAND_ERROR: c_int = 4;
+/// Status: the board rejected a command because the motor is running.
+pub const MCL_MOTOR_RUNNING_ERROR: c_int = 5;
+/// Status: the board got a command with the wrong number of parameters.
+pub const MCL_WRONG_NUMBER_OF_PARAMETERS_ERROR: c_int = 6;
+/// Status: a parameter is out of range.
+pub const MCL_PARAMETER_OUT_OF_RANGE_ERROR: c_int = 7;
+
+/// Library version: major*100 + minor (1.00).
+pub const MCL_LIBRARY_VERSION: c_int = 100;
+
+/// Largest number of moves in one chained synchronous move (§4.17).
+pub const MCL_MAX_CHAINED_MOVES: c_int = 100;
+
+struct State {
+    client: Client<Box<dyn Transport + Send>>,
+    controllers: c_int,
+}
+
+static STATE: Lazy<Mutex<Option<State>>> = Lazy::new(|| Mutex::new(None));
+
+/// Device path for COM port `com_port` (see the module docs), or `None` when
+/// `com_port` < 1.
+pub fn com_port_path(com_port: c_int) -> Option<String> {
+    if com_port < 1 {
+        return None;
+    }
+    match std::env::var(format!("MCL_COM{com_port}")) {
+        Ok(p) if !p.is_empty() => Some(p),
+        _ => Some(format!("/dev/ttyS{}", com_port - 1)),
+    }
+}
+
+fn reply_timeout() -> Duration {
+    std::env::var("MCL_TIMEOUT_MS")
+        .ok()
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .filter(|&ms| ms > 0)
+        .map(Duration::from_millis)
+        .unwrap_or(DEFAULT_TIMEOUT)
+}
+
+fn status_of(e: &ClientError) -> c_int {
+    match e {
+        ClientError::Timeout | ClientError::Io(_) => MCL_TIMEOUT_ERROR,
+        ClientError::Unexpected(_) => MCL_INVALID_COMMAND_ERROR,
+        ClientError::Device(code) => match code {
+            ErrorCode::InvalidCommand => MCL_INVALID_COMMAND_ERROR,
+            ErrorCode::MotorRunning => MCL_MOTOR_RUNNING_ERROR,
+            ErrorCode::WrongParameterCount => MCL_WRONG_NUMBER_OF_PARAMETERS_ERROR,
+            ErrorCode::OutOfRange => MCL_PARAMETER_OUT_OF_RANGE_ERROR,
+        },
+    }
+}
+
+/// Run `f`, turning a panic into [`MCL_SERIAL_PORT_ERROR`].
+fn guard(f: impl FnOnce() -> c_int) -> c_int {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or(MCL_SERIAL_PORT_ERROR)
+}
+
+type Check = Result<(), c_int>;
+
+fn range(v: c_int, lo: c_int, hi: c_int) -> Check {
+    if (lo..=hi).contains(&v) {
+        Ok(())
+    } else {
+        Err(MCL_PARAMETER_OUT_OF_RANGE_ERROR)
+    }
+}
+
+fn motor(m: c_int) -> Check {
+    range(m, 0, 2)
+}
+
+fn dir(d: c_int) -> Check {
+    range(d, 0, 1)
+}
+
+fn as_u32(v: c_int) -> Result<u32, c_int> {
+    u32::try_from(v).map_err(|_| MCL_PARAMETER_OUT_OF_RANGE_ERROR)
+}
+
+/// Run `f` with the initialized client and the controller ID as a wire ID.
+/// `check` runs after the initialization test and before `f`.
+fn with_client(
+    controller_id: c_int,
+    check: impl FnOnce() -> Check,
+    f: impl FnOnce(&mut Client<Box<dyn Transport + Send>>, u8) -> Result<(), ClientError>,
+) -> c_int {
+    guard(|| {
+        let mut guard = STATE.lock();
+        let Some(state) = guard.as_mut() else {
+            return MCL_NOT_INITIALIZED_ERROR;
+        };
+        if let Err(code) = range(controller_id, 0, state.controllers - 1).and_then(|_| check()) {
+            return code;
+        }
+        let Ok(id) = u8::try_from(controller_id) else {
+            return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
+        };
+        match f(&mut state.client, id) {
+            Ok(()) => MCL_NO_ERROR,
+            Err(e) => status_of(&e),
+        }
+    })
+}
+
+/// Send a command built from the wire ID, expecting an acknowledgement.
+fn send(
+    controller_id: c_int,
+    check: impl FnOnce() -> Check,
+    build: impl FnOnce(u8) -> Result<Command, c_int>,
+) -> c_int {
+    let mut built = None;
+    let code = with_client(controller_id, check, |client, id| match build(id) {
+        Ok(cmd) => client.command(&cmd),
+        Err(code) => {
+            built = Some(code);
+            Ok(())
+        }
+    });
+    built.unwrap_or(code)
+}
+
+/// Initialize the library over an already open transport (used by tests
+/// and by [`mcl_initialize`]). Sends `0I`; returns a §4 status.
+pub fn initialize_with(transport: Box<dyn Transport + Send>, timeout: Duration) -> c_int {
+    guard(|| {
+        let mut guard = STATE.lock();
+        if guard.is_some() {
+            return MCL_NO_ERROR;
+        }
+        let mut client = Client::new(transport, timeout);
+        match client.initialize(0) {
+            Ok(()) => {
+                *guard = Some(State {
+                    client,
+                    controllers: 1,
+                });
+                MCL_NO_ERROR
+            }
+            Err(e) => status_of(&e),
+        }
+    })
+}
+
+/// Whether the library is initialized.
+pub fn is_initialized() -> bool {
+    STATE.lock().is_some()
+}
+
+/// §4.1: store the library version (major*100 + minor) in `*version`.
+///
+/// # Safety
+/// `version` must be null or valid for writing one `int`.
+#[no_mangle]
+pub unsafe extern "C" fn mcl_get_library_version(version: *mut c_int) -> c_int {
+    guard(|| {
+        if version.is_null() {
+            return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
+        }
+        // SAFETY: non-null, and the caller guarantees it is writable.
+        unsafe { version.write(MCL_LIBRARY_VERSION) };
+        MCL_NO_ERROR
+    })
+}
+
+/// §4.2: open COM port `com_port` (see the module docs for the device-path
+/// rule), initialize the board and store the number of controllers (1) in
+/// `*number_of_controllers`. A second call without `mcl_deinitialize` only
+/// returns NO ERROR.
+///
+/// # Safety
+/// `number_of_controllers` must be null or valid for writing one `int`.
+#[no_mangle]
+pub unsafe extern "C" fn mcl_initialize(
+    com_port: c_int,
+    number_of_controllers: *mut c_int,
+) -> c_int {
+    guard(|| {
+        if number_of_controllers.is_null() {
+            return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
+        }
+        let write = |n: c_int| {
+            // SAFETY: non-null (checked above), writable per the contract.
+            unsafe { number_of_controllers.write(n) }
+        };
+        if let Some(s) = STATE.lock().as_ref() {
+            write(s.controllers);
+            return MCL_NO_ERROR;
+        }
+        let Some(path) = com_port_path(com_port) else {
+            return MCL_SERIAL_PORT_ERROR;
+        };
+        let timeout = reply_timeout();
+        let port = match open_port(&path, timeout) {
+            Ok(p) => p,
+            Err(_) => return MCL_SERIAL_PORT_ERROR,
+        };
+        let code = initialize_with(Box::new(port), timeout);
+        if code == MCL_NO_ERROR {
+            write(STATE.lock().as_ref().map_or(1, |s| s.controllers));
+        }
+        code
+    })
+}
+
+/// §4.3: re-initialize the board (all motors off), release the port and
+/// return to the uninitialized state.
+#[no_mangle]
+pub extern "C" fn mcl_deinitialize() -> c_int {
+    guard(|| {
+        let Some(mut state) = STATE.lock().take() else {
+            return MCL_NOT_INITIALIZED_ERROR;
+        };
+        match state.client.initialize(0) {
+            Ok(()) => MCL_NO_ERROR,
+            Err(e) => status_of(&e),
+        }
+    })
+}
+
+/// §4.4: acceleration 100..100000 steps/s² (allowed while free-running).
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_acceleration(
+    controller_id: c_int,
+    motor_id: c_int,
+    acceleration: c_int,
+) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id).and(range(acceleration, 100, 100_000)),
+        |id| {
+            Ok(Command::SetAcceleration {
+                id,
+                motor: as_u32(motor_id)?,
+                value: as_u32(acceleration)?,
+            })
+        },
+    )
+}
+
+/// §4.5: deceleration 100..100000 steps/s² (allowed while free-running).
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_deceleration(
+    controller_id: c_int,
+    motor_id: c_int,
+    deceleration: c_int,
+) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id).and(range(deceleration, 100, 100_000)),
+        |id| {
+            Ok(Command::SetDeceleration {
+                id,
+                motor: as_u32(motor_id)?,
+                value: as_u32(deceleration)?,
+            })
+        },
+    )
+}
+
+/// §4.6: maximum velocity 1..5000 steps/s; `direction_modifier` 0 or 1
+/// (the C++ default argument of the guide is 0; C callers pass it).
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_maximum_velocity(
+    controller_id: c_int,
+    motor_id: c_int,
+    maximum_velocity: c_int,
+    direction_modifier: c_int,
+) -> c_int {
+    send(
+        controller_id,
+        || {
+            motor(motor_id)
+                .and(range(maximum_velocity, 1, 5000))
+                .and(dir(direction_modifier))
+        },
+        |id| {
+            Ok(Command::SetMaxVelocity {
+                id,
+                motor: as_u32(motor_id)?,
+                value: as_u32(maximum_velocity)?,
+                direction_modifier: Some(as_u32(direction_modifier)?),
+            })
+        },
+    )
+}
+
+/// §4.7: half steps (`true`) or full steps (`false`).
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_half_steps_control(
+    controller_id: c_int,
+    motor_id: c_int,
+    half_steps: bool,
+) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id),
+        |id| {
+            Ok(Command::SetHalfStep {
+                id,
+                motor: as_u32(motor_id)?,
+                half: u32::from(half_steps),
+            })
+        },
+    )
+}
+
+/// §4.8: apply the holding current when idle (`true`) or not.
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_holding_current_control(
+    controller_id: c_int,
+    motor_id: c_int,
+    holding_current: bool,
+) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id),
+        |id| {
+            Ok(Command::SetHoldingCurrent {
+                id,
+                motor: as_u32(motor_id)?,
+                enable: u32::from(holding_current),
+            })
+        },
+    )
+}
+
+/// `(AND mask, XOR mask)` of §6.5 for one limit bit/level pair of §4.9:
+/// bit -1 disables the limit (0, 0); bit 0..5 with level `true` (input
+/// pulled to +5 V at the limit) gives `(1<<bit, 0)`, with level `false`
+/// (pulled to 0 V) gives `(1<<bit, 1<<bit)`. Other bits are out of range.
+pub fn limit_masks(bit: c_int, level: bool) -> Option<(u32, u32)> {
+    match bit {
+        -1 => Some((0, 0)),
+        0..=5 => {
+            let m = 1u32 << bit;
+            Some((m, if level { 0 } else { m }))
+        }
+        _ => None,
+    }
+}
+
+/// §4.9: limit switch bit (0..5, or -1 for none) and active level (`true`
+/// = +5 V) for each direction, sent as the AND/XOR masks of §6.5.
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_limits(
+    controller_id: c_int,
+    motor_id: c_int,
+    direction_0_limit_bit: c_int,
+    direction_0_limit_level: bool,
+    direction_1_limit_bit: c_int,
+    direction_1_limit_level: bool,
+) -> c_int {
+    let m0 = limit_masks(direction_0_limit_bit, direction_0_limit_level);
+    let m1 = limit_masks(direction_1_limit_bit, direction_1_limit_level);
+    send(
+        controller_id,
+        || {
+            motor(motor_id)?;
+            if m0.is_none() || m1.is_none() {
+                return Err(MCL_PARAMETER_OUT_OF_RANGE_ERROR);
+            }
+            Ok(())
+        },
+        |id| {
+            let ((a0, x0), (a1, x1)) = m0.zip(m1).ok_or(MCL_PARAMETER_OUT_OF_RANGE_ERROR)?;
+            Ok(Command::SetLimits {
+                id,
+                motor: as_u32(motor_id)?,
+                h0_and: a0,
+                h0_xor: x0,
+                h1_and: a1,
+                h1_xor: x1,
+            })
+        },
+    )
+}
+
+/// §4.10: limit switch debounce count 1..100 (1 kHz samples).
+#[no_mangle]
+pub extern "C" fn mcl_set_limit_switch_debounce(
+    controller_id: c_int,
+    debounce_count: c_int,
+) -> c_int {
+    send(
+        controller_id,
+        || range(debounce_count, 1, 100),
+        |id| {
+            Ok(Command::SetDebounce {
+                id,
+                count: as_u32(debounce_count)?,
+            })
+        },
+    )
+}
+
+/// §4.11: holding and running current limits, 0..2000 mA each.
+#[no_mangle]
+pub extern "C" fn mcl_set_motor_current_limits(
+    controller_id: c_int,
+    motor_id: c_int,
+    holding_current_limit: c_int,
+    running_current_limit: c_int,
+) -> c_int {
+    send(
+        controller_id,
+        || {
+            motor(motor_id)
+                .and(range(holding_current_limit, 0, 2000))
+                .and(range(running_current_limit, 0, 2000))
+        },
+        |id| {
+            Ok(Command::SetCurrentLimits {
+                id,
+                motor: as_u32(motor_id)?,
+                holding: as_u32(holding_current_limit)?,
+                running: as_u32(running_current_limit)?,
+            })
+        },
+    )
+}
+
+/// §4.12: free-run the motor in `direction` (0/1).
+#[no_mangle]
+pub extern "C" fn mcl_run_motor(controller_id: c_int, motor_id: c_int, direction: c_int) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id).and(dir(direction)),
+        |id| {
+            Ok(Command::Run {
+                id,
+                motor: as_u32(motor_id)?,
+                direction: as_u32(direction)?,
+            })
+        },
+    )
+}
+
+/// §4.13: move `steps` (>= 0) steps in `direction` (0/1).
+#[no_mangle]
+pub extern "C" fn mcl_move_motor(
+    controller_id: c_int,
+    motor_id: c_int,
+    direction: c_int,
+    steps: c_int,
+) -> c_int {
+    send(
+        controller_id,
+        || {
+            motor(motor_id)
+                .and(dir(direction))
+                .and(range(steps, 0, c_int::MAX))
+        },
+        |id| {
+            Ok(Command::Move {
+                id,
+                motor: as_u32(motor_id)?,
+                steps: as_u32(steps)?,
+                direction: as_u32(direction)?,
+            })
+        },
+    )
+}
+
+/// §4.14: home the motor toward `direction` (0/1).
+#[no_mangle]
+pub extern "C" fn mcl_home_motor(controller_id: c_int, motor_id: c_int, direction: c_int) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id).and(dir(direction)),
+        |id| {
+            Ok(Command::Home {
+                id,
+                motor: as_u32(motor_id)?,
+                direction: as_u32(direction)?,
+            })
+        },
+    )
+}
+
+/// §4.15: stop the motor at once.
+#[no_mangle]
+pub extern "C" fn mcl_stop_motor(controller_id: c_int, motor_id: c_int) -> c_int {
+    send(
+        controller_id,
+        || motor(motor_id),
+        |id| {
+            Ok(Command::Stop {
+                id,
+                motor: as_u32(motor_id)?,
+            })
+        },
+    )
+}
+
+fn sync_check(s: [c_int; 3], d: [c_int; 3]) -> Check {
+    for i in 0..3 {
+        range(s[i], 0, c_int::MAX)?;
+        dir(d[i])?;
+    }
+    Ok(())
+}
+
+fn sync_cmd(id: u8, s: [c_int; 3], d: [c_int; 3], execute: bool) -> Result<Command, c_int> {
+    Ok(Command::SyncMove {
+        id,
+        steps: [as_u32(s[0])?, as_u32(s[1])?, as_u32(s[2])?],
+        directions: [as_u32(d[0])?, as_u32(d[1])?, as_u32(d[2])?],
+        execute: Some(u32::from(execute)),
+    })
+}
+
+/// §4.16: synchronous linear move of all three motors (steps >= 0,
+/// directions 0/1); `execute` false stores it in the chained-move buffer.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn mcl_synchronous_move_motor(
+    controller_id: c_int,
+    motor_0_steps: c_int,
+    motor_0_direction: c_int,
+    motor_1_steps: c_int,
+    motor_1_direction: c_int,
+    motor_2_steps: c_int,
+    motor_2_direction: c_int,
+    execute: bool,
+) -> c_int {
+    let s = [motor_0_steps, motor_1_steps, motor_2_steps];
+    let d = [motor_0_direction, motor_1_direction, motor_2_direction];
+    send(
+        controller_id,
+        || sync_check(s, d),
+        |id| sync_cmd(id, s, d, execute),
+    )
+}
+
+/// §4.17: chained synchronous move of `number_of_moves` (1..100) moves given
+/// as six arrays of that length.
+///
+/// # Safety
+/// Each pointer must be null or valid for reading `number_of_moves` ints.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn mcl_chained_synchronous_move_motor(
+    controller_id: c_int,
+    number_of_moves: c_int,
+    motor_0_steps: *const c_int,
+    motor_0_direction: *const c_int,
+    motor_1_steps: *const c_int,
+    motor_1_direction: *const c_int,
+    motor_2_steps: *const c_int,
+    motor_2_direction: *const c_int,
+) -> c_int {
+    let ptrs = [
+        motor_0_steps,
+        motor_0_direction,
+        motor_1_steps,
+        motor_1_direction,
+        motor_2_steps,
+        motor_2_direction,
+    ];
+    guard(|| {
+        if !is_initialized() {
+            return MCL_NOT_INITIALIZED_ERROR;
+        }
+        let moves = match read_moves(number_of_moves, ptrs) {
+            Ok(m) => m,
+            Err(code) => return code,
+        };
+        let mut build_err = None;
+        let code = with_client(
+            controller_id,
+            || Ok(()),
+            |client, id| {
+                let last = moves.len().saturating_sub(1);
+                for (k, (s, d)) in moves.iter().enumerate() {
+                    match sync_cmd(id, *s, *d, k == last) {
+                        Ok(cmd) => client.command(&cmd)?,
+                        Err(c) => {
+                            build_err = Some(c);
+                            return Ok(());
+                        }
+                    }
+                }
+                Ok(())
+            },
+        );
+        build_err.unwrap_or(code)
+    })
+}
+
+type Move3 = ([c_int; 3], [c_int; 3]);
+
+/// Read and range-check the six arrays of a chained move.
+///
+/// # Safety
+/// Each non-null pointer must be valid for reading `number_of_moves` ints.
+unsafe fn read_moves(number_of_moves: c_int, ptrs: [*const c_int; 6]) -> Result<Vec<Move3>, c_int> {
+    range(number_of_moves, 1, MCL_MAX_CHAINED_MOVES)?;
+    if ptrs.iter().any(|p| p.is_null()) {
+        return Err(MCL_PARAMETER_OUT_OF_RANGE_ERROR);
+    }
+    let n = usize::try_from(number_of_moves).map_err(|_| MCL_PARAMETER_OUT_OF_RANGE_ERROR)?;
+    let mut arrays: Vec<&[c_int]> = Vec::with_capacity(6);
+    for p in ptrs {
+        // SAFETY: non-null (checked above) and valid for `n` reads per the
+        // caller's contract; n is 1..=100.
+        arrays.push(unsafe { std::slice::from_raw_parts(p, n) });
+    }
+    let mut moves = Vec::with_capacity(n);
+    for k in 0..n {
+        let v = |a: usize| arrays.get(a).and_then(|s| s.get(k)).copied().unwrap_or(-1);
+        let s = [v(0), v(2), v(4)];
+        let d = [v(1), v(3), v(5)];
+        sync_check(s, d)?;
+        moves.push((s, d));
+    }
+    Ok(moves)
+}
+
+/// §4.18: motor status bits in `*motor_status`: bit 0 running, bit 1 at the
+/// direction 0 limit, bit 2 at the direction 1 limit.
+///
+/// # Safety
+/// `motor_status` must be null or valid for writing one `int`.
+#[no_mangle]
+pub unsafe extern "C" fn mcl_get_motor_status(
+    controller_id: c_int,
+    motor_id: c_int,
+    motor_status: *mut c_int,
+) -> c_int {
+    let check = || {
+        motor(motor_id)?;
+        if motor_status.is_null() {
+            return Err(MCL_PARAMETER_OUT_OF_RANGE_ERROR);
+        }
+        Ok(())
+    };
+    with_client(controller_id, check, |client, id| {
+        let st = client.query_status(id, u32::try_from(motor_id).unwrap_or(u32::MAX))?;
+        // SAFETY: non-null (checked), writable per the caller's contract.
+        unsafe { motor_status.write(st.bits()) };
+        Ok(())
+    })
+}
+
+/// §4.19: debounced limit switch bits (bits 0..5) in `*limits`.
+///
+/// # Safety
+/// `limits` must be null or valid for writing one `int`.
+#[no_mangle]
+pub unsafe extern "C" fn mcl_get_limit_switches(controller_id: c_int, limits: *mut c_int) -> c_int {
+    let check = || {
+        if limits.is_null() {
+            return Err(MCL_PARAMETER_OUT_OF_RANGE_ERROR);
+        }
+        Ok(())
+    };
+    with_client(controller_id, check, |client, id| {
+        let bits = client.query_limits(id)?;
+        // SAFETY: non-null (checked), writable per the caller's contract.
+        unsafe { limits.write(c_int::from(bits & 0x3f)) };
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mc3b::client::EmulatorLink;
+
+    #[test]
+    fn limit_masks_follow_section_6_5() {
+        // Guide example: dir 0 on bit 3 high, dir 1 on bit 5 low
+        // -> 0L2,8,0,32,32.
+        assert_eq!(limit_masks(3, true), Some((8, 0)));
+        assert_eq!(limit_masks(5, false), Some((32, 32)));
+        assert_eq!(limit_masks(-1, true), Some((0, 0)));
+        assert_eq!(limit_masks(6, true), None);
+        assert_eq!(limit_masks(-2, false), None);
+    }
+
+    #[test]
+    fn a_panic_becomes_a_status_code() {
+        let hook = std::panic::take_hook();
+        std::panic::set_hook(Box::new(|_| {}));
+        let code = guard(|| panic!("must not cross the C boundary"));
+        std::panic::set_hook(hook);
+        assert_eq!(code, MCL_SERIAL_PORT_ERROR);
+    }
+
+    #[test]
+    fn com_port_rule() {
+        assert_eq!(com_port_path(0), None);
+        // Use a port number nobody sets.
+        assert_eq!(com_port_path(77).as_deref(), Some("/dev/ttyS76"));
+    }
+
+    #[test]
+    fn library_over_an_in_process_emulator() {
+        // The only unit test touching the global state (the integration
+        // tests run in another process).
+        assert_eq!(mcl_stop_motor(0, 0), MCL_NOT_INITIALIZED_ERROR);
+        let link: Box<dyn Transport + Send> = Box::new(EmulatorLink::new());
+        assert_eq!(
+            initialize_with(link, Duration::from_millis(50)),
+            MCL_NO_ERROR
+        );
+        assert_eq!(
+            mcl_set_motor_acceleration(0, 0, 99),
+            MCL_PARAMETER_OUT_OF_RANGE_ERROR
+        );
+        assert_eq!(
+            mcl_set_motor_acceleration(1, 0, 100),
+            MCL_PARAMETER_OUT_OF_RANGE_ERROR
+        );
+        assert_eq!(mcl_move_motor(0, 0, 0, 1000), MCL_NO_ERROR);
+        assert_eq!(mcl_move_motor(0, 0, 0, 1000), MCL_MOTOR_RUNNING_ERROR);
+        let mut st = -1;
+        // SAFETY: valid pointer to a local.
+        assert_eq!(unsafe { mcl_get_motor_status(0, 0, &mut st) }, MCL_NO_ERROR);
+        assert_eq!(st, 1);
+        assert_eq!(mcl_deinitialize(), MCL_NO_ERROR);
+        assert_eq!(mcl_deinitialize(), MCL_NOT_INITIALIZED_ERROR);
+    }
+}

@@ -1,0 +1,251 @@
+//! The serial client against the `mc3b-emu` binary over a real pty, at the
+//! level of §6 frames (including errors the C library never provokes).
+
+use std::io::{BufRead, BufReader, Write};
+use std::process::{Child, ChildStdin, ChildStdout, Command as Proc, Stdio};
+use std::time::Duration;
+
+use serialport::TTYPort;
+use MCCLPCI_IMP::mc3b::client::{open_port, Client, ClientError, Transport};
+use MCCLPCI_IMP::mc3b::codec::{Command, CommandCode, ErrorCode, Response};
+
+struct Emu {
+    child: Child,
+    stdin: ChildStdin,
+    stdout: BufReader<ChildStdout>,
+    path: String,
+}
+
+impl Emu {
+    fn spawn() -> Emu {
+        let mut child = Proc::new(env!("CARGO_BIN_EXE_mc3b-emu"))
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .expect("spawn");
+        let stdin = child.stdin.take().expect("stdin");
+        let mut stdout = BufReader::new(child.stdout.take().expect("stdout"));
+        let mut path = String::new();
+        stdout.read_line(&mut path).expect("path");
+        Emu {
+            child,
+            stdin,
+            stdout,
+            path: path.trim().into(),
+        }
+    }
+    fn ctl(&mut self, cmd: &str) -> String {
+        writeln!(self.stdin, "{cmd}").expect("write");
+        self.stdin.flush().expect("flush");
+        let mut l = String::new();
+        self.stdout.read_line(&mut l).expect("read");
+        l.trim().into()
+    }
+}
+
+impl Drop for Emu {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn connect(emu: &Emu) -> Client<TTYPort> {
+    let port = open_port(&emu.path, Duration::from_millis(300)).expect("open pty");
+    Client::new(port, Duration::from_millis(300))
+}
+
+#[test]
+fn every_command_is_acknowledged_over_the_pty() {
+    let emu = Emu::spawn();
+    let mut c = connect(&emu);
+    let id = 0;
+    let acked = [
+        Command::Initialize { id },
+        Command::SetAcceleration {
+            id,
+            motor: 0,
+            value: 100_000,
+        },
+        Command::SetDeceleration {
+            id,
+            motor: 0,
+            value: 100_000,
+        },
+        Command::SetMaxVelocity {
+            id,
+            motor: 0,
+            value: 5000,
+            direction_modifier: None,
+        },
+        Command::SetLimits {
+            id,
+            motor: 2,
+            h0_and: 8,
+            h0_xor: 0,
+            h1_and: 32,
+            h1_xor: 32,
+        },
+        Command::SetHalfStep {
+            id,
+            motor: 1,
+            half: 0,
+        },
+        Command::SetHoldingCurrent {
+            id,
+            motor: 1,
+            enable: 1,
+        },
+        Command::SetCurrentLimits {
+            id,
+            motor: 1,
+            holding: 500,
+            running: 2000,
+        },
+        Command::SetDebounce { id, count: 1 },
+        Command::Run {
+            id,
+            motor: 0,
+            direction: 0,
+        },
+        Command::Stop { id, motor: 0 },
+        Command::Move {
+            id,
+            motor: 0,
+            steps: 10,
+            direction: 1,
+        },
+        Command::RateMove {
+            id,
+            motor: 1,
+            steps: 100,
+            direction: 0,
+            rate: 75,
+        },
+        Command::Home {
+            id,
+            motor: 2,
+            direction: 0,
+        },
+        Command::Stop { id, motor: 2 },
+        Command::SyncMove {
+            id,
+            steps: [0, 0, 0],
+            directions: [0, 0, 0],
+            execute: Some(0),
+        },
+    ];
+    for cmd in &acked {
+        c.command(cmd).unwrap_or_else(|e| panic!("{cmd:?}: {e}"));
+    }
+    assert_eq!(c.product_id(0).expect("P"), (1, 100));
+    assert_eq!(c.query_limits(0).expect("B"), 0);
+    // Motor 2 with the guide's masks: bit 5 low means home 1.
+    let st = c.query_status(0, 2).expect("Q");
+    assert!(!st.running && !st.home0 && st.home1);
+    // The rate move (100 steps at 750 us) is running, then done at 75 ms.
+    assert!(c.query_status(0, 1).expect("Q").running);
+    std::thread::sleep(Duration::from_millis(150));
+    assert!(!c.query_status(0, 1).expect("Q").running);
+    let mut emu = emu;
+    let pos = emu.ctl("pos");
+    let p: Vec<&str> = pos.split_whitespace().collect();
+    assert_eq!(p.get(2), Some(&"100"), "{pos}");
+}
+
+#[test]
+fn device_errors_over_the_pty() {
+    let emu = Emu::spawn();
+    let mut c = connect(&emu);
+    c.initialize(0).expect("0I");
+    let err = |c: &mut Client<TTYPort>, raw: &[u8]| -> Response {
+        c.transport().send(raw).expect("send");
+        let mut buf = [0u8; 64];
+        let mut parser = MCCLPCI_IMP::mc3b::codec::ResponseParser::new();
+        for _ in 0..50 {
+            let n = c
+                .transport()
+                .recv(&mut buf, Duration::from_millis(20))
+                .expect("recv");
+            parser.feed(&buf[..n]);
+            if let Some(r) = parser.next_response() {
+                return r.expect("well-formed reply");
+            }
+        }
+        panic!("no reply to {raw:?}");
+    };
+    let e = |code| Response::Error { id: 0, code };
+    assert_eq!(err(&mut c, b"0X1\r"), e(ErrorCode::InvalidCommand));
+    assert_eq!(err(&mut c, b"0M0,5\r"), e(ErrorCode::WrongParameterCount));
+    assert_eq!(err(&mut c, b"0N0\r"), e(ErrorCode::OutOfRange));
+    assert_eq!(err(&mut c, b"0A0,abc\r"), e(ErrorCode::OutOfRange));
+    // A command split in pieces with line feeds is still one command.
+    c.transport().send(b"\n0").expect("send");
+    std::thread::sleep(Duration::from_millis(20));
+    assert_eq!(
+        err(&mut c, b"R1,\n0\r\n"),
+        Response::Ack {
+            id: 0,
+            code: CommandCode::Run
+        }
+    );
+    let r = c.command(&Command::Move {
+        id: 0,
+        motor: 1,
+        steps: 5,
+        direction: 0,
+    });
+    assert!(matches!(
+        r,
+        Err(ClientError::Device(ErrorCode::MotorRunning))
+    ));
+    // Garbage on the line does not upset the device.
+    let mut junk: Vec<u8> = (0..2000u32).map(|i| (i * 37 % 251) as u8).collect();
+    junk.push(b'\r');
+    c.transport().send(&junk).expect("send junk");
+    std::thread::sleep(Duration::from_millis(50));
+    c.command(&Command::Stop { id: 0, motor: 1 }).expect("stop");
+    assert_eq!(c.product_id(0).expect("P"), (1, 100));
+    // Another controller ID gets no answer.
+    assert!(matches!(c.query_limits(3), Err(ClientError::Timeout)));
+}
+
+#[test]
+fn help_and_control_channel() {
+    let out = Proc::new(env!("CARGO_BIN_EXE_mc3b-emu"))
+        .arg("--help")
+        .output()
+        .expect("run --help");
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    for word in [
+        "input <bit",
+        "inputs <byte>",
+        "home <motor",
+        "pos",
+        "state",
+        "quit",
+    ] {
+        assert!(help.contains(word), "--help lacks {word}");
+    }
+    let bad = Proc::new(env!("CARGO_BIN_EXE_mc3b-emu"))
+        .arg("--bogus")
+        .output()
+        .expect("run");
+    assert_eq!(bad.status.code(), Some(2));
+
+    let mut emu = Emu::spawn();
+    assert!(emu.ctl("frobnicate").starts_with("err"));
+    assert!(emu.ctl("input 9 1").starts_with("err"));
+    assert!(
+        emu.ctl("home 0 0 1").starts_with("err"),
+        "no home configured"
+    );
+    assert_eq!(emu.ctl("inputs 63"), "ok");
+    std::thread::sleep(Duration::from_millis(10));
+    let st = emu.ctl("state");
+    assert!(st.contains("raw=63 debounced=63"), "{st}");
+    assert_eq!(emu.ctl("quit"), "ok");
+    let status = emu.child.wait().expect("wait");
+    assert!(status.success());
+}
