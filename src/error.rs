@@ -25,6 +25,8 @@ pub enum McclError {
     ContiIllegal,
     /// Abort not allowed now (`ABORT_ILLEGAL_ERR`, -13).
     AbortIllegal,
+    /// An abort is still decelerating (`ABORT_NOT_FINISH_ERR`, -15).
+    AbortNotFinished,
     /// A failure inside the library (`RUN_TIME_ERR`, -14), e.g. a caught panic.
     RunTime,
 }
@@ -43,6 +45,7 @@ impl McclError {
             McclError::HoldIllegal => c::HOLD_ILLEGAL_ERR,
             McclError::ContiIllegal => c::CONTI_ILLEGAL_ERR,
             McclError::AbortIllegal => c::ABORT_ILLEGAL_ERR,
+            McclError::AbortNotFinished => c::ABORT_NOT_FINISH_ERR,
             McclError::RunTime => c::RUN_TIME_ERR,
         }
     }

@@ -117,10 +117,15 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     }
     let mut sys = SYSTEM.lock();
     let groups = groups_for(&sys)?;
-    let engine = Engine::start(mode, period, &groups).map_err(|e| {
-        eprintln!("MCCL: cannot start the engine thread: {e}");
-        McclError::RunTime
+    let trace = crate::engine::trace::Trace::from_env().map_err(|msg| {
+        eprintln!("MCCL: MCC_InitSystem failed: {msg}");
+        McclError::NotInitialized
     })?;
+    let engine = Engine::start(mode, period, &groups, &sys.config.mac, cards.len(), trace)
+        .map_err(|e| {
+            eprintln!("MCCL: cannot start the engine thread: {e}");
+            McclError::RunTime
+        })?;
     *ACTIVE.write() = Some(engine.shared().clone());
     sys.running = Some(Running {
         engine,
@@ -151,10 +156,7 @@ pub fn close() -> McclResult<()> {
 pub fn reset_motion() -> McclResult<()> {
     let sys = SYSTEM.lock();
     let r = sys.running.as_ref().ok_or(McclError::NotInitialized)?;
-    let shared = r.engine.shared();
-    let mut card = shared.card.lock();
-    card.reset();
-    shared.publish(&card);
+    r.engine.shared().reset_all(&r.mac);
     Ok(())
 }
 
@@ -166,10 +168,7 @@ pub fn update_param() -> McclResult<()> {
     let r = sys.running.as_mut().ok_or(McclError::NotInitialized)?;
     r.mac = mac;
     r.encoder = encoder;
-    let shared = r.engine.shared();
-    let mut card = shared.card.lock();
-    card.reset();
-    shared.publish(&card);
+    r.engine.shared().reset_all(&r.mac);
     Ok(())
 }
 
@@ -236,9 +235,8 @@ impl System {
         let gi = usize::from(g);
         if let Some(r) = &mut self.running {
             let shared = r.engine.shared().clone();
-            let mut card = shared.card.lock();
-            let rt = card.group_mut(gi).ok_or(McclError::Group)?;
-            if rt.busy() {
+            let mut rt = shared.group(g)?;
+            if rt.busy() || rt.queued() > 0 {
                 return Err(McclError::NotFinished);
             }
             def.queue_size = size;

@@ -1,0 +1,341 @@
+//! Queued motion commands: what a call captures (user manual §2.3 A–I) and how it is
+//! planned. A command is planned completely when it is queued, starting from the end of
+//! the previous queued command, so bad geometry is refused at call time and the engine
+//! only samples plans.
+
+use crate::config::AXES;
+use crate::error::{McclError, McclResult};
+use crate::planner::{Axes, Path, PathMove, PlanError, Plane, Profile, PtpMove, Shape};
+use crate::vendor::SYS_MAC_PARAM;
+
+/// `COMMAND_INFO.nType` codes (user manual §2.6.5).
+pub mod ctype {
+    /// Point-to-point (also jog).
+    pub const PTP: i32 = 0;
+    /// Linear.
+    pub const LINE: i32 = 1;
+    /// Clockwise arc or circle.
+    pub const ARC_CW: i32 = 2;
+    /// Counter-clockwise arc or circle.
+    pub const ARC_CCW: i32 = 3;
+    /// Clockwise helix.
+    pub const HELIX_CW: i32 = 4;
+    /// Counter-clockwise helix.
+    pub const HELIX_CCW: i32 = 5;
+    /// Motion delay.
+    pub const DELAY: i32 = 6;
+    /// Enable blending.
+    pub const BLEND_ON: i32 = 7;
+    /// Disable blending.
+    pub const BLEND_OFF: i32 = 8;
+    /// Enable in-position check.
+    pub const INPOS_ON: i32 = 9;
+    /// Disable in-position check.
+    pub const INPOS_OFF: i32 = 10;
+}
+
+/// How a command moves (or what it switches).
+#[derive(Debug, Clone)]
+pub enum Plan {
+    /// General motion: a path with its speed profile.
+    Path(PathMove),
+    /// Point-to-point (and jog): per-axis profiles.
+    Ptp(PtpMove),
+    /// Wait this many seconds.
+    Delay(f64),
+    /// Queued blending switch.
+    Blend(bool),
+    /// Queued in-position switch for the axes in the mask.
+    InPos(bool, u32),
+}
+
+/// One queued command.
+#[derive(Debug, Clone)]
+pub struct Command {
+    /// Index returned to the caller.
+    pub index: i32,
+    /// `COMMAND_INFO.nType`.
+    pub ctype: i32,
+    /// `COMMAND_INFO.dfFeedSpeed`: feed speed (general), ratio (PtP) or delay (ms).
+    pub info_feed: f64,
+    /// Where the command ends (user coordinates).
+    pub target: Axes,
+    /// Acceleration time, ms (for `COMMAND_INFO`).
+    pub acc_ms: f64,
+    /// Deceleration time, ms.
+    pub dec_ms: f64,
+    /// The plan.
+    pub plan: Plan,
+}
+
+impl Command {
+    /// Duration of the plan in its own time (seconds); markers take none.
+    pub fn duration(&self) -> f64 {
+        match &self.plan {
+            Plan::Path(m) => m.duration(),
+            Plan::Ptp(p) => p.duration(),
+            Plan::Delay(s) => *s,
+            Plan::Blend(_) | Plan::InPos(..) => 0.0,
+        }
+    }
+
+    /// Whether it moves axes (general or PtP motion).
+    pub fn is_motion(&self) -> bool {
+        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_))
+    }
+
+    /// Position and velocity (per unit of the command's own time) at time `t`.
+    pub fn sample(&self, t: f64) -> (Axes, Axes) {
+        match &self.plan {
+            Plan::Path(m) => m.sample(t),
+            Plan::Ptp(p) => p.sample(t),
+            _ => (self.target, [0.0; AXES]),
+        }
+    }
+
+    /// Where the plan starts.
+    pub fn start(&self) -> Axes {
+        match &self.plan {
+            Plan::Path(m) => m.path.start(),
+            Plan::Ptp(p) => p.start(),
+            _ => self.target,
+        }
+    }
+}
+
+/// Per-axis mechanism facts the planner needs (from `SYS_MAC_PARAM` of the mapped channel).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisMech {
+    /// `(card, channel)` the axis drives, `None` when unmapped.
+    pub channel: Option<(usize, usize)>,
+    /// Pulses per UU: dwPPR x dfGearRatio / dfPitch, negative when wPosToEncoderDir = 1.
+    pub factor: f64,
+    /// Maximum safe speed, UU/s: (wRPM / 60) x dfPitch / dfGearRatio.
+    pub safe_speed: f64,
+    /// Work zone, UU.
+    pub high: f64,
+    /// Work zone, UU.
+    pub low: f64,
+}
+
+impl AxisMech {
+    /// The facts of an axis on `channel` with mechanism parameters `m`.
+    pub fn new(m: &SYS_MAC_PARAM, channel: Option<(usize, usize)>) -> AxisMech {
+        let factor = crate::config::conv_factor(m);
+        AxisMech {
+            channel,
+            factor: if m.wPosToEncoderDir == 1 {
+                -factor
+            } else {
+                factor
+            },
+            safe_speed: crate::planner::ptp_axis_speed(
+                f64::from(m.wRPM),
+                m.dfPitch,
+                m.dfGearRatio,
+                100.0,
+            ),
+            high: m.dfHighLimit,
+            low: m.dfLowLimit,
+        }
+    }
+}
+
+/// The motion settings of a group that queued commands capture (user manual §2.6).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Settings {
+    /// General-motion feed speed, UU/s (already clamped to the system maximum).
+    pub feed: f64,
+    /// General-motion acceleration time, ms.
+    pub acc_ms: f64,
+    /// General-motion deceleration time, ms.
+    pub dec_ms: f64,
+    /// General-motion acceleration shape.
+    pub acc: Shape,
+    /// General-motion deceleration shape.
+    pub dec: Shape,
+    /// PtP speed ratio, percent of the maximum safe speed.
+    pub ptp_ratio: f64,
+    /// PtP acceleration shape per axis.
+    pub ptp_acc: [Shape; AXES],
+    /// PtP deceleration shape per axis.
+    pub ptp_dec: [Shape; AXES],
+    /// PtP acceleration time per axis, ms.
+    pub ptp_acc_ms: Axes,
+    /// PtP deceleration time per axis, ms.
+    pub ptp_dec_ms: Axes,
+    /// Absolute (true) or incremental coordinates.
+    pub absolute: bool,
+}
+
+/// General-motion feed speed before `MCC_SetFeedSpeed` (UU/s). The manuals give none.
+pub const DEFAULT_FEED: f64 = 10.0;
+/// PtP ratio before `MCC_SetPtPSpeed` (percent). The manuals give none.
+pub const DEFAULT_PTP_RATIO: f64 = 10.0;
+/// Acc/dec time of every kind of motion before it is set (ms, user manual §2.6.2).
+pub const DEFAULT_ACC_DEC_MS: f64 = 300.0;
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            feed: DEFAULT_FEED,
+            acc_ms: DEFAULT_ACC_DEC_MS,
+            dec_ms: DEFAULT_ACC_DEC_MS,
+            acc: Shape::T,
+            dec: Shape::T,
+            ptp_ratio: DEFAULT_PTP_RATIO,
+            ptp_acc: [Shape::T; AXES],
+            ptp_dec: [Shape::T; AXES],
+            ptp_acc_ms: [DEFAULT_ACC_DEC_MS; AXES],
+            ptp_dec_ms: [DEFAULT_ACC_DEC_MS; AXES],
+            absolute: true,
+        }
+    }
+}
+
+fn plan_err(e: PlanError) -> McclError {
+    match e {
+        PlanError::BadArc | PlanError::BadParameter(_) => McclError::Parameter,
+    }
+}
+
+/// Everything a planning call needs to know about its group.
+#[derive(Debug, Clone, Copy)]
+pub struct Ctx<'a> {
+    /// The settings at call time.
+    pub settings: &'a Settings,
+    /// Per-axis mechanism facts.
+    pub axes: &'a [AxisMech; AXES],
+    /// End of the previous queued command (user coordinates).
+    pub from: Axes,
+}
+
+impl Ctx<'_> {
+    /// Resolves a target: absolute, or relative to the end of the queue; axes outside
+    /// `mask` keep their position (DECISIONS.md).
+    pub fn resolve(&self, args: &Axes, mask: u32) -> Axes {
+        std::array::from_fn(|i| {
+            if mask & (1 << i) == 0 {
+                self.from[i]
+            } else if self.settings.absolute {
+                args[i]
+            } else {
+                self.from[i] + args[i]
+            }
+        })
+    }
+
+    /// Resolves a plane point (2 coordinates on the plane's axes).
+    pub fn resolve_plane(&self, plane: Plane, p: [f64; 2]) -> [f64; 2] {
+        let (a, b, _) = plane.axes();
+        if self.settings.absolute {
+            p
+        } else {
+            [self.from[a] + p[0], self.from[b] + p[1]]
+        }
+    }
+
+    /// Resolves one coordinate of axis `i`.
+    pub fn resolve_axis(&self, i: usize, v: f64) -> f64 {
+        if self.settings.absolute {
+            v
+        } else {
+            self.from[i] + v
+        }
+    }
+
+    fn general(&self, path: Path, ctype: i32) -> McclResult<Command> {
+        let s = self.settings;
+        let profile = Profile::new(
+            path.length(),
+            s.feed,
+            s.acc_ms / 1000.0,
+            s.dec_ms / 1000.0,
+            s.acc,
+            s.dec,
+        )
+        .map_err(plan_err)?;
+        let target = path.end();
+        Ok(Command {
+            index: 0,
+            ctype,
+            info_feed: s.feed,
+            target,
+            acc_ms: s.acc_ms,
+            dec_ms: s.dec_ms,
+            plan: Plan::Path(PathMove { path, profile }),
+        })
+    }
+
+    /// A linear move to `target` (already resolved).
+    pub fn line(&self, target: Axes) -> McclResult<Command> {
+        let path = Path::try_line(&self.from, &target).map_err(plan_err)?;
+        self.general(path, ctype::LINE)
+    }
+
+    /// An arc, circle or helix path already built from `self.from`.
+    pub fn curve(&self, path: Path, helix: bool) -> McclResult<Command> {
+        let ccw = path.is_ccw().unwrap_or(true);
+        let ctype = match (helix, ccw) {
+            (false, false) => ctype::ARC_CW,
+            (false, true) => ctype::ARC_CCW,
+            (true, false) => ctype::HELIX_CW,
+            (true, true) => ctype::HELIX_CCW,
+        };
+        self.general(path, ctype)
+    }
+
+    /// Point-to-point to `target` at `ratio` percent of each axis's safe speed;
+    /// `sync`: all axes end together (MCC_SyncPtP).
+    pub fn ptp(&self, target: Axes, ratio: f64, sync: bool) -> McclResult<Command> {
+        let s = self.settings;
+        let speed: Axes = std::array::from_fn(|i| self.axes[i].safe_speed * ratio / 100.0);
+        let acc: Axes = s.ptp_acc_ms.map(|ms| ms / 1000.0);
+        let dec: Axes = s.ptp_dec_ms.map(|ms| ms / 1000.0);
+        let mv = PtpMove::new(
+            &self.from, &target, &speed, &acc, &dec, &s.ptp_acc, &s.ptp_dec, sync,
+        )
+        .map_err(plan_err)?;
+        Ok(Command {
+            index: 0,
+            ctype: ctype::PTP,
+            info_feed: ratio,
+            target: mv.end(),
+            acc_ms: s.ptp_acc_ms[0],
+            dec_ms: s.ptp_dec_ms[0],
+            plan: Plan::Ptp(mv),
+        })
+    }
+
+    /// A delay of `ms` milliseconds.
+    pub fn delay(&self, ms: f64) -> Command {
+        Command {
+            index: 0,
+            ctype: ctype::DELAY,
+            info_feed: ms,
+            target: self.from,
+            acc_ms: 0.0,
+            dec_ms: 0.0,
+            plan: Plan::Delay(ms / 1000.0),
+        }
+    }
+
+    /// A queued switch (blending or in-position).
+    pub fn marker(&self, plan: Plan) -> Command {
+        let ctype = match plan {
+            Plan::Blend(true) => ctype::BLEND_ON,
+            Plan::Blend(false) => ctype::BLEND_OFF,
+            Plan::InPos(true, _) => ctype::INPOS_ON,
+            _ => ctype::INPOS_OFF,
+        };
+        Command {
+            index: 0,
+            ctype,
+            info_feed: 0.0,
+            target: self.from,
+            acc_ms: 0.0,
+            dec_ms: 0.0,
+            plan,
+        }
+    }
+}

@@ -1,0 +1,713 @@
+//! One motion group on the virtual card: its settings, its bounded command queue, and the
+//! execution of queued commands tick by tick (user manual §2.3, §2.6).
+//!
+//! Execution model. Every running command has its own time τ. Each tick advances τ by
+//! ∫ rate dt, where `rate` is the group's time scale: the override ratio (1.0 = 100 %), 0
+//! while held or after an abort. Rate changes ramp linearly ([`RateRamp`]) so speed
+//! changes smoothly and position never jumps. The command position is
+//! `base + Σ (command.sample(τ) − command.start)` over the running commands; with
+//! blending on, the next general motion starts when the running one begins to
+//! decelerate, so two commands run at once and their displacements add (DECISIONS.md).
+//! A command that ends inside a tick hands the rest of the tick to the next one, so
+//! consecutive commands keep exact timing. Whenever the last running command ends, the
+//! position becomes its exact planned end: nothing accumulates over millions of moves.
+
+use super::command::{AxisMech, Command, Ctx, Plan, Settings};
+use super::snapshot::GroupSnapshot;
+use crate::config::{GroupDef, AXES};
+use crate::error::{McclError, McclResult};
+use crate::planner::{Axes, RateRamp};
+use crate::vendor::consts as c;
+use crate::vendor::COMMAND_INFO;
+use std::collections::VecDeque;
+
+/// Converts between real time within a tick and a command's own time: general and PtP
+/// motion run at the group's rate, delays in real time (paused while held).
+#[derive(Debug, Clone, Copy)]
+struct TickClock {
+    dt: f64,
+    dtau: f64,
+    delay_dt: f64,
+}
+
+impl TickClock {
+    fn per_tick(&self, cmd: &Command) -> f64 {
+        if matches!(cmd.plan, Plan::Delay(_)) {
+            self.delay_dt
+        } else {
+            self.dtau
+        }
+    }
+
+    /// `real` seconds of this tick, in `cmd`'s own time.
+    fn own_time(&self, real: f64, cmd: &Command) -> f64 {
+        if self.dt > 0.0 {
+            real / self.dt * self.per_tick(cmd)
+        } else {
+            0.0
+        }
+    }
+
+    /// `own` time of `cmd` within this tick, in real seconds.
+    fn real_time(&self, own: f64, cmd: &Command) -> f64 {
+        let per = self.per_tick(cmd);
+        if per > 0.0 {
+            (own / per * self.dt).min(self.dt)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// A command being executed and its own time.
+#[derive(Debug, Clone)]
+struct Running {
+    cmd: Command,
+    tau: f64,
+}
+
+/// What the group is doing besides running commands.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Mode {
+    /// Running normally.
+    Normal,
+    /// `MCC_HoldMotion`: decelerating to, or standing at, rate 0.
+    Held,
+    /// `MCC_HoldMotion(g, TRUE)`: stop when the running command ends.
+    HoldAtBlockEnd,
+    /// `MCC_AbortMotionEx(t)`: ramping to rate 0; then everything is dropped.
+    Aborting,
+}
+
+/// A rate change in progress.
+#[derive(Debug, Clone, Copy)]
+struct Ramp {
+    ramp: RateRamp,
+    elapsed: f64,
+}
+
+/// A group as the card runs it.
+#[derive(Debug)]
+pub struct GroupState {
+    /// Group index (0..95).
+    pub index: usize,
+    /// The mapping and queue size the group runs with.
+    pub def: GroupDef,
+    /// Mechanism facts per axis (from the parameters in effect).
+    pub axes: [AxisMech; AXES],
+    /// Settings that queued commands capture.
+    pub settings: Settings,
+    /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
+    pub blend_queued: bool,
+    /// Override ratio, percent.
+    pub override_pct: f64,
+    /// `MCC_FixSpeed(TRUE)`: the override does not change speeds.
+    pub fixed_speed: bool,
+    queue: VecDeque<Command>,
+    /// End of the last queued command (user coordinates).
+    queue_end: Axes,
+    running: VecDeque<Running>,
+    /// Position of everything finished (user coordinates).
+    base: Axes,
+    /// Current command position (user coordinates).
+    pos: Axes,
+    /// Reference position = user position + offset (MCC_DefinePos moves the offset).
+    offset: Axes,
+    vel: Axes,
+    rate: f64,
+    ramp: Option<Ramp>,
+    /// Override to apply when the next command starts (`MCC_OverrideSpeedEx(r, FALSE)`).
+    pending_override: Option<f64>,
+    mode: Mode,
+    single_block: bool,
+    single_block_credit: bool,
+    /// Blending as the engine has reached it in the queue.
+    blend_on: bool,
+    /// In-position check axes enabled by queued markers (used by the in-position check).
+    pub inpos_mask: u32,
+    error: i32,
+    next_index: i32,
+    auto_index: bool,
+    ld_index: i32,
+    last_started: Option<(i32, i32)>,
+    status: i32,
+}
+
+impl GroupState {
+    /// A stopped group at position 0.
+    pub fn new(index: usize, def: GroupDef, axes: [AxisMech; AXES]) -> GroupState {
+        GroupState {
+            index,
+            def,
+            axes,
+            settings: Settings::default(),
+            blend_queued: false,
+            override_pct: 100.0,
+            fixed_speed: false,
+            queue: VecDeque::new(),
+            queue_end: [0.0; AXES],
+            running: VecDeque::new(),
+            base: [0.0; AXES],
+            pos: [0.0; AXES],
+            offset: [0.0; AXES],
+            vel: [0.0; AXES],
+            rate: 1.0,
+            ramp: None,
+            pending_override: None,
+            mode: Mode::Normal,
+            single_block: false,
+            single_block_credit: false,
+            blend_on: false,
+            inpos_mask: 0,
+            error: 0,
+            next_index: 0,
+            auto_index: true,
+            ld_index: 0,
+            last_started: None,
+            status: c::GMS_STOP,
+        }
+    }
+
+    /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).
+    pub fn reset(&mut self, axes: [AxisMech; AXES]) {
+        *self = GroupState::new(self.index, self.def, axes);
+    }
+
+    /// The planning context: settings, axes and the end of the queue.
+    pub fn ctx(&self) -> Ctx<'_> {
+        Ctx {
+            settings: &self.settings,
+            axes: &self.axes,
+            from: self.queue_end,
+        }
+    }
+
+    /// Motion status (`GMS_*`).
+    pub fn status(&self) -> i32 {
+        self.status
+    }
+
+    /// Commands waiting in the queue (not counting those running).
+    pub fn queued(&self) -> usize {
+        self.queue.len()
+    }
+
+    /// Whether the group has anything to do.
+    pub fn busy(&self) -> bool {
+        self.status != c::GMS_STOP || !self.queue.is_empty()
+    }
+
+    /// The error record (0 when none).
+    pub fn error(&self) -> i32 {
+        self.error
+    }
+
+    /// Records an error: the group stops executing commands until `MCC_ClearError`.
+    pub fn set_error(&mut self, code: i32) {
+        if self.error == 0 {
+            self.error = code;
+        }
+    }
+
+    /// `MCC_ClearError`.
+    pub fn clear_error(&mut self) {
+        self.error = 0;
+        self.update_status();
+    }
+
+    /// Queues a command; returns its index. `ABORT_NOT_FINISH_ERR` while an abort is
+    /// still decelerating, `COMMAND_BUFFER_FULL_ERR` when the queue is full.
+    pub fn enqueue(&mut self, mut cmd: Command) -> McclResult<i32> {
+        if self.mode == Mode::Aborting {
+            return Err(McclError::AbortNotFinished);
+        }
+        if self.queue.len() >= self.def.queue_size {
+            return Err(McclError::BufferFull);
+        }
+        cmd.index = self.next_index;
+        if self.auto_index {
+            self.next_index = self.next_index.wrapping_add(1) & 0x7FFF_FFFF;
+        }
+        match cmd.plan {
+            Plan::Blend(on) => self.blend_queued = on,
+            _ => self.queue_end = cmd.target,
+        }
+        let idx = cmd.index;
+        self.queue.push_back(cmd);
+        self.update_status();
+        Ok(idx)
+    }
+
+    /// Index management (`MCC_ResetCommandIndex`, `MCC_SetCommandIndex`).
+    pub fn set_command_index(&mut self, index: i32, manual: bool) {
+        self.next_index = index;
+        self.auto_index = !manual;
+    }
+
+    /// The index the next queued command gets.
+    pub fn next_command_index(&self) -> i32 {
+        self.next_index
+    }
+
+    /// `MCC_ResetCommandIndexLD`.
+    pub fn reset_ld_index(&mut self) {
+        self.ld_index = 0;
+    }
+
+    /// `MCC_HoldMotion`: `HOLD_ILLEGAL_ERR` when nothing runs or it is already held.
+    pub fn hold(&mut self, at_block_end: bool) -> McclResult<()> {
+        if !self.busy() || self.mode != Mode::Normal {
+            return Err(McclError::HoldIllegal);
+        }
+        if at_block_end {
+            self.mode = Mode::HoldAtBlockEnd;
+        } else {
+            self.mode = Mode::Held;
+            let t = self.current_dec_s();
+            self.ramp_to(0.0, t);
+        }
+        self.update_status();
+        Ok(())
+    }
+
+    /// `MCC_ContiMotion`: `CONTI_ILLEGAL_ERR` unless held.
+    pub fn conti(&mut self) -> McclResult<()> {
+        match self.mode {
+            Mode::Held | Mode::HoldAtBlockEnd => {
+                self.mode = Mode::Normal;
+                let target = self.target_rate();
+                let t = self.current_acc_s();
+                self.ramp_to(target, t);
+                self.update_status();
+                Ok(())
+            }
+            _ => Err(McclError::ContiIllegal),
+        }
+    }
+
+    /// `MCC_AbortMotionEx(t)`: empties the queue and stops within `dec_s` seconds (at
+    /// once when 0, or when already held: then the deceleration is ignored, §2.6.2 IV).
+    /// With `at_block_end`, the running command finishes and the queue is dropped.
+    pub fn abort(&mut self, dec_s: f64, at_block_end: bool) {
+        self.queue.clear();
+        self.pending_override = None;
+        if at_block_end {
+            self.queue_end = self.running.back().map_or(self.pos, |r| r.cmd.target);
+            self.update_status();
+            return;
+        }
+        let held = matches!(self.mode, Mode::Held) && self.rate == 0.0;
+        if dec_s <= 0.0 || held || self.running.is_empty() {
+            self.stop_here();
+        } else {
+            self.mode = Mode::Aborting;
+            self.ramp_to(0.0, dec_s);
+        }
+        self.update_status();
+    }
+
+    fn stop_here(&mut self) {
+        self.running.clear();
+        self.queue.clear();
+        self.base = self.pos;
+        self.queue_end = self.pos;
+        self.vel = [0.0; AXES];
+        self.ramp = None;
+        self.mode = Mode::Normal;
+        self.rate = self.target_rate();
+    }
+
+    /// `MCC_OverrideSpeedEx`: the new ratio applies now (ramped with the acc or dec
+    /// time) or when the next command starts.
+    pub fn override_speed(&mut self, pct: f64, instant: bool) {
+        self.override_pct = pct;
+        if instant {
+            self.pending_override = None;
+            if self.mode == Mode::Normal || self.mode == Mode::HoldAtBlockEnd {
+                self.retarget_rate();
+            }
+        } else {
+            self.pending_override = Some(pct);
+        }
+    }
+
+    /// `MCC_FixSpeed`.
+    pub fn fix_speed(&mut self, fixed: bool) {
+        self.fixed_speed = fixed;
+        if self.mode == Mode::Normal {
+            self.retarget_rate();
+        }
+    }
+
+    fn retarget_rate(&mut self) {
+        let target = self.target_rate();
+        let t = if target >= self.rate {
+            self.current_acc_s()
+        } else {
+            self.current_dec_s()
+        };
+        self.ramp_to(target, t);
+    }
+
+    /// Single-block mode: after each command the group waits for `MCC_RunSingleBlock`.
+    pub fn set_single_block(&mut self, on: bool) {
+        self.single_block = on;
+        self.single_block_credit = false;
+        self.update_status();
+    }
+
+    /// `MCC_RunSingleBlock`: lets one more command run.
+    pub fn run_single_block(&mut self) -> McclResult<()> {
+        if !self.single_block {
+            return Err(McclError::NotAccepted);
+        }
+        self.single_block_credit = true;
+        self.update_status();
+        Ok(())
+    }
+
+    /// `MCC_EnableBlendInstant`: switches blending now, not through the queue.
+    pub fn set_blend_now(&mut self, on: bool) {
+        self.blend_on = on;
+        self.blend_queued = on;
+    }
+
+    /// `MCC_DefinePos`: the current position of `axis` becomes `value` (only when stopped).
+    pub fn define_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        let shift = value - self.pos[axis];
+        self.offset[axis] -= shift;
+        self.pos[axis] = value;
+        self.base[axis] = value;
+        self.queue_end[axis] = value;
+        Ok(())
+    }
+
+    /// The current position (user coordinates).
+    pub fn pos(&self) -> Axes {
+        self.pos
+    }
+
+    /// Time scale the group runs at when not held.
+    fn target_rate(&self) -> f64 {
+        if self.fixed_speed {
+            1.0
+        } else {
+            self.override_pct / 100.0
+        }
+    }
+
+    fn current_acc_s(&self) -> f64 {
+        self.running
+            .back()
+            .map_or(self.settings.acc_ms, |r| r.cmd.acc_ms)
+            / 1000.0
+    }
+
+    fn current_dec_s(&self) -> f64 {
+        self.running
+            .back()
+            .map_or(self.settings.dec_ms, |r| r.cmd.dec_ms)
+            / 1000.0
+    }
+
+    fn ramp_to(&mut self, target: f64, secs: f64) {
+        if secs <= 0.0 || (target - self.rate).abs() < 1e-15 {
+            self.rate = target;
+            self.ramp = None;
+        } else {
+            self.ramp = Some(Ramp {
+                ramp: RateRamp::new(self.rate, target, secs),
+                elapsed: 0.0,
+            });
+        }
+    }
+
+    /// Advances the rate by `dt`; returns ∫ rate dt over the tick.
+    fn advance_rate(&mut self, dt: f64) -> f64 {
+        match &mut self.ramp {
+            None => self.rate * dt,
+            Some(r) => {
+                let d = r.ramp.integral(r.elapsed, r.elapsed + dt);
+                r.elapsed += dt;
+                self.rate = r.ramp.rate(r.elapsed);
+                if r.ramp.done(r.elapsed) {
+                    self.rate = r.ramp.to_rate();
+                    self.ramp = None;
+                }
+                d
+            }
+        }
+    }
+
+    /// Whether a new command may start now.
+    fn may_start(&self) -> bool {
+        self.error == 0
+            && matches!(self.mode, Mode::Normal)
+            && (!self.single_block || self.single_block_credit)
+    }
+
+    /// Pops queued switches that are now reached; returns the next motion/delay command.
+    fn pop_next(&mut self) -> Option<Command> {
+        while let Some(front) = self.queue.front() {
+            match front.plan {
+                Plan::Blend(on) => {
+                    self.blend_on = on;
+                    self.queue.pop_front();
+                }
+                Plan::InPos(on, mask) => {
+                    if on {
+                        self.inpos_mask |= mask;
+                    } else {
+                        self.inpos_mask &= !mask;
+                    }
+                    self.queue.pop_front();
+                }
+                _ => return self.queue.pop_front(),
+            }
+        }
+        None
+    }
+
+    fn start(&mut self, cmd: Command, tau: f64) {
+        if let Some(p) = self.pending_override.take() {
+            self.override_pct = p;
+            if self.mode == Mode::Normal {
+                self.retarget_rate();
+            }
+        }
+        self.ld_index = self.ld_index.wrapping_add(1);
+        self.last_started = Some((cmd.index, self.ld_index));
+        if self.single_block {
+            self.single_block_credit = false;
+        }
+        self.running.push_back(Running { cmd, tau });
+    }
+
+    /// One interpolation period of `dt` seconds.
+    pub fn tick(&mut self, dt: f64) {
+        let dtau = self.advance_rate(dt);
+        let delay_dt = if self.mode == Mode::Held { 0.0 } else { dt };
+        let clock = TickClock { dt, dtau, delay_dt };
+        if self.running.is_empty() {
+            // An idle group starts its next command at the start of the tick.
+            if self.may_start() {
+                if let Some(cmd) = self.pop_next() {
+                    let tau = clock.own_time(dt, &cmd);
+                    self.start(cmd, tau);
+                }
+            }
+        } else {
+            for r in self.running.iter_mut() {
+                r.tau += clock.own_time(dt, &r.cmd);
+            }
+        }
+        self.settle(&clock);
+        self.finish_abort();
+        self.compute_pos_vel();
+        self.update_status();
+    }
+
+    /// After the running commands advanced: blends in the next command, retires finished
+    /// commands and hands the rest of the tick to their successors.
+    fn settle(&mut self, clock: &TickClock) {
+        // Bounded: each pass starts or retires one command.
+        for _ in 0..(self.queue.len() + self.running.len() + 2) * 2 {
+            if self.try_blend() {
+                continue;
+            }
+            let Some(first) = self.running.front() else {
+                return;
+            };
+            let dur = first.cmd.duration();
+            if first.tau < dur {
+                return;
+            }
+            let spare = clock.real_time(first.tau - dur, &first.cmd);
+            let Some(done) = self.running.pop_front() else {
+                return;
+            };
+            if self.running.is_empty() {
+                self.base = done.cmd.target;
+            } else {
+                let s = done.cmd.start();
+                for ((b, t), s) in self.base.iter_mut().zip(done.cmd.target).zip(s) {
+                    *b += t - s;
+                }
+                continue;
+            }
+            if self.mode == Mode::HoldAtBlockEnd {
+                self.mode = Mode::Held;
+                self.rate = 0.0;
+                self.ramp = None;
+                return;
+            }
+            if !self.may_start() {
+                return;
+            }
+            let Some(next) = self.pop_next() else {
+                return;
+            };
+            let tau = clock.own_time(spare, &next);
+            self.start(next, tau);
+        }
+    }
+
+    /// Blending: when the newest general motion has reached its deceleration and the next
+    /// queued motion is general too, starts it (DECISIONS.md). Returns whether it did.
+    fn try_blend(&mut self) -> bool {
+        if !self.blend_on || !self.may_start() {
+            return false;
+        }
+        let Some(last) = self.running.back() else {
+            return false;
+        };
+        let Plan::Path(m) = &last.cmd.plan else {
+            return false;
+        };
+        let ds = m.decel_start();
+        if last.tau < ds || last.tau >= m.duration() || m.duration() <= 0.0 {
+            return false;
+        }
+        let over = last.tau - ds;
+        if !matches!(self.peek_motion(), Some(Plan::Path(_))) {
+            return false;
+        }
+        match self.pop_next() {
+            Some(next) => {
+                self.start(next, over);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// The next queued motion/delay command's plan, looking past queued switches.
+    fn peek_motion(&self) -> Option<&Plan> {
+        self.queue
+            .iter()
+            .map(|c| &c.plan)
+            .find(|p| !matches!(p, Plan::Blend(_) | Plan::InPos(..)))
+    }
+
+    fn finish_abort(&mut self) {
+        if self.mode == Mode::Aborting && self.ramp.is_none() && self.rate == 0.0 {
+            self.compute_pos_vel();
+            self.stop_here();
+        }
+    }
+
+    fn compute_pos_vel(&mut self) {
+        let mut pos = self.base;
+        let mut vel = [0.0; AXES];
+        let only = self.running.len() == 1;
+        for r in &self.running {
+            let (p, v) = r.cmd.sample(r.tau);
+            let s = r.cmd.start();
+            let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
+                0.0
+            } else {
+                self.rate
+            };
+            for i in 0..AXES {
+                if only && self.base[i] == s[i] {
+                    pos[i] = p[i];
+                } else {
+                    pos[i] += p[i] - s[i];
+                }
+                vel[i] += v[i] * scale;
+            }
+        }
+        self.pos = pos;
+        self.vel = vel;
+    }
+
+    fn update_status(&mut self) {
+        let active = !self.running.is_empty() || !self.queue.is_empty();
+        self.status = if !active && self.mode != Mode::Aborting {
+            if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
+                self.mode = Mode::Normal;
+                self.rate = self.target_rate();
+                self.ramp = None;
+            }
+            c::GMS_STOP
+        } else if matches!(self.mode, Mode::Held)
+            || (self.running.is_empty()
+                && (self.error != 0 || (self.single_block && !self.single_block_credit)))
+        {
+            // Held, or commands waiting that an error or single-block mode keeps back.
+            c::GMS_HOLD
+        } else if matches!(
+            self.running.front().map(|r| &r.cmd.plan),
+            Some(Plan::Delay(_))
+        ) {
+            c::GMS_DELAYING
+        } else {
+            c::GMS_RUNNING
+        };
+    }
+
+    /// Tangential speed: the X/Y/Z speed, or the fastest aux axis when X/Y/Z stand still.
+    fn path_speed(&self) -> f64 {
+        let xyz = (self.vel[0].powi(2) + self.vel[1].powi(2) + self.vel[2].powi(2)).sqrt();
+        if xyz > 0.0 {
+            xyz
+        } else {
+            self.vel[3..].iter().fold(0.0f64, |m, v| m.max(v.abs()))
+        }
+    }
+
+    /// Pulse position of axis `i`: round(reference position x pulses per UU).
+    pub fn pulses(&self, i: usize) -> i64 {
+        ((self.pos[i] + self.offset[i]) * self.axes[i].factor).round() as i64
+    }
+
+    /// The state to publish.
+    pub fn snapshot(&self) -> GroupSnapshot {
+        let mut cmd = COMMAND_INFO {
+            nType: -1,
+            nCommandIndex: -1,
+            ..Default::default()
+        };
+        if let Some(r) = self.running.back() {
+            let phase = match &r.cmd.plan {
+                Plan::Path(m) => {
+                    if r.tau < m.profile.acc_time().min(m.decel_start()) {
+                        0
+                    } else if r.tau < m.decel_start() {
+                        1
+                    } else {
+                        2
+                    }
+                }
+                _ => 1,
+            };
+            cmd = COMMAND_INFO {
+                nType: r.cmd.ctype,
+                nCommandIndex: r.cmd.index,
+                dfFeedSpeed: match r.cmd.plan {
+                    Plan::Delay(s) => ((s - r.tau) * 1000.0).max(0.0),
+                    _ => r.cmd.info_feed,
+                },
+                dfPos: r.cmd.target,
+                dfAcctime: r.cmd.acc_ms,
+                dfDectime: r.cmd.dec_ms,
+                nMotionPhase: phase,
+                nCommandIndex_LD: self.last_started.map_or(0, |l| l.1),
+            };
+        }
+        GroupSnapshot {
+            status: self.status,
+            error: self.error,
+            queued: i32::try_from(self.queue.len()).unwrap_or(i32::MAX),
+            pos: self.pos,
+            ref_pos: std::array::from_fn(|i| self.pos[i] + self.offset[i]),
+            pulses: std::array::from_fn(|i| self.pulses(i)),
+            vel: self.vel,
+            path_speed: self.path_speed(),
+            cmd,
+        }
+    }
+}

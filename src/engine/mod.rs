@@ -1,0 +1,240 @@
+//! The virtual card's engine: one thread per running system that ticks every interpolation
+//! period on the [`Clock`], advances every group, and publishes snapshots that status
+//! calls read without taking any lock.
+//!
+//! Locks: each group has its own mutex (a call on group 3 never waits for group 5); the
+//! engine thread takes one group lock at a time and never holds one while user code runs,
+//! so a callback may call any MCC_* function. Order: `system::SYSTEM`, then a group.
+
+pub mod command;
+pub mod group;
+pub mod snapshot;
+pub mod trace;
+
+use crate::clock::{Clock, ClockMode, Next};
+use crate::config::{GroupDef, AXES, CARDS, GROUPS};
+use crate::error::{McclError, McclResult};
+use crate::vendor::SYS_MAC_PARAM;
+use command::AxisMech;
+use group::GroupState;
+use parking_lot::{Mutex, MutexGuard};
+use snapshot::{GroupSnapshot, SnapshotCell};
+use std::sync::atomic::{AtomicBool, AtomicI64, AtomicU32, Ordering};
+use std::sync::Arc;
+use std::thread::{JoinHandle, ThreadId};
+use std::time::Duration;
+
+/// Mechanism parameters per card and channel.
+pub type MacTable = [[SYS_MAC_PARAM; AXES]; CARDS];
+
+/// The mechanism facts of a group's axes: mapped axes from their channel's parameters,
+/// unmapped ones from the defaults (their planning result is ignored, §2.4.4).
+pub fn axes_of(def: &GroupDef, mac: &MacTable) -> [AxisMech; AXES] {
+    std::array::from_fn(|i| match def.channels[i] {
+        Some(ch) => AxisMech::new(&mac[def.card.0][ch.0], Some((def.card.0, ch.0))),
+        None => AxisMech::new(&crate::config::default_mac_param(), None),
+    })
+}
+
+/// What the engine thread and the program's threads share.
+#[derive(Debug)]
+pub struct Shared {
+    /// The tick clock.
+    pub clock: Clock,
+    /// Group slot -> position in `groups`.
+    slots: [Option<usize>; GROUPS],
+    /// The running groups.
+    groups: Vec<Mutex<GroupState>>,
+    /// Published state per group slot.
+    snaps: Vec<SnapshotCell>,
+    /// Pulse counter per card and channel (what the card has output).
+    pub pulse_counter: Vec<[AtomicI64; AXES]>,
+    /// `MCC_EnableDryRun` is in effect.
+    pub dry_run: AtomicBool,
+    /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
+    pub max_pulse_stock: AtomicU32,
+    trace: Mutex<Option<trace::Trace>>,
+}
+
+/// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum` (ZH manual §2.6.5: 60).
+pub const DEFAULT_PULSE_STOCK: u32 = 60;
+
+impl Shared {
+    /// Locks group `g` (`GROUP_PARAMETER_ERR` when no such group runs).
+    pub fn group(&self, g: u16) -> McclResult<MutexGuard<'_, GroupState>> {
+        let slot = self
+            .slots
+            .get(usize::from(g))
+            .copied()
+            .flatten()
+            .ok_or(McclError::Group)?;
+        Ok(self.groups[slot].lock())
+    }
+
+    /// Whether group `g` runs.
+    pub fn has_group(&self, g: u16) -> bool {
+        self.slots.get(usize::from(g)).copied().flatten().is_some()
+    }
+
+    /// The last published state of group `g`, without locking.
+    pub fn snapshot(&self, g: u16) -> McclResult<GroupSnapshot> {
+        if !self.has_group(g) {
+            return Err(McclError::Group);
+        }
+        Ok(self.snaps[usize::from(g)].load())
+    }
+
+    /// Publishes a group's state (call with its lock held) and, unless dry-running, the
+    /// pulse counters of its channels.
+    pub fn publish(&self, g: &GroupState) {
+        self.snaps[g.index].store(&g.snapshot());
+        if !self.dry_run.load(Ordering::Relaxed) {
+            for (i, ax) in g.axes.iter().enumerate() {
+                if let Some((card, ch)) = ax.channel {
+                    if let Some(c) = self.pulse_counter.get(card) {
+                        c[ch].store(g.pulses(i), Ordering::Relaxed);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether any group has work (the fast clock ticks while this is true).
+    pub fn busy(&self) -> bool {
+        self.groups.iter().any(|g| g.lock().busy())
+    }
+
+    /// Every running group, locked one at a time.
+    pub fn for_each_group(&self, mut f: impl FnMut(&mut GroupState)) {
+        for g in &self.groups {
+            let mut g = g.lock();
+            f(&mut g);
+            self.publish(&g);
+        }
+    }
+
+    /// Resets every group (`MCC_ResetMotion`, `MCC_UpdateParam`) with new mechanism facts.
+    pub fn reset_all(&self, mac: &MacTable) {
+        self.for_each_group(|g| {
+            let axes = axes_of(&g.def, mac);
+            g.reset(axes);
+        });
+    }
+
+    /// Tells a fast clock that work arrived.
+    pub fn kick(&self) {
+        self.clock.kick();
+    }
+
+    /// One tick of the whole card.
+    fn tick(&self) {
+        let dt = self.clock.period().as_secs_f64();
+        let t_ns = self.clock.now_ns() + self.clock.period().as_nanos();
+        let mut trace = self.trace.lock();
+        for g in &self.groups {
+            let mut g = g.lock();
+            g.tick(dt);
+            self.publish(&g);
+            if let Some(t) = trace.as_mut() {
+                t.row(t_ns, &g);
+            }
+        }
+    }
+}
+
+/// A running engine thread.
+#[derive(Debug)]
+pub struct Engine {
+    shared: Arc<Shared>,
+    thread: Option<JoinHandle<()>>,
+    thread_id: ThreadId,
+}
+
+impl Engine {
+    /// Starts the engine for `groups` with the given clock mode, period and mechanism
+    /// parameters; `trace` is the CSV file to record every tick in (`MCCL_TRACE`).
+    pub fn start(
+        mode: ClockMode,
+        period: Duration,
+        groups: &[(usize, GroupDef)],
+        mac: &MacTable,
+        cards: usize,
+        trace: Option<trace::Trace>,
+    ) -> std::io::Result<Engine> {
+        let mut slots = [None; GROUPS];
+        let mut gs = Vec::with_capacity(groups.len());
+        for (n, (i, d)) in groups.iter().enumerate() {
+            slots[*i] = Some(n);
+            gs.push(Mutex::new(GroupState::new(*i, *d, axes_of(d, mac))));
+        }
+        let shared = Arc::new(Shared {
+            clock: Clock::new(mode, period),
+            slots,
+            groups: gs,
+            snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
+            pulse_counter: (0..cards)
+                .map(|_| std::array::from_fn(|_| AtomicI64::new(0)))
+                .collect(),
+            dry_run: AtomicBool::new(false),
+            max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
+            trace: Mutex::new(trace),
+        });
+        shared.for_each_group(|_| {});
+        let s2 = shared.clone();
+        let thread = std::thread::Builder::new()
+            .name("mccl-engine".into())
+            .spawn(move || run(&s2))?;
+        let thread_id = thread.thread().id();
+        Ok(Engine {
+            shared,
+            thread: Some(thread),
+            thread_id,
+        })
+    }
+
+    /// What the engine shares.
+    pub fn shared(&self) -> &Arc<Shared> {
+        &self.shared
+    }
+
+    /// Stops the clock and joins the thread (see [`Drop`]).
+    pub fn shutdown(self) {
+        drop(self);
+    }
+
+    /// Whether the calling thread is this engine's thread.
+    pub fn is_engine_thread(&self) -> bool {
+        std::thread::current().id() == self.thread_id
+    }
+}
+
+/// Stops the clock and joins the thread. From the engine thread itself (a callback that
+/// closes the system) it only stops: the thread ends when the callback returns.
+impl Drop for Engine {
+    fn drop(&mut self) {
+        self.shared.clock.stop();
+        if let Some(t) = self.thread.take() {
+            if std::thread::current().id() != self.thread_id {
+                let _ = t.join();
+            }
+        }
+        if let Some(t) = self.shared.trace.lock().as_mut() {
+            t.flush();
+        }
+    }
+}
+
+fn run(shared: &Shared) {
+    shared.clock.set_engine_thread();
+    loop {
+        let busy = || shared.busy();
+        match shared.clock.wait_next(&busy) {
+            Next::Stop => return,
+            Next::Tick => {
+                shared.tick();
+                // Interrupt callbacks collected in the tick run here, without any lock.
+                shared.clock.tick_done();
+            }
+        }
+    }
+}
