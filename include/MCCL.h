@@ -121,6 +121,21 @@ typedef uint16_t WORD;
 
 typedef uint32_t DWORD;
 
+typedef uint8_t BYTE;
+
+typedef struct {
+  int32_t nType;
+  int32_t nCommandIndex;
+  double dfFeedSpeed;
+  double dfPos[8];
+  double dfAcctime;
+  double dfDectime;
+  int32_t nMotionPhase;
+  int32_t nCommandIndex_LD;
+} COMMAND_INFO;
+
+typedef int BOOL;
+
 typedef struct {
   WORD wPosToEncoderDir;
   WORD wRPM;
@@ -169,21 +184,6 @@ typedef struct {
   WORD wIRQ_No;
   WORD wPaddle;
 } SYS_CARD_CONFIG;
-
-typedef uint8_t BYTE;
-
-typedef int BOOL;
-
-typedef struct {
-  int32_t nType;
-  int32_t nCommandIndex;
-  double dfFeedSpeed;
-  double dfPos[8];
-  double dfAcctime;
-  double dfDectime;
-  int32_t nMotionPhase;
-  int32_t nCommandIndex_LD;
-} COMMAND_INFO;
 
 typedef struct {
   WORD wPosToEncoderDir;

@@ -57,15 +57,139 @@ MCC_API int MCC_CALL MCC_CheckDryRun(void);
 MCC_API int MCC_CALL MCC_SetSysMaxSpeed(double dfMaxSpeed);
 MCC_API double MCC_CALL MCC_GetSysMaxSpeed(void);
 
+/* Coordinate Management */
+MCC_API int MCC_CALL MCC_SetAbsolute(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetIncrease(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetCoordType(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetCurRefPos(double *pdfX, double *pdfY, double *pdfZ, double *pdfU, double *pdfV, double *pdfW, double *pdfA, double *pdfB, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetCurPos(double *pdfX, double *pdfY, double *pdfZ, double *pdfU, double *pdfV, double *pdfW, double *pdfA, double *pdfB, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPulsePos(long *plX, long *plY, long *plZ, long *plU, long *plV, long *plW, long *plA, long *plB, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPulsePosEx(long long *plX, long long *plY, long long *plZ, long long *plU, long long *plV, long long *plW, long long *plA, long long *plB, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DefineOrigin(WORD wAxis, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DefinePos(WORD wAxis, double dfPos, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DefinePosHere(WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+
+/* General Motions(Line, Arc, Circle Motions) */
+MCC_API int MCC_CALL MCC_SetAccType(char cAccType, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetAccType(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDecType(char cDecType, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetDecType(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetAccTime(double dfAccTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetAccTime(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDecTime(double dfDecTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetDecTime(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_SetFeedSpeed(double dfFeedSpeed, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetFeedSpeed(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetCurFeedSpeed(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetSpeed(double *pdfVel0, double *pdfVel1, double *pdfVel2, double *pdfVel3, double *pdfVel4, double *pdfVel5, double *pdfVel6, double *pdfVel7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_SetPtPSpeed(double dfRatio, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetPtPSpeed(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtP(double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_SyncPtP(double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_PtPX(double dfX, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPY(double dfY, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPZ(double dfZ, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPU(double dfU, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPV(double dfV, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPW(double dfW, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPA(double dfA, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtPB(double dfB, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_Line(double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_ArcXYZ(double dfRX0, double dfRX1, double dfRX2, double dfX0, double dfX1, double dfX2, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcXY(double dfRX0, double dfRX1, double dfX0, double dfX1, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcYZ(double dfRX1, double dfRX2, double dfX1, double dfX2, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcZX(double dfRX2, double dfRX0, double dfX2, double dfX0, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcXYZ_Aux(double dfRX0, double dfRX1, double dfRX2, double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcXY_Aux(double dfRX0, double dfRX1, double dfX0, double dfX1, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcYZ_Aux(double dfRX1, double dfRX2, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcZX_Aux(double dfRX2, double dfRX0, double dfX2, double dfX0, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcThetaXY(double dfCX, double dfCY, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcThetaYZ(double dfCY, double dfCZ, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ArcThetaZX(double dfCZ, double dfCX, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleXY(double dfCX, double dfCY, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleYZ(double dfCY, double dfCZ, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleZX(double dfCZ, double dfCX, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleXY_Aux(double dfCX, double dfCY, double dfU, double dfV, double dfW, double dfA, double dfB, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleYZ_Aux(double dfCY, double dfCZ, double dfU, double dfV, double dfW, double dfA, double dfB, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleZX_Aux(double dfCZ, double dfCX, double dfU, double dfV, double dfW, double dfA, double dfB, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicalXY_Z(double dfCX, double dfCY, double dfPitch, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicalYZ_X(double dfCY, double dfCZ, double dfPitch, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicalZX_Y(double dfCZ, double dfCX, double dfPitch, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicalXY_Z_Aux(double dfCX, double dfCY, double dfPitch, double dfU, double dfV, double dfW, double dfA, double dfB, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicalYZ_X_Aux(double dfCY, double dfCZ, double dfPitch, double dfU, double dfV, double dfW, double dfA, double dfB, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicalZX_Y_Aux(double dfCZ, double dfCX, double dfPitch, double dfU, double dfV, double dfW, double dfA, double dfB, double dfTheta, WORD wGroupIndex MCC_DEFAULT(0));
+
+/* Jog Motion */
+MCC_API int MCC_CALL MCC_JogPulse(int nPulse, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_JogSpace(double dfOffset, double dfRatio, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_JogConti(int nDir, double dfRatio, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
+
+/* Point-to-Point Motion */
+MCC_API int MCC_CALL MCC_SetPtPAccType(char cAccType0, char cAccType1, char cAccType2, char cAccType3, char cAccType4, char cAccType5, char cAccType6, char cAccType7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPtPAccType(char *pcAccType0, char *pcAccType1, char *pcAccType2, char *pcAccType3, char *pcAccType4, char *pcAccType5, char *pcAccType6, char *pcAccType7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetPtPDecType(char cDecType0, char cDecType1, char cDecType2, char cDecType3, char cDecType4, char cDecType5, char cDecType6, char cDecType7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPtPDecType(char *pcDecType0, char *pcDecType1, char *pcDecType2, char *pcDecType3, char *pcDecType4, char *pcDecType5, char *pcDecType6, char *pcDecType7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetPtPAccTime(double dfAccTime0, double dfAccTime1, double dfAccTime2, double dfAccTime3, double dfAccTime4, double dfAccTime5, double dfAccTime6, double dfAccTime7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPtPAccTime(double *pdfAccTime0, double *pdfAccTime1, double *pdfAccTime2, double *pdfAccTime3, double *pdfAccTime4, double *pdfAccTime5, double *pdfAccTime6, double *pdfAccTime7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetPtPDecTime(double dfDecTime0, double dfDecTime1, double dfDecTime2, double dfDecTime3, double dfDecTime4, double dfDecTime5, double dfDecTime6, double dfDecTime7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPtPDecTime(double *pdfDecTime0, double *pdfDecTime1, double *pdfDecTime2, double *pdfDecTime3, double *pdfDecTime4, double *pdfDecTime5, double *pdfDecTime6, double *pdfDecTime7, WORD wGroupIndex MCC_DEFAULT(0));
+
 /* Motion Status */
 MCC_API int MCC_CALL MCC_GetMotionStatus(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetCurCommand(COMMAND_INFO *pstCurCommand, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetCommandCount(int *pnCmdCount, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ResetCommandIndex(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ResetCommandIndexLD(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetCommandIndex(WORD wIndex, BOOL bManualIndex, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetCommandIndex(WORD *wIndex, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetMaxPulseStockNum(int nMaxStockNum);
+MCC_API int MCC_CALL MCC_GetMaxPulseStockNum(void);
+MCC_API int MCC_CALL MCC_GetCurPulseStockCount(WORD *pwStockCount, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetErrorCode(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ClearError(WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Go Home */
 MCC_API int MCC_CALL MCC_SetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 
 /* Trajectory Planning */
+MCC_API int MCC_CALL MCC_HoldMotion(WORD wGroupIndex MCC_DEFAULT(0), BOOL bBlockEnd MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ContiMotion(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_AbortMotion(WORD wGroupIndex MCC_DEFAULT(0), BOOL bBlockEnd MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_AbortMotionEx(double dfDecTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableSingleBlock(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableSingleBlock(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_RunSingleBlock(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableBlendInstant(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableBlendInstant(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableBlend(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableBlend(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CheckBlend(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DelayMotion(DWORD dwTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CheckDelay(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API void MCC_CALL MCC_TimeDelay(DWORD dwTime);
+MCC_API double MCC_CALL MCC_OverrideSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_OverrideSpeedEx(double dfRate, BOOL bInstant MCC_DEFAULT(1), WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetOverrideRate(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_FixSpeed(BOOL bFix, WORD wGroupIndex MCC_DEFAULT(0));
+
+/* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") */
+MCC_API int MCC_CALL MCC_LineX(double dfX, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineY(double dfY, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineZ(double dfZ, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineU(double dfU, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineV(double dfV, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineW(double dfW, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineA(double dfA, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_LineB(double dfB, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicaXY_Z(double dfCX, double dfCY, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+
+/* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2) */
+MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -21,6 +21,10 @@ use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
 
+/// A command whose own time is within this of its end has ended (1 ns: far below a tick,
+/// far above the rounding of summing millions of ticks).
+const TIME_EPS: f64 = 1e-9;
+
 /// Converts between real time within a tick and a command's own time: general and PtP
 /// motion run at the group's rate, delays in real time (paused while held).
 #[derive(Debug, Clone, Copy)]
@@ -331,6 +335,22 @@ impl GroupState {
         }
     }
 
+    /// `MCC_ChangeFeedSpeed`: later general motion uses feed `v`; the running general
+    /// motion ramps to it through the override ratio (v / its feed).
+    pub fn change_feed_speed(&mut self, v: f64) {
+        self.settings.feed = v;
+        let running_feed = self.running.back().and_then(|r| match r.cmd.plan {
+            Plan::Path(_) => Some(r.cmd.info_feed),
+            _ => None,
+        });
+        if let Some(f) = running_feed {
+            if f > 0.0 {
+                self.override_speed(100.0 * v / f, true);
+                self.pending_override = Some(100.0);
+            }
+        }
+    }
+
     /// `MCC_FixSpeed`.
     pub fn fix_speed(&mut self, fixed: bool) {
         self.fixed_speed = fixed;
@@ -390,6 +410,27 @@ impl GroupState {
         self.pos
     }
 
+    /// `MCC_DefinePosHere`: the command position of axis `i` becomes the position the card
+    /// has output (its pulse count in UU); only when stopped.
+    pub fn sync_to_output(&mut self, i: usize) -> McclResult<()> {
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        let f = self.axes[i].factor;
+        if f != 0.0 {
+            let here = self.pulses(i) as f64 / f - self.offset[i];
+            self.pos[i] = here;
+            self.base[i] = here;
+            self.queue_end[i] = here;
+        }
+        Ok(())
+    }
+
+    /// The current reference position of axis `i` (user position + offset).
+    pub fn ref_pos(&self, i: usize) -> f64 {
+        self.pos[i] + self.offset[i]
+    }
+
     /// Time scale the group runs at when not held.
     fn target_rate(&self) -> f64 {
         if self.fixed_speed {
@@ -414,7 +455,8 @@ impl GroupState {
     }
 
     fn ramp_to(&mut self, target: f64, secs: f64) {
-        if secs <= 0.0 || (target - self.rate).abs() < 1e-15 {
+        // With nothing moving there is no speed to smooth: the new rate holds at once.
+        if secs <= 0.0 || (target - self.rate).abs() < 1e-15 || self.running.is_empty() {
             self.rate = target;
             self.ramp = None;
         } else {
@@ -522,10 +564,10 @@ impl GroupState {
                 return;
             };
             let dur = first.cmd.duration();
-            if first.tau < dur {
+            if first.tau < dur - TIME_EPS {
                 return;
             }
-            let spare = clock.real_time(first.tau - dur, &first.cmd);
+            let spare = clock.real_time((first.tau - dur).max(0.0), &first.cmd);
             let Some(done) = self.running.pop_front() else {
                 return;
             };
@@ -568,10 +610,10 @@ impl GroupState {
             return false;
         };
         let ds = m.decel_start();
-        if last.tau < ds || last.tau >= m.duration() || m.duration() <= 0.0 {
+        if last.tau < ds - TIME_EPS || last.tau >= m.duration() - TIME_EPS || m.duration() <= 0.0 {
             return false;
         }
-        let over = last.tau - ds;
+        let over = (last.tau - ds).max(0.0);
         if !matches!(self.peek_motion(), Some(Plan::Path(_))) {
             return false;
         }

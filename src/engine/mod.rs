@@ -99,6 +99,15 @@ impl Shared {
         }
     }
 
+    /// Whether a group driving channel `ch` of `card` is moving.
+    pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
+        self.groups.iter().any(|g| {
+            let g = g.lock();
+            g.status() == crate::vendor::consts::GMS_RUNNING
+                && g.axes.iter().any(|a| a.channel == Some((card, ch)))
+        })
+    }
+
     /// Whether any group has work (the fast clock ticks while this is true).
     pub fn busy(&self) -> bool {
         self.groups.iter().any(|g| g.lock().busy())

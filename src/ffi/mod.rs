@@ -2,6 +2,10 @@
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
 //! plain `#[no_mangle] pub extern "C" fn` whose body calls [`guard`] and the core.
 
+pub mod coordinate;
+pub mod jog;
+pub mod motion;
+pub mod ptp;
 pub mod status;
 pub mod system;
 pub mod trajectory;
@@ -98,3 +102,117 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_motion;
+
+/// Runs `f` on running group `g` with its lock held, then publishes the group's state and
+/// wakes a fast clock. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
+/// that does not run.
+pub fn with_group<R>(
+    g: u16,
+    f: impl FnOnce(&mut crate::engine::group::GroupState) -> McclResult<R>,
+) -> McclResult<R> {
+    let shared = crate::system::active()?;
+    let mut grp = shared.group(g)?;
+    let r = f(&mut grp);
+    // Published on failure too: a refused arc still records its error (0xF104).
+    shared.publish(&grp);
+    drop(grp);
+    shared.kick();
+    r
+}
+
+/// Changes running group `g` with `f` (see [`with_group`]); returns `NO_ERR`.
+pub fn update_group(
+    g: u16,
+    f: impl FnOnce(&mut crate::engine::group::GroupState),
+) -> McclResult<c_int> {
+    with_group(g, |grp| {
+        f(grp);
+        Ok(crate::vendor::consts::NO_ERR)
+    })
+}
+
+/// Plans a command with the group's context at call time and queues it; returns the
+/// command index. A degenerate arc also records error 0xF104 (user manual §2.6.3 VI).
+pub fn queue(
+    g: u16,
+    plan: impl FnOnce(&crate::engine::command::Ctx<'_>) -> McclResult<crate::engine::command::Command>,
+) -> McclResult<c_int> {
+    with_group(g, |grp| {
+        let cmd = plan(&grp.ctx())?;
+        grp.enqueue(cmd)
+    })
+}
+
+/// Like [`queue`] for arcs, circles and helices: geometry errors record 0xF104.
+pub fn queue_curve(
+    g: u16,
+    plan: impl FnOnce(
+        &crate::engine::command::Ctx<'_>,
+    ) -> Result<crate::planner::Path, crate::planner::PlanError>,
+    helix: bool,
+) -> McclResult<c_int> {
+    with_group(g, |grp| {
+        let path = match plan(&grp.ctx()) {
+            Ok(p) => p,
+            Err(crate::planner::PlanError::BadArc) => {
+                grp.set_error(ERR_BAD_ARC);
+                return Err(McclError::Parameter);
+            }
+            Err(_) => return Err(McclError::Parameter),
+        };
+        let cmd = grp.ctx().curve(path, helix)?;
+        grp.enqueue(cmd)
+    })
+}
+
+/// Error record of a bad arc or circle command (DECISIONS.md).
+pub const ERR_BAD_ARC: i32 = 0xF104;
+
+/// An axis named by the vendor's `char cAxis`: 0..7, or the letters X Y Z U V W A B.
+pub fn axis(c: std::os::raw::c_char) -> McclResult<usize> {
+    let b = c as u8;
+    match b {
+        0..=7 => Ok(usize::from(b)),
+        _ => b"XYZUVWAB"
+            .iter()
+            .position(|&l| l == b.to_ascii_uppercase())
+            .ok_or(McclError::Parameter),
+    }
+}
+
+/// An acc/dec shape from the vendor's `char`: 'T' or 'S' (either case).
+pub fn shape(c: std::os::raw::c_char) -> McclResult<crate::planner::Shape> {
+    crate::planner::Shape::from_char((c as u8).to_ascii_uppercase()).ok_or(McclError::Parameter)
+}
+
+/// The vendor's `char` for a shape.
+pub fn shape_char(s: crate::planner::Shape) -> std::os::raw::c_char {
+    (match s {
+        crate::planner::Shape::T => b'T',
+        crate::planner::Shape::S => b'S',
+    }) as std::os::raw::c_char
+}
+
+/// Checks 8 output pointers (all must be non-NULL) before anything is written.
+pub fn outs8<T>(p: &[*mut T; 8]) -> McclResult<()> {
+    p.iter().try_for_each(|&q| out_ok(q))
+}
+
+/// Writes 8 values through pointers checked with [`outs8`].
+///
+/// # Safety
+/// Every pointer must be non-null and writable.
+pub unsafe fn write8<T: Copy>(p: &[*mut T; 8], v: [T; 8]) {
+    for (q, x) in p.iter().zip(v) {
+        // SAFETY: the caller checked the pointers and guarantees they are writable.
+        unsafe { write_out(*q, x) };
+    }
+}
+
+/// Checks that 8 numbers from C are finite.
+pub fn finite8(v: [f64; 8]) -> McclResult<[f64; 8]> {
+    v.iter().try_for_each(|&x| finite(x).map(|_| ()))?;
+    Ok(v)
+}

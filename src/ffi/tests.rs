@@ -13,7 +13,7 @@ use std::ptr::null_mut;
 static SERIAL: Mutex<()> = Mutex::new(());
 
 /// Locks the system for one test and starts from a closed system with default config.
-fn fresh() -> parking_lot::MutexGuard<'static, ()> {
+pub(super) fn fresh() -> parking_lot::MutexGuard<'static, ()> {
     let g = SERIAL.lock();
     let _ = MCC_CloseSystem();
     crate::system::with(|s| s.config = crate::config::Config::default());
@@ -29,6 +29,13 @@ fn cards(n: usize) -> Vec<SYS_CARD_CONFIG> {
         };
         n
     ]
+}
+
+/// Starts the system with `n` cards and an interpolation period of `ms`.
+pub(super) fn init_ms(n: usize, ms: i32) -> i32 {
+    let mut c = cards(n);
+    // SAFETY: c holds n valid SYS_CARD_CONFIG.
+    unsafe { MCC_InitSystem(ms, c.as_mut_ptr(), n as u16) }
 }
 
 fn init(n: usize) -> i32 {

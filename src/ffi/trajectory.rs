@@ -17,3 +17,187 @@ pub extern "C" fn MCC_TimeDelay(dwTime: DWORD) {
         Ok(())
     })
 }
+
+use super::{finite, queue, with_group};
+use crate::engine::command::Plan;
+use crate::error::McclError;
+use crate::vendor::consts as c;
+use crate::vendor::{BOOL, WORD};
+use std::os::raw::c_int;
+
+/// Decelerates to a stop with the running command's deceleration time and holds
+/// (`GMS_HOLD`); with `bBlockEnd` TRUE, holds when the running command ends.
+/// `HOLD_ILLEGAL_ERR` when nothing runs or the group is already held.
+#[no_mangle]
+pub extern "C" fn MCC_HoldMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
+    guard(|| with_group(wGroupIndex, |g| g.hold(bBlockEnd != 0)).map(|()| c::NO_ERR))
+}
+
+/// Resumes held motion with the command's acceleration time (`CONTI_ILLEGAL_ERR` unless
+/// held).
+#[no_mangle]
+pub extern "C" fn MCC_ContiMotion(wGroupIndex: WORD) -> c_int {
+    guard(|| with_group(wGroupIndex, |g| g.conti()).map(|()| c::NO_ERR))
+}
+
+/// Stops at once and empties the queue; with `bBlockEnd` TRUE the running command
+/// finishes first.
+#[no_mangle]
+pub extern "C" fn MCC_AbortMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
+    guard(|| super::update_group(wGroupIndex, |g| g.abort(0.0, bBlockEnd != 0)))
+}
+
+/// Empties the queue and stops within `dfDecTime` ms (0: at once). While it decelerates,
+/// new motion commands are refused with `ABORT_NOT_FINISH_ERR`.
+#[no_mangle]
+pub extern "C" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
+    guard(|| {
+        let t = finite(dfDecTime)?;
+        if t < 0.0 {
+            return Err(McclError::Parameter);
+        }
+        super::update_group(wGroupIndex, |g| g.abort(t / 1000.0, false))
+    })
+}
+
+/// Single-block mode on: after each command the group waits (`GMS_HOLD`) for
+/// `MCC_RunSingleBlock`.
+#[no_mangle]
+pub extern "C" fn MCC_EnableSingleBlock(wGroupIndex: WORD) -> c_int {
+    guard(|| super::update_group(wGroupIndex, |g| g.set_single_block(true)))
+}
+
+/// Single-block mode off.
+#[no_mangle]
+pub extern "C" fn MCC_DisableSingleBlock(wGroupIndex: WORD) -> c_int {
+    guard(|| super::update_group(wGroupIndex, |g| g.set_single_block(false)))
+}
+
+/// Lets the next command run in single-block mode (`COMMAND_NOTACCEPTED_ERR` when the
+/// mode is off).
+#[no_mangle]
+pub extern "C" fn MCC_RunSingleBlock(wGroupIndex: WORD) -> c_int {
+    guard(|| with_group(wGroupIndex, |g| g.run_single_block()).map(|()| c::NO_ERR))
+}
+
+/// Blending on, effective at once (not through the queue).
+#[no_mangle]
+pub extern "C" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
+    guard(|| super::update_group(wGroupIndex, |g| g.set_blend_now(true)))
+}
+
+/// Blending off, effective at once.
+#[no_mangle]
+pub extern "C" fn MCC_DisableBlendInstant(wGroupIndex: WORD) -> c_int {
+    guard(|| super::update_group(wGroupIndex, |g| g.set_blend_now(false)))
+}
+
+/// Queues "blending on": general motions after it start while the previous one
+/// decelerates. Returns the command index.
+#[no_mangle]
+pub extern "C" fn MCC_EnableBlend(wGroupIndex: WORD) -> c_int {
+    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(true)))))
+}
+
+/// Queues "blending off". Returns the command index.
+#[no_mangle]
+pub extern "C" fn MCC_DisableBlend(wGroupIndex: WORD) -> c_int {
+    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(false)))))
+}
+
+/// 0 when blending is on (as the end of the queue will have it), 1 when off.
+#[no_mangle]
+pub extern "C" fn MCC_CheckBlend(wGroupIndex: WORD) -> c_int {
+    guard(|| with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued))))
+}
+
+/// Queues a delay of `dwTime` ms before the next command (`GMS_DELAYING` meanwhile).
+/// Returns the command index.
+#[no_mangle]
+pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
+    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.delay(f64::from(dwTime)))))
+}
+
+/// 0 while the group is delaying, 1 otherwise (the sense of `MCC_CheckBlend`).
+#[no_mangle]
+pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
+    guard(|| {
+        let s = system::active()?.snapshot(wGroupIndex)?;
+        Ok(c_int::from(s.status != c::GMS_DELAYING))
+    })
+}
+
+fn override_rate(r: f64) -> Result<f64, McclError> {
+    let r = finite(r)?;
+    if r <= 0.0 || r > MAX_OVERRIDE {
+        Err(McclError::Parameter)
+    } else {
+        Ok(r)
+    }
+}
+
+/// Largest override ratio accepted, percent.
+pub const MAX_OVERRIDE: f64 = 1000.0;
+
+/// Scales the running and all later motion to `dfRate` percent of the planned speed
+/// (0 < rate <= 1000), ramping with the acc (faster) or dec (slower) time. Returns the
+/// rate now in effect.
+#[no_mangle]
+pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
+    MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex)
+}
+
+/// [`MCC_OverrideSpeed`]; with `bInstant` FALSE the new rate applies from the next
+/// command instead of the running one.
+#[no_mangle]
+pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: WORD) -> f64 {
+    guard(|| {
+        let r = override_rate(dfRate)?;
+        with_group(wGroupIndex, |g| {
+            g.override_speed(r, bInstant != 0);
+            Ok(r)
+        })
+    })
+}
+
+/// The override ratio, percent.
+#[no_mangle]
+pub extern "C" fn MCC_GetOverrideRate(wGroupIndex: WORD) -> f64 {
+    guard(|| with_group(wGroupIndex, |g| Ok(g.override_pct)))
+}
+
+/// With `bFix` TRUE the override no longer changes speeds (motion runs at 100 %).
+#[no_mangle]
+pub extern "C" fn MCC_FixSpeed(bFix: BOOL, wGroupIndex: WORD) -> c_int {
+    guard(|| super::update_group(wGroupIndex, |g| g.fix_speed(bFix != 0)))
+}
+
+/// Obsolete name of [`MCC_OverrideSpeed`].
+#[no_mangle]
+pub extern "C" fn MCC_SetOverSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
+    MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex)
+}
+
+/// Obsolete name of [`MCC_GetOverrideRate`].
+#[no_mangle]
+pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
+    MCC_GetOverrideRate(wGroupIndex)
+}
+
+/// Obsolete: changes the feed speed of the running general motion and of the following
+/// ones to `dfSpeed` UU/s (the running command ramps to it through the override ratio).
+/// Returns the feed speed now in effect.
+#[no_mangle]
+pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
+    guard(|| {
+        let v = finite(dfSpeed)?;
+        if v <= 0.0 {
+            return Err(McclError::Parameter);
+        }
+        let v = v.min(system::with(|s| s.config.sys_max_speed));
+        with_group(wGroupIndex, |g| {
+            g.change_feed_speed(v);
+            Ok(v)
+        })
+    })
+}
