@@ -68,6 +68,9 @@ struct Inner {
     kicks: u64,
     stop: bool,
     missed: u64,
+    /// The earliest tick count a waiter waits for: `tick_done` wakes waiters only then,
+    /// so a long `MCC_TimeDelay` costs no context switch per tick.
+    wake_at: u64,
 }
 
 /// The clock shared by the engine thread and the program's threads.
@@ -95,6 +98,7 @@ impl Clock {
                 kicks: 0,
                 stop: false,
                 missed: 0,
+                wake_at: u64::MAX,
             }),
             cv: Condvar::new(),
             engine_thread: OnceCell::new(),
@@ -198,9 +202,12 @@ impl Clock {
 
     /// Called by the engine thread after a tick (and its callbacks) completed.
     pub fn tick_done(&self) {
-        let _g = self.inner.lock();
-        self.ticks.fetch_add(1, Ordering::AcqRel);
-        self.cv.notify_all();
+        let mut g = self.inner.lock();
+        let now = self.ticks.fetch_add(1, Ordering::AcqRel) + 1;
+        if now >= g.wake_at {
+            g.wake_at = u64::MAX;
+            self.cv.notify_all();
+        }
     }
 
     /// Tells a fast clock that work may have arrived (e.g. a command was queued).
@@ -245,6 +252,7 @@ impl Clock {
         }
         self.cv.notify_all();
         while !g.stop && self.ticks() < target {
+            g.wake_at = g.wake_at.min(target);
             self.cv.wait(&mut g);
         }
     }

@@ -21,6 +21,16 @@ use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
 
+/// Rounds to the nearest whole pulse (halves away from zero) with a float-to-int
+/// conversion instead of a libm call: this runs for every axis on every tick.
+fn round_pulses(x: f64) -> i64 {
+    if x >= 0.0 {
+        (x + 0.5) as i64
+    } else {
+        (x - 0.5) as i64
+    }
+}
+
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
 /// far above the rounding of summing millions of ticks).
 const TIME_EPS: f64 = 1e-9;
@@ -148,7 +158,9 @@ impl GroupState {
             blend_queued: false,
             override_pct: 100.0,
             fixed_speed: false,
-            queue: VecDeque::new(),
+            // Reserved up front (address space only until used): no reallocation, and so
+            // no latency spike, while a program fills the queue.
+            queue: VecDeque::with_capacity(def.queue_size),
             queue_end: [0.0; AXES],
             running: VecDeque::new(),
             base: [0.0; AXES],
@@ -701,9 +713,10 @@ impl GroupState {
         }
     }
 
-    /// Pulse position of axis `i`: round(reference position x pulses per UU).
+    /// Pulse position of axis `i`: round(reference position x pulses per UU), halves away
+    /// from zero.
     pub fn pulses(&self, i: usize) -> i64 {
-        ((self.pos[i] + self.offset[i]) * self.axes[i].factor).round() as i64
+        round_pulses((self.pos[i] + self.offset[i]) * self.axes[i].factor)
     }
 
     /// The state to publish.

@@ -47,6 +47,9 @@ pub struct Shared {
     groups: Vec<Mutex<GroupState>>,
     /// Published state per group slot.
     snaps: Vec<SnapshotCell>,
+    /// Per running group: whether it has work (published with its snapshot), so the fast
+    /// clock can ask without locking every group each tick.
+    busy: Vec<AtomicBool>,
     /// Pulse counter per card and channel (what the card has output).
     pub pulse_counter: Vec<[AtomicI64; AXES]>,
     /// `MCC_EnableDryRun` is in effect.
@@ -87,12 +90,16 @@ impl Shared {
     /// Publishes a group's state (call with its lock held) and, unless dry-running, the
     /// pulse counters of its channels.
     pub fn publish(&self, g: &GroupState) {
-        self.snaps[g.index].store(&g.snapshot());
+        let snap = g.snapshot();
+        self.snaps[g.index].store(&snap);
+        if let Some(Some(n)) = self.slots.get(g.index) {
+            self.busy[*n].store(g.busy(), Ordering::Release);
+        }
         if !self.dry_run.load(Ordering::Relaxed) {
             for (i, ax) in g.axes.iter().enumerate() {
                 if let Some((card, ch)) = ax.channel {
                     if let Some(c) = self.pulse_counter.get(card) {
-                        c[ch].store(g.pulses(i), Ordering::Relaxed);
+                        c[ch].store(snap.pulses[i], Ordering::Relaxed);
                     }
                 }
             }
@@ -110,7 +117,7 @@ impl Shared {
 
     /// Whether any group has work (the fast clock ticks while this is true).
     pub fn busy(&self) -> bool {
-        self.groups.iter().any(|g| g.lock().busy())
+        self.busy.iter().any(|b| b.load(Ordering::Acquire))
     }
 
     /// Every running group, locked one at a time.
@@ -179,6 +186,7 @@ impl Engine {
         let shared = Arc::new(Shared {
             clock: Clock::new(mode, period),
             slots,
+            busy: (0..gs.len()).map(|_| AtomicBool::new(false)).collect(),
             groups: gs,
             snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
             pulse_counter: (0..cards)

@@ -1,0 +1,112 @@
+//! `cargo bench --bench engine`: prints the numbers of issue #3's performance goals.
+//!
+//! * `MCC_GetCurPos` latency (median, p99) while the engine runs 48 moving groups,
+//! * `MCC_Line` enqueue latency (median, p99),
+//! * engine cost per tick with 48 groups x 8 axes all moving, and how many times faster
+//!   than real time the fast clock runs them at a 1 ms period.
+//!
+//! Latencies are measured over batches of 100 calls (the clock's own cost is ~20 ns, too
+//! close to one call); the median and p99 are over 2000 batches, per call.
+
+use std::time::Instant;
+use MCCLPCI_IMP::ffi::coordinate::MCC_GetCurPos;
+use MCCLPCI_IMP::ffi::motion::{MCC_Line, MCC_SetFeedSpeed};
+use MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::trajectory::MCC_AbortMotion;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::SYS_CARD_CONFIG;
+
+const GROUPS: i32 = 48;
+
+fn percentile(v: &mut [f64], p: f64) -> f64 {
+    v.sort_by(|a, b| a.total_cmp(b));
+    v[((v.len() - 1) as f64 * p).round() as usize]
+}
+
+fn batches(n: usize, mut f: impl FnMut()) -> (f64, f64) {
+    let mut per_call = Vec::with_capacity(n);
+    for _ in 0..n {
+        let t = Instant::now();
+        for _ in 0..100 {
+            f();
+        }
+        per_call.push(t.elapsed().as_nanos() as f64 / 100.0);
+    }
+    (
+        percentile(&mut per_call, 0.5),
+        percentile(&mut per_call, 0.99),
+    )
+}
+
+fn init(clock: &str) {
+    std::env::set_var("MCCL_CLOCK", clock);
+    MCC_CloseSystem();
+    assert_eq!(MCC_CloseAllGroups(), NO_ERR);
+    for g in 0..GROUPS {
+        // 6 cards x 8 groups; every group drives all 8 channels of its card.
+        assert_eq!(MCC_CreateGroup(0, 1, 2, 3, 4, 5, 6, 7, g / 8), g);
+    }
+    let mut cards = [SYS_CARD_CONFIG {
+        wCardType: IMP_III_8_AXIS_PCI_CARD,
+        ..Default::default()
+    }; 6];
+    // SAFETY: 6 valid card descriptions.
+    assert_eq!(unsafe { MCC_InitSystem(1, cards.as_mut_ptr(), 6) }, NO_ERR);
+}
+
+fn start_all_moving(len: f64) {
+    for g in 0..GROUPS as u16 {
+        MCC_SetFeedSpeed(10.0, g);
+        let r = MCC_Line(len, len, len, len, len, len, len, len, g, IMP_AXIS_ALL);
+        assert!(r >= 0);
+    }
+}
+
+fn main() {
+    // Engine cost and fast-clock ratio: 48 groups, 8 axes each, all moving for 10 s of
+    // virtual time (10,000 ticks of 1 ms).
+    init("fast");
+    start_all_moving(100.0);
+    let t = Instant::now();
+    MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(10_000);
+    let wall = t.elapsed().as_secs_f64();
+    let moving = (0..GROUPS as u16).all(|g| MCC_GetMotionStatus(g) == GMS_RUNNING);
+    println!("engine: 48 groups x 8 axes moving, 10000 ticks of 1 ms: {wall:.3} s wall");
+    println!(
+        "  cost per tick: {:.2} us (target < 20 us)",
+        wall / 10_000.0 * 1e6
+    );
+    println!(
+        "  fast clock: {:.0}x real time (target >= 500x)",
+        10.0 / wall
+    );
+    assert!(moving, "all groups still moving during the measurement");
+
+    // Read path while the engine keeps ticking on the other core.
+    let reader = std::thread::spawn(|| {
+        let mut p = [0.0f64; 8];
+        batches(2000, || {
+            let [a, b, c, d, e, f, g, h] = &mut p;
+            // SAFETY: eight valid pointers.
+            unsafe { MCC_GetCurPos(a, b, c, d, e, f, g, h, 7) };
+        })
+    });
+    MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(100_000);
+    let (med, p99) = reader.join().unwrap();
+    println!("MCC_GetCurPos while 48 groups move: median {med:.0} ns, p99 {p99:.0} ns (target median < 100 ns)");
+    for g in 0..GROUPS as u16 {
+        MCC_AbortMotion(g, 0);
+    }
+
+    // Enqueue: MCC_Line into an idle stepped-clock group (nothing ticks meanwhile).
+    init("stepped");
+    MCC_SetFeedSpeed(10.0, 0);
+    let mut x = 0.0;
+    let (med, p99) = batches(90, || {
+        x += 0.001;
+        MCC_Line(x, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL);
+    });
+    println!("MCC_Line enqueue: median {med:.0} ns, p99 {p99:.0} ns (target < 1 us)");
+    MCC_CloseSystem();
+}
