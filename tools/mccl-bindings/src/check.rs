@@ -14,7 +14,6 @@
 
 use crate::model::{CType, Header, WIN};
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 
 /// The sizes of the vendor structs (INTERFACE.md §3.2-3.3, Windows layout).
 pub const KNOWN_SIZES: &[(&str, usize)] = &[
@@ -1854,24 +1853,6 @@ pub fn verify_binding(
     r.fields = n_fields;
     r.delegates = n_delegates;
     r.consts = n_consts;
-}
-
-/// Renders a binding's signatures (for debugging the parsers).
-#[allow(dead_code)]
-pub fn dump(b: &Binding) -> String {
-    let mut o = String::new();
-    for e in &b.externs {
-        let ps: Vec<String> = e.params.iter().map(|p| show(&p.abi)).collect();
-        let _ = writeln!(
-            o,
-            "{} -> {}: {} ({})",
-            e.name,
-            e.entry,
-            show(&e.ret),
-            ps.join(", ")
-        );
-    }
-    o
 }
 
 #[cfg(test)]

@@ -376,7 +376,9 @@ pub fn csharp(h: &Header) -> Result<String, String> {
 // * Types: WORD=ushort, DWORD=uint, int=int, BYTE=byte, char=sbyte, BOOL=bool (4-byte Win32
 //   BOOL), char* = StringBuilder (or byte[]), T* = ref T, SYS_CARD_CONFIG* = ref or array.
 //   C long is int-shaped here; the native width (4 on Windows, 8 on LP64 Linux) is marshalled
-//   inside.
+//   inside. MCC_GetVersion has a StringBuilder and a byte[] overload (so pass a buffer, not null).
+// * Calling convention: the platform default (Winapi) for functions and callback delegates,
+//   i.e. stdcall on 32-bit Windows like the vendor's MCC_CALL/MCC_CALLBACK; x86-64 has only one.
 using System;
 using System.Runtime.InteropServices;
 using System.Text;

@@ -574,3 +574,102 @@ fn future_csharp_compiles_with_mcs() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+const STUB_C: &str = r#"
+#include <stdint.h>
+typedef struct { uint16_t a; double d; uint16_t tail; } S;
+typedef void (*CB)(S *);
+int MCC_GetENCValue(long *p, uint16_t ch, uint16_t card) { *p = -123456789L - ch - card; return (int)sizeof(long); }
+int MCC_SetENCValue(long v, uint16_t ch, uint16_t card) { return v == -7 ? (int)(ch + card) : -1; }
+long MCC_GetLong(unsigned long *pu, long long *pll) { *pu = 4000000000UL; *pll = -(1LL << 40); return -2; }
+static long last;
+void MCC_VoidLong(long l) { last = l; }
+int MCC_Hold(uint16_t g, int b) { return g * 10 + (b != 0) + (int)last * 100; }
+int MCC_IsOn(int *pb, char c, void *pv, CB f, uint32_t mask) {
+    S s = {7, 2.5, 9};
+    *pb = 1;
+    if (f) f(&s);
+    return c == 'x' && pv == 0 && mask == 255 && s.a == 8 && s.tail == 9;
+}
+"#;
+
+const STUB_CS: &str = r#"
+using System;
+public static class P {
+    static int fails;
+    static void Eq(object a, object b, string w) { if (!a.Equals(b)) { fails++; Console.WriteLine("FAIL " + w + ": " + a + " != " + b); } }
+    static void Cb(ref S s) { s.a = (ushort)(s.a + 1); }
+    public static int Main() {
+        int v = 0;
+        Eq(MCCL.MCC_GetENCValue(ref v, 1, 2), IntPtr.Size, "sizeof(long) seen by C");
+        Eq(v, -123456792, "long* out through the int-shaped wrapper");
+        Eq(MCCL.MCC_SetENCValue(-7, 3), 3, "long by value, default argument");
+        uint u = 0; long ll = 0;
+        Eq(MCCL.MCC_GetLong(ref u, ref ll), -2, "long return");
+        Eq(u, 4000000000u, "unsigned long* out");
+        Eq(ll, -(1L << 40), "long long* out");
+        MCCL.MCC_VoidLong(5);
+        Eq(MCCL.MCC_Hold(3, true), 531, "BOOL by value (and the earlier long)");
+        bool b = false;
+        MCCL.CB cb = Cb;
+        Eq(MCCL.MCC_IsOn(ref b, (sbyte)'x', IntPtr.Zero, cb), true, "BOOL return, char, void*, callback writing through ref S");
+        Eq(b, true, "BOOL* out");
+        GC.KeepAlive(cb);
+        Console.WriteLine(fails == 0 ? "OK" : "FAILED");
+        return fails;
+    }
+}
+"#;
+
+/// Runs the generated C# for the future types (C long wrappers, BOOL, char, void*, callback)
+/// under Mono against a C stub library, when cc, mcs and mono are installed.
+#[test]
+fn future_csharp_runs_under_mono_against_a_c_stub() {
+    let have = |t: &str, a: &str| {
+        std::process::Command::new(t)
+            .arg(a)
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    if !(have("cc", "--version") && have("mcs", "--version") && have("mono", "--version")) {
+        eprintln!("cc/mcs/mono not installed: runtime check skipped");
+        return;
+    }
+    let h = header(FUTURE_H, FUTURE_FUN);
+    let dir = std::env::temp_dir().join(format!("mccl-bindings-stub-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("stub.c"), STUB_C).unwrap();
+    std::fs::write(dir.join("MCCL.cs"), gen::csharp(&h).unwrap()).unwrap();
+    std::fs::write(dir.join("P.cs"), STUB_CS).unwrap();
+    let run = |cmd: &mut std::process::Command| {
+        let o = cmd.current_dir(&dir).output().unwrap();
+        (
+            o.status.success(),
+            format!(
+                "{}{}",
+                String::from_utf8_lossy(&o.stdout),
+                String::from_utf8_lossy(&o.stderr)
+            ),
+        )
+    };
+    let (ok, log) = run(std::process::Command::new("cc").args([
+        "-shared",
+        "-fPIC",
+        "-o",
+        "libMCCLPCI_IMP.so",
+        "stub.c",
+    ]));
+    assert!(ok, "{log}");
+    let (ok, log) = run(std::process::Command::new("mcs").args([
+        "-langversion:7.2",
+        "-out:p.exe",
+        "MCCL.cs",
+        "P.cs",
+    ]));
+    assert!(ok, "{log}");
+    let (ok, log) = run(std::process::Command::new("mono")
+        .arg("p.exe")
+        .env("LD_LIBRARY_PATH", &dir));
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(ok && log.contains("OK"), "{log}");
+}
