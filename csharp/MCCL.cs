@@ -22,6 +22,20 @@ using System.Runtime.InteropServices;
 using System.Text;
 
 [StructLayout(LayoutKind.Sequential)]
+public struct COMMAND_INFO
+{
+    public int nType;
+    public int nCommandIndex;
+    public double dfFeedSpeed;
+    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 8)]
+    public double[] dfPos;
+    public double dfAcctime;
+    public double dfDectime;
+    public int nMotionPhase;
+    public int nCommandIndex_LD;
+}
+
+[StructLayout(LayoutKind.Sequential)]
 public struct SYS_MAC_PARAM
 {
     public ushort wPosToEncoderDir;
@@ -77,20 +91,6 @@ public struct SYS_CARD_CONFIG
     public ushort wCardAddress;
     public ushort wIRQ_No;
     public ushort wPaddle;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct COMMAND_INFO
-{
-    public int nType;
-    public int nCommandIndex;
-    public double dfFeedSpeed;
-    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 8)]
-    public double[] dfPos;
-    public double dfAcctime;
-    public double dfDectime;
-    public int nMotionPhase;
-    public int nCommandIndex_LD;
 }
 
 [StructLayout(LayoutKind.Sequential)]
@@ -620,6 +620,9 @@ public static class MCCL
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void CYCLE_INTERRUPT_ISR();
 
+    // C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
+    private static readonly bool NativeLongIs64 = IntPtr.Size == 8 && Environment.OSVersion.Platform != PlatformID.Win32NT;
+
     // ---- System Management ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetVersion")]
     public static extern void MCC_GetVersion(StringBuilder strVersion);
@@ -676,9 +679,208 @@ public static class MCCL
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetSysMaxSpeed")]
     public static extern double MCC_GetSysMaxSpeed();
 
+    // ---- Coordinate Management ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetAbsolute")]
+    public static extern int MCC_SetAbsolute(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetIncrease")]
+    public static extern int MCC_SetIncrease(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCoordType")]
+    public static extern int MCC_GetCoordType(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCurRefPos")]
+    public static extern int MCC_GetCurRefPos(ref double pdfX, ref double pdfY, ref double pdfZ, ref double pdfU, ref double pdfV, ref double pdfW, ref double pdfA, ref double pdfB, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCurPos")]
+    public static extern int MCC_GetCurPos(ref double pdfX, ref double pdfY, ref double pdfZ, ref double pdfU, ref double pdfV, ref double pdfW, ref double pdfA, ref double pdfB, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPulsePos")]
+    private static extern int MCC_GetPulsePos_L32(ref int plX, ref int plY, ref int plZ, ref int plU, ref int plV, ref int plW, ref int plA, ref int plB, ushort wGroupIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPulsePos")]
+    private static extern int MCC_GetPulsePos_L64(ref long plX, ref long plY, ref long plZ, ref long plU, ref long plV, ref long plW, ref long plA, ref long plB, ushort wGroupIndex);
+    public static int MCC_GetPulsePos(ref int plX, ref int plY, ref int plZ, ref int plU, ref int plV, ref int plW, ref int plA, ref int plB, ushort wGroupIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            long t0 = plX;
+            long t1 = plY;
+            long t2 = plZ;
+            long t3 = plU;
+            long t4 = plV;
+            long t5 = plW;
+            long t6 = plA;
+            long t7 = plB;
+            int r = MCC_GetPulsePos_L64(ref t0, ref t1, ref t2, ref t3, ref t4, ref t5, ref t6, ref t7, wGroupIndex);
+            plX = unchecked((int)t0);
+            plY = unchecked((int)t1);
+            plZ = unchecked((int)t2);
+            plU = unchecked((int)t3);
+            plV = unchecked((int)t4);
+            plW = unchecked((int)t5);
+            plA = unchecked((int)t6);
+            plB = unchecked((int)t7);
+            return r;
+        }
+        return MCC_GetPulsePos_L32(ref plX, ref plY, ref plZ, ref plU, ref plV, ref plW, ref plA, ref plB, wGroupIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPulsePosEx")]
+    public static extern int MCC_GetPulsePosEx(ref long plX, ref long plY, ref long plZ, ref long plU, ref long plV, ref long plW, ref long plA, ref long plB, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DefineOrigin")]
+    public static extern int MCC_DefineOrigin(ushort wAxis, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DefinePos")]
+    public static extern int MCC_DefinePos(ushort wAxis, double dfPos, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DefinePosHere")]
+    public static extern int MCC_DefinePosHere(ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+
+    // ---- General Motions(Line, Arc, Circle Motions) ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetAccType")]
+    public static extern int MCC_SetAccType(sbyte cAccType, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetAccType")]
+    public static extern int MCC_GetAccType(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDecType")]
+    public static extern int MCC_SetDecType(sbyte cDecType, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetDecType")]
+    public static extern int MCC_GetDecType(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetAccTime")]
+    public static extern int MCC_SetAccTime(double dfAccTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetAccTime")]
+    public static extern double MCC_GetAccTime(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDecTime")]
+    public static extern int MCC_SetDecTime(double dfDecTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetDecTime")]
+    public static extern double MCC_GetDecTime(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetFeedSpeed")]
+    public static extern double MCC_SetFeedSpeed(double dfFeedSpeed, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetFeedSpeed")]
+    public static extern double MCC_GetFeedSpeed(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCurFeedSpeed")]
+    public static extern double MCC_GetCurFeedSpeed(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetSpeed")]
+    public static extern int MCC_GetSpeed(ref double pdfVel0, ref double pdfVel1, ref double pdfVel2, ref double pdfVel3, ref double pdfVel4, ref double pdfVel5, ref double pdfVel6, ref double pdfVel7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPtPSpeed")]
+    public static extern double MCC_SetPtPSpeed(double dfRatio, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPSpeed")]
+    public static extern double MCC_GetPtPSpeed(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtP")]
+    public static extern int MCC_PtP(double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SyncPtP")]
+    public static extern int MCC_SyncPtP(double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPX")]
+    public static extern int MCC_PtPX(double dfX, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPY")]
+    public static extern int MCC_PtPY(double dfY, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPZ")]
+    public static extern int MCC_PtPZ(double dfZ, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPU")]
+    public static extern int MCC_PtPU(double dfU, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPV")]
+    public static extern int MCC_PtPV(double dfV, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPW")]
+    public static extern int MCC_PtPW(double dfW, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPA")]
+    public static extern int MCC_PtPA(double dfA, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtPB")]
+    public static extern int MCC_PtPB(double dfB, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Line")]
+    public static extern int MCC_Line(double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcXYZ")]
+    public static extern int MCC_ArcXYZ(double dfRX0, double dfRX1, double dfRX2, double dfX0, double dfX1, double dfX2, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcXY")]
+    public static extern int MCC_ArcXY(double dfRX0, double dfRX1, double dfX0, double dfX1, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcYZ")]
+    public static extern int MCC_ArcYZ(double dfRX1, double dfRX2, double dfX1, double dfX2, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcZX")]
+    public static extern int MCC_ArcZX(double dfRX2, double dfRX0, double dfX2, double dfX0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcXYZ_Aux")]
+    public static extern int MCC_ArcXYZ_Aux(double dfRX0, double dfRX1, double dfRX2, double dfX0, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcXY_Aux")]
+    public static extern int MCC_ArcXY_Aux(double dfRX0, double dfRX1, double dfX0, double dfX1, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcYZ_Aux")]
+    public static extern int MCC_ArcYZ_Aux(double dfRX1, double dfRX2, double dfX1, double dfX2, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcZX_Aux")]
+    public static extern int MCC_ArcZX_Aux(double dfRX2, double dfRX0, double dfX2, double dfX0, double dfX3, double dfX4, double dfX5, double dfX6, double dfX7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcThetaXY")]
+    public static extern int MCC_ArcThetaXY(double dfCX, double dfCY, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcThetaYZ")]
+    public static extern int MCC_ArcThetaYZ(double dfCY, double dfCZ, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcThetaZX")]
+    public static extern int MCC_ArcThetaZX(double dfCZ, double dfCX, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleXY")]
+    public static extern int MCC_CircleXY(double dfCX, double dfCY, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleYZ")]
+    public static extern int MCC_CircleYZ(double dfCY, double dfCZ, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleZX")]
+    public static extern int MCC_CircleZX(double dfCZ, double dfCX, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleXY_Aux")]
+    public static extern int MCC_CircleXY_Aux(double dfCX, double dfCY, double dfU, double dfV, double dfW, double dfA, double dfB, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleYZ_Aux")]
+    public static extern int MCC_CircleYZ_Aux(double dfCY, double dfCZ, double dfU, double dfV, double dfW, double dfA, double dfB, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleZX_Aux")]
+    public static extern int MCC_CircleZX_Aux(double dfCZ, double dfCX, double dfU, double dfV, double dfW, double dfA, double dfB, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicalXY_Z")]
+    public static extern int MCC_HelicalXY_Z(double dfCX, double dfCY, double dfPitch, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicalYZ_X")]
+    public static extern int MCC_HelicalYZ_X(double dfCY, double dfCZ, double dfPitch, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicalZX_Y")]
+    public static extern int MCC_HelicalZX_Y(double dfCZ, double dfCX, double dfPitch, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicalXY_Z_Aux")]
+    public static extern int MCC_HelicalXY_Z_Aux(double dfCX, double dfCY, double dfPitch, double dfU, double dfV, double dfW, double dfA, double dfB, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicalYZ_X_Aux")]
+    public static extern int MCC_HelicalYZ_X_Aux(double dfCY, double dfCZ, double dfPitch, double dfU, double dfV, double dfW, double dfA, double dfB, double dfTheta, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicalZX_Y_Aux")]
+    public static extern int MCC_HelicalZX_Y_Aux(double dfCZ, double dfCX, double dfPitch, double dfU, double dfV, double dfW, double dfA, double dfB, double dfTheta, ushort wGroupIndex = 0);
+
+    // ---- Jog Motion ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_JogPulse")]
+    public static extern int MCC_JogPulse(int nPulse, sbyte cAxis, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_JogSpace")]
+    public static extern int MCC_JogSpace(double dfOffset, double dfRatio, sbyte cAxis, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_JogConti")]
+    public static extern int MCC_JogConti(int nDir, double dfRatio, sbyte cAxis, ushort wGroupIndex = 0);
+
+    // ---- Point-to-Point Motion ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPtPAccType")]
+    public static extern int MCC_SetPtPAccType(sbyte cAccType0, sbyte cAccType1, sbyte cAccType2, sbyte cAccType3, sbyte cAccType4, sbyte cAccType5, sbyte cAccType6, sbyte cAccType7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPAccType")]
+    public static extern int MCC_GetPtPAccType(StringBuilder pcAccType0, StringBuilder pcAccType1, StringBuilder pcAccType2, StringBuilder pcAccType3, StringBuilder pcAccType4, StringBuilder pcAccType5, StringBuilder pcAccType6, StringBuilder pcAccType7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPAccType")]
+    public static extern int MCC_GetPtPAccType(byte[] pcAccType0, byte[] pcAccType1, byte[] pcAccType2, byte[] pcAccType3, byte[] pcAccType4, byte[] pcAccType5, byte[] pcAccType6, byte[] pcAccType7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPtPDecType")]
+    public static extern int MCC_SetPtPDecType(sbyte cDecType0, sbyte cDecType1, sbyte cDecType2, sbyte cDecType3, sbyte cDecType4, sbyte cDecType5, sbyte cDecType6, sbyte cDecType7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPDecType")]
+    public static extern int MCC_GetPtPDecType(StringBuilder pcDecType0, StringBuilder pcDecType1, StringBuilder pcDecType2, StringBuilder pcDecType3, StringBuilder pcDecType4, StringBuilder pcDecType5, StringBuilder pcDecType6, StringBuilder pcDecType7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPDecType")]
+    public static extern int MCC_GetPtPDecType(byte[] pcDecType0, byte[] pcDecType1, byte[] pcDecType2, byte[] pcDecType3, byte[] pcDecType4, byte[] pcDecType5, byte[] pcDecType6, byte[] pcDecType7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPtPAccTime")]
+    public static extern int MCC_SetPtPAccTime(double dfAccTime0, double dfAccTime1, double dfAccTime2, double dfAccTime3, double dfAccTime4, double dfAccTime5, double dfAccTime6, double dfAccTime7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPAccTime")]
+    public static extern int MCC_GetPtPAccTime(ref double pdfAccTime0, ref double pdfAccTime1, ref double pdfAccTime2, ref double pdfAccTime3, ref double pdfAccTime4, ref double pdfAccTime5, ref double pdfAccTime6, ref double pdfAccTime7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPtPDecTime")]
+    public static extern int MCC_SetPtPDecTime(double dfDecTime0, double dfDecTime1, double dfDecTime2, double dfDecTime3, double dfDecTime4, double dfDecTime5, double dfDecTime6, double dfDecTime7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPtPDecTime")]
+    public static extern int MCC_GetPtPDecTime(ref double pdfDecTime0, ref double pdfDecTime1, ref double pdfDecTime2, ref double pdfDecTime3, ref double pdfDecTime4, ref double pdfDecTime5, ref double pdfDecTime6, ref double pdfDecTime7, ushort wGroupIndex = 0);
+
     // ---- Motion Status ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMotionStatus")]
     public static extern int MCC_GetMotionStatus(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCurCommand")]
+    public static extern int MCC_GetCurCommand(ref COMMAND_INFO pstCurCommand, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCommandCount")]
+    public static extern int MCC_GetCommandCount(ref int pnCmdCount, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ResetCommandIndex")]
+    public static extern int MCC_ResetCommandIndex(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ResetCommandIndexLD")]
+    public static extern int MCC_ResetCommandIndexLD(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCommandIndex")]
+    public static extern int MCC_SetCommandIndex(ushort wIndex, [MarshalAs(UnmanagedType.Bool)] bool bManualIndex, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCommandIndex")]
+    public static extern int MCC_GetCommandIndex(ref ushort wIndex, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMaxPulseStockNum")]
+    public static extern int MCC_SetMaxPulseStockNum(int nMaxStockNum);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMaxPulseStockNum")]
+    public static extern int MCC_GetMaxPulseStockNum();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCurPulseStockCount")]
+    public static extern int MCC_GetCurPulseStockCount(ref ushort pwStockCount, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetErrorCode")]
+    public static extern int MCC_GetErrorCode(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ClearError")]
+    public static extern int MCC_ClearError(ushort wGroupIndex = 0);
 
     // ---- Go Home ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHomeConfig")]
@@ -687,6 +889,70 @@ public static class MCCL
     public static extern int MCC_GetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
 
     // ---- Trajectory Planning ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HoldMotion")]
+    public static extern int MCC_HoldMotion(ushort wGroupIndex = 0, [MarshalAs(UnmanagedType.Bool)] bool bBlockEnd = false);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ContiMotion")]
+    public static extern int MCC_ContiMotion(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_AbortMotion")]
+    public static extern int MCC_AbortMotion(ushort wGroupIndex = 0, [MarshalAs(UnmanagedType.Bool)] bool bBlockEnd = false);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_AbortMotionEx")]
+    public static extern int MCC_AbortMotionEx(double dfDecTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableSingleBlock")]
+    public static extern int MCC_EnableSingleBlock(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableSingleBlock")]
+    public static extern int MCC_DisableSingleBlock(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_RunSingleBlock")]
+    public static extern int MCC_RunSingleBlock(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableBlendInstant")]
+    public static extern int MCC_EnableBlendInstant(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableBlendInstant")]
+    public static extern int MCC_DisableBlendInstant(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableBlend")]
+    public static extern int MCC_EnableBlend(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableBlend")]
+    public static extern int MCC_DisableBlend(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CheckBlend")]
+    public static extern int MCC_CheckBlend(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DelayMotion")]
+    public static extern int MCC_DelayMotion(uint dwTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CheckDelay")]
+    public static extern int MCC_CheckDelay(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_TimeDelay")]
     public static extern void MCC_TimeDelay(uint dwTime);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_OverrideSpeed")]
+    public static extern double MCC_OverrideSpeed(double dfRate, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_OverrideSpeedEx")]
+    public static extern double MCC_OverrideSpeedEx(double dfRate, [MarshalAs(UnmanagedType.Bool)] bool bInstant = true, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetOverrideRate")]
+    public static extern double MCC_GetOverrideRate(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_FixSpeed")]
+    public static extern int MCC_FixSpeed([MarshalAs(UnmanagedType.Bool)] bool bFix, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineX")]
+    public static extern int MCC_LineX(double dfX, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineY")]
+    public static extern int MCC_LineY(double dfY, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineZ")]
+    public static extern int MCC_LineZ(double dfZ, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineU")]
+    public static extern int MCC_LineU(double dfU, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineV")]
+    public static extern int MCC_LineV(double dfV, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineW")]
+    public static extern int MCC_LineW(double dfW, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineA")]
+    public static extern int MCC_LineA(double dfA, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineB")]
+    public static extern int MCC_LineB(double dfB, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaXY_Z")]
+    public static extern int MCC_HelicaXY_Z(double dfCX, double dfCY, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaYZ_X")]
+    public static extern int MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaZX_Y")]
+    public static extern int MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetOverSpeed")]
+    public static extern double MCC_SetOverSpeed(double dfRate, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetOverSpeed")]
+    public static extern double MCC_GetOverSpeed(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ChangeFeedSpeed")]
+    public static extern double MCC_ChangeFeedSpeed(double dfSpeed, ushort wGroupIndex = 0);
 }

@@ -115,8 +115,6 @@
 
 #define GROUP_RAN_OUT_ERR (-16)
 
-typedef struct CommandCode CommandCode;
-
 typedef uint16_t WORD;
 
 typedef uint32_t DWORD;

@@ -11,6 +11,18 @@ Imports System.Runtime.InteropServices
 Imports System.Text
 
 <StructLayout(LayoutKind.Sequential)>
+Public Structure COMMAND_INFO
+    Public nType As Integer
+    Public nCommandIndex As Integer
+    Public dfFeedSpeed As Double
+    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=8)> Public dfPos() As Double
+    Public dfAcctime As Double
+    Public dfDectime As Double
+    Public nMotionPhase As Integer
+    Public nCommandIndex_LD As Integer
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
 Public Structure SYS_MAC_PARAM
     Public wPosToEncoderDir As UShort
     Public wRPM As UShort
@@ -61,18 +73,6 @@ Public Structure SYS_CARD_CONFIG
     Public wCardAddress As UShort
     Public wIRQ_No As UShort
     Public wPaddle As UShort
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure COMMAND_INFO
-    Public nType As Integer
-    Public nCommandIndex As Integer
-    Public dfFeedSpeed As Double
-    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=8)> Public dfPos() As Double
-    Public dfAcctime As Double
-    Public dfDectime As Double
-    Public nMotionPhase As Integer
-    Public nCommandIndex_LD As Integer
 End Structure
 
 <StructLayout(LayoutKind.Sequential)>
@@ -576,6 +576,9 @@ Public Module MCCL
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub CYCLE_INTERRUPT_ISR()
 
+    ' C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
+    Private ReadOnly NativeLongIs64 As Boolean = IntPtr.Size = 8 AndAlso Environment.OSVersion.Platform <> PlatformID.Win32NT
+
     ' ---- System Management ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetVersion")>
     Public Sub MCC_GetVersion(ByVal strVersion As StringBuilder)
@@ -656,9 +659,283 @@ Public Module MCCL
     Public Function MCC_GetSysMaxSpeed() As Double
     End Function
 
+    ' ---- Coordinate Management ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetAbsolute")>
+    Public Function MCC_SetAbsolute(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetIncrease")>
+    Public Function MCC_SetIncrease(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCoordType")>
+    Public Function MCC_GetCoordType(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCurRefPos")>
+    Public Function MCC_GetCurRefPos(ByRef pdfX As Double, ByRef pdfY As Double, ByRef pdfZ As Double, ByRef pdfU As Double, ByRef pdfV As Double, ByRef pdfW As Double, ByRef pdfA As Double, ByRef pdfB As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCurPos")>
+    Public Function MCC_GetCurPos(ByRef pdfX As Double, ByRef pdfY As Double, ByRef pdfZ As Double, ByRef pdfU As Double, ByRef pdfV As Double, ByRef pdfW As Double, ByRef pdfA As Double, ByRef pdfB As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPulsePos")>
+    Private Function MCC_GetPulsePos_L32(ByRef plX As Integer, ByRef plY As Integer, ByRef plZ As Integer, ByRef plU As Integer, ByRef plV As Integer, ByRef plW As Integer, ByRef plA As Integer, ByRef plB As Integer, ByVal wGroupIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPulsePos")>
+    Private Function MCC_GetPulsePos_L64(ByRef plX As Long, ByRef plY As Long, ByRef plZ As Long, ByRef plU As Long, ByRef plV As Long, ByRef plW As Long, ByRef plA As Long, ByRef plB As Long, ByVal wGroupIndex As UShort) As Integer
+    End Function
+    Public Function MCC_GetPulsePos(ByRef plX As Integer, ByRef plY As Integer, ByRef plZ As Integer, ByRef plU As Integer, ByRef plV As Integer, ByRef plW As Integer, ByRef plA As Integer, ByRef plB As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim t0 As Long = plX
+            Dim t1 As Long = plY
+            Dim t2 As Long = plZ
+            Dim t3 As Long = plU
+            Dim t4 As Long = plV
+            Dim t5 As Long = plW
+            Dim t6 As Long = plA
+            Dim t7 As Long = plB
+            Dim r As Integer = MCC_GetPulsePos_L64(t0, t1, t2, t3, t4, t5, t6, t7, wGroupIndex)
+            plX = CInt(t0)
+            plY = CInt(t1)
+            plZ = CInt(t2)
+            plU = CInt(t3)
+            plV = CInt(t4)
+            plW = CInt(t5)
+            plA = CInt(t6)
+            plB = CInt(t7)
+            Return r
+        End If
+        Return MCC_GetPulsePos_L32(plX, plY, plZ, plU, plV, plW, plA, plB, wGroupIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPulsePosEx")>
+    Public Function MCC_GetPulsePosEx(ByRef plX As Long, ByRef plY As Long, ByRef plZ As Long, ByRef plU As Long, ByRef plV As Long, ByRef plW As Long, ByRef plA As Long, ByRef plB As Long, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DefineOrigin")>
+    Public Function MCC_DefineOrigin(ByVal wAxis As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DefinePos")>
+    Public Function MCC_DefinePos(ByVal wAxis As UShort, ByVal dfPos As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DefinePosHere")>
+    Public Function MCC_DefinePosHere(Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+
+    ' ---- General Motions(Line, Arc, Circle Motions) ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetAccType")>
+    Public Function MCC_SetAccType(ByVal cAccType As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetAccType")>
+    Public Function MCC_GetAccType(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDecType")>
+    Public Function MCC_SetDecType(ByVal cDecType As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetDecType")>
+    Public Function MCC_GetDecType(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetAccTime")>
+    Public Function MCC_SetAccTime(ByVal dfAccTime As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetAccTime")>
+    Public Function MCC_GetAccTime(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDecTime")>
+    Public Function MCC_SetDecTime(ByVal dfDecTime As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetDecTime")>
+    Public Function MCC_GetDecTime(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetFeedSpeed")>
+    Public Function MCC_SetFeedSpeed(ByVal dfFeedSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetFeedSpeed")>
+    Public Function MCC_GetFeedSpeed(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCurFeedSpeed")>
+    Public Function MCC_GetCurFeedSpeed(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetSpeed")>
+    Public Function MCC_GetSpeed(ByRef pdfVel0 As Double, ByRef pdfVel1 As Double, ByRef pdfVel2 As Double, ByRef pdfVel3 As Double, ByRef pdfVel4 As Double, ByRef pdfVel5 As Double, ByRef pdfVel6 As Double, ByRef pdfVel7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPtPSpeed")>
+    Public Function MCC_SetPtPSpeed(ByVal dfRatio As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPtPSpeed")>
+    Public Function MCC_GetPtPSpeed(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtP")>
+    Public Function MCC_PtP(ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SyncPtP")>
+    Public Function MCC_SyncPtP(ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPX")>
+    Public Function MCC_PtPX(ByVal dfX As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPY")>
+    Public Function MCC_PtPY(ByVal dfY As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPZ")>
+    Public Function MCC_PtPZ(ByVal dfZ As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPU")>
+    Public Function MCC_PtPU(ByVal dfU As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPV")>
+    Public Function MCC_PtPV(ByVal dfV As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPW")>
+    Public Function MCC_PtPW(ByVal dfW As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPA")>
+    Public Function MCC_PtPA(ByVal dfA As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtPB")>
+    Public Function MCC_PtPB(ByVal dfB As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Line")>
+    Public Function MCC_Line(ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcXYZ")>
+    Public Function MCC_ArcXYZ(ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcXY")>
+    Public Function MCC_ArcXY(ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcYZ")>
+    Public Function MCC_ArcYZ(ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcZX")>
+    Public Function MCC_ArcZX(ByVal dfRX2 As Double, ByVal dfRX0 As Double, ByVal dfX2 As Double, ByVal dfX0 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcXYZ_Aux")>
+    Public Function MCC_ArcXYZ_Aux(ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcXY_Aux")>
+    Public Function MCC_ArcXY_Aux(ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcYZ_Aux")>
+    Public Function MCC_ArcYZ_Aux(ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcZX_Aux")>
+    Public Function MCC_ArcZX_Aux(ByVal dfRX2 As Double, ByVal dfRX0 As Double, ByVal dfX2 As Double, ByVal dfX0 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcThetaXY")>
+    Public Function MCC_ArcThetaXY(ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcThetaYZ")>
+    Public Function MCC_ArcThetaYZ(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcThetaZX")>
+    Public Function MCC_ArcThetaZX(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleXY")>
+    Public Function MCC_CircleXY(ByVal dfCX As Double, ByVal dfCY As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleYZ")>
+    Public Function MCC_CircleYZ(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleZX")>
+    Public Function MCC_CircleZX(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleXY_Aux")>
+    Public Function MCC_CircleXY_Aux(ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleYZ_Aux")>
+    Public Function MCC_CircleYZ_Aux(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleZX_Aux")>
+    Public Function MCC_CircleZX_Aux(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicalXY_Z")>
+    Public Function MCC_HelicalXY_Z(ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPitch As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicalYZ_X")>
+    Public Function MCC_HelicalYZ_X(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPitch As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicalZX_Y")>
+    Public Function MCC_HelicalZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPitch As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicalXY_Z_Aux")>
+    Public Function MCC_HelicalXY_Z_Aux(ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPitch As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicalYZ_X_Aux")>
+    Public Function MCC_HelicalYZ_X_Aux(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPitch As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicalZX_Y_Aux")>
+    Public Function MCC_HelicalZX_Y_Aux(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPitch As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Jog Motion ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_JogPulse")>
+    Public Function MCC_JogPulse(ByVal nPulse As Integer, ByVal cAxis As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_JogSpace")>
+    Public Function MCC_JogSpace(ByVal dfOffset As Double, ByVal dfRatio As Double, ByVal cAxis As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_JogConti")>
+    Public Function MCC_JogConti(ByVal nDir As Integer, ByVal dfRatio As Double, ByVal cAxis As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Point-to-Point Motion ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPtPAccType")>
+    Public Function MCC_SetPtPAccType(ByVal cAccType0 As SByte, ByVal cAccType1 As SByte, ByVal cAccType2 As SByte, ByVal cAccType3 As SByte, ByVal cAccType4 As SByte, ByVal cAccType5 As SByte, ByVal cAccType6 As SByte, ByVal cAccType7 As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPtPAccType")>
+    Public Function MCC_GetPtPAccType(ByVal pcAccType0 As StringBuilder, ByVal pcAccType1 As StringBuilder, ByVal pcAccType2 As StringBuilder, ByVal pcAccType3 As StringBuilder, ByVal pcAccType4 As StringBuilder, ByVal pcAccType5 As StringBuilder, ByVal pcAccType6 As StringBuilder, ByVal pcAccType7 As StringBuilder, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPtPDecType")>
+    Public Function MCC_SetPtPDecType(ByVal cDecType0 As SByte, ByVal cDecType1 As SByte, ByVal cDecType2 As SByte, ByVal cDecType3 As SByte, ByVal cDecType4 As SByte, ByVal cDecType5 As SByte, ByVal cDecType6 As SByte, ByVal cDecType7 As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPtPDecType")>
+    Public Function MCC_GetPtPDecType(ByVal pcDecType0 As StringBuilder, ByVal pcDecType1 As StringBuilder, ByVal pcDecType2 As StringBuilder, ByVal pcDecType3 As StringBuilder, ByVal pcDecType4 As StringBuilder, ByVal pcDecType5 As StringBuilder, ByVal pcDecType6 As StringBuilder, ByVal pcDecType7 As StringBuilder, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPtPAccTime")>
+    Public Function MCC_SetPtPAccTime(ByVal dfAccTime0 As Double, ByVal dfAccTime1 As Double, ByVal dfAccTime2 As Double, ByVal dfAccTime3 As Double, ByVal dfAccTime4 As Double, ByVal dfAccTime5 As Double, ByVal dfAccTime6 As Double, ByVal dfAccTime7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPtPAccTime")>
+    Public Function MCC_GetPtPAccTime(ByRef pdfAccTime0 As Double, ByRef pdfAccTime1 As Double, ByRef pdfAccTime2 As Double, ByRef pdfAccTime3 As Double, ByRef pdfAccTime4 As Double, ByRef pdfAccTime5 As Double, ByRef pdfAccTime6 As Double, ByRef pdfAccTime7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPtPDecTime")>
+    Public Function MCC_SetPtPDecTime(ByVal dfDecTime0 As Double, ByVal dfDecTime1 As Double, ByVal dfDecTime2 As Double, ByVal dfDecTime3 As Double, ByVal dfDecTime4 As Double, ByVal dfDecTime5 As Double, ByVal dfDecTime6 As Double, ByVal dfDecTime7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPtPDecTime")>
+    Public Function MCC_GetPtPDecTime(ByRef pdfDecTime0 As Double, ByRef pdfDecTime1 As Double, ByRef pdfDecTime2 As Double, ByRef pdfDecTime3 As Double, ByRef pdfDecTime4 As Double, ByRef pdfDecTime5 As Double, ByRef pdfDecTime6 As Double, ByRef pdfDecTime7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+
     ' ---- Motion Status ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetMotionStatus")>
     Public Function MCC_GetMotionStatus(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCurCommand")>
+    Public Function MCC_GetCurCommand(ByRef pstCurCommand As COMMAND_INFO, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCommandCount")>
+    Public Function MCC_GetCommandCount(ByRef pnCmdCount As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ResetCommandIndex")>
+    Public Function MCC_ResetCommandIndex(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ResetCommandIndexLD")>
+    Public Function MCC_ResetCommandIndexLD(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCommandIndex")>
+    Public Function MCC_SetCommandIndex(ByVal wIndex As UShort, <MarshalAs(UnmanagedType.Bool)> ByVal bManualIndex As Boolean, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCommandIndex")>
+    Public Function MCC_GetCommandIndex(ByRef wIndex As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMaxPulseStockNum")>
+    Public Function MCC_SetMaxPulseStockNum(ByVal nMaxStockNum As Integer) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetMaxPulseStockNum")>
+    Public Function MCC_GetMaxPulseStockNum() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetCurPulseStockCount")>
+    Public Function MCC_GetCurPulseStockCount(ByRef pwStockCount As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetErrorCode")>
+    Public Function MCC_GetErrorCode(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ClearError")>
+    Public Function MCC_ClearError(Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
 
     ' ---- Go Home ----
@@ -670,7 +947,103 @@ Public Module MCCL
     End Function
 
     ' ---- Trajectory Planning ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HoldMotion")>
+    Public Function MCC_HoldMotion(Optional ByVal wGroupIndex As UShort = 0, <MarshalAs(UnmanagedType.Bool)> Optional ByVal bBlockEnd As Boolean = False) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ContiMotion")>
+    Public Function MCC_ContiMotion(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_AbortMotion")>
+    Public Function MCC_AbortMotion(Optional ByVal wGroupIndex As UShort = 0, <MarshalAs(UnmanagedType.Bool)> Optional ByVal bBlockEnd As Boolean = False) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_AbortMotionEx")>
+    Public Function MCC_AbortMotionEx(ByVal dfDecTime As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableSingleBlock")>
+    Public Function MCC_EnableSingleBlock(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableSingleBlock")>
+    Public Function MCC_DisableSingleBlock(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_RunSingleBlock")>
+    Public Function MCC_RunSingleBlock(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableBlendInstant")>
+    Public Function MCC_EnableBlendInstant(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableBlendInstant")>
+    Public Function MCC_DisableBlendInstant(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableBlend")>
+    Public Function MCC_EnableBlend(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableBlend")>
+    Public Function MCC_DisableBlend(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CheckBlend")>
+    Public Function MCC_CheckBlend(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DelayMotion")>
+    Public Function MCC_DelayMotion(ByVal dwTime As UInteger, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CheckDelay")>
+    Public Function MCC_CheckDelay(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_TimeDelay")>
     Public Sub MCC_TimeDelay(ByVal dwTime As UInteger)
     End Sub
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_OverrideSpeed")>
+    Public Function MCC_OverrideSpeed(ByVal dfRate As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_OverrideSpeedEx")>
+    Public Function MCC_OverrideSpeedEx(ByVal dfRate As Double, <MarshalAs(UnmanagedType.Bool)> Optional ByVal bInstant As Boolean = True, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetOverrideRate")>
+    Public Function MCC_GetOverrideRate(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_FixSpeed")>
+    Public Function MCC_FixSpeed(<MarshalAs(UnmanagedType.Bool)> ByVal bFix As Boolean, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineX")>
+    Public Function MCC_LineX(ByVal dfX As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineY")>
+    Public Function MCC_LineY(ByVal dfY As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineZ")>
+    Public Function MCC_LineZ(ByVal dfZ As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineU")>
+    Public Function MCC_LineU(ByVal dfU As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineV")>
+    Public Function MCC_LineV(ByVal dfV As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineW")>
+    Public Function MCC_LineW(ByVal dfW As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineA")>
+    Public Function MCC_LineA(ByVal dfA As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineB")>
+    Public Function MCC_LineB(ByVal dfB As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaXY_Z")>
+    Public Function MCC_HelicaXY_Z(ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaYZ_X")>
+    Public Function MCC_HelicaYZ_X(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaZX_Y")>
+    Public Function MCC_HelicaZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetOverSpeed")>
+    Public Function MCC_SetOverSpeed(ByVal dfRate As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetOverSpeed")>
+    Public Function MCC_GetOverSpeed(Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ChangeFeedSpeed")>
+    Public Function MCC_ChangeFeedSpeed(ByVal dfSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
 End Module

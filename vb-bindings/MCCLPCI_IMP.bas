@@ -275,6 +275,17 @@ Public Const DAC_SOURCE_SOFT As Long = 0
 Public Const DAC_SOURCE_PCL As Long = 1
 
 ' ---- Structures ----
+Public Type COMMAND_INFO
+    nType As Long
+    nCommandIndex As Long
+    dfFeedSpeed As Double
+    dfPos(0 To 7) As Double
+    dfAcctime As Double
+    dfDectime As Double
+    nMotionPhase As Long
+    nCommandIndex_LD As Long
+End Type
+
 Public Type SYS_MAC_PARAM
     wPosToEncoderDir As Integer
     wRPM As Integer
@@ -323,17 +334,6 @@ Public Type SYS_CARD_CONFIG
     wCardAddress As Integer
     wIRQ_No As Integer
     wPaddle As Integer
-End Type
-
-Public Type COMMAND_INFO
-    nType As Long
-    nCommandIndex As Long
-    dfFeedSpeed As Double
-    dfPos(0 To 7) As Double
-    dfAcctime As Double
-    dfDectime As Double
-    nMotionPhase As Long
-    nCommandIndex_LD As Long
 End Type
 
 Public Type SYS_MAC_PARAM_EX
@@ -577,12 +577,132 @@ Public Declare Function MCC_CheckDryRun Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_SetSysMaxSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfMaxSpeed As Double) As Long
 Public Declare Function MCC_GetSysMaxSpeed Lib "MCCLPCI_IMP.dll" () As Double
 
+' ---- Coordinate Management ----
+Public Declare Function MCC_SetAbsolute Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetIncrease Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetCoordType Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetCurRefPos Lib "MCCLPCI_IMP.dll" (ByRef pdfX As Double, ByRef pdfY As Double, ByRef pdfZ As Double, ByRef pdfU As Double, ByRef pdfV As Double, ByRef pdfW As Double, ByRef pdfA As Double, ByRef pdfB As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetCurPos Lib "MCCLPCI_IMP.dll" (ByRef pdfX As Double, ByRef pdfY As Double, ByRef pdfZ As Double, ByRef pdfU As Double, ByRef pdfV As Double, ByRef pdfW As Double, ByRef pdfA As Double, ByRef pdfB As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPulsePos Lib "MCCLPCI_IMP.dll" (ByRef plX As Long, ByRef plY As Long, ByRef plZ As Long, ByRef plU As Long, ByRef plV As Long, ByRef plW As Long, ByRef plA As Long, ByRef plB As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPulsePosEx Lib "MCCLPCI_IMP.dll" (ByRef plX As Currency, ByRef plY As Currency, ByRef plZ As Currency, ByRef plU As Currency, ByRef plV As Currency, ByRef plW As Currency, ByRef plA As Currency, ByRef plB As Currency, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DefineOrigin Lib "MCCLPCI_IMP.dll" (ByVal wAxis As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DefinePos Lib "MCCLPCI_IMP.dll" (ByVal wAxis As Integer, ByVal dfPos As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DefinePosHere Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+
+' ---- General Motions(Line, Arc, Circle Motions) ----
+Public Declare Function MCC_SetAccType Lib "MCCLPCI_IMP.dll" (ByVal cAccType As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetAccType Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetDecType Lib "MCCLPCI_IMP.dll" (ByVal cDecType As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetDecType Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetAccTime Lib "MCCLPCI_IMP.dll" (ByVal dfAccTime As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetAccTime Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_SetDecTime Lib "MCCLPCI_IMP.dll" (ByVal dfDecTime As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetDecTime Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_SetFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfFeedSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_GetFeedSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_GetCurFeedSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_GetSpeed Lib "MCCLPCI_IMP.dll" (ByRef pdfVel0 As Double, ByRef pdfVel1 As Double, ByRef pdfVel2 As Double, ByRef pdfVel3 As Double, ByRef pdfVel4 As Double, ByRef pdfVel5 As Double, ByRef pdfVel6 As Double, ByRef pdfVel7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetPtPSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRatio As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_GetPtPSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_PtP Lib "MCCLPCI_IMP.dll" (ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_SyncPtP Lib "MCCLPCI_IMP.dll" (ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_PtPX Lib "MCCLPCI_IMP.dll" (ByVal dfX As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPY Lib "MCCLPCI_IMP.dll" (ByVal dfY As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPZ Lib "MCCLPCI_IMP.dll" (ByVal dfZ As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPU Lib "MCCLPCI_IMP.dll" (ByVal dfU As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPV Lib "MCCLPCI_IMP.dll" (ByVal dfV As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPW Lib "MCCLPCI_IMP.dll" (ByVal dfW As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPA Lib "MCCLPCI_IMP.dll" (ByVal dfA As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtPB Lib "MCCLPCI_IMP.dll" (ByVal dfB As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_Line Lib "MCCLPCI_IMP.dll" (ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_ArcXYZ Lib "MCCLPCI_IMP.dll" (ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcXY Lib "MCCLPCI_IMP.dll" (ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcYZ Lib "MCCLPCI_IMP.dll" (ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcZX Lib "MCCLPCI_IMP.dll" (ByVal dfRX2 As Double, ByVal dfRX0 As Double, ByVal dfX2 As Double, ByVal dfX0 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcXYZ_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcXY_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfRX0 As Double, ByVal dfRX1 As Double, ByVal dfX0 As Double, ByVal dfX1 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcYZ_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfRX1 As Double, ByVal dfRX2 As Double, ByVal dfX1 As Double, ByVal dfX2 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcZX_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfRX2 As Double, ByVal dfRX0 As Double, ByVal dfX2 As Double, ByVal dfX0 As Double, ByVal dfX3 As Double, ByVal dfX4 As Double, ByVal dfX5 As Double, ByVal dfX6 As Double, ByVal dfX7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcThetaXY Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcThetaYZ Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ArcThetaZX Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleXY Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleYZ Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleZX Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleXY_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleYZ_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleZX_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicalXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPitch As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicalYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPitch As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicalZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPitch As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicalXY_Z_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPitch As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicalYZ_X_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPitch As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicalZX_Y_Aux Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPitch As Double, ByVal dfU As Double, ByVal dfV As Double, ByVal dfW As Double, ByVal dfA As Double, ByVal dfB As Double, ByVal dfTheta As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+
+' ---- Jog Motion ----
+Public Declare Function MCC_JogPulse Lib "MCCLPCI_IMP.dll" (ByVal nPulse As Long, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_JogSpace Lib "MCCLPCI_IMP.dll" (ByVal dfOffset As Double, ByVal dfRatio As Double, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_JogConti Lib "MCCLPCI_IMP.dll" (ByVal nDir As Long, ByVal dfRatio As Double, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+
+' ---- Point-to-Point Motion ----
+Public Declare Function MCC_SetPtPAccType Lib "MCCLPCI_IMP.dll" (ByVal cAccType0 As Byte, ByVal cAccType1 As Byte, ByVal cAccType2 As Byte, ByVal cAccType3 As Byte, ByVal cAccType4 As Byte, ByVal cAccType5 As Byte, ByVal cAccType6 As Byte, ByVal cAccType7 As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPtPAccType Lib "MCCLPCI_IMP.dll" (ByVal pcAccType0 As String, ByVal pcAccType1 As String, ByVal pcAccType2 As String, ByVal pcAccType3 As String, ByVal pcAccType4 As String, ByVal pcAccType5 As String, ByVal pcAccType6 As String, ByVal pcAccType7 As String, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetPtPDecType Lib "MCCLPCI_IMP.dll" (ByVal cDecType0 As Byte, ByVal cDecType1 As Byte, ByVal cDecType2 As Byte, ByVal cDecType3 As Byte, ByVal cDecType4 As Byte, ByVal cDecType5 As Byte, ByVal cDecType6 As Byte, ByVal cDecType7 As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPtPDecType Lib "MCCLPCI_IMP.dll" (ByVal pcDecType0 As String, ByVal pcDecType1 As String, ByVal pcDecType2 As String, ByVal pcDecType3 As String, ByVal pcDecType4 As String, ByVal pcDecType5 As String, ByVal pcDecType6 As String, ByVal pcDecType7 As String, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetPtPAccTime Lib "MCCLPCI_IMP.dll" (ByVal dfAccTime0 As Double, ByVal dfAccTime1 As Double, ByVal dfAccTime2 As Double, ByVal dfAccTime3 As Double, ByVal dfAccTime4 As Double, ByVal dfAccTime5 As Double, ByVal dfAccTime6 As Double, ByVal dfAccTime7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPtPAccTime Lib "MCCLPCI_IMP.dll" (ByRef pdfAccTime0 As Double, ByRef pdfAccTime1 As Double, ByRef pdfAccTime2 As Double, ByRef pdfAccTime3 As Double, ByRef pdfAccTime4 As Double, ByRef pdfAccTime5 As Double, ByRef pdfAccTime6 As Double, ByRef pdfAccTime7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetPtPDecTime Lib "MCCLPCI_IMP.dll" (ByVal dfDecTime0 As Double, ByVal dfDecTime1 As Double, ByVal dfDecTime2 As Double, ByVal dfDecTime3 As Double, ByVal dfDecTime4 As Double, ByVal dfDecTime5 As Double, ByVal dfDecTime6 As Double, ByVal dfDecTime7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPtPDecTime Lib "MCCLPCI_IMP.dll" (ByRef pdfDecTime0 As Double, ByRef pdfDecTime1 As Double, ByRef pdfDecTime2 As Double, ByRef pdfDecTime3 As Double, ByRef pdfDecTime4 As Double, ByRef pdfDecTime5 As Double, ByRef pdfDecTime6 As Double, ByRef pdfDecTime7 As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+
 ' ---- Motion Status ----
 Public Declare Function MCC_GetMotionStatus Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetCurCommand Lib "MCCLPCI_IMP.dll" (ByRef pstCurCommand As COMMAND_INFO, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetCommandCount Lib "MCCLPCI_IMP.dll" (ByRef pnCmdCount As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ResetCommandIndex Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ResetCommandIndexLD Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetCommandIndex Lib "MCCLPCI_IMP.dll" (ByVal wIndex As Integer, ByVal bManualIndex As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetCommandIndex Lib "MCCLPCI_IMP.dll" (ByRef wIndex As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetMaxPulseStockNum Lib "MCCLPCI_IMP.dll" (ByVal nMaxStockNum As Long) As Long
+Public Declare Function MCC_GetMaxPulseStockNum Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_GetCurPulseStockCount Lib "MCCLPCI_IMP.dll" (ByRef pwStockCount As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetErrorCode Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ClearError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 
 ' ---- Go Home ----
 Public Declare Function MCC_SetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- Trajectory Planning ----
+Public Declare Function MCC_HoldMotion Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0, Optional ByVal bBlockEnd As Long = 0) As Long
+Public Declare Function MCC_ContiMotion Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_AbortMotion Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0, Optional ByVal bBlockEnd As Long = 0) As Long
+Public Declare Function MCC_AbortMotionEx Lib "MCCLPCI_IMP.dll" (ByVal dfDecTime As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableSingleBlock Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableSingleBlock Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_RunSingleBlock Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableBlendInstant Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableBlendInstant Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableBlend Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableBlend Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CheckBlend Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DelayMotion Lib "MCCLPCI_IMP.dll" (ByVal dwTime As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CheckDelay Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Sub MCC_TimeDelay Lib "MCCLPCI_IMP.dll" (ByVal dwTime As Long)
+Public Declare Function MCC_OverrideSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_OverrideSpeedEx Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal bInstant As Long = 1, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_GetOverrideRate Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_FixSpeed Lib "MCCLPCI_IMP.dll" (ByVal bFix As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineX Lib "MCCLPCI_IMP.dll" (ByVal dfX As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineY Lib "MCCLPCI_IMP.dll" (ByVal dfY As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineZ Lib "MCCLPCI_IMP.dll" (ByVal dfZ As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineU Lib "MCCLPCI_IMP.dll" (ByVal dfU As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineV Lib "MCCLPCI_IMP.dll" (ByVal dfV As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineW Lib "MCCLPCI_IMP.dll" (ByVal dfW As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineA Lib "MCCLPCI_IMP.dll" (ByVal dfA As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_LineB Lib "MCCLPCI_IMP.dll" (ByVal dfB As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicaXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicaYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_HelicaZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetOverSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double

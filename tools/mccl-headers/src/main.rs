@@ -236,6 +236,11 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
             }
             seen.insert(name.to_string());
         }
+        // Opaque forward declarations are crate internals cbindgen saw in passing; every
+        // vendor type is a complete struct.
+        if is_opaque_typedef(line) {
+            continue;
+        }
         kept.push_str(line);
         kept.push('\n');
     }
@@ -263,6 +268,15 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
         "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
+}
+
+/// `typedef struct X X;`
+fn is_opaque_typedef(line: &str) -> bool {
+    let Some(rest) = line.strip_prefix("typedef struct ") else {
+        return false;
+    };
+    let mut it = rest.trim_end_matches(';').split_whitespace();
+    matches!((it.next(), it.next(), it.next()), (Some(a), Some(b), None) if a == b)
 }
 
 /// `#define NAME -1` becomes `#define NAME (-1)`, so `x-NAME` cannot turn into `x--1`.
