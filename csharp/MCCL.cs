@@ -679,6 +679,16 @@ public static class MCCL
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetSysMaxSpeed")]
     public static extern double MCC_GetSysMaxSpeed();
 
+    // ---- Local I/O Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetServoOn")]
+    public static extern int MCC_SetServoOn(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetServoOff")]
+    public static extern int MCC_SetServoOff(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnablePosReady")]
+    public static extern int MCC_EnablePosReady(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisablePosReady")]
+    public static extern int MCC_DisablePosReady(ushort wCardIndex = 0);
+
     // ---- Coordinate Management ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetAbsolute")]
     public static extern int MCC_SetAbsolute(ushort wGroupIndex = 0);

@@ -57,6 +57,12 @@ MCC_API int MCC_CALL MCC_CheckDryRun(void);
 MCC_API int MCC_CALL MCC_SetSysMaxSpeed(double dfMaxSpeed);
 MCC_API double MCC_CALL MCC_GetSysMaxSpeed(void);
 
+/* Local I/O Control */
+MCC_API int MCC_CALL MCC_SetServoOn(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetServoOff(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnablePosReady(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisablePosReady(WORD wCardIndex MCC_DEFAULT(0));
+
 /* Coordinate Management */
 MCC_API int MCC_CALL MCC_SetAbsolute(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetIncrease(WORD wGroupIndex MCC_DEFAULT(0));

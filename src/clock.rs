@@ -5,10 +5,12 @@
 //!   (absolute deadlines, never a relative sleep). A tick that starts a whole period or
 //!   more after its deadline is counted as missed; the engine then catches up back to
 //!   back, so virtual time never silently drifts from real time.
-//! * `fast`: ticks run back to back on virtual time while the card has work (a group
-//!   moving) or a program waits in `MCC_TimeDelay`; when idle, virtual time stands still.
-//! * `stepped`: ticks run only while the program waits: `MCC_TimeDelay(ms)` runs exactly
-//!   the ticks that cover `ms`, and a status poll that sees the card busy runs one tick.
+//! * `fast` and `stepped`: virtual time runs only while the program waits, back to back
+//!   as fast as the CPU allows, so a program always sees the same sequence of states
+//!   whatever the machine's load. `MCC_TimeDelay(ms)` runs exactly the ticks covering
+//!   `ms`. A status poll repeated at the same virtual time (a program spinning on
+//!   `MCC_GetMotionStatus`) runs one tick under `stepped`, and under `fast` runs ticks
+//!   until the polled status changes (at most [`FAST_POLL_MAX`] of virtual time).
 //!
 //! Virtual time is `ticks x period` in every mode.
 
@@ -18,14 +20,18 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
+/// The most virtual time one status poll runs under the fast clock.
+pub const FAST_POLL_MAX: Duration = Duration::from_secs(60);
+
 /// The clock modes selectable with the environment variable `MCCL_CLOCK`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ClockMode {
     /// Ticks on absolute real-time deadlines.
     Realtime,
-    /// Back-to-back ticks on virtual time while there is work.
+    /// Back-to-back ticks while the program waits; a spinning status poll runs until the
+    /// status changes.
     Fast,
-    /// Ticks only while the program waits.
+    /// Back-to-back ticks while the program waits; a spinning status poll runs one tick.
     Stepped,
 }
 
@@ -49,6 +55,11 @@ impl ClockMode {
                 .ok_or_else(|| format!("MCCL_CLOCK={v:?} is not one of realtime, fast, stepped")),
         }
     }
+
+    /// Whether virtual time runs only while the program waits.
+    pub fn virtual_time(self) -> bool {
+        self != ClockMode::Realtime
+    }
 }
 
 /// What the engine thread should do next.
@@ -62,10 +73,8 @@ pub enum Next {
 
 #[derive(Debug)]
 struct Inner {
-    /// Ticks may run (in fast and stepped modes) until the tick count reaches this.
+    /// Ticks may run (fast and stepped modes) until the tick count reaches this.
     run_until: u64,
-    /// Incremented whenever new work may have arrived (fast mode wake-up).
-    kicks: u64,
     stop: bool,
     missed: u64,
     /// The earliest tick count a waiter waits for: `tick_done` wakes waiters only then,
@@ -95,7 +104,6 @@ impl Clock {
             ticks: AtomicU64::new(0),
             inner: Mutex::new(Inner {
                 run_until: 0,
-                kicks: 0,
                 stop: false,
                 missed: 0,
                 wake_at: u64::MAX,
@@ -131,9 +139,15 @@ impl Clock {
         Duration::from_nanos(u64::try_from(ns).unwrap_or(u64::MAX))
     }
 
-    /// Virtual time in nanoseconds (exact, u64).
+    /// Virtual time in nanoseconds (exact).
     pub fn now_ns(&self) -> u128 {
         u128::from(self.ticks()) * self.period.as_nanos()
+    }
+
+    /// Ticks covering `d` (rounded up).
+    pub fn ticks_for(&self, d: Duration) -> u64 {
+        let p = self.period.as_nanos().max(1);
+        u64::try_from(d.as_nanos().div_ceil(p)).unwrap_or(u64::MAX)
     }
 
     /// Realtime ticks that started a period or more after their deadline.
@@ -142,48 +156,24 @@ impl Clock {
     }
 
     /// Called by the engine thread before each tick; blocks until the tick may run.
-    /// `busy` tells whether the card has work (used by the fast mode).
-    pub fn wait_next(&self, busy: &dyn Fn() -> bool) -> Next {
-        match self.mode {
-            ClockMode::Realtime => self.wait_realtime(),
-            ClockMode::Fast => loop {
-                let kicks = {
-                    let g = self.inner.lock();
-                    if g.stop {
-                        return Next::Stop;
-                    }
-                    if self.ticks() < g.run_until {
-                        return Next::Tick;
-                    }
-                    g.kicks
-                };
-                // `busy` may take other locks: call it without holding ours.
-                if busy() {
-                    return Next::Tick;
-                }
-                let mut g = self.inner.lock();
-                while !g.stop && g.kicks == kicks && self.ticks() >= g.run_until {
-                    self.cv.wait(&mut g);
-                }
-            },
-            ClockMode::Stepped => {
-                let mut g = self.inner.lock();
-                loop {
-                    if g.stop {
-                        return Next::Stop;
-                    }
-                    if self.ticks() < g.run_until {
-                        return Next::Tick;
-                    }
-                    self.cv.wait(&mut g);
-                }
+    pub fn wait_next(&self) -> Next {
+        if self.mode == ClockMode::Realtime {
+            return self.wait_realtime();
+        }
+        let mut g = self.inner.lock();
+        loop {
+            if g.stop {
+                return Next::Stop;
             }
+            if self.ticks() < g.run_until {
+                return Next::Tick;
+            }
+            self.cv.wait(&mut g);
         }
     }
 
     fn wait_realtime(&self) -> Next {
-        let n = self.ticks();
-        let deadline = self.start + self.at_tick(n);
+        let deadline = self.start + self.at_tick(self.ticks());
         let mut g = self.inner.lock();
         loop {
             if g.stop {
@@ -210,11 +200,15 @@ impl Clock {
         }
     }
 
-    /// Tells a fast clock that work may have arrived (e.g. a command was queued).
-    pub fn kick(&self) {
+    /// Called by the engine thread during a tick: the ticks granted end with this one
+    /// (a fast-clock poll saw the status it waited for change).
+    pub fn end_run_now(&self) {
         let mut g = self.inner.lock();
-        g.kicks = g.kicks.wrapping_add(1);
-        self.cv.notify_all();
+        let next = self.ticks() + 1;
+        if g.run_until > next {
+            g.run_until = next;
+        }
+        g.wake_at = g.wake_at.min(next);
     }
 
     /// Asks the clock to stop; the engine thread and every waiter return.
@@ -239,10 +233,11 @@ impl Clock {
         self.engine_thread.get() == Some(&std::thread::current().id())
     }
 
-    /// Waits until `ticks` more ticks have completed (fast and stepped modes grant them),
-    /// or the clock stops. On the engine thread it returns at once.
+    /// Grants `ticks` more ticks (fast and stepped modes) and waits until they ran, or
+    /// until the run was ended early ([`Clock::end_run_now`]) or the clock stopped. On
+    /// the engine thread it returns at once.
     pub fn wait_ticks(&self, ticks: u64) {
-        if self.on_engine_thread() {
+        if self.on_engine_thread() || ticks == 0 {
             return;
         }
         let mut g = self.inner.lock();
@@ -251,35 +246,24 @@ impl Clock {
             g.run_until = target;
         }
         self.cv.notify_all();
-        while !g.stop && self.ticks() < target {
-            g.wake_at = g.wake_at.min(target);
+        loop {
+            let now = self.ticks();
+            if g.stop || now >= target || now >= g.run_until {
+                return;
+            }
+            g.wake_at = g.wake_at.min(target.min(g.run_until));
             self.cv.wait(&mut g);
         }
     }
 
-    /// `MCC_TimeDelay` on this clock: real sleep in realtime mode, otherwise waits until
-    /// virtual time has advanced by `ms` (rounded up to whole ticks).
+    /// `MCC_TimeDelay` on this clock: a real sleep in realtime mode, otherwise runs the
+    /// ticks that cover `ms` of virtual time.
     pub fn delay_ms(&self, ms: u32) {
-        match self.mode {
-            ClockMode::Realtime => {
-                if !self.on_engine_thread() {
-                    std::thread::sleep(Duration::from_millis(u64::from(ms)))
-                }
-            }
-            ClockMode::Fast | ClockMode::Stepped => {
-                let period_ns = self.period.as_nanos().max(1);
-                let want_ns = u128::from(ms) * 1_000_000;
-                let ticks = want_ns.div_ceil(period_ns);
-                self.wait_ticks(u64::try_from(ticks).unwrap_or(u64::MAX));
-            }
-        }
-    }
-
-    /// A status poll from the program: in stepped mode, when the card is busy, runs one
-    /// tick so that `while (MCC_GetMotionStatus(g) != GMS_STOP);` makes progress.
-    pub fn poll(&self) {
-        if self.mode == ClockMode::Stepped {
-            self.wait_ticks(1);
+        let d = Duration::from_millis(u64::from(ms));
+        if self.mode.virtual_time() {
+            self.wait_ticks(self.ticks_for(d));
+        } else if !self.on_engine_thread() {
+            std::thread::sleep(d);
         }
     }
 }
@@ -289,13 +273,11 @@ mod tests {
     use super::*;
     use std::sync::Arc;
 
-    fn spawn_engine(clock: Arc<Clock>, busy_ticks: u64) -> std::thread::JoinHandle<u64> {
+    fn spawn_engine(clock: Arc<Clock>) -> std::thread::JoinHandle<u64> {
         std::thread::spawn(move || {
             let mut n = 0;
             loop {
-                let c2 = clock.clone();
-                let busy = move || c2.ticks() < busy_ticks;
-                match clock.wait_next(&busy) {
+                match clock.wait_next() {
                     Next::Stop => return n,
                     Next::Tick => {
                         n += 1;
@@ -315,34 +297,43 @@ mod tests {
     }
 
     #[test]
-    fn stepped_runs_exactly_the_delay() {
-        // 2 ms period: a 7 ms delay needs ceil(7/2) = 4 ticks, then nothing runs.
-        let clock = Arc::new(Clock::new(ClockMode::Stepped, Duration::from_millis(2)));
-        let h = spawn_engine(clock.clone(), 0);
-        clock.delay_ms(7);
-        assert_eq!(clock.ticks(), 4);
-        assert_eq!(clock.now(), Duration::from_millis(8));
-        clock.poll();
-        assert_eq!(clock.ticks(), 5);
-        clock.stop();
-        assert_eq!(h.join().unwrap(), 5);
+    fn virtual_clocks_run_exactly_the_delay_and_stand_still_otherwise() {
+        for mode in [ClockMode::Stepped, ClockMode::Fast] {
+            // 2 ms period: a 7 ms delay needs ceil(7/2) = 4 ticks.
+            let clock = Arc::new(Clock::new(mode, Duration::from_millis(2)));
+            let h = spawn_engine(clock.clone());
+            clock.delay_ms(7);
+            assert_eq!(clock.ticks(), 4);
+            assert_eq!(clock.now(), Duration::from_millis(8));
+            std::thread::sleep(Duration::from_millis(20));
+            assert_eq!(clock.ticks(), 4, "no waiter, no time");
+            clock.wait_ticks(1000);
+            assert_eq!(clock.ticks(), 1004);
+            clock.stop();
+            assert_eq!(h.join().unwrap(), 1004);
+        }
     }
 
     #[test]
-    fn fast_runs_while_busy_then_idles() {
+    fn a_run_can_end_early() {
         let clock = Arc::new(Clock::new(ClockMode::Fast, Duration::from_millis(1)));
-        let h = spawn_engine(clock.clone(), 1000);
-        // busy for 1000 ticks; a 1 s delay ends at or after tick 1000
-        clock.delay_ms(1000);
-        assert!(clock.ticks() >= 1000);
-        // idle: virtual time stands still without waiters
-        let t = clock.ticks();
-        std::thread::sleep(Duration::from_millis(20));
-        assert_eq!(clock.ticks(), t);
-        clock.delay_ms(5);
-        assert_eq!(clock.ticks(), t + 5);
+        let c2 = clock.clone();
+        // An engine that ends the run during its 10th tick.
+        let h = std::thread::spawn(move || loop {
+            match c2.wait_next() {
+                Next::Stop => return,
+                Next::Tick => {
+                    if c2.ticks() == 9 {
+                        c2.end_run_now();
+                    }
+                    c2.tick_done();
+                }
+            }
+        });
+        clock.wait_ticks(1000);
+        assert_eq!(clock.ticks(), 10);
         clock.stop();
-        assert_eq!(h.join().unwrap(), t + 5);
+        h.join().unwrap();
     }
 
     #[test]

@@ -659,6 +659,20 @@ Public Module MCCL
     Public Function MCC_GetSysMaxSpeed() As Double
     End Function
 
+    ' ---- Local I/O Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetServoOn")>
+    Public Function MCC_SetServoOn(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetServoOff")>
+    Public Function MCC_SetServoOff(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnablePosReady")>
+    Public Function MCC_EnablePosReady(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisablePosReady")>
+    Public Function MCC_DisablePosReady(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+
     ' ---- Coordinate Management ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetAbsolute")>
     Public Function MCC_SetAbsolute(Optional ByVal wGroupIndex As UShort = 0) As Integer

@@ -577,6 +577,12 @@ Public Declare Function MCC_CheckDryRun Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_SetSysMaxSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfMaxSpeed As Double) As Long
 Public Declare Function MCC_GetSysMaxSpeed Lib "MCCLPCI_IMP.dll" () As Double
 
+' ---- Local I/O Control ----
+Public Declare Function MCC_SetServoOn Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetServoOff Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+
 ' ---- Coordinate Management ----
 Public Declare Function MCC_SetAbsolute Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetIncrease Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long

@@ -55,6 +55,12 @@ int main()
     nRet = MCC_ArcXY(15, 15, 20, 20, g_nGroupIndex);
     printf("MCC_ArcXY(15, 15, 20, 20) with three points on one line: returned %d (PARAMETER_ERR)\n", nRet);
     CHECK_EQ(nRet, PARAMETER_ERR);
+    // User manual §2.6.3 VI: an arc parameter error is also recorded (0xF104) and the
+    // group runs no further command until MCC_ClearError.
+    printf("MCC_GetErrorCode: 0x%X (bad arc); MCC_ClearError\n", MCC_GetErrorCode(g_nGroupIndex));
+    CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0xF104);
+    CHECK_EQ(MCC_ClearError(g_nGroupIndex), NO_ERR);
+    CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0);
     nRet = MCC_ArcXY(10, 20, 20, 20, g_nGroupIndex);
     printf("MCC_ArcXY(10, 20, 20, 20): returned command index %d\n", nRet);
     CHECK_EQ(nRet, 1);   // the rejected arc took no index
@@ -94,8 +100,11 @@ int main()
     // Step 4: a full clockwise circle about (25, 20).
     nRet = MCC_CircleXY(25, 20, 2, g_nGroupIndex);        // direction must be CIR_CW/CIR_CCW
     CHECK_EQ(nRet, PARAMETER_ERR);
+    CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0);        // argument errors record nothing
     nRet = MCC_CircleXY(20, 20, CIR_CW, g_nGroupIndex);   // centre on the start point: no circle
     CHECK_EQ(nRet, PARAMETER_ERR);
+    CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0xF104);
+    CHECK_EQ(MCC_ClearError(g_nGroupIndex), NO_ERR);
     nRet = MCC_CircleXY(25, 20, CIR_CW, g_nGroupIndex);
     printf("MCC_CircleXY(25, 20, CIR_CW): returned command index %d\n", nRet);
     CHECK_EQ(nRet, 2);

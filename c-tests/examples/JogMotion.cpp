@@ -12,6 +12,7 @@
 //   MCC_JogConti(-1, 100, 0): X to -20 at 50 UU/s: 40/50 + 0.3 = 1.1 s
 //   MCC_JogConti(1, 10, 1) on Y, stopped with MCC_AbortMotionEx(100) after 1 s:
 //     Y stops between 0 and 20 within 100 ms (+ one period); the group is at GMS_STOP.
+#include <math.h>
 #include "MotionSys.h"
 
 static long PulseX(int g)
@@ -49,7 +50,9 @@ int main()
     nRet = MCC_JogSpace(-1, 10, 0, g_nGroupIndex);
     printf("MCC_JogSpace(-1, 10, 0): returned %d\n", nRet);
     CHECK(nRet >= 0);
-    CheckEndsIn(g_nGroupIndex, 500, "JogSpace -1 UU at 5 UU/s");
+    // 1 UU is too short to reach 5 UU/s with 300 ms ramps (they need 2 x 0.75 UU), so the
+    // peak drops and the acceleration 5/0.3 UU/s^2 stays: 2 sqrt(1 x 0.3 / 5) = 489.9 ms.
+    CheckEndsIn(g_nGroupIndex, 2000 * sqrt(0.3 / 5), "JogSpace -1 UU at 5 UU/s");
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, -0.8, 0, 0);
     CHECK_EQ(PulseX(g_nGroupIndex), -400);

@@ -59,6 +59,7 @@ int main()
     nStatus = MCC_GetMotionStatus(g_nGroupIndex);
     printf("During MCC_DelayMotion(10000): status %d (GMS_DELAYING = %d)\n", nStatus, GMS_DELAYING);
     CHECK_EQ(nStatus, GMS_DELAYING);
+    CheckPosXYZ(g_nGroupIndex, 20, 20, 0);   // the delay does not move anything
 
     // Step 6: the next line waits for the delay.
     MCC_SetFeedSpeed(1, g_nGroupIndex);
@@ -77,7 +78,6 @@ int main()
     while (MCC_GetMotionStatus(g_nGroupIndex) == GMS_DELAYING && n++ < 100000)
         MCC_TimeDelay(1);
     CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_RUNNING);
-    CheckPosXYZ(g_nGroupIndex, 20, 20, 0);   // the delay did not move anything
     MCC_TimeDelay(1000);
 
     // Step 7: hold: GMS_HOLD, the axes stop between (20,20) and (50,50).

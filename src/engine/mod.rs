@@ -19,7 +19,7 @@ use command::AxisMech;
 use group::GroupState;
 use parking_lot::{Mutex, MutexGuard};
 use snapshot::{GroupSnapshot, SnapshotCell};
-use std::sync::atomic::{AtomicBool, AtomicI64, AtomicU32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, AtomicI64, AtomicU32, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::thread::{JoinHandle, ThreadId};
 use std::time::Duration;
@@ -47,16 +47,37 @@ pub struct Shared {
     groups: Vec<Mutex<GroupState>>,
     /// Published state per group slot.
     snaps: Vec<SnapshotCell>,
-    /// Per running group: whether it has work (published with its snapshot), so the fast
-    /// clock can ask without locking every group each tick.
-    busy: Vec<AtomicBool>,
+    /// Per group slot: the tick count at its last status poll and last position read
+    /// (virtual clocks: a repeated read at the same virtual time is a program waiting).
+    last_poll: Vec<[AtomicU64; 2]>,
+    /// Per group slot: the published motion status.
+    status: Vec<AtomicI32>,
+    /// A fast-clock poll in progress: group slot (or -1) and the status it saw; the engine
+    /// ends the run of ticks when that status changes.
+    watch: (AtomicI32, AtomicI32),
     /// Pulse counter per card and channel (what the card has output).
     pub pulse_counter: Vec<[AtomicI64; AXES]>,
     /// `MCC_EnableDryRun` is in effect.
     pub dry_run: AtomicBool,
+    /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
+    pub servo_on: Vec<AtomicU32>,
+    /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
+    pub pos_ready: Vec<AtomicBool>,
     /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
     pub max_pulse_stock: AtomicU32,
     trace: Mutex<Option<trace::Trace>>,
+}
+
+/// Reads of one kind at the same virtual time that make a program "waiting" (a program
+/// that checks a status twice is not spinning; one that reads it a third time is).
+pub const SPIN_POLLS: u64 = 3;
+
+fn pack_poll(tick: u64, count: u64) -> u64 {
+    (tick << 8) | count.min(255)
+}
+
+fn unpack_poll(v: u64) -> (u64, u64) {
+    (v >> 8, v & 0xFF)
 }
 
 /// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum` (ZH manual §2.6.5: 60).
@@ -72,6 +93,80 @@ impl Shared {
             .flatten()
             .ok_or(McclError::Group)?;
         Ok(self.groups[slot].lock())
+    }
+
+    /// A status poll of group `g` that found it busy with `status`. Under a virtual clock a
+    /// poll repeated [`SPIN_POLLS`] times at the same virtual time is a program waiting:
+    /// `stepped` runs one tick,
+    /// `fast` runs ticks until the group's status is no longer `status` (at most
+    /// [`crate::clock::FAST_POLL_MAX`]). A single status check changes nothing.
+    pub fn poll(&self, g: u16, status: i32) {
+        if !self.repeated(g, 0) {
+            return;
+        }
+        match self.clock.mode() {
+            ClockMode::Realtime => {}
+            ClockMode::Stepped => self.clock.wait_ticks(1),
+            ClockMode::Fast => {
+                self.watch.1.store(status, Ordering::Release);
+                self.watch.0.store(i32::from(g), Ordering::Release);
+                self.clock
+                    .wait_ticks(self.clock.ticks_for(crate::clock::FAST_POLL_MAX));
+                self.watch.0.store(-1, Ordering::Release);
+            }
+        }
+        self.mark_polled(g, 0);
+    }
+
+    /// A position read of group `g` (`MCC_GetCurPos`): repeated [`SPIN_POLLS`] times at the
+    /// same virtual time, it runs one tick, so `while (x < 10) MCC_GetCurPos(&x, ...)` moves.
+    pub fn poll_position(&self, g: u16) {
+        if self.repeated(g, 1)
+            && self.status[usize::from(g)].load(Ordering::Acquire)
+                != crate::vendor::consts::GMS_STOP
+        {
+            self.clock.wait_ticks(1);
+        }
+        self.mark_polled(g, 1);
+    }
+
+    /// Counts reads of one kind at the same virtual time; from the
+    /// [`SPIN_POLLS`]th on the program is taken to be waiting.
+    fn repeated(&self, g: u16, kind: usize) -> bool {
+        if !self.clock.mode().virtual_time() {
+            return false;
+        }
+        let Some(l) = self.last_poll.get(usize::from(g)) else {
+            return false;
+        };
+        let now = self.clock.ticks();
+        let (tick, count) = unpack_poll(l[kind].load(Ordering::Acquire));
+        let count = if tick == now { count + 1 } else { 1 };
+        l[kind].store(pack_poll(now, count), Ordering::Release);
+        count >= SPIN_POLLS
+    }
+
+    fn mark_polled(&self, g: u16, kind: usize) {
+        if let Some(l) = self.last_poll.get(usize::from(g)) {
+            let now = self.clock.ticks();
+            let (tick, count) = unpack_poll(l[kind].load(Ordering::Acquire));
+            if tick != now {
+                // Time moved on during the poll: the next read is the first at this time.
+                l[kind].store(pack_poll(now, 0), Ordering::Release);
+            } else {
+                l[kind].store(pack_poll(now, count), Ordering::Release);
+            }
+        }
+    }
+
+    /// During a tick: ends a fast-clock poll's run when its group's status changed.
+    fn check_watch(&self) {
+        let g = self.watch.0.load(Ordering::Acquire);
+        if let Ok(g) = usize::try_from(g) {
+            if self.status[g].load(Ordering::Acquire) != self.watch.1.load(Ordering::Acquire) {
+                self.clock.end_run_now();
+            }
+        }
     }
 
     /// Whether group `g` runs.
@@ -92,9 +187,7 @@ impl Shared {
     pub fn publish(&self, g: &GroupState) {
         let snap = g.snapshot();
         self.snaps[g.index].store(&snap);
-        if let Some(Some(n)) = self.slots.get(g.index) {
-            self.busy[*n].store(g.busy(), Ordering::Release);
-        }
+        self.status[g.index].store(snap.status, Ordering::Release);
         if !self.dry_run.load(Ordering::Relaxed) {
             for (i, ax) in g.axes.iter().enumerate() {
                 if let Some((card, ch)) = ax.channel {
@@ -106,6 +199,15 @@ impl Shared {
         }
     }
 
+    /// Checks that `card` is one of the cards passed to `MCC_InitSystem`.
+    pub fn card(&self, card: crate::config::CardIx) -> McclResult<usize> {
+        if card.0 < self.pulse_counter.len() {
+            Ok(card.0)
+        } else {
+            Err(McclError::Parameter)
+        }
+    }
+
     /// Whether a group driving channel `ch` of `card` is moving.
     pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
         self.groups.iter().any(|g| {
@@ -113,11 +215,6 @@ impl Shared {
             g.status() == crate::vendor::consts::GMS_RUNNING
                 && g.axes.iter().any(|a| a.channel == Some((card, ch)))
         })
-    }
-
-    /// Whether any group has work (the fast clock ticks while this is true).
-    pub fn busy(&self) -> bool {
-        self.busy.iter().any(|b| b.load(Ordering::Acquire))
     }
 
     /// Every running group, locked one at a time.
@@ -135,11 +232,6 @@ impl Shared {
             let axes = axes_of(&g.def, mac);
             g.reset(axes);
         });
-    }
-
-    /// Tells a fast clock that work arrived.
-    pub fn kick(&self) {
-        self.clock.kick();
     }
 
     /// One tick of the whole card.
@@ -186,13 +278,19 @@ impl Engine {
         let shared = Arc::new(Shared {
             clock: Clock::new(mode, period),
             slots,
-            busy: (0..gs.len()).map(|_| AtomicBool::new(false)).collect(),
+            last_poll: (0..GROUPS)
+                .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
+                .collect(),
+            status: (0..GROUPS).map(|_| AtomicI32::new(-1)).collect(),
+            watch: (AtomicI32::new(-1), AtomicI32::new(0)),
             groups: gs,
             snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
             pulse_counter: (0..cards)
                 .map(|_| std::array::from_fn(|_| AtomicI64::new(0)))
                 .collect(),
             dry_run: AtomicBool::new(false),
+            servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
+            pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
             trace: Mutex::new(trace),
         });
@@ -244,11 +342,11 @@ impl Drop for Engine {
 fn run(shared: &Shared) {
     shared.clock.set_engine_thread();
     loop {
-        let busy = || shared.busy();
-        match shared.clock.wait_next(&busy) {
+        match shared.clock.wait_next() {
             Next::Stop => return,
             Next::Tick => {
                 shared.tick();
+                shared.check_watch();
                 // Interrupt callbacks collected in the tick run here, without any lock.
                 shared.clock.tick_done();
             }

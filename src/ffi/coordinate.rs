@@ -26,7 +26,9 @@ pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
     guard(|| with_group(wGroupIndex, |g| Ok(c_int::from(g.settings.absolute))))
 }
 
-/// Current command position in user coordinates (UU).
+/// Current command position in user coordinates (UU). Under the fast and stepped clocks
+/// a read repeated at the same virtual time while the group moves runs one tick, so a
+/// program that waits by reading positions makes progress.
 ///
 /// # Safety
 /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
@@ -45,7 +47,9 @@ pub unsafe extern "C" fn MCC_GetCurPos(
     guard(|| {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
         outs8(&p)?;
-        let s = system::active()?.snapshot(wGroupIndex)?;
+        let shared = system::active()?;
+        shared.poll_position(wGroupIndex);
+        let s = shared.snapshot(wGroupIndex)?;
         // SAFETY: checked non-null; the caller passes writable doubles.
         unsafe { write8(&p, s.pos) };
         Ok(c::NO_ERR)

@@ -4,6 +4,7 @@
 
 pub mod coordinate;
 pub mod jog;
+pub mod local_io;
 pub mod motion;
 pub mod ptp;
 pub mod status;
@@ -105,8 +106,7 @@ mod tests;
 #[cfg(test)]
 mod tests_motion;
 
-/// Runs `f` on running group `g` with its lock held, then publishes the group's state and
-/// wakes a fast clock. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
+/// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
 /// that does not run.
 pub fn with_group<R>(
     g: u16,
@@ -117,8 +117,6 @@ pub fn with_group<R>(
     let r = f(&mut grp);
     // Published on failure too: a refused arc still records its error (0xF104).
     shared.publish(&grp);
-    drop(grp);
-    shared.kick();
     r
 }
 

@@ -6,15 +6,16 @@ use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
 
-/// The group's motion status (`GMS_*`). Reads the engine's published snapshot; under the
-/// stepped clock a poll that finds the group busy runs one tick.
+/// The group's motion status (`GMS_*`). Reads the engine's published snapshot. Under the
+/// fast and stepped clocks a poll repeated at the same virtual time is a program waiting:
+/// virtual time runs (see `clock`), so `while (MCC_GetMotionStatus(g) != GMS_STOP);` ends.
 #[no_mangle]
 pub extern "C" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
     guard(|| {
         let shared = system::active()?;
         let status = shared.snapshot(wGroupIndex)?.status;
         if status != c::GMS_STOP {
-            shared.clock.poll();
+            shared.poll(wGroupIndex, status);
             return Ok(shared.snapshot(wGroupIndex)?.status);
         }
         Ok(status)

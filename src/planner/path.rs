@@ -525,6 +525,10 @@ fn plane_arc(
 }
 
 /// Arc/circle/helix about a plane center through `theta_deg` with normal travel `rise`.
+/// A radius below this (UU) is a center on the start point: the end point of a previous
+/// arc carries rounding of about 1e-15, which must not pass as a circle.
+pub const MIN_RADIUS: f64 = 1e-9;
+
 fn theta_arc(
     plane: Plane,
     start: &Axes,
@@ -537,7 +541,7 @@ fn theta_arc(
     check_all_finite(&center, "arc center")?;
     let (ia, ib, n) = plane.axes();
     let radius = (start[ia] - center[0]).hypot(start[ib] - center[1]);
-    if !positive_finite(radius) {
+    if !positive_finite(radius) || radius < MIN_RADIUS {
         return Err(PlanError::BadArc);
     }
     let sweep = theta_deg.to_radians();
