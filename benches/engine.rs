@@ -83,6 +83,40 @@ fn main() {
     );
     assert!(moving, "all groups still moving during the measurement");
 
+    // For scale: one group of 8 axes.
+    MCC_CloseSystem();
+    MCC_CloseAllGroups();
+    std::env::set_var("MCCL_CLOCK", "fast");
+    let mut one = [SYS_CARD_CONFIG {
+        wCardType: IMP_III_8_AXIS_PCI_CARD,
+        ..Default::default()
+    }; 1];
+    // SAFETY: one valid card description.
+    assert_eq!(unsafe { MCC_InitSystem(1, one.as_mut_ptr(), 1) }, NO_ERR);
+    MCC_SetFeedSpeed(10.0, 0);
+    MCC_Line(
+        100.0,
+        100.0,
+        100.0,
+        100.0,
+        100.0,
+        100.0,
+        100.0,
+        100.0,
+        0,
+        IMP_AXIS_ALL,
+    );
+    let t = Instant::now();
+    MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(10_000);
+    let wall1 = t.elapsed().as_secs_f64();
+    println!(
+        "  one group for scale: {:.2} us per tick, {:.0}x real time",
+        wall1 / 10_000.0 * 1e6,
+        10.0 / wall1
+    );
+    init("fast");
+    start_all_moving(100.0);
+
     // Read path while the engine keeps ticking on the other core.
     let reader = std::thread::spawn(|| {
         let mut p = [0.0f64; 8];

@@ -13,23 +13,13 @@
 //! position becomes its exact planned end: nothing accumulates over millions of moves.
 
 use super::command::{AxisMech, Command, Ctx, Plan, Settings};
-use super::snapshot::GroupSnapshot;
+use super::snapshot::{round_pulses, GroupSnapshot, Info, Motion};
 use crate::config::{GroupDef, AXES};
 use crate::error::{McclError, McclResult};
 use crate::planner::{Axes, RateRamp};
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
-
-/// Rounds to the nearest whole pulse (halves away from zero) with a float-to-int
-/// conversion instead of a libm call: this runs for every axis on every tick.
-fn round_pulses(x: f64) -> i64 {
-    if x >= 0.0 {
-        (x + 0.5) as i64
-    } else {
-        (x - 0.5) as i64
-    }
-}
 
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
 /// far above the rounding of summing millions of ticks).
@@ -145,6 +135,7 @@ pub struct GroupState {
     ld_index: i32,
     last_started: Option<(i32, i32)>,
     status: i32,
+    published_info: Option<Info>,
 }
 
 impl GroupState {
@@ -181,6 +172,7 @@ impl GroupState {
             ld_index: 0,
             last_started: None,
             status: c::GMS_STOP,
+            published_info: None,
         }
     }
 
@@ -719,8 +711,18 @@ impl GroupState {
         round_pulses((self.pos[i] + self.offset[i]) * self.axes[i].factor)
     }
 
-    /// The state to publish.
-    pub fn snapshot(&self) -> GroupSnapshot {
+    /// The part of the published state that changes every tick.
+    pub fn motion(&self) -> Motion {
+        Motion {
+            status: self.status,
+            pos: self.pos,
+            vel: self.vel,
+            path_speed: self.path_speed(),
+        }
+    }
+
+    /// The part of the published state that changes when commands start or end.
+    pub fn info(&self) -> Info {
         let mut cmd = COMMAND_INFO {
             nType: -1,
             nCommandIndex: -1,
@@ -753,16 +755,22 @@ impl GroupState {
                 nCommandIndex_LD: self.last_started.map_or(0, |l| l.1),
             };
         }
-        GroupSnapshot {
-            status: self.status,
+        Info {
             error: self.error,
             queued: i32::try_from(self.queue.len()).unwrap_or(i32::MAX),
-            pos: self.pos,
-            ref_pos: std::array::from_fn(|i| self.pos[i] + self.offset[i]),
-            pulses: std::array::from_fn(|i| self.pulses(i)),
-            vel: self.vel,
-            path_speed: self.path_speed(),
             cmd,
+            offset: self.offset,
+            factor: self.axes.map(|a| a.factor),
         }
+    }
+
+    /// The whole published state (as readers see it).
+    pub fn snapshot(&self) -> GroupSnapshot {
+        GroupSnapshot::from_parts(&self.motion(), &self.info())
+    }
+
+    /// The info part last published, so an unchanged one is not stored again.
+    pub fn published_info(&mut self) -> &mut Option<Info> {
+        &mut self.published_info
     }
 }

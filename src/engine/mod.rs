@@ -184,15 +184,21 @@ impl Shared {
 
     /// Publishes a group's state (call with its lock held) and, unless dry-running, the
     /// pulse counters of its channels.
-    pub fn publish(&self, g: &GroupState) {
-        let snap = g.snapshot();
-        self.snaps[g.index].store(&snap);
-        self.status[g.index].store(snap.status, Ordering::Release);
+    pub fn publish(&self, g: &mut GroupState) {
+        let cell = &self.snaps[g.index];
+        let info = g.info();
+        if g.published_info().as_ref() != Some(&info) {
+            cell.store_info(&info);
+            *g.published_info() = Some(info);
+        }
+        let motion = g.motion();
+        cell.store_motion(&motion);
+        self.status[g.index].store(motion.status, Ordering::Release);
         if !self.dry_run.load(Ordering::Relaxed) {
             for (i, ax) in g.axes.iter().enumerate() {
                 if let Some((card, ch)) = ax.channel {
                     if let Some(c) = self.pulse_counter.get(card) {
-                        c[ch].store(snap.pulses[i], Ordering::Relaxed);
+                        c[ch].store(g.pulses(i), Ordering::Relaxed);
                     }
                 }
             }
@@ -222,7 +228,7 @@ impl Shared {
         for g in &self.groups {
             let mut g = g.lock();
             f(&mut g);
-            self.publish(&g);
+            self.publish(&mut g);
         }
     }
 
@@ -242,7 +248,7 @@ impl Shared {
         for g in &self.groups {
             let mut g = g.lock();
             g.tick(dt);
-            self.publish(&g);
+            self.publish(&mut g);
             if let Some(t) = trace.as_mut() {
                 t.row(t_ns, &g);
             }

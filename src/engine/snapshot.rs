@@ -29,124 +29,205 @@ pub struct GroupSnapshot {
     pub cmd: COMMAND_INFO,
 }
 
-const WORDS: usize = 3 + 8 * 4 + 1 + 15;
+/// The part of a snapshot that changes on every tick of a moving group.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Motion {
+    /// Motion status (`GMS_*`).
+    pub status: i32,
+    /// Command position in user coordinates (UU).
+    pub pos: Axes,
+    /// Velocity per axis (UU/s).
+    pub vel: Axes,
+    /// Tangential (path) speed (UU/s).
+    pub path_speed: f64,
+}
+
+/// The part of a snapshot that changes when commands start, end or are queued.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Info {
+    /// Error record (0 when none).
+    pub error: i32,
+    /// Commands queued and not yet started.
+    pub queued: i32,
+    /// The command being executed.
+    pub cmd: COMMAND_INFO,
+    /// Reference position minus user position, per axis (UU).
+    pub offset: Axes,
+    /// Pulses per UU per axis (negative when the output is reversed).
+    pub factor: Axes,
+}
+
+/// Rounds to the nearest whole pulse (halves away from zero) with a float-to-int
+/// conversion instead of a libm call: this runs for every axis on every tick.
+pub fn round_pulses(x: f64) -> i64 {
+    if x >= 0.0 {
+        (x + 0.5) as i64
+    } else {
+        (x - 0.5) as i64
+    }
+}
 
 impl GroupSnapshot {
-    fn to_words(self) -> [u64; WORDS] {
-        let mut w = [0u64; WORDS];
-        let mut i = 0;
-        let mut put = |x: u64| {
-            w[i] = x;
-            i += 1;
-        };
-        put(self.status as u32 as u64);
-        put(self.error as u32 as u64);
-        put(self.queued as u32 as u64);
-        self.pos.iter().for_each(|v| put(v.to_bits()));
-        self.ref_pos.iter().for_each(|v| put(v.to_bits()));
-        self.pulses.iter().for_each(|v| put(*v as u64));
-        self.vel.iter().for_each(|v| put(v.to_bits()));
-        put(self.path_speed.to_bits());
-        let c = &self.cmd;
-        put(c.nType as u32 as u64);
-        put(c.nCommandIndex as u32 as u64);
-        put(c.dfFeedSpeed.to_bits());
-        c.dfPos.iter().for_each(|v| put(v.to_bits()));
-        put(c.dfAcctime.to_bits());
-        put(c.dfDectime.to_bits());
-        put(c.nMotionPhase as u32 as u64);
-        put(c.nCommandIndex_LD as u32 as u64);
-        w
-    }
-
-    fn from_words(w: &[u64; WORDS]) -> GroupSnapshot {
-        let mut it = w.iter().copied();
-        let mut next = || it.next().unwrap_or(0);
-        let status = next() as u32 as i32;
-        let error = next() as u32 as i32;
-        let queued = next() as u32 as i32;
-        let pos = std::array::from_fn(|_| f64::from_bits(next()));
-        let ref_pos = std::array::from_fn(|_| f64::from_bits(next()));
-        let pulses = std::array::from_fn(|_| next() as i64);
-        let vel = std::array::from_fn(|_| f64::from_bits(next()));
-        let path_speed = f64::from_bits(next());
-        let nType = next() as u32 as i32;
-        let nCommandIndex = next() as u32 as i32;
-        let dfFeedSpeed = f64::from_bits(next());
-        let dfPos = std::array::from_fn(|_| f64::from_bits(next()));
-        let dfAcctime = f64::from_bits(next());
-        let dfDectime = f64::from_bits(next());
-        let nMotionPhase = next() as u32 as i32;
-        let nCommandIndex_LD = next() as u32 as i32;
+    /// Assembles a snapshot from its two parts (pulses and reference position derived).
+    pub fn from_parts(m: &Motion, i: &Info) -> GroupSnapshot {
         GroupSnapshot {
-            status,
-            error,
-            queued,
-            pos,
-            ref_pos,
-            pulses,
-            vel,
-            path_speed,
-            cmd: COMMAND_INFO {
-                nType,
-                nCommandIndex,
-                dfFeedSpeed,
-                dfPos,
-                dfAcctime,
-                dfDectime,
-                nMotionPhase,
-                nCommandIndex_LD,
-            },
+            status: m.status,
+            error: i.error,
+            queued: i.queued,
+            pos: m.pos,
+            ref_pos: std::array::from_fn(|k| m.pos[k] + i.offset[k]),
+            pulses: std::array::from_fn(|k| round_pulses((m.pos[k] + i.offset[k]) * i.factor[k])),
+            vel: m.vel,
+            path_speed: m.path_speed,
+            cmd: i.cmd,
         }
     }
 }
 
-/// A published [`GroupSnapshot`] (sequence lock).
-#[derive(Debug)]
-pub struct SnapshotCell {
-    seq: AtomicU64,
-    words: [AtomicU64; WORDS],
+const MOTION_WORDS: usize = 1 + 8 + 8 + 1;
+const INFO_WORDS: usize = 2 + 15 + 8 + 8;
+
+fn motion_words(m: &Motion) -> [u64; MOTION_WORDS] {
+    let mut w = [0u64; MOTION_WORDS];
+    w[0] = m.status as u32 as u64;
+    for k in 0..8 {
+        w[1 + k] = m.pos[k].to_bits();
+        w[9 + k] = m.vel[k].to_bits();
+    }
+    w[17] = m.path_speed.to_bits();
+    w
 }
 
-impl Default for SnapshotCell {
+fn motion_from(w: &[u64; MOTION_WORDS]) -> Motion {
+    Motion {
+        status: w[0] as u32 as i32,
+        pos: std::array::from_fn(|k| f64::from_bits(w[1 + k])),
+        vel: std::array::from_fn(|k| f64::from_bits(w[9 + k])),
+        path_speed: f64::from_bits(w[17]),
+    }
+}
+
+fn info_words(i: &Info) -> [u64; INFO_WORDS] {
+    let mut w = [0u64; INFO_WORDS];
+    let c = &i.cmd;
+    w[0] = i.error as u32 as u64;
+    w[1] = i.queued as u32 as u64;
+    w[2] = c.nType as u32 as u64;
+    w[3] = c.nCommandIndex as u32 as u64;
+    w[4] = c.dfFeedSpeed.to_bits();
+    for k in 0..8 {
+        w[5 + k] = c.dfPos[k].to_bits();
+        w[17 + k] = i.offset[k].to_bits();
+        w[25 + k] = i.factor[k].to_bits();
+    }
+    w[13] = c.dfAcctime.to_bits();
+    w[14] = c.dfDectime.to_bits();
+    w[15] = c.nMotionPhase as u32 as u64;
+    w[16] = c.nCommandIndex_LD as u32 as u64;
+    w
+}
+
+fn info_from(w: &[u64; INFO_WORDS]) -> Info {
+    Info {
+        error: w[0] as u32 as i32,
+        queued: w[1] as u32 as i32,
+        cmd: COMMAND_INFO {
+            nType: w[2] as u32 as i32,
+            nCommandIndex: w[3] as u32 as i32,
+            dfFeedSpeed: f64::from_bits(w[4]),
+            dfPos: std::array::from_fn(|k| f64::from_bits(w[5 + k])),
+            dfAcctime: f64::from_bits(w[13]),
+            dfDectime: f64::from_bits(w[14]),
+            nMotionPhase: w[15] as u32 as i32,
+            nCommandIndex_LD: w[16] as u32 as i32,
+        },
+        offset: std::array::from_fn(|k| f64::from_bits(w[17 + k])),
+        factor: std::array::from_fn(|k| f64::from_bits(w[25 + k])),
+    }
+}
+
+/// A sequence lock over `N` atomic words: one writer at a time, any number of readers,
+/// which retry while a write is in progress.
+#[derive(Debug)]
+struct SeqWords<const N: usize> {
+    seq: AtomicU64,
+    words: [AtomicU64; N],
+}
+
+impl<const N: usize> Default for SeqWords<N> {
     fn default() -> Self {
-        SnapshotCell {
+        SeqWords {
             seq: AtomicU64::new(0),
             words: std::array::from_fn(|_| AtomicU64::new(0)),
         }
     }
 }
 
-impl SnapshotCell {
-    /// Publishes `s`. Callers must be serialised (they hold the group's lock).
-    pub fn store(&self, s: &GroupSnapshot) {
-        let w = s.to_words();
+impl<const N: usize> SeqWords<N> {
+    fn store(&self, w: &[u64; N]) {
         let seq = self.seq.load(Ordering::Relaxed);
         self.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
         fence(Ordering::Release);
         for (cell, v) in self.words.iter().zip(w) {
-            cell.store(v, Ordering::Relaxed);
+            cell.store(*v, Ordering::Relaxed);
         }
         self.seq.store(seq.wrapping_add(2), Ordering::Release);
     }
 
-    /// Reads the last published snapshot (never a torn one).
-    pub fn load(&self) -> GroupSnapshot {
+    fn load(&self) -> [u64; N] {
         loop {
             let s1 = self.seq.load(Ordering::Acquire);
             if s1 & 1 == 1 {
                 std::hint::spin_loop();
                 continue;
             }
-            let mut w = [0u64; WORDS];
+            let mut w = [0u64; N];
             for (v, cell) in w.iter_mut().zip(&self.words) {
                 *v = cell.load(Ordering::Relaxed);
             }
             fence(Ordering::Acquire);
             if self.seq.load(Ordering::Relaxed) == s1 {
-                return GroupSnapshot::from_words(&w);
+                return w;
             }
         }
+    }
+}
+
+/// A published [`GroupSnapshot`], in two sequence-locked parts: [`Motion`] (stored every
+/// tick) and [`Info`] (stored when it changes).
+#[derive(Debug, Default)]
+pub struct SnapshotCell {
+    motion: SeqWords<MOTION_WORDS>,
+    info: SeqWords<INFO_WORDS>,
+}
+
+impl SnapshotCell {
+    /// Publishes the motion part. Callers must be serialised (they hold the group's lock).
+    pub fn store_motion(&self, m: &Motion) {
+        self.motion.store(&motion_words(m));
+    }
+
+    /// Publishes the info part. Callers must be serialised.
+    pub fn store_info(&self, i: &Info) {
+        self.info.store(&info_words(i));
+    }
+
+    /// Publishes both parts.
+    pub fn store(&self, m: &Motion, i: &Info) {
+        self.store_info(i);
+        self.store_motion(m);
+    }
+
+    /// Reads the last published snapshot (each part never torn).
+    pub fn load(&self) -> GroupSnapshot {
+        let i = info_from(&self.info.load());
+        let m = motion_from(&self.motion.load());
+        GroupSnapshot::from_parts(&m, &i)
+    }
+
+    /// Reads only the motion part.
+    pub fn load_motion(&self) -> Motion {
+        motion_from(&self.motion.load())
     }
 }
 
@@ -156,23 +237,45 @@ mod tests {
 
     #[test]
     fn round_trip() {
-        let mut s = GroupSnapshot {
+        let mut m = Motion {
             status: 2,
-            error: 0xF301,
-            queued: 17,
             path_speed: 12.5,
             ..Default::default()
         };
-        s.pos[3] = -1.25;
-        s.ref_pos[7] = 9.0;
-        s.pulses[1] = -123_456_789_012;
-        s.vel[0] = 3.5;
-        s.cmd.nType = -1;
-        s.cmd.dfPos[5] = 42.0;
-        s.cmd.nCommandIndex_LD = 77;
+        m.pos[3] = -1.25;
+        m.pos[1] = -2.0;
+        m.vel[0] = 3.5;
+        let mut i = Info {
+            error: 0xF301,
+            queued: 17,
+            ..Default::default()
+        };
+        i.offset[7] = 9.0;
+        i.factor = [500.0; 8];
+        i.factor[1] = -1000.0;
+        i.cmd.nType = -1;
+        i.cmd.dfPos[5] = 42.0;
+        i.cmd.nCommandIndex_LD = 77;
         let cell = SnapshotCell::default();
-        cell.store(&s);
-        assert_eq!(cell.load(), s);
+        cell.store(&m, &i);
+        let s = cell.load();
+        assert_eq!((s.status, s.error, s.queued), (2, 0xF301, 17));
+        assert_eq!(s.pos, m.pos);
+        assert_eq!(s.vel, m.vel);
+        assert_eq!(s.ref_pos[7], 9.0);
+        assert_eq!(s.pulses[3], -625, "-1.25 x 500");
+        assert_eq!(s.pulses[1], 2000, "-2 x -1000");
+        assert_eq!(s.pulses[7], 4500);
+        assert_eq!(s.cmd, i.cmd);
+        assert_eq!(cell.load_motion(), m);
+    }
+
+    #[test]
+    fn pulses_round_halves_away_from_zero() {
+        assert_eq!(round_pulses(2.5), 3);
+        assert_eq!(round_pulses(-2.5), -3);
+        assert_eq!(round_pulses(2.4999), 2);
+        assert_eq!(round_pulses(-0.4), 0);
     }
 
     #[test]
@@ -182,7 +285,7 @@ mod tests {
         let writer = std::thread::spawn(move || {
             for i in 0..20_000 {
                 let v = f64::from(i);
-                w.store(&GroupSnapshot {
+                w.store_motion(&Motion {
                     pos: [v; 8],
                     vel: [v; 8],
                     ..Default::default()

@@ -116,7 +116,7 @@ pub fn with_group<R>(
     let mut grp = shared.group(g)?;
     let r = f(&mut grp);
     // Published on failure too: a refused arc still records its error (0xF104).
-    shared.publish(&grp);
+    shared.publish(&mut grp);
     r
 }
 
