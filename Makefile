@@ -1,10 +1,13 @@
 # The two commands of the README:
-#   make example   run an unchanged vendor-style sample program on the virtual card
+#   make example   run a vendor-style sample program (GeneralMotion) on the virtual card
 #   make test      build everything and run every test (Rust, C, C++, headers, bindings)
 BUILD ?= build
-EXAMPLE ?= InitSys
+EXAMPLE ?= GeneralMotion
+# The example runs on the fast virtual clock unless told otherwise (MCCL_CLOCK=realtime).
+MCCL_CLOCK ?= fast
+export MCCL_CLOCK
 
-.PHONY: deps build example test headers clean
+.PHONY: deps build example test bench headers clean
 
 deps:
 	@scripts/install-deps.sh
@@ -14,10 +17,15 @@ build: deps
 	cmake --build $(BUILD) -j2
 
 example: build
-	$(BUILD)/c-tests/$(EXAMPLE)
+	MCCL_TRACE=$(BUILD)/$(EXAMPLE).csv $(BUILD)/c-tests/$(EXAMPLE)
+	@echo "every tick of every group: $(BUILD)/$(EXAMPLE).csv"
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure
+
+# Performance numbers of the engine (not a test).
+bench:
+	cargo bench --bench engine
 
 # Regenerate include/*.h from the Rust sources (commit the result).
 headers:
