@@ -211,6 +211,15 @@ impl Clock {
         g.wake_at = g.wake_at.min(next);
     }
 
+    /// Under a virtual clock: whether the tick now running is the last one granted (the
+    /// waiting program resumes after it). Always true in realtime mode.
+    pub fn last_of_run(&self) -> bool {
+        if !self.mode.virtual_time() {
+            return true;
+        }
+        self.ticks() + 1 >= self.inner.lock().run_until
+    }
+
     /// Asks the clock to stop; the engine thread and every waiter return.
     pub fn stop(&self) {
         let mut g = self.inner.lock();

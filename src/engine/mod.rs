@@ -59,6 +59,9 @@ pub struct Shared {
     pub pulse_counter: Vec<[AtomicI64; AXES]>,
     /// `MCC_EnableDryRun` is in effect.
     pub dry_run: AtomicBool,
+    /// Publish snapshots on every tick even under a virtual clock (set while code runs on
+    /// the engine thread between ticks, i.e. interrupt callbacks are registered).
+    pub live_snapshots: AtomicBool,
     /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
     pub servo_on: Vec<AtomicU32>,
     /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
@@ -67,6 +70,10 @@ pub struct Shared {
     pub max_pulse_stock: AtomicU32,
     trace: Mutex<Option<trace::Trace>>,
 }
+
+/// Under a virtual clock, a long run of ticks publishes snapshots this often (and at its
+/// last tick): the program is waiting meanwhile, so only other threads could look.
+pub const PUBLISH_EVERY: u64 = 16;
 
 /// Reads of one kind at the same virtual time that make a program "waiting" (a program
 /// that checks a status twice is not spinning; one that reads it a third time is).
@@ -241,17 +248,41 @@ impl Shared {
     }
 
     /// One tick of the whole card.
-    fn tick(&self) {
+    ///
+    /// Snapshots are published every tick under the realtime clock and while
+    /// `live_snapshots` is set (callbacks registered). Under a virtual clock the program
+    /// is waiting while ticks run, so a long run publishes every [`PUBLISH_EVERY`] ticks
+    /// and at its last tick (see [`Shared::end_of_run`]); statuses are published every
+    /// tick. Returns whether it published everything.
+    fn tick(&self) -> bool {
         let dt = self.clock.period().as_secs_f64();
-        let t_ns = self.clock.now_ns() + self.clock.period().as_nanos();
+        let n = self.clock.ticks();
+        let t_ns = u128::from(n + 1) * self.clock.period().as_nanos();
+        let full = !self.clock.mode().virtual_time()
+            || self.live_snapshots.load(Ordering::Relaxed)
+            || n % PUBLISH_EVERY == 0
+            || self.clock.last_of_run();
         let mut trace = self.trace.lock();
         for g in &self.groups {
             let mut g = g.lock();
             g.tick(dt);
-            self.publish(&mut g);
+            if full {
+                self.publish(&mut g);
+            } else {
+                self.status[g.index].store(g.status(), Ordering::Release);
+            }
             if let Some(t) = trace.as_mut() {
                 t.row(t_ns, &g);
             }
+        }
+        full
+    }
+
+    /// After a tick that did not publish everything: if it ended the run (the waiting
+    /// program resumes now), publishes every group.
+    fn end_of_run(&self) {
+        if self.clock.last_of_run() {
+            self.for_each_group(|_| {});
         }
     }
 }
@@ -295,6 +326,7 @@ impl Engine {
                 .map(|_| std::array::from_fn(|_| AtomicI64::new(0)))
                 .collect(),
             dry_run: AtomicBool::new(false),
+            live_snapshots: AtomicBool::new(false),
             servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
             pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
@@ -351,8 +383,11 @@ fn run(shared: &Shared) {
         match shared.clock.wait_next() {
             Next::Stop => return,
             Next::Tick => {
-                shared.tick();
+                let published = shared.tick();
                 shared.check_watch();
+                if !published {
+                    shared.end_of_run();
+                }
                 // Interrupt callbacks collected in the tick run here, without any lock.
                 shared.clock.tick_done();
             }
