@@ -5,6 +5,7 @@
 #include "mccl.h"
 #include "MCCL.h"
 #include "mcl.h"
+#include "MCCL_Sim.h"
 
 static void isr(ENCINT *p) { (void)p; }
 

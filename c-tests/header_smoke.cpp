@@ -2,6 +2,7 @@
 #include "MCCL_Fun.h"
 #include "mccl.h"
 #include "mcl.h"
+#include "MCCL_Sim.h"
 
 static void MCC_CALLBACK isr(ENCINT *p) { (void)p; }
 

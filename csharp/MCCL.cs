@@ -22,6 +22,18 @@ using System.Runtime.InteropServices;
 using System.Text;
 
 [StructLayout(LayoutKind.Sequential)]
+public struct SYS_COMP_PARAM
+{
+    public uint dwInterval;
+    public ushort wHome_No;
+    public ushort wPaddle;
+    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 256)]
+    public int[] nForwardTable;
+    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 256)]
+    public int[] nBackwardTable;
+}
+
+[StructLayout(LayoutKind.Sequential)]
 public struct COMMAND_INFO
 {
     public int nType;
@@ -162,18 +174,6 @@ public struct SYS_HOME_CONFIG_EX
     public double dfEscapeTime;
     public ushort wStaticError;
     public ushort wTolerance;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct SYS_COMP_PARAM
-{
-    public uint dwInterval;
-    public ushort wHome_No;
-    public ushort wPaddle;
-    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 256)]
-    public int[] nForwardTable;
-    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 256)]
-    public int[] nBackwardTable;
 }
 
 [StructLayout(LayoutKind.Sequential)]
@@ -688,6 +688,20 @@ public static class MCCL
     public static extern int MCC_EnablePosReady(ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisablePosReady")]
     public static extern int MCC_DisablePosReady(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetEmgcStopStatus")]
+    public static extern int MCC_GetEmgcStopStatus(ref ushort pwStatus, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedLightOn")]
+    public static extern int MCC_SetLedLightOn(ushort Channel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedLightOff")]
+    public static extern int MCC_SetLedLightOff(ushort Channel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLedLightStatus")]
+    public static extern int MCC_GetLedLightStatus(ushort Channel, ref ushort Status, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLimitFilterClk")]
+    public static extern int MCC_SetLimitFilterClk(ushort Value, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHomeFilterClk")]
+    public static extern int MCC_SetHomeFilterClk(ushort Value, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetGpioFilterClk")]
+    public static extern int MCC_SetGpioFilterClk(ushort Value, ushort wCardIndex = 0);
 
     // ---- Coordinate Management ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetAbsolute")]
@@ -737,6 +751,22 @@ public static class MCCL
     public static extern int MCC_DefinePos(ushort wAxis, double dfPos, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DefinePosHere")]
     public static extern int MCC_DefinePosHere(ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+
+    // ---- Software Over Travel Check & Hardware Limit Switch Check ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableLimitSwitchCheck")]
+    public static extern int MCC_EnableLimitSwitchCheck(int nMode = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableLimitSwitchCheck")]
+    public static extern int MCC_DisableLimitSwitchCheck();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetOverTravelCheck")]
+    public static extern int MCC_SetOverTravelCheck(int nOTCheck0, int nOTCheck1, int nOTCheck2, int nOTCheck3, int nOTCheck4, int nOTCheck5, int nOTCheck6, int nOTCheck7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetOverTravelCheck")]
+    public static extern int MCC_GetOverTravelCheck(ref int pnOTCheck0, ref int pnOTCheck1, ref int pnOTCheck2, ref int pnOTCheck3, ref int pnOTCheck4, ref int pnOTCheck5, ref int pnOTCheck6, ref int pnOTCheck7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLimitSwitchStatus")]
+    public static extern int MCC_GetLimitSwitchStatus(ref ushort pwStatus, ushort wUpDown, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLatchedLimitSwitchStatus")]
+    public static extern int MCC_GetLatchedLimitSwitchStatus(ref ushort pwStatus, ushort wUpDown, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ClearLatchedLimitSwitchStatus")]
+    public static extern int MCC_ClearLatchedLimitSwitchStatus(ushort wUpDown, ushort wChannel, ushort wCardIndex = 0);
 
     // ---- General Motions(Line, Arc, Circle Motions) ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetAccType")]
@@ -897,6 +927,54 @@ public static class MCCL
     public static extern int MCC_SetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetHomeConfig")]
     public static extern int MCC_GetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetHomeSensorStatus")]
+    public static extern int MCC_GetHomeSensorStatus(ref ushort pwStatus, ushort wChannel, ushort wCardIndex = 0);
+
+    // ---- Position Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPGain")]
+    public static extern int MCC_SetPGain(ushort wGain0, ushort wGain1, ushort wGain2, ushort wGain3, ushort wGain4, ushort wGain5, ushort wGain6, ushort wGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetPGain")]
+    public static extern int MCC_GetPGain(ref ushort pwGain0, ref ushort pwGain1, ref ushort pwGain2, ref ushort pwGain3, ref ushort pwGain4, ref ushort pwGain5, ref ushort pwGain6, ref ushort pwGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetIGain")]
+    public static extern int MCC_SetIGain(ushort wGain0, ushort wGain1, ushort wGain2, ushort wGain3, ushort wGain4, ushort wGain5, ushort wGain6, ushort wGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetIGain")]
+    public static extern int MCC_GetIGain(ref ushort pwGain0, ref ushort pwGain1, ref ushort pwGain2, ref ushort pwGain3, ref ushort pwGain4, ref ushort pwGain5, ref ushort pwGain6, ref ushort pwGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDGain")]
+    public static extern int MCC_SetDGain(ushort wGain0, ushort wGain1, ushort wGain2, ushort wGain3, ushort wGain4, ushort wGain5, ushort wGain6, ushort wGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetDGain")]
+    public static extern int MCC_GetDGain(ref ushort pwGain0, ref ushort pwGain1, ref ushort pwGain2, ref ushort pwGain3, ref ushort pwGain4, ref ushort pwGain5, ref ushort pwGain6, ref ushort pwGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetFGain")]
+    public static extern int MCC_SetFGain(ushort wGain0, ushort wGain1, ushort wGain2, ushort wGain3, ushort wGain4, ushort wGain5, ushort wGain6, ushort wGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetFGain")]
+    public static extern int MCC_GetFGain(ref ushort pwGain0, ref ushort pwGain1, ref ushort pwGain2, ref ushort pwGain3, ref ushort pwGain4, ref ushort pwGain5, ref ushort pwGain6, ref ushort pwGain7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetIGainClockDivider")]
+    public static extern int MCC_SetIGainClockDivider(uint dwClockDivider, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDGainClockDivider")]
+    public static extern int MCC_SetDGainClockDivider(uint dwClockDivider, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetErrorCount")]
+    public static extern int MCC_GetErrorCount(ref int pnErrCount0, ref int pnErrCount1, ref int pnErrCount2, ref int pnErrCount3, ref int pnErrCount4, ref int pnErrCount5, ref int pnErrCount6, ref int pnErrCount7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetErrorCountThreshold")]
+    public static extern int MCC_SetErrorCountThreshold(ushort wChannel, ushort wPlusThreshold, ushort wMinusThreshold, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMaxPulseSpeed")]
+    public static extern int MCC_SetMaxPulseSpeed(int nPulse0, int nPulse1, int nPulse2, int nPulse3, int nPulse4, int nPulse5, int nPulse6, int nPulse7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMaxPulseSpeed")]
+    public static extern int MCC_GetMaxPulseSpeed(ref int pnSpeed0, ref int pnSpeed1, ref int pnSpeed2, ref int pnSpeed3, ref int pnSpeed4, ref int pnSpeed5, ref int pnSpeed6, ref int pnSpeed7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMaxPulseAcc")]
+    public static extern int MCC_SetMaxPulseAcc(int nPulseAcc0, int nPulseAcc1, int nPulseAcc2, int nPulseAcc3, int nPulseAcc4, int nPulseAcc5, int nPulseAcc6, int nPulseAcc7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMaxPulseAcc")]
+    public static extern int MCC_GetMaxPulseAcc(ref int pnPulseAcc0, ref int pnPulseAcc1, ref int pnPulseAcc2, ref int pnPulseAcc3, ref int pnPulseAcc4, ref int pnPulseAcc5, ref int pnPulseAcc6, ref int pnPulseAcc7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableTrackError")]
+    public static extern int MCC_EnableTrackError(ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableTrackError")]
+    public static extern int MCC_DisableTrackError(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetTrackErrorLimit")]
+    public static extern int MCC_SetTrackErrorLimit(double dfLimit, sbyte cAxis, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetTrackErrorLimit")]
+    public static extern int MCC_GetTrackErrorLimit(ref double pdfLimit, sbyte cAxis, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCompParam")]
+    public static extern int MCC_SetCompParam(ref SYS_COMP_PARAM pstCompParam, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_UpdateCompParam")]
+    public static extern int MCC_UpdateCompParam();
 
     // ---- Trajectory Planning ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HoldMotion")]
@@ -937,6 +1015,44 @@ public static class MCCL
     public static extern double MCC_GetOverrideRate(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_FixSpeed")]
     public static extern int MCC_FixSpeed([MarshalAs(UnmanagedType.Bool)] bool bFix, ushort wGroupIndex = 0);
+
+    // ---- Encoder Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCInputRate")]
+    public static extern int MCC_SetENCInputRate(ushort wInputRate, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ClearENCCounter")]
+    public static extern int MCC_ClearENCCounter(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCValue")]
+    private static extern int MCC_GetENCValue_L32(ref int plValue, ushort wChannel, ushort wCardIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCValue")]
+    private static extern int MCC_GetENCValue_L64(ref long plValue, ushort wChannel, ushort wCardIndex);
+    public static int MCC_GetENCValue(ref int plValue, ushort wChannel, ushort wCardIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            long t0 = plValue;
+            int r = MCC_GetENCValue_L64(ref t0, wChannel, wCardIndex);
+            plValue = unchecked((int)t0);
+            return r;
+        }
+        return MCC_GetENCValue_L32(ref plValue, wChannel, wCardIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCValueEx")]
+    public static extern int MCC_GetENCValueEx(ref long pllValue, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCValue")]
+    private static extern int MCC_SetENCValue_L32(int lValue, ushort wChannel, ushort wCardIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCValue")]
+    private static extern int MCC_SetENCValue_L64(long lValue, ushort wChannel, ushort wCardIndex);
+    public static int MCC_SetENCValue(int lValue, ushort wChannel, ushort wCardIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            int r = MCC_SetENCValue_L64(lValue, wChannel, wCardIndex);
+            return r;
+        }
+        return MCC_SetENCValue_L32(lValue, wChannel, wCardIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCGearRate")]
+    public static extern int MCC_SetENCGearRate(double dfGearRate, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineX")]
     public static extern int MCC_LineX(double dfX, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineY")]

@@ -122,6 +122,14 @@ typedef uint32_t DWORD;
 typedef uint8_t BYTE;
 
 typedef struct {
+  DWORD dwInterval;
+  WORD wHome_No;
+  WORD wPaddle;
+  int32_t nForwardTable[256];
+  int32_t nBackwardTable[256];
+} SYS_COMP_PARAM;
+
+typedef struct {
   int32_t nType;
   int32_t nCommandIndex;
   double dfFeedSpeed;
@@ -229,14 +237,6 @@ typedef struct {
   WORD wStaticError;
   WORD wTolerance;
 } SYS_HOME_CONFIG_EX;
-
-typedef struct {
-  DWORD dwInterval;
-  WORD wHome_No;
-  WORD wPaddle;
-  int32_t nForwardTable[256];
-  int32_t nBackwardTable[256];
-} SYS_COMP_PARAM;
 
 typedef struct {
   WORD wType;

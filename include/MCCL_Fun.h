@@ -62,6 +62,13 @@ MCC_API int MCC_CALL MCC_SetServoOn(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0
 MCC_API int MCC_CALL MCC_SetServoOff(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnablePosReady(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisablePosReady(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetEmgcStopStatus(WORD *pwStatus, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedLightOn(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedLightOff(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetLedLightStatus(WORD Channel, WORD *Status, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLimitFilterClk(WORD Value, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetHomeFilterClk(WORD Value, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetGpioFilterClk(WORD Value, WORD wCardIndex MCC_DEFAULT(0));
 
 /* Coordinate Management */
 MCC_API int MCC_CALL MCC_SetAbsolute(WORD wGroupIndex MCC_DEFAULT(0));
@@ -74,6 +81,15 @@ MCC_API int MCC_CALL MCC_GetPulsePosEx(long long *plX, long long *plY, long long
 MCC_API int MCC_CALL MCC_DefineOrigin(WORD wAxis, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DefinePos(WORD wAxis, double dfPos, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DefinePosHere(WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+
+/* Software Over Travel Check & Hardware Limit Switch Check */
+MCC_API int MCC_CALL MCC_EnableLimitSwitchCheck(int nMode MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableLimitSwitchCheck(void);
+MCC_API int MCC_CALL MCC_SetOverTravelCheck(int nOTCheck0, int nOTCheck1, int nOTCheck2, int nOTCheck3, int nOTCheck4, int nOTCheck5, int nOTCheck6, int nOTCheck7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetOverTravelCheck(int *pnOTCheck0, int *pnOTCheck1, int *pnOTCheck2, int *pnOTCheck3, int *pnOTCheck4, int *pnOTCheck5, int *pnOTCheck6, int *pnOTCheck7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetLimitSwitchStatus(WORD *pwStatus, WORD wUpDown, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetLatchedLimitSwitchStatus(WORD *pwStatus, WORD wUpDown, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ClearLatchedLimitSwitchStatus(WORD wUpDown, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 
 /* General Motions(Line, Arc, Circle Motions) */
 MCC_API int MCC_CALL MCC_SetAccType(char cAccType, WORD wGroupIndex MCC_DEFAULT(0));
@@ -157,6 +173,31 @@ MCC_API int MCC_CALL MCC_ClearError(WORD wGroupIndex MCC_DEFAULT(0));
 /* Go Home */
 MCC_API int MCC_CALL MCC_SetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetHomeSensorStatus(WORD *pwStatus, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+
+/* Position Control */
+MCC_API int MCC_CALL MCC_SetPGain(WORD wGain0, WORD wGain1, WORD wGain2, WORD wGain3, WORD wGain4, WORD wGain5, WORD wGain6, WORD wGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetPGain(WORD *pwGain0, WORD *pwGain1, WORD *pwGain2, WORD *pwGain3, WORD *pwGain4, WORD *pwGain5, WORD *pwGain6, WORD *pwGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetIGain(WORD wGain0, WORD wGain1, WORD wGain2, WORD wGain3, WORD wGain4, WORD wGain5, WORD wGain6, WORD wGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetIGain(WORD *pwGain0, WORD *pwGain1, WORD *pwGain2, WORD *pwGain3, WORD *pwGain4, WORD *pwGain5, WORD *pwGain6, WORD *pwGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDGain(WORD wGain0, WORD wGain1, WORD wGain2, WORD wGain3, WORD wGain4, WORD wGain5, WORD wGain6, WORD wGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetDGain(WORD *pwGain0, WORD *pwGain1, WORD *pwGain2, WORD *pwGain3, WORD *pwGain4, WORD *pwGain5, WORD *pwGain6, WORD *pwGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetFGain(WORD wGain0, WORD wGain1, WORD wGain2, WORD wGain3, WORD wGain4, WORD wGain5, WORD wGain6, WORD wGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetFGain(WORD *pwGain0, WORD *pwGain1, WORD *pwGain2, WORD *pwGain3, WORD *pwGain4, WORD *pwGain5, WORD *pwGain6, WORD *pwGain7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetIGainClockDivider(DWORD dwClockDivider, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDGainClockDivider(DWORD dwClockDivider, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetErrorCount(int *pnErrCount0, int *pnErrCount1, int *pnErrCount2, int *pnErrCount3, int *pnErrCount4, int *pnErrCount5, int *pnErrCount6, int *pnErrCount7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetErrorCountThreshold(WORD wChannel, WORD wPlusThreshold, WORD wMinusThreshold, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetMaxPulseSpeed(int nPulse0, int nPulse1, int nPulse2, int nPulse3, int nPulse4, int nPulse5, int nPulse6, int nPulse7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetMaxPulseSpeed(int *pnSpeed0, int *pnSpeed1, int *pnSpeed2, int *pnSpeed3, int *pnSpeed4, int *pnSpeed5, int *pnSpeed6, int *pnSpeed7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetMaxPulseAcc(int nPulseAcc0, int nPulseAcc1, int nPulseAcc2, int nPulseAcc3, int nPulseAcc4, int nPulseAcc5, int nPulseAcc6, int nPulseAcc7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetMaxPulseAcc(int *pnPulseAcc0, int *pnPulseAcc1, int *pnPulseAcc2, int *pnPulseAcc3, int *pnPulseAcc4, int *pnPulseAcc5, int *pnPulseAcc6, int *pnPulseAcc7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableTrackError(WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_DisableTrackError(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetTrackErrorLimit(double dfLimit, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetTrackErrorLimit(double *pdfLimit, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetCompParam(SYS_COMP_PARAM *pstCompParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_UpdateCompParam(void);
 
 /* Trajectory Planning */
 MCC_API int MCC_CALL MCC_HoldMotion(WORD wGroupIndex MCC_DEFAULT(0), BOOL bBlockEnd MCC_DEFAULT(0));
@@ -178,6 +219,14 @@ MCC_API double MCC_CALL MCC_OverrideSpeed(double dfRate, WORD wGroupIndex MCC_DE
 MCC_API double MCC_CALL MCC_OverrideSpeedEx(double dfRate, BOOL bInstant MCC_DEFAULT(1), WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverrideRate(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_FixSpeed(BOOL bFix, WORD wGroupIndex MCC_DEFAULT(0));
+
+/* Encoder Control */
+MCC_API int MCC_CALL MCC_SetENCInputRate(WORD wInputRate, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ClearENCCounter(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetENCValue(long *plValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetENCValueEx(long long *pllValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetENCValue(long lValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetENCGearRate(double dfGearRate, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") */
 MCC_API int MCC_CALL MCC_LineX(double dfX, WORD wGroupIndex MCC_DEFAULT(0));

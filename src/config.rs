@@ -232,6 +232,9 @@ pub struct Config {
     pub groups: [Option<GroupDef>; GROUPS],
     /// Upper limit of the general-motion feed speed, UU/s (`MCC_SetSysMaxSpeed`).
     pub sys_max_speed: f64,
+    /// Compensation tables set per card and channel (`MCC_SetCompParam`), applied by
+    /// `MCC_UpdateCompParam`.
+    pub comp: Vec<[Option<crate::vendor::SYS_COMP_PARAM>; AXES]>,
 }
 
 /// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s. The manuals
@@ -246,6 +249,7 @@ impl Default for Config {
             home: [[default_home_config(); AXES]; CARDS],
             groups: [None; GROUPS],
             sys_max_speed: DEFAULT_SYS_MAX_SPEED,
+            comp: vec![[None; AXES]; CARDS],
         }
     }
 }

@@ -12,6 +12,7 @@ pub mod config;
 pub mod engine;
 pub mod error;
 pub mod ffi;
+pub mod machine;
 pub mod mc3b;
 pub mod planner;
 pub mod system;

@@ -121,8 +121,15 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         eprintln!("MCCL: MCC_InitSystem failed: {msg}");
         McclError::NotInitialized
     })?;
-    let engine = Engine::start(mode, period, &groups, &sys.config.mac, cards.len(), trace)
-        .map_err(|e| {
+    let machine = crate::machine::Machine::new(
+        &sys.config.mac,
+        &sys.config.encoder,
+        |_, _| crate::machine::ChannelSpec::default(),
+        |_| false,
+        cards.len(),
+    );
+    let engine =
+        Engine::start(mode, period, &groups, &sys.config.mac, machine, trace).map_err(|e| {
             eprintln!("MCCL: cannot start the engine thread: {e}");
             McclError::RunTime
         })?;
@@ -156,7 +163,15 @@ pub fn close() -> McclResult<()> {
 pub fn reset_motion() -> McclResult<()> {
     let sys = SYSTEM.lock();
     let r = sys.running.as_ref().ok_or(McclError::NotInitialized)?;
-    r.engine.shared().reset_all(&r.mac);
+    let shared = r.engine.shared();
+    shared
+        .machine
+        .lock()
+        .cards
+        .iter_mut()
+        .flatten()
+        .for_each(|c| c.rezero());
+    shared.reset_all(&r.mac);
     Ok(())
 }
 
@@ -168,7 +183,17 @@ pub fn update_param() -> McclResult<()> {
     let r = sys.running.as_mut().ok_or(McclError::NotInitialized)?;
     r.mac = mac;
     r.encoder = encoder;
-    r.engine.shared().reset_all(&r.mac);
+    let shared = r.engine.shared();
+    {
+        let mut m = shared.machine.lock();
+        for (c, chans) in m.cards.iter_mut().enumerate() {
+            for (ch, chan) in chans.iter_mut().enumerate() {
+                chan.set_params(mac[c][ch], encoder[c][ch]);
+                chan.rezero();
+            }
+        }
+    }
+    shared.reset_all(&r.mac);
     Ok(())
 }
 

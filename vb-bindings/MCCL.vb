@@ -11,6 +11,15 @@ Imports System.Runtime.InteropServices
 Imports System.Text
 
 <StructLayout(LayoutKind.Sequential)>
+Public Structure SYS_COMP_PARAM
+    Public dwInterval As UInteger
+    Public wHome_No As UShort
+    Public wPaddle As UShort
+    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=256)> Public nForwardTable() As Integer
+    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=256)> Public nBackwardTable() As Integer
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
 Public Structure COMMAND_INFO
     Public nType As Integer
     Public nCommandIndex As Integer
@@ -138,15 +147,6 @@ Public Structure SYS_HOME_CONFIG_EX
     Public dfEscapeTime As Double
     Public wStaticError As UShort
     Public wTolerance As UShort
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure SYS_COMP_PARAM
-    Public dwInterval As UInteger
-    Public wHome_No As UShort
-    Public wPaddle As UShort
-    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=256)> Public nForwardTable() As Integer
-    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=256)> Public nBackwardTable() As Integer
 End Structure
 
 <StructLayout(LayoutKind.Sequential)>
@@ -672,6 +672,27 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisablePosReady")>
     Public Function MCC_DisablePosReady(Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetEmgcStopStatus")>
+    Public Function MCC_GetEmgcStopStatus(ByRef pwStatus As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedLightOn")>
+    Public Function MCC_SetLedLightOn(ByVal Channel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedLightOff")>
+    Public Function MCC_SetLedLightOff(ByVal Channel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLedLightStatus")>
+    Public Function MCC_GetLedLightStatus(ByVal Channel As UShort, ByRef Status As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLimitFilterClk")>
+    Public Function MCC_SetLimitFilterClk(ByVal Value As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetHomeFilterClk")>
+    Public Function MCC_SetHomeFilterClk(ByVal Value As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetGpioFilterClk")>
+    Public Function MCC_SetGpioFilterClk(ByVal Value As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
 
     ' ---- Coordinate Management ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetAbsolute")>
@@ -729,6 +750,29 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DefinePosHere")>
     Public Function MCC_DefinePosHere(Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+
+    ' ---- Software Over Travel Check & Hardware Limit Switch Check ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableLimitSwitchCheck")>
+    Public Function MCC_EnableLimitSwitchCheck(Optional ByVal nMode As Integer = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableLimitSwitchCheck")>
+    Public Function MCC_DisableLimitSwitchCheck() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetOverTravelCheck")>
+    Public Function MCC_SetOverTravelCheck(ByVal nOTCheck0 As Integer, ByVal nOTCheck1 As Integer, ByVal nOTCheck2 As Integer, ByVal nOTCheck3 As Integer, ByVal nOTCheck4 As Integer, ByVal nOTCheck5 As Integer, ByVal nOTCheck6 As Integer, ByVal nOTCheck7 As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetOverTravelCheck")>
+    Public Function MCC_GetOverTravelCheck(ByRef pnOTCheck0 As Integer, ByRef pnOTCheck1 As Integer, ByRef pnOTCheck2 As Integer, ByRef pnOTCheck3 As Integer, ByRef pnOTCheck4 As Integer, ByRef pnOTCheck5 As Integer, ByRef pnOTCheck6 As Integer, ByRef pnOTCheck7 As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLimitSwitchStatus")>
+    Public Function MCC_GetLimitSwitchStatus(ByRef pwStatus As UShort, ByVal wUpDown As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLatchedLimitSwitchStatus")>
+    Public Function MCC_GetLatchedLimitSwitchStatus(ByRef pwStatus As UShort, ByVal wUpDown As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ClearLatchedLimitSwitchStatus")>
+    Public Function MCC_ClearLatchedLimitSwitchStatus(ByVal wUpDown As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
 
     ' ---- General Motions(Line, Arc, Circle Motions) ----
@@ -959,6 +1003,77 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetHomeConfig")>
     Public Function MCC_GetHomeConfig(ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetHomeSensorStatus")>
+    Public Function MCC_GetHomeSensorStatus(ByRef pwStatus As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Position Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPGain")>
+    Public Function MCC_SetPGain(ByVal wGain0 As UShort, ByVal wGain1 As UShort, ByVal wGain2 As UShort, ByVal wGain3 As UShort, ByVal wGain4 As UShort, ByVal wGain5 As UShort, ByVal wGain6 As UShort, ByVal wGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetPGain")>
+    Public Function MCC_GetPGain(ByRef pwGain0 As UShort, ByRef pwGain1 As UShort, ByRef pwGain2 As UShort, ByRef pwGain3 As UShort, ByRef pwGain4 As UShort, ByRef pwGain5 As UShort, ByRef pwGain6 As UShort, ByRef pwGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetIGain")>
+    Public Function MCC_SetIGain(ByVal wGain0 As UShort, ByVal wGain1 As UShort, ByVal wGain2 As UShort, ByVal wGain3 As UShort, ByVal wGain4 As UShort, ByVal wGain5 As UShort, ByVal wGain6 As UShort, ByVal wGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetIGain")>
+    Public Function MCC_GetIGain(ByRef pwGain0 As UShort, ByRef pwGain1 As UShort, ByRef pwGain2 As UShort, ByRef pwGain3 As UShort, ByRef pwGain4 As UShort, ByRef pwGain5 As UShort, ByRef pwGain6 As UShort, ByRef pwGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDGain")>
+    Public Function MCC_SetDGain(ByVal wGain0 As UShort, ByVal wGain1 As UShort, ByVal wGain2 As UShort, ByVal wGain3 As UShort, ByVal wGain4 As UShort, ByVal wGain5 As UShort, ByVal wGain6 As UShort, ByVal wGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetDGain")>
+    Public Function MCC_GetDGain(ByRef pwGain0 As UShort, ByRef pwGain1 As UShort, ByRef pwGain2 As UShort, ByRef pwGain3 As UShort, ByRef pwGain4 As UShort, ByRef pwGain5 As UShort, ByRef pwGain6 As UShort, ByRef pwGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetFGain")>
+    Public Function MCC_SetFGain(ByVal wGain0 As UShort, ByVal wGain1 As UShort, ByVal wGain2 As UShort, ByVal wGain3 As UShort, ByVal wGain4 As UShort, ByVal wGain5 As UShort, ByVal wGain6 As UShort, ByVal wGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetFGain")>
+    Public Function MCC_GetFGain(ByRef pwGain0 As UShort, ByRef pwGain1 As UShort, ByRef pwGain2 As UShort, ByRef pwGain3 As UShort, ByRef pwGain4 As UShort, ByRef pwGain5 As UShort, ByRef pwGain6 As UShort, ByRef pwGain7 As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetIGainClockDivider")>
+    Public Function MCC_SetIGainClockDivider(ByVal dwClockDivider As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDGainClockDivider")>
+    Public Function MCC_SetDGainClockDivider(ByVal dwClockDivider As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetErrorCount")>
+    Public Function MCC_GetErrorCount(ByRef pnErrCount0 As Integer, ByRef pnErrCount1 As Integer, ByRef pnErrCount2 As Integer, ByRef pnErrCount3 As Integer, ByRef pnErrCount4 As Integer, ByRef pnErrCount5 As Integer, ByRef pnErrCount6 As Integer, ByRef pnErrCount7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetErrorCountThreshold")>
+    Public Function MCC_SetErrorCountThreshold(ByVal wChannel As UShort, ByVal wPlusThreshold As UShort, ByVal wMinusThreshold As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMaxPulseSpeed")>
+    Public Function MCC_SetMaxPulseSpeed(ByVal nPulse0 As Integer, ByVal nPulse1 As Integer, ByVal nPulse2 As Integer, ByVal nPulse3 As Integer, ByVal nPulse4 As Integer, ByVal nPulse5 As Integer, ByVal nPulse6 As Integer, ByVal nPulse7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetMaxPulseSpeed")>
+    Public Function MCC_GetMaxPulseSpeed(ByRef pnSpeed0 As Integer, ByRef pnSpeed1 As Integer, ByRef pnSpeed2 As Integer, ByRef pnSpeed3 As Integer, ByRef pnSpeed4 As Integer, ByRef pnSpeed5 As Integer, ByRef pnSpeed6 As Integer, ByRef pnSpeed7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMaxPulseAcc")>
+    Public Function MCC_SetMaxPulseAcc(ByVal nPulseAcc0 As Integer, ByVal nPulseAcc1 As Integer, ByVal nPulseAcc2 As Integer, ByVal nPulseAcc3 As Integer, ByVal nPulseAcc4 As Integer, ByVal nPulseAcc5 As Integer, ByVal nPulseAcc6 As Integer, ByVal nPulseAcc7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetMaxPulseAcc")>
+    Public Function MCC_GetMaxPulseAcc(ByRef pnPulseAcc0 As Integer, ByRef pnPulseAcc1 As Integer, ByRef pnPulseAcc2 As Integer, ByRef pnPulseAcc3 As Integer, ByRef pnPulseAcc4 As Integer, ByRef pnPulseAcc5 As Integer, ByRef pnPulseAcc6 As Integer, ByRef pnPulseAcc7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableTrackError")>
+    Public Function MCC_EnableTrackError(Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableTrackError")>
+    Public Function MCC_DisableTrackError(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetTrackErrorLimit")>
+    Public Function MCC_SetTrackErrorLimit(ByVal dfLimit As Double, ByVal cAxis As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetTrackErrorLimit")>
+    Public Function MCC_GetTrackErrorLimit(ByRef pdfLimit As Double, ByVal cAxis As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCompParam")>
+    Public Function MCC_SetCompParam(ByRef pstCompParam As SYS_COMP_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_UpdateCompParam")>
+    Public Function MCC_UpdateCompParam() As Integer
+    End Function
 
     ' ---- Trajectory Planning ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HoldMotion")>
@@ -1017,6 +1132,48 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_FixSpeed")>
     Public Function MCC_FixSpeed(<MarshalAs(UnmanagedType.Bool)> ByVal bFix As Boolean, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Encoder Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCInputRate")>
+    Public Function MCC_SetENCInputRate(ByVal wInputRate As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ClearENCCounter")>
+    Public Function MCC_ClearENCCounter(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCValue")>
+    Private Function MCC_GetENCValue_L32(ByRef plValue As Integer, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCValue")>
+    Private Function MCC_GetENCValue_L64(ByRef plValue As Long, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    Public Function MCC_GetENCValue(ByRef plValue As Integer, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim t0 As Long = plValue
+            Dim r As Integer = MCC_GetENCValue_L64(t0, wChannel, wCardIndex)
+            plValue = CInt(t0)
+            Return r
+        End If
+        Return MCC_GetENCValue_L32(plValue, wChannel, wCardIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCValueEx")>
+    Public Function MCC_GetENCValueEx(ByRef pllValue As Long, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCValue")>
+    Private Function MCC_SetENCValue_L32(ByVal lValue As Integer, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCValue")>
+    Private Function MCC_SetENCValue_L64(ByVal lValue As Long, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    Public Function MCC_SetENCValue(ByVal lValue As Integer, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim r As Integer = MCC_SetENCValue_L64(lValue, wChannel, wCardIndex)
+            Return r
+        End If
+        Return MCC_SetENCValue_L32(lValue, wChannel, wCardIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCGearRate")>
+    Public Function MCC_SetENCGearRate(ByVal dfGearRate As Double, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineX")>
     Public Function MCC_LineX(ByVal dfX As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer

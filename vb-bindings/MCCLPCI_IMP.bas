@@ -275,6 +275,14 @@ Public Const DAC_SOURCE_SOFT As Long = 0
 Public Const DAC_SOURCE_PCL As Long = 1
 
 ' ---- Structures ----
+Public Type SYS_COMP_PARAM
+    dwInterval As Long
+    wHome_No As Integer
+    wPaddle As Integer
+    nForwardTable(0 To 255) As Long
+    nBackwardTable(0 To 255) As Long
+End Type
+
 Public Type COMMAND_INFO
     nType As Long
     nCommandIndex As Long
@@ -396,14 +404,6 @@ Public Type SYS_HOME_CONFIG_EX
     wStaticError As Integer
     wTolerance As Integer
     MCCL_pad0(0 To 3) As Byte ' VB6 aligns to 4, C to 8
-End Type
-
-Public Type SYS_COMP_PARAM
-    dwInterval As Long
-    wHome_No As Integer
-    wPaddle As Integer
-    nForwardTable(0 To 255) As Long
-    nBackwardTable(0 To 255) As Long
 End Type
 
 Public Type HOME_CONFIG
@@ -582,6 +582,13 @@ Public Declare Function MCC_SetServoOn Lib "MCCLPCI_IMP.dll" (ByVal wChannel As 
 Public Declare Function MCC_SetServoOff Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetEmgcStopStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedLightOn Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedLightOff Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetLedLightStatus Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, ByRef Status As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLimitFilterClk Lib "MCCLPCI_IMP.dll" (ByVal Value As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetHomeFilterClk Lib "MCCLPCI_IMP.dll" (ByVal Value As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetGpioFilterClk Lib "MCCLPCI_IMP.dll" (ByVal Value As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- Coordinate Management ----
 Public Declare Function MCC_SetAbsolute Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
@@ -594,6 +601,15 @@ Public Declare Function MCC_GetPulsePosEx Lib "MCCLPCI_IMP.dll" (ByRef plX As Cu
 Public Declare Function MCC_DefineOrigin Lib "MCCLPCI_IMP.dll" (ByVal wAxis As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_DefinePos Lib "MCCLPCI_IMP.dll" (ByVal wAxis As Integer, ByVal dfPos As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_DefinePosHere Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+
+' ---- Software Over Travel Check & Hardware Limit Switch Check ----
+Public Declare Function MCC_EnableLimitSwitchCheck Lib "MCCLPCI_IMP.dll" (Optional ByVal nMode As Long = 0) As Long
+Public Declare Function MCC_DisableLimitSwitchCheck Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_SetOverTravelCheck Lib "MCCLPCI_IMP.dll" (ByVal nOTCheck0 As Long, ByVal nOTCheck1 As Long, ByVal nOTCheck2 As Long, ByVal nOTCheck3 As Long, ByVal nOTCheck4 As Long, ByVal nOTCheck5 As Long, ByVal nOTCheck6 As Long, ByVal nOTCheck7 As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetOverTravelCheck Lib "MCCLPCI_IMP.dll" (ByRef pnOTCheck0 As Long, ByRef pnOTCheck1 As Long, ByRef pnOTCheck2 As Long, ByRef pnOTCheck3 As Long, ByRef pnOTCheck4 As Long, ByRef pnOTCheck5 As Long, ByRef pnOTCheck6 As Long, ByRef pnOTCheck7 As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetLimitSwitchStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wUpDown As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetLatchedLimitSwitchStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wUpDown As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_ClearLatchedLimitSwitchStatus Lib "MCCLPCI_IMP.dll" (ByVal wUpDown As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- General Motions(Line, Arc, Circle Motions) ----
 Public Declare Function MCC_SetAccType Lib "MCCLPCI_IMP.dll" (ByVal cAccType As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
@@ -677,6 +693,31 @@ Public Declare Function MCC_ClearError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGr
 ' ---- Go Home ----
 Public Declare Function MCC_SetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetHomeSensorStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+
+' ---- Position Control ----
+Public Declare Function MCC_SetPGain Lib "MCCLPCI_IMP.dll" (ByVal wGain0 As Integer, ByVal wGain1 As Integer, ByVal wGain2 As Integer, ByVal wGain3 As Integer, ByVal wGain4 As Integer, ByVal wGain5 As Integer, ByVal wGain6 As Integer, ByVal wGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetPGain Lib "MCCLPCI_IMP.dll" (ByRef pwGain0 As Integer, ByRef pwGain1 As Integer, ByRef pwGain2 As Integer, ByRef pwGain3 As Integer, ByRef pwGain4 As Integer, ByRef pwGain5 As Integer, ByRef pwGain6 As Integer, ByRef pwGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetIGain Lib "MCCLPCI_IMP.dll" (ByVal wGain0 As Integer, ByVal wGain1 As Integer, ByVal wGain2 As Integer, ByVal wGain3 As Integer, ByVal wGain4 As Integer, ByVal wGain5 As Integer, ByVal wGain6 As Integer, ByVal wGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetIGain Lib "MCCLPCI_IMP.dll" (ByRef pwGain0 As Integer, ByRef pwGain1 As Integer, ByRef pwGain2 As Integer, ByRef pwGain3 As Integer, ByRef pwGain4 As Integer, ByRef pwGain5 As Integer, ByRef pwGain6 As Integer, ByRef pwGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetDGain Lib "MCCLPCI_IMP.dll" (ByVal wGain0 As Integer, ByVal wGain1 As Integer, ByVal wGain2 As Integer, ByVal wGain3 As Integer, ByVal wGain4 As Integer, ByVal wGain5 As Integer, ByVal wGain6 As Integer, ByVal wGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetDGain Lib "MCCLPCI_IMP.dll" (ByRef pwGain0 As Integer, ByRef pwGain1 As Integer, ByRef pwGain2 As Integer, ByRef pwGain3 As Integer, ByRef pwGain4 As Integer, ByRef pwGain5 As Integer, ByRef pwGain6 As Integer, ByRef pwGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetFGain Lib "MCCLPCI_IMP.dll" (ByVal wGain0 As Integer, ByVal wGain1 As Integer, ByVal wGain2 As Integer, ByVal wGain3 As Integer, ByVal wGain4 As Integer, ByVal wGain5 As Integer, ByVal wGain6 As Integer, ByVal wGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetFGain Lib "MCCLPCI_IMP.dll" (ByRef pwGain0 As Integer, ByRef pwGain1 As Integer, ByRef pwGain2 As Integer, ByRef pwGain3 As Integer, ByRef pwGain4 As Integer, ByRef pwGain5 As Integer, ByRef pwGain6 As Integer, ByRef pwGain7 As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetIGainClockDivider Lib "MCCLPCI_IMP.dll" (ByVal dwClockDivider As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetDGainClockDivider Lib "MCCLPCI_IMP.dll" (ByVal dwClockDivider As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetErrorCount Lib "MCCLPCI_IMP.dll" (ByRef pnErrCount0 As Long, ByRef pnErrCount1 As Long, ByRef pnErrCount2 As Long, ByRef pnErrCount3 As Long, ByRef pnErrCount4 As Long, ByRef pnErrCount5 As Long, ByRef pnErrCount6 As Long, ByRef pnErrCount7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetErrorCountThreshold Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, ByVal wPlusThreshold As Integer, ByVal wMinusThreshold As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetMaxPulseSpeed Lib "MCCLPCI_IMP.dll" (ByVal nPulse0 As Long, ByVal nPulse1 As Long, ByVal nPulse2 As Long, ByVal nPulse3 As Long, ByVal nPulse4 As Long, ByVal nPulse5 As Long, ByVal nPulse6 As Long, ByVal nPulse7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetMaxPulseSpeed Lib "MCCLPCI_IMP.dll" (ByRef pnSpeed0 As Long, ByRef pnSpeed1 As Long, ByRef pnSpeed2 As Long, ByRef pnSpeed3 As Long, ByRef pnSpeed4 As Long, ByRef pnSpeed5 As Long, ByRef pnSpeed6 As Long, ByRef pnSpeed7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetMaxPulseAcc Lib "MCCLPCI_IMP.dll" (ByVal nPulseAcc0 As Long, ByVal nPulseAcc1 As Long, ByVal nPulseAcc2 As Long, ByVal nPulseAcc3 As Long, ByVal nPulseAcc4 As Long, ByVal nPulseAcc5 As Long, ByVal nPulseAcc6 As Long, ByVal nPulseAcc7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetMaxPulseAcc Lib "MCCLPCI_IMP.dll" (ByRef pnPulseAcc0 As Long, ByRef pnPulseAcc1 As Long, ByRef pnPulseAcc2 As Long, ByRef pnPulseAcc3 As Long, ByRef pnPulseAcc4 As Long, ByRef pnPulseAcc5 As Long, ByRef pnPulseAcc6 As Long, ByRef pnPulseAcc7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableTrackError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_DisableTrackError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetTrackErrorLimit Lib "MCCLPCI_IMP.dll" (ByVal dfLimit As Double, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetTrackErrorLimit Lib "MCCLPCI_IMP.dll" (ByRef pdfLimit As Double, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetCompParam Lib "MCCLPCI_IMP.dll" (ByRef pstCompParam As SYS_COMP_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_UpdateCompParam Lib "MCCLPCI_IMP.dll" () As Long
 
 ' ---- Trajectory Planning ----
 Public Declare Function MCC_HoldMotion Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0, Optional ByVal bBlockEnd As Long = 0) As Long
@@ -698,6 +739,14 @@ Public Declare Function MCC_OverrideSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As
 Public Declare Function MCC_OverrideSpeedEx Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal bInstant As Long = 1, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_GetOverrideRate Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_FixSpeed Lib "MCCLPCI_IMP.dll" (ByVal bFix As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+
+' ---- Encoder Control ----
+Public Declare Function MCC_SetENCInputRate Lib "MCCLPCI_IMP.dll" (ByVal wInputRate As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_ClearENCCounter Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetENCValue Lib "MCCLPCI_IMP.dll" (ByRef plValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetENCValueEx Lib "MCCLPCI_IMP.dll" (ByRef pllValue As Currency, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCValue Lib "MCCLPCI_IMP.dll" (ByVal lValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCGearRate Lib "MCCLPCI_IMP.dll" (ByVal dfGearRate As Double, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_LineX Lib "MCCLPCI_IMP.dll" (ByVal dfX As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_LineY Lib "MCCLPCI_IMP.dll" (ByVal dfY As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_LineZ Lib "MCCLPCI_IMP.dll" (ByVal dfZ As Double, Optional ByVal wGroupIndex As Integer = 0) As Long

@@ -7,8 +7,9 @@ lib=$1
 inc=$(cd "$(dirname "$0")/../../include" && pwd)
 exported=$(nm -D --defined-only "$lib" | awk '$2 == "T" {print $3}' | sort)
 declared=$( (cat "$inc"/MCCL_Fun.h | grep -o 'MCC_CALL [A-Za-z0-9_]*(' | sed 's/MCC_CALL //; s/(//';
-             grep -o '^int mcl_[a-z_]*(' "$inc"/mcl.h | sed 's/^int //; s/(//') | sort)
-mcc_exported=$(echo "$exported" | grep -E '^(MCC_|mcl_)' || true)
+             grep -o '^int mcl_[a-z_]*(' "$inc"/mcl.h | sed 's/^int //; s/(//';
+             grep -o '^int MCCL_Sim[A-Za-z]*(' "$inc"/MCCL_Sim.h | sed 's/^int //; s/(//') | sort)
+mcc_exported=$(echo "$exported" | grep -E '^(MCC_|mcl_|MCCL_Sim)' || true)
 status=0
 if [ "$mcc_exported" != "$declared" ]; then
   echo "declared vs exported differ (< header only, > library only):"
@@ -19,5 +20,5 @@ stray=$(echo "$exported" | grep -v -E '^(MCC_|MCCL_|mcl_)' || true)
 if [ -n "$stray" ]; then
   echo "unexpected exported symbols:"; echo "$stray"; status=1
 fi
-echo "exports: $(echo "$mcc_exported" | grep -c .) MCC_*/mcl_* functions exported and declared"
+echo "exports: $(echo "$mcc_exported" | grep -c .) MCC_*/mcl_*/MCCL_Sim* functions exported and declared"
 exit $status

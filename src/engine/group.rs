@@ -21,6 +21,9 @@ use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
 
+/// Error record of software over-travel, + axis (DECISIONS.md).
+pub const ERR_OVER_TRAVEL: i32 = 0xF301;
+
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
 /// far above the rounding of summing millions of ticks).
 const TIME_EPS: f64 = 1e-9;
@@ -136,6 +139,12 @@ pub struct GroupState {
     last_started: Option<(i32, i32)>,
     status: i32,
     published_info: Option<Info>,
+    /// Software over-travel check per axis (`MCC_SetOverTravelCheck`).
+    pub ot_check: [bool; AXES],
+    /// Tracking error check per axis (`MCC_EnableTrackError` mask).
+    pub track_mask: u32,
+    /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
+    pub track_limit: Axes,
 }
 
 impl GroupState {
@@ -173,7 +182,29 @@ impl GroupState {
             last_started: None,
             status: c::GMS_STOP,
             published_info: None,
+            ot_check: [false; AXES],
+            track_mask: 0,
+            track_limit: [f64::INFINITY; AXES],
         }
+    }
+
+    /// Whether a check that needs the machine watches this group even when it stands.
+    pub fn has_safety_checks(&self) -> bool {
+        self.track_mask != 0
+    }
+
+    /// Velocity per axis (UU/s).
+    pub fn vel(&self) -> Axes {
+        self.vel
+    }
+
+    /// Stops at once because a check tripped, dropping the queue; records `record`.
+    pub fn stop_for(&mut self, record: Option<i32>) {
+        self.stop_here();
+        if let Some(code) = record {
+            self.set_error(code);
+        }
+        self.update_status();
     }
 
     /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).
@@ -534,6 +565,7 @@ impl GroupState {
 
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
+        let before = self.pos;
         let dtau = self.advance_rate(dt);
         let delay_dt = if self.mode == Mode::Held { 0.0 } else { dt };
         let clock = TickClock { dt, dtau, delay_dt };
@@ -553,7 +585,28 @@ impl GroupState {
         self.settle(&clock);
         self.finish_abort();
         self.compute_pos_vel();
+        self.check_over_travel(&before);
         self.update_status();
+    }
+
+    /// Software over-travel (user manual §2.6.1): with the check on, an axis never goes
+    /// further out of its work zone (dfLowLimit..dfHighLimit). A tick that would take it
+    /// out stops the group where it was, records 0xF301 + axis, and motion waits for
+    /// `MCC_ClearError`; a move back into the zone is allowed.
+    fn check_over_travel(&mut self, before: &Axes) {
+        for i in 0..AXES {
+            if !self.ot_check[i] || self.axes[i].channel.is_none() {
+                continue;
+            }
+            let (p, b) = (self.pos[i], before[i]);
+            let out = (p > self.axes[i].high && p > b) || (p < self.axes[i].low && p < b);
+            if out {
+                self.pos = *before;
+                self.stop_here();
+                self.set_error(ERR_OVER_TRAVEL + i as i32);
+                return;
+            }
+        }
     }
 
     /// After the running commands advanced: blends in the next command, retires finished

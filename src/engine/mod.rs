@@ -8,18 +8,20 @@
 
 pub mod command;
 pub mod group;
+pub mod safety;
 pub mod snapshot;
 pub mod trace;
 
 use crate::clock::{Clock, ClockMode, Next};
 use crate::config::{GroupDef, AXES, CARDS, GROUPS};
 use crate::error::{McclError, McclResult};
+use crate::machine::Machine;
 use crate::vendor::SYS_MAC_PARAM;
 use command::AxisMech;
 use group::GroupState;
 use parking_lot::{Mutex, MutexGuard};
 use snapshot::{GroupSnapshot, SnapshotCell};
-use std::sync::atomic::{AtomicBool, AtomicI32, AtomicI64, AtomicU32, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::thread::{JoinHandle, ThreadId};
 use std::time::Duration;
@@ -55,8 +57,12 @@ pub struct Shared {
     /// A fast-clock poll in progress: group slot (or -1) and the status it saw; the engine
     /// ends the run of ticks when that status changes.
     watch: (AtomicI32, AtomicI32),
-    /// Pulse counter per card and channel (what the card has output).
-    pub pulse_counter: Vec<[AtomicI64; AXES]>,
+    /// Number of cards passed to `MCC_InitSystem`.
+    pub cards: usize,
+    /// The simulated machine behind the channels. Lock order: machine before a group.
+    pub machine: Mutex<Machine>,
+    /// Hardware limit switch check (`MCC_EnableLimitSwitchCheck` mode, -1 when off).
+    pub limit_check: AtomicI32,
     /// `MCC_EnableDryRun` is in effect.
     pub dry_run: AtomicBool,
     /// Publish snapshots on every tick even under a virtual clock (set while code runs on
@@ -201,20 +207,11 @@ impl Shared {
         let motion = g.motion();
         cell.store_motion(&motion);
         self.status[g.index].store(motion.status, Ordering::Release);
-        if !self.dry_run.load(Ordering::Relaxed) {
-            for (i, ax) in g.axes.iter().enumerate() {
-                if let Some((card, ch)) = ax.channel {
-                    if let Some(c) = self.pulse_counter.get(card) {
-                        c[ch].store(g.pulses(i), Ordering::Relaxed);
-                    }
-                }
-            }
-        }
     }
 
     /// Checks that `card` is one of the cards passed to `MCC_InitSystem`.
     pub fn card(&self, card: crate::config::CardIx) -> McclResult<usize> {
-        if card.0 < self.pulse_counter.len() {
+        if card.0 < self.cards {
             Ok(card.0)
         } else {
             Err(McclError::Parameter)
@@ -263,9 +260,22 @@ impl Shared {
             || n % PUBLISH_EVERY == 0
             || self.clock.last_of_run();
         let mut trace = self.trace.lock();
+        let mut machine = self.machine.lock();
+        let dry = self.dry_run.load(Ordering::Relaxed);
+        let mut cmds: Vec<[Option<i64>; AXES]> = vec![[None; AXES]; self.cards];
         for g in &self.groups {
             let mut g = g.lock();
             g.tick(dt);
+            // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
+            if !dry {
+                for (i, ax) in g.axes.iter().enumerate() {
+                    if let Some((card, ch)) = ax.channel {
+                        if let Some(c) = cmds.get_mut(card) {
+                            c[ch] = Some(g.pulses(i));
+                        }
+                    }
+                }
+            }
             if full {
                 self.publish(&mut g);
             } else {
@@ -275,7 +285,36 @@ impl Shared {
                 t.row(t_ns, &g);
             }
         }
+        for (card, chans) in machine.cards.iter_mut().enumerate() {
+            for (ch, chan) in chans.iter_mut().enumerate() {
+                let cmd = cmds[card][ch].unwrap_or_else(|| chan.command_pulses());
+                chan.step(cmd, dt);
+            }
+        }
+        self.safety(&machine, full);
         full
+    }
+
+    /// The checks that need the machine: emergency stop (0xF102), hardware limit
+    /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
+    /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
+    /// group at once (its queue is dropped).
+    fn safety(&self, machine: &Machine, full: bool) {
+        let limit_mode = self.limit_check.load(Ordering::Relaxed);
+        for g in &self.groups {
+            let mut g = g.lock();
+            if !g.busy() && !g.has_safety_checks() {
+                continue;
+            }
+            if let Some(code) = safety::check(&g, machine, limit_mode) {
+                g.stop_for(code.record);
+                if full {
+                    self.publish(&mut g);
+                } else {
+                    self.status[g.index].store(g.status(), Ordering::Release);
+                }
+            }
+        }
     }
 
     /// After a tick that did not publish everything: if it ended the run (the waiting
@@ -303,9 +342,10 @@ impl Engine {
         period: Duration,
         groups: &[(usize, GroupDef)],
         mac: &MacTable,
-        cards: usize,
+        machine: Machine,
         trace: Option<trace::Trace>,
     ) -> std::io::Result<Engine> {
+        let cards = machine.cards.len();
         let mut slots = [None; GROUPS];
         let mut gs = Vec::with_capacity(groups.len());
         for (n, (i, d)) in groups.iter().enumerate() {
@@ -322,9 +362,9 @@ impl Engine {
             watch: (AtomicI32::new(-1), AtomicI32::new(0)),
             groups: gs,
             snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
-            pulse_counter: (0..cards)
-                .map(|_| std::array::from_fn(|_| AtomicI64::new(0)))
-                .collect(),
+            cards: machine.cards.len(),
+            machine: Mutex::new(machine),
+            limit_check: AtomicI32::new(-1),
             dry_run: AtomicBool::new(false),
             live_snapshots: AtomicBool::new(false),
             servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),

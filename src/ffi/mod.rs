@@ -3,10 +3,14 @@
 //! plain `#[no_mangle] pub extern "C" fn` whose body calls [`guard`] and the core.
 
 pub mod coordinate;
+pub mod encoder;
 pub mod jog;
+pub mod limits;
 pub mod local_io;
 pub mod motion;
+pub mod position;
 pub mod ptp;
+pub mod sim;
 pub mod status;
 pub mod system;
 pub mod trajectory;
@@ -103,6 +107,8 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_machine;
 #[cfg(test)]
 mod tests_motion;
 

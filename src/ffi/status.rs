@@ -142,9 +142,7 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
         let (cd, ch) = (super::card(wCardIndex)?, super::channel(wChannel)?);
         super::out_ok(pwStockCount)?;
         let shared = system::active()?;
-        if cd.0 >= shared.pulse_counter.len() {
-            return Err(crate::error::McclError::Parameter);
-        }
+        shared.card(cd)?;
         let moving = shared.channel_moving(cd.0, ch.0);
         let depth = shared
             .max_pulse_stock

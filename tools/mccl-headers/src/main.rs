@@ -312,12 +312,12 @@ fn collapse_blank_lines(s: &str) -> String {
 fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
     let mut exported: BTreeMap<&str, &Proto> = BTreeMap::new();
     for p in &raw.protos {
-        if p.name.starts_with("mcl_") {
-            continue; // include/mcl.h
+        if p.name.starts_with("mcl_") || p.name.starts_with("MCCL_Sim") {
+            continue; // include/mcl.h, include/MCCL_Sim.h
         }
         if !p.name.starts_with("MCC_") {
             return Err(format!(
-                "{}: exported function without a header to go in (MCC_* -> MCCL_Fun.h, mcl_* -> mcl.h)",
+                "{}: exported function without a header to go in (MCC_* -> MCCL_Fun.h, mcl_* -> mcl.h, MCCL_Sim* -> MCCL_Sim.h)",
                 p.name
             ));
         }
@@ -382,6 +382,26 @@ fn mcl_h(raw: &Raw) -> String {
     out
 }
 
+/// `include/MCCL_Sim.h`: the simulation extension (`MCCL_Sim*` functions and their
+/// `MCCL_SIM_*` constants); not part of the vendor interface.
+fn mccl_sim_h(raw: &Raw) -> String {
+    let mut out = String::new();
+    out.push_str(BANNER);
+    out.push_str("/* MCCL_Sim.h: work the simulated machine of libMCCLPCI_IMP at run time (press a limit\n * switch or the emergency stop, move a sensor, read outputs and the motor). An extension:\n * not part of the vendor's interface. Every function returns a vendor code (NO_ERR, ...). */\n#ifndef MCCL_SIM_H_LIBMCCLPCI_IMP\n#define MCCL_SIM_H_LIBMCCLPCI_IMP\n\n#include \"MCCL.h\"\n\n");
+    for line in raw.decls.lines() {
+        if line.starts_with("#define MCCL_SIM_") {
+            out.push_str(&negative_define(line).unwrap_or_else(|| line.to_string()));
+            out.push('\n');
+        }
+    }
+    out.push_str("\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
+    for p in raw.protos.iter().filter(|p| p.name.starts_with("MCCL_Sim")) {
+        let _ = writeln!(out, "{};", render(p, None));
+    }
+    out.push_str("\n#ifdef __cplusplus\n} /* extern \"C\" */\n#endif\n\n#endif /* MCCL_SIM_H_LIBMCCLPCI_IMP */\n");
+    out
+}
+
 /// C++ default arguments of the MC3B library (MC3B User's Guide §4.6 and §4.16).
 const MCL_DEFAULTS: &[(&str, &str, &str)] = &[
     ("mcl_set_motor_maximum_velocity", "direction_modifier", "0"),
@@ -403,6 +423,7 @@ fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
         (inc.join("MCCL_Fun.h"), mccl_fun_h(&raw, &vendor)?),
         (inc.join("mccl.h"), mccl_lower_h()),
         (inc.join("mcl.h"), mcl_h(&raw)),
+        (inc.join("MCCL_Sim.h"), mccl_sim_h(&raw)),
     ])
 }
 

@@ -1,0 +1,84 @@
+//! Checks that compare a group's motion with the simulated machine after each tick
+//! (user manual §2.4.1, §2.6.4, §2.7.3; examples manual §19): emergency stop, hardware
+//! limit switches, tracking error, and pulse speed and acceleration limits.
+
+use super::group::GroupState;
+use crate::machine::Machine;
+
+/// Error record: emergency stop.
+pub const ERR_EMERGENCY: i32 = 0xF102;
+/// Error record: pulse speed over the limit.
+pub const ERR_PULSE_SPEED: i32 = 0xF203;
+/// Error record: pulse acceleration over the limit.
+pub const ERR_PULSE_ACC: i32 = 0xF204;
+/// Error record: hardware limit switch, + axis.
+pub const ERR_LIMIT: i32 = 0xF701;
+/// Error record: tracking error, + axis.
+pub const ERR_TRACKING: i32 = 0xF801;
+
+/// A check that tripped: the group stops; `record` is its error record, if any.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Trip {
+    /// The error record (`None`: the limit switch modes that only stop).
+    pub record: Option<i32>,
+}
+
+/// Runs the checks for `g`; `limit_mode` is `MCC_EnableLimitSwitchCheck`'s mode or -1.
+///
+/// Limit switches (examples manual §19): moving toward an active switch always stops.
+/// `HLP_BIDIR` (0) and `HLP_BIDIR_GEN_ERR` (2) also stop when either switch of a moving
+/// axis becomes active, whatever its direction; `HLP_UNIDIR` (1) and
+/// `HLP_UNIDIR_GEN_ERR` (3) only for the switch ahead. Modes 2 and 3 record
+/// 0xF701 + axis (recover: `MCC_ClearError`, then move back out); modes 0 and 1 only stop
+/// (recover: move back out).
+pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
+    let busy = g.busy();
+    let vel = g.vel();
+    for (i, ax) in g.axes.iter().enumerate() {
+        let Some((card, ch)) = ax.channel else {
+            continue;
+        };
+        let Some(chan) = m.channel(card, ch) else {
+            continue;
+        };
+        if busy && m.emergency.get(card).copied().unwrap_or(false) {
+            return Some(Trip {
+                record: Some(ERR_EMERGENCY),
+            });
+        }
+        if busy && limit_mode >= 0 {
+            let (lv, prev) = (chan.levels(), chan.prev_levels());
+            let v = vel[i];
+            let mut hit = (lv.plus && v > 0.0) || (lv.minus && v < 0.0);
+            if limit_mode == 0 || limit_mode == 2 {
+                hit |= v != 0.0 && ((lv.plus && !prev.plus) || (lv.minus && !prev.minus));
+            }
+            if hit {
+                let record = (limit_mode >= 2).then_some(ERR_LIMIT + i as i32);
+                return Some(Trip { record });
+            }
+        }
+        if g.track_mask & (1 << i) != 0 {
+            let f = ax.factor.abs();
+            if f > 0.0 && (chan.error_count() as f64 / f).abs() > g.track_limit[i] {
+                return Some(Trip {
+                    record: Some(ERR_TRACKING + i as i32),
+                });
+            }
+        }
+        if busy {
+            let (d, dd) = chan.pulse_rate();
+            if d.abs() > i64::from(chan.max_speed) {
+                return Some(Trip {
+                    record: Some(ERR_PULSE_SPEED),
+                });
+            }
+            if dd.abs() > i64::from(chan.max_acc) {
+                return Some(Trip {
+                    record: Some(ERR_PULSE_ACC),
+                });
+            }
+        }
+    }
+    None
+}

@@ -1,0 +1,329 @@
+//! The simulated machine through the C entry points (stepped clock): encoders, software
+//! over-travel, limit switches in every mode, emergency stop, tracking error, pulse
+//! limits, compensation and dry run, with expected values worked out by hand.
+
+use super::coordinate::*;
+use super::encoder::*;
+use super::limits::*;
+use super::local_io::*;
+use super::motion::*;
+use super::position::*;
+use super::sim::*;
+use super::status::*;
+use super::system::*;
+use super::tests::{fresh, init_ms};
+use super::trajectory::*;
+use crate::vendor::consts::*;
+use crate::vendor::*;
+use std::os::raw::c_long;
+
+fn line_x(x: f64) -> i32 {
+    MCC_Line(x, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL)
+}
+
+fn x() -> f64 {
+    let mut p = [0.0; 8];
+    let [a, b, c, d, e, f, g, h] = &mut p;
+    // SAFETY: eight valid pointers.
+    unsafe { MCC_GetCurPos(a, b, c, d, e, f, g, h, 0) };
+    p[0]
+}
+
+fn enc(ch: u16) -> i64 {
+    let mut v: c_long = 0;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_GetENCValue(&mut v, ch, 0) }, NO_ERR);
+    #[allow(clippy::useless_conversion)] // `long` is 32-bit on Windows
+    i64::from(v)
+}
+
+fn status() -> i32 {
+    crate::system::active().unwrap().snapshot(0).unwrap().status
+}
+
+fn run(ms: u32) {
+    MCC_TimeDelay(ms);
+}
+
+/// Channel 0 with both limit switches read normally open, then init at 1 ms.
+fn setup() -> parking_lot::MutexGuard<'static, ()> {
+    let g = fresh();
+    let mut m = crate::config::default_mac_param();
+    m.wOverTravelUpSensorMode = SL_NORMAL_OPEN;
+    m.wOverTravelDownSensorMode = SL_NORMAL_OPEN;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_SetMacParam(&mut m, 0, 0) }, NO_ERR);
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    assert_eq!(MCC_SetAccTime(0.0, 0), NO_ERR);
+    assert_eq!(MCC_SetDecTime(0.0, 0), NO_ERR);
+    g
+}
+
+#[test]
+fn encoder_follows_the_motor() {
+    let _g = setup();
+    assert_eq!(line_x(10.0), 0);
+    run(1000);
+    // 10 UU x 500 pulses/UU = 5000 pulses = 5000 counts at x4.
+    assert_eq!(enc(0), 5000);
+    assert_eq!(MCC_SetENCInputRate(1, 0, 0), NO_ERR);
+    assert_eq!(enc(0), 5000, "the count keeps its value at the change");
+    assert_eq!(line_x(14.0), 1);
+    run(400);
+    assert_eq!(enc(0), 5000 + 2000 / 4, "2000 pulses at x1");
+    assert_eq!(MCC_ClearENCCounter(0, 0), NO_ERR);
+    assert_eq!(enc(0), 0);
+    assert_eq!(MCC_SetENCValue(-77, 0, 0), NO_ERR);
+    assert_eq!(enc(0), -77);
+    assert_eq!(MCC_SetENCInputRate(3, 0, 0), NO_ERR, "3 = ENC_RATE_X4");
+    assert_eq!(MCC_SetENCInputRate(5, 0, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetENCGearRate(f64::NAN, 0, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetENCGearRate(0.0, 0, 0), PARAMETER_ERR);
+    let mut v: c_long = 0;
+    // SAFETY: NULL is refused; valid pointer otherwise.
+    unsafe {
+        assert_eq!(MCC_GetENCValue(std::ptr::null_mut(), 0, 0), PARAMETER_ERR);
+        assert_eq!(MCC_GetENCValue(&mut v, 8, 0), PARAMETER_ERR);
+        assert_eq!(
+            MCC_GetENCValue(&mut v, 0, 1),
+            PARAMETER_ERR,
+            "only one card"
+        );
+    }
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn over_travel_never_passes_the_high_limit() {
+    let _g = fresh();
+    let mut m = crate::config::default_mac_param();
+    m.dfHighLimit = 5.0;
+    m.dfLowLimit = -5.0;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_SetMacParam(&mut m, 0, 0) }, NO_ERR);
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    assert_eq!(MCC_SetOverTravelCheck(1, 0, 0, 0, 0, 0, 0, 0, 0), NO_ERR);
+    assert_eq!(
+        MCC_SetOverTravelCheck(2, 0, 0, 0, 0, 0, 0, 0, 0),
+        PARAMETER_ERR
+    );
+    let mut ot = [0; 8];
+    let [a, b, c, d, e, f, g, h] = &mut ot;
+    // SAFETY: eight valid pointers.
+    assert_eq!(
+        unsafe { MCC_GetOverTravelCheck(a, b, c, d, e, f, g, h, 0) },
+        NO_ERR
+    );
+    assert_eq!(ot, [1, 0, 0, 0, 0, 0, 0, 0]);
+    assert_eq!(line_x(8.0), 0);
+    let mut max: f64 = 0.0;
+    for _ in 0..2000 {
+        run(1);
+        max = max.max(x());
+    }
+    assert!(max <= 5.0, "went to {max}");
+    assert!(max > 4.9, "stopped within a tick of the limit: {max}");
+    assert_eq!(MCC_GetErrorCode(0), 0xF301);
+    assert_eq!(status(), GMS_STOP);
+    // Refused until the error is cleared; then back into the zone.
+    assert_eq!(line_x(0.0), 1);
+    run(100);
+    assert_eq!(x(), max, "waits for MCC_ClearError");
+    assert_eq!(MCC_ClearError(0), NO_ERR);
+    run(1000);
+    assert_eq!(x(), 0.0);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn limit_switch_modes() {
+    let _g = setup();
+    // + limit switch at 3 UU on channel 0.
+    assert_eq!(
+        MCCL_SimPlaceSensor(0, 0, MCCL_SIM_LIMIT_PLUS, 3.0, 0.0),
+        NO_ERR
+    );
+    for mode in [HLP_BIDIR, HLP_UNIDIR, HLP_BIDIR_GEN_ERR, HLP_UNIDIR_GEN_ERR] {
+        assert_eq!(MCC_EnableLimitSwitchCheck(mode), NO_ERR);
+        assert!(line_x(10.0) >= 0);
+        run(2000);
+        let stop = x();
+        // 10 UU/s = 0.01 UU per tick: stopped in the tick the switch closed.
+        assert!(
+            (3.0..3.0 + 0.0101).contains(&stop),
+            "mode {mode}: stopped at {stop}"
+        );
+        let mut st: WORD = 0;
+        // SAFETY: valid pointer.
+        unsafe {
+            assert_eq!(MCC_GetLimitSwitchStatus(&mut st, 0, 0, 0), NO_ERR);
+            assert_eq!(st, 1, "+ switch active");
+            assert_eq!(MCC_GetLimitSwitchStatus(&mut st, 1, 0, 0), NO_ERR);
+            assert_eq!(st, 0, "- switch not");
+            assert_eq!(MCC_GetLatchedLimitSwitchStatus(&mut st, 0, 0, 0), NO_ERR);
+            assert_eq!(st, 1);
+        }
+        let code = MCC_GetErrorCode(0);
+        if mode >= HLP_BIDIR_GEN_ERR {
+            assert_eq!(code, 0xF701, "mode {mode} records the X limit");
+            // Further into the switch stays refused; ClearError, then back out.
+            assert_eq!(MCC_ClearError(0), NO_ERR);
+        } else {
+            assert_eq!(code, 0, "mode {mode} only stops");
+        }
+        // Into the switch again: stopped at once.
+        line_x(10.0);
+        run(100);
+        assert!(
+            x() - stop < 0.0101,
+            "mode {mode}: no deeper into the switch"
+        );
+        MCC_ClearError(0);
+        // Back out.
+        line_x(0.0);
+        run(2000);
+        assert_eq!(x(), 0.0, "mode {mode}: moved back out");
+        assert_eq!(MCC_ClearLatchedLimitSwitchStatus(0, 0, 0), NO_ERR);
+        let mut st: WORD = 9;
+        // SAFETY: valid pointer.
+        unsafe { MCC_GetLatchedLimitSwitchStatus(&mut st, 0, 0, 0) };
+        assert_eq!(st, 0);
+    }
+    assert_eq!(MCC_EnableLimitSwitchCheck(4), PARAMETER_ERR);
+    assert_eq!(MCC_DisableLimitSwitchCheck(), NO_ERR);
+    line_x(10.0);
+    run(2000);
+    assert_eq!(x(), 10.0, "check off: through the switch");
+    // Forcing the input from outside works the same.
+    assert_eq!(MCCL_SimSetSensor(0, 0, MCCL_SIM_LIMIT_MINUS, 1), NO_ERR);
+    let mut st: WORD = 0;
+    // SAFETY: valid pointer.
+    unsafe { MCC_GetLimitSwitchStatus(&mut st, 1, 0, 0) };
+    assert_eq!(st, 1);
+    assert_eq!(MCCL_SimSetSensor(0, 0, 3, 1), PARAMETER_ERR);
+    assert_eq!(
+        MCCL_SimSetSensor(0, 0, MCCL_SIM_LIMIT_MINUS, 2),
+        PARAMETER_ERR
+    );
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn emergency_stop_stops_every_group_of_the_card() {
+    let _g = setup();
+    assert_eq!(line_x(10.0), 0);
+    run(100);
+    assert_eq!(MCCL_SimSetEmergencyStop(0, 1), NO_ERR);
+    run(1);
+    let here = x();
+    assert_eq!(status(), GMS_STOP);
+    assert_eq!(MCC_GetErrorCode(0), 0xF102);
+    let mut w: WORD = 0;
+    // SAFETY: valid pointer.
+    unsafe { MCC_GetEmgcStopStatus(&mut w, 0) };
+    assert_eq!(w, 1);
+    run(100);
+    assert_eq!(x(), here);
+    assert_eq!(MCCL_SimSetEmergencyStop(0, 0), NO_ERR);
+    assert_eq!(MCC_ClearError(0), NO_ERR);
+    line_x(10.0);
+    run(2000);
+    assert_eq!(x(), 10.0);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn tracking_error_with_a_lagging_motor() {
+    let _g = setup();
+    // A 50 ms lag: at 10 UU/s the motor trails by about 10 x 0.05 = 0.5 UU (250 pulses).
+    crate::system::active().unwrap().machine.lock().cards[0][0]
+        .spec
+        .lag_s = Some(0.05);
+    assert_eq!(MCC_SetTrackErrorLimit(0.3, 0, 0), NO_ERR);
+    let mut lim = 0.0;
+    // SAFETY: valid pointer.
+    unsafe { MCC_GetTrackErrorLimit(&mut lim, 0, 0) };
+    assert_eq!(lim, 0.3);
+    assert_eq!(MCC_EnableTrackError(0, IMP_AXIS_X), NO_ERR);
+    assert_eq!(line_x(10.0), 0);
+    run(2000);
+    assert_eq!(MCC_GetErrorCode(0), 0xF801);
+    assert_eq!(status(), GMS_STOP);
+    // The lag stays 0.5 UU < 0.6: no trip with a larger limit.
+    assert_eq!(MCC_ClearError(0), NO_ERR);
+    assert_eq!(MCC_SetTrackErrorLimit(0.6, 0, 0), NO_ERR);
+    line_x(0.0);
+    run(2000);
+    assert_eq!(MCC_GetErrorCode(0), 0);
+    let mut e = [0; 8];
+    let [a, b, c, d, f, g, h, i] = &mut e;
+    // SAFETY: eight valid pointers.
+    unsafe { MCC_GetErrorCount(a, b, c, d, f, g, h, i, 0) };
+    assert!(e[0].abs() <= 1, "settled: {}", e[0]);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn pulse_speed_limit() {
+    let _g = setup();
+    // 10 pulses per 1 ms tick = 20 UU/s at 500 pulses/UU; 30 UU/s trips it.
+    assert_eq!(
+        MCC_SetMaxPulseSpeed(10, 32767, 32767, 32767, 32767, 32767, 32767, 32767, 0),
+        NO_ERR
+    );
+    assert_eq!(
+        MCC_SetMaxPulseSpeed(0, 1, 1, 1, 1, 1, 1, 1, 0),
+        PARAMETER_ERR
+    );
+    assert_eq!(MCC_SetFeedSpeed(30.0, 0), 30.0);
+    line_x(10.0);
+    run(100);
+    assert_eq!(MCC_GetErrorCode(0), 0xF203);
+    assert_eq!(status(), GMS_STOP);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn compensation_sends_15011_pulses() {
+    let _g = setup();
+    let mut p = SYS_COMP_PARAM {
+        dwInterval: 10000,
+        wHome_No: 4,
+        wPaddle: 0,
+        nForwardTable: [0; 256],
+        nBackwardTable: [0; 256],
+    };
+    p.nForwardTable[..8].copy_from_slice(&[22, 20, 15, 11, 0, 10, 12, 15]);
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_SetCompParam(&mut p, 0, 0) }, NO_ERR);
+    assert_eq!(MCC_UpdateCompParam(), NO_ERR);
+    // +15000 pulses = 30 UU at 500 pulses/UU.
+    assert_eq!(MCC_SetFeedSpeed(100.0, 0), 100.0);
+    line_x(30.0);
+    run(1000);
+    let (mut pos, mut n) = (0.0, 0i64);
+    // SAFETY: valid pointers.
+    unsafe { MCCL_SimGetMotor(0, 0, &mut pos, &mut n) };
+    assert_eq!(n, 15011, "user manual §2.7.5");
+    assert_eq!(x(), 30.0, "the command position is not compensated");
+    let mut pl = [0 as c_long; 8];
+    let [a, b, c, d, e, f, g, h] = &mut pl;
+    // SAFETY: eight valid pointers.
+    unsafe { MCC_GetPulsePos(a, b, c, d, e, f, g, h, 0) };
+    assert_eq!(pl[0], 15000);
+    assert_eq!(enc(0), 15011, "the encoder sees the compensated motor");
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn dry_run_moves_the_plan_not_the_machine() {
+    let _g = setup();
+    assert_eq!(MCC_EnableDryRun(), NO_ERR);
+    line_x(5.0);
+    run(1000);
+    assert_eq!(x(), 5.0);
+    assert_eq!(enc(0), 0, "encoders stay");
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}

@@ -1,0 +1,502 @@
+//! The simulated machine behind the virtual card's channels: what each motor does with
+//! the pulses it is sent (an ideal plant, or a first-order lag that makes tracking
+//! error), the encoder that follows it, the home sensor and limit switches it passes, the
+//! encoder index pulses, gap compensation (user manual §2.7.5) and the emergency-stop
+//! input. Positions of sensors are in the axis's user units measured from where the
+//! motor was at `MCC_InitSystem` (machine coordinates).
+
+pub mod compensation;
+
+use crate::config::{encoder_multiplier, AXES};
+use crate::vendor::consts as c;
+use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use compensation::Compensation;
+
+/// Default and largest pulse speed and acceleration limits (ZH manual §2.6.4).
+pub const MAX_PULSE_LIMIT: i32 = 32767;
+
+/// What the simulation configuration says about one channel.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ChannelSpec {
+    /// Home sensor active region `[from, to]` (UU).
+    pub home: Option<(f64, f64)>,
+    /// + limit switch active at position >= this (UU).
+    pub limit_plus: Option<f64>,
+    /// − limit switch active at position <= this (UU).
+    pub limit_minus: Option<f64>,
+    /// Encoder counts (x4) between index pulses; `None`: one per motor turn (dwPPR).
+    pub index_spacing: Option<u32>,
+    /// Counts (x4) from 0 to the first index pulse.
+    pub index_phase: u32,
+    /// First-order lag time constant of the plant (s); `None`: ideal.
+    pub lag_s: Option<f64>,
+}
+
+/// A sensor the program or a test can force through `MCCL_Sim.h`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Sensor {
+    /// The home sensor.
+    Home,
+    /// The + limit switch.
+    LimitPlus,
+    /// The − limit switch.
+    LimitMinus,
+}
+
+/// Sensor inputs of one channel after wiring, as the card sees them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct SensorLevels {
+    /// Home sensor active.
+    pub home: bool,
+    /// + limit switch active.
+    pub plus: bool,
+    /// − limit switch active.
+    pub minus: bool,
+}
+
+/// One channel of the card and the motor, encoder and sensors behind it.
+#[derive(Debug, Clone)]
+pub struct Channel {
+    /// Simulation configuration.
+    pub spec: ChannelSpec,
+    mac: SYS_MAC_PARAM,
+    enc: SYS_ENCODER_CONFIG,
+    /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
+    pub input_rate: Option<u16>,
+    /// `MCC_SetENCGearRate`.
+    pub gear_rate: f64,
+    /// Pulses the program commanded (before compensation).
+    cmd: i64,
+    /// Pulses output (command + compensation).
+    out: i64,
+    prev_out: i64,
+    prev_delta: i64,
+    /// Motor position in pulses from where the command counter was last zeroed.
+    actual: f64,
+    /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
+    base: f64,
+    /// Encoder count = raw count + `enc_offset`.
+    enc_offset: i64,
+    /// Compensation tables in effect.
+    pub comp: Compensation,
+    comp_param: SYS_COMP_PARAM,
+    forced: [Option<bool>; 3],
+    /// Physical sensor levels (before the program's wiring setting).
+    raw: [bool; 3],
+    /// Index pulses passed in the last step.
+    pub index_events: u32,
+    /// The last index pulse passed, as a raw count.
+    pub last_index_count: Option<i64>,
+    /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
+    pub latched: [bool; 2],
+    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`, 1..32767).
+    pub max_speed: i32,
+    /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
+    pub max_acc: i32,
+    levels: SensorLevels,
+    prev_levels: SensorLevels,
+}
+
+impl Channel {
+    /// A channel at position 0.
+    pub fn new(spec: ChannelSpec, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) -> Channel {
+        let mut ch = Channel {
+            spec,
+            mac,
+            enc,
+            input_rate: None,
+            gear_rate: 1.0,
+            cmd: 0,
+            out: 0,
+            prev_out: 0,
+            prev_delta: 0,
+            actual: 0.0,
+            base: 0.0,
+            enc_offset: 0,
+            comp: Compensation::default(),
+            comp_param: compensation::off(),
+            forced: [None; 3],
+            raw: [false; 3],
+            index_events: 0,
+            last_index_count: None,
+            latched: [false; 2],
+            max_speed: MAX_PULSE_LIMIT,
+            max_acc: MAX_PULSE_LIMIT,
+            levels: SensorLevels::default(),
+            prev_levels: SensorLevels::default(),
+        };
+        ch.update_sensors();
+        ch.prev_levels = ch.levels;
+        ch
+    }
+
+    /// Pulses per UU (signed: negative when wPosToEncoderDir reverses the output).
+    pub fn factor(&self) -> f64 {
+        let f = crate::config::conv_factor(&self.mac);
+        if self.mac.wPosToEncoderDir == 1 {
+            -f
+        } else {
+            f
+        }
+    }
+
+    /// The motor's position in UU of the axis (machine coordinates).
+    pub fn position(&self) -> f64 {
+        let f = self.factor();
+        if f == 0.0 {
+            0.0
+        } else {
+            (self.actual + self.base) / f
+        }
+    }
+
+    /// `MCC_ResetMotion`/`MCC_UpdateParam`: the command counter restarts from 0 where the
+    /// motor stands; the motor, its encoder count and the sensors do not move.
+    pub fn rezero(&mut self) {
+        let count = self.encoder();
+        self.base += self.actual;
+        self.actual = 0.0;
+        self.cmd = 0;
+        self.out = 0;
+        self.prev_out = 0;
+        self.prev_delta = 0;
+        self.comp = Compensation::new(&self.comp_param);
+        self.set_encoder(count);
+        self.update_sensors();
+    }
+
+    /// The motor's position in pulses.
+    pub fn actual_pulses(&self) -> f64 {
+        self.actual
+    }
+
+    /// Pulses output so far (command + compensation).
+    pub fn output_pulses(&self) -> i64 {
+        self.out
+    }
+
+    /// Pulses commanded (without compensation).
+    pub fn command_pulses(&self) -> i64 {
+        self.cmd
+    }
+
+    /// Following error in pulses: output − motor (what `MCC_GetErrorCount` reports).
+    pub fn error_count(&self) -> i64 {
+        (self.out as f64 - self.actual).round() as i64
+    }
+
+    /// Pulses output in the last tick, and the change from the tick before (per-period
+    /// pulse speed and acceleration).
+    pub fn pulse_rate(&self) -> (i64, i64) {
+        let d = self.out - self.prev_out;
+        (d, d - self.prev_delta)
+    }
+
+    fn multiplier(&self) -> f64 {
+        if self.enc.wType == c::ENC_TYPE_NO {
+            return 0.0;
+        }
+        let rate = self.input_rate.unwrap_or(self.enc.wInputRate);
+        f64::from(encoder_multiplier(rate)) / 4.0
+    }
+
+    fn raw_count(&self) -> i64 {
+        let dir = if (self.enc.wABSwap == 1) ^ (self.enc.wAInverse == 1) ^ (self.enc.wBInverse == 1)
+        {
+            -1.0
+        } else {
+            1.0
+        };
+        ((self.actual + self.base) * self.multiplier() * self.gear_rate * dir).round() as i64
+    }
+
+    /// The encoder count (`MCC_GetENCValue`).
+    pub fn encoder(&self) -> i64 {
+        self.raw_count() + self.enc_offset
+    }
+
+    /// `MCC_SetENCValue`: the count becomes `v` here.
+    pub fn set_encoder(&mut self, v: i64) {
+        self.enc_offset = v - self.raw_count();
+    }
+
+    /// New mechanism and encoder parameters (`MCC_UpdateParam`).
+    pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
+        let count = self.encoder();
+        self.mac = mac;
+        self.enc = enc;
+        self.input_rate = None;
+        self.set_encoder(count);
+        self.update_sensors();
+    }
+
+    /// New compensation tables (`MCC_UpdateCompParam`).
+    pub fn set_compensation(&mut self, p: &SYS_COMP_PARAM) {
+        self.comp_param = *p;
+        self.comp = Compensation::new(p);
+    }
+
+    /// Forces a sensor's physical level (`Some`) or lets the position decide (`None`).
+    pub fn force(&mut self, s: Sensor, level: Option<bool>) {
+        self.forced[s as usize] = level;
+        self.update_sensors();
+    }
+
+    /// Moves a sensor: the home region, or a limit switch's position (`from`).
+    pub fn place(&mut self, s: Sensor, from: f64, to: f64) {
+        match s {
+            Sensor::Home => self.spec.home = Some((from, to)),
+            Sensor::LimitPlus => self.spec.limit_plus = Some(from),
+            Sensor::LimitMinus => self.spec.limit_minus = Some(from),
+        }
+        self.update_sensors();
+    }
+
+    /// Sensor inputs after the program's wiring setting (NO/NC/unused).
+    pub fn levels(&self) -> SensorLevels {
+        self.levels
+    }
+
+    /// Sensor inputs of the previous step (for edge detection).
+    pub fn prev_levels(&self) -> SensorLevels {
+        self.prev_levels
+    }
+
+    /// Physical level of a sensor: a normally-open switch closes (level high) when hit.
+    pub fn raw_level(&self, s: Sensor) -> bool {
+        self.raw[s as usize]
+    }
+
+    fn update_sensors(&mut self) {
+        let x = self.position();
+        let hit = [
+            self.spec.home.is_some_and(|(a, b)| x >= a && x <= b),
+            self.spec.limit_plus.is_some_and(|p| x >= p),
+            self.spec.limit_minus.is_some_and(|m| x <= m),
+        ];
+        for (i, h) in hit.into_iter().enumerate() {
+            self.raw[i] = self.forced[i].unwrap_or(h);
+        }
+        // The program's wiring setting: NO reads the level, NC its inverse (a wrong
+        // setting reads "active" while nothing is hit, as the manual describes).
+        let wired = |level: bool, mode: u16| match mode {
+            c::SL_NORMAL_OPEN => level,
+            c::SL_NORMAL_CLOSE => !level,
+            _ => false,
+        };
+        self.levels = SensorLevels {
+            home: self.raw[0],
+            plus: wired(self.raw[1], self.mac.wOverTravelUpSensorMode),
+            minus: wired(self.raw[2], self.mac.wOverTravelDownSensorMode),
+        };
+        if self.levels.plus {
+            self.latched[0] = true;
+        }
+        if self.levels.minus {
+            self.latched[1] = true;
+        }
+    }
+
+    /// The home sensor as the card reads it with the go-home wiring `mode`.
+    pub fn home_level(&self, mode: u16) -> bool {
+        match mode {
+            c::SL_NORMAL_CLOSE => !self.raw[0],
+            _ => self.raw[0],
+        }
+    }
+
+    /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
+    /// (ideal or lagging), the encoder and sensors follow the motor.
+    pub fn step(&mut self, cmd: i64, dt: f64) {
+        self.prev_levels = self.levels;
+        let d_prev = self.out - self.prev_out;
+        self.prev_out = self.out;
+        self.prev_delta = d_prev;
+        self.cmd = cmd;
+        self.out = cmd + self.comp.offset(cmd);
+        let before = self.actual;
+        let target = self.out as f64;
+        self.actual = match self.spec.lag_s {
+            Some(tau) if tau > 0.0 => target + (self.actual - target) * (-dt / tau).exp(),
+            _ => target,
+        };
+        self.count_index(before, self.actual);
+        self.update_sensors();
+    }
+
+    /// Sets the motor where the command is (for a channel that is stopped and reset).
+    pub fn settle(&mut self) {
+        self.actual = self.out as f64;
+        self.update_sensors();
+    }
+
+    fn count_index(&mut self, from: f64, to: f64) {
+        self.index_events = 0;
+        // Index pulses in x4 counts of the motor position: one count per pulse.
+        let spacing = f64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
+        let phase = f64::from(self.spec.index_phase);
+        let k = |x: f64| ((x - phase) / spacing).floor();
+        let (a, b) = (k(from), k(to));
+        if a != b {
+            self.index_events = (a - b).abs().min(f64::from(u32::MAX)) as u32;
+            // Moving up the last index passed is the highest, moving down the lowest.
+            let last = if b > a { b } else { b + 1.0 };
+            self.last_index_count = Some((last * spacing + phase) as i64);
+        }
+    }
+}
+
+/// Card settings that the simulation keeps and reports (user manual §2.7.1, §2.9).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct CardSettings {
+    /// P, I, D and feed-forward gains per channel (0..255).
+    pub gains: [[u16; AXES]; 4],
+    /// I and D gain clock dividers.
+    pub dividers: [u32; 2],
+    /// LED outputs, one bit per channel.
+    pub leds: u8,
+    /// Limit, home and GPIO input filter clocks.
+    pub filters: [u16; 3],
+    /// Closed-loop error counter thresholds (+, −) per channel.
+    pub error_threshold: [(u16, u16); AXES],
+}
+
+/// Every card's channels and emergency-stop input.
+#[derive(Debug, Clone)]
+pub struct Machine {
+    /// Channels per card.
+    pub cards: Vec<[Channel; AXES]>,
+    /// Emergency-stop input per card (true: pressed).
+    pub emergency: Vec<bool>,
+    /// Per-card settings.
+    pub settings: Vec<CardSettings>,
+}
+
+impl Machine {
+    /// A machine for `n` cards from the parameters in effect and the specs.
+    pub fn new(
+        mac: &crate::engine::MacTable,
+        enc: &[[SYS_ENCODER_CONFIG; AXES]; crate::config::CARDS],
+        specs: impl Fn(usize, usize) -> ChannelSpec,
+        emergency: impl Fn(usize) -> bool,
+        n: usize,
+    ) -> Machine {
+        Machine {
+            cards: (0..n)
+                .map(|c| {
+                    std::array::from_fn(|ch| Channel::new(specs(c, ch), mac[c][ch], enc[c][ch]))
+                })
+                .collect(),
+            emergency: (0..n).map(emergency).collect(),
+            settings: vec![CardSettings::default(); n],
+        }
+    }
+
+    /// Channel `ch` of card `card`.
+    pub fn channel(&self, card: usize, ch: usize) -> Option<&Channel> {
+        self.cards.get(card).and_then(|c| c.get(ch))
+    }
+
+    /// Channel `ch` of card `card`.
+    pub fn channel_mut(&mut self, card: usize, ch: usize) -> Option<&mut Channel> {
+        self.cards.get_mut(card).and_then(|c| c.get_mut(ch))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::{default_encoder_config, default_mac_param};
+
+    fn ch(spec: ChannelSpec) -> Channel {
+        Channel::new(spec, default_mac_param(), default_encoder_config())
+    }
+
+    #[test]
+    fn ideal_encoder_counts_one_per_pulse_at_x4() {
+        let mut c = ch(ChannelSpec::default());
+        c.step(1234, 0.001);
+        assert_eq!(c.encoder(), 1234);
+        c.input_rate = Some(2);
+        assert_eq!(c.encoder(), 617, "x2: half");
+        c.input_rate = Some(1);
+        assert_eq!(c.encoder(), 309, "x1: a quarter (1234/4 = 308.5, rounded)");
+        c.set_encoder(0);
+        assert_eq!(c.encoder(), 0);
+        c.step(1234 + 400, 0.001);
+        assert_eq!(c.encoder(), 100, "400 pulses at x1");
+        assert_eq!(c.position(), 1634.0 / 500.0);
+    }
+
+    #[test]
+    fn ab_swap_reverses_the_count() {
+        let mut e = default_encoder_config();
+        e.wABSwap = 1;
+        let mut c = Channel::new(ChannelSpec::default(), default_mac_param(), e);
+        c.step(100, 0.001);
+        assert_eq!(c.encoder(), -100);
+    }
+
+    #[test]
+    fn lag_plant_follows_exponentially() {
+        // tau = 10 ms, dt = 1 ms: after one step the motor covers 1 - e^-0.1 of the way.
+        let mut c = ch(ChannelSpec {
+            lag_s: Some(0.01),
+            ..Default::default()
+        });
+        c.step(1000, 0.001);
+        let expect = 1000.0 * (1.0 - (-0.1f64).exp());
+        assert!((c.actual_pulses() - expect).abs() < 1e-9);
+        assert_eq!(c.error_count(), (1000.0 - expect).round() as i64);
+    }
+
+    #[test]
+    fn sensors_and_wiring() {
+        let mut m = default_mac_param();
+        m.wOverTravelUpSensorMode = c::SL_NORMAL_OPEN;
+        m.wOverTravelDownSensorMode = c::SL_NORMAL_CLOSE;
+        let spec = ChannelSpec {
+            home: Some((-0.5, 0.5)),
+            limit_plus: Some(10.0),
+            limit_minus: Some(-10.0),
+            ..Default::default()
+        };
+        let mut c = Channel::new(spec, m, default_encoder_config());
+        assert!(c.levels().home);
+        assert!(!c.levels().plus);
+        assert!(
+            c.levels().minus,
+            "NC setting on a normally-open switch reads active"
+        );
+        c.step(10 * 500, 0.001); // 10 UU
+        assert!(c.levels().plus && !c.levels().home);
+        assert!(c.latched[0]);
+        c.step(0, 0.001);
+        assert!(!c.levels().plus && c.latched[0], "latched until cleared");
+        c.force(Sensor::LimitPlus, Some(true));
+        assert!(c.levels().plus);
+        c.force(Sensor::LimitPlus, None);
+        assert!(!c.levels().plus);
+        assert!(c.home_level(c::SL_NORMAL_OPEN) && !c.home_level(c::SL_NORMAL_CLOSE));
+    }
+
+    #[test]
+    fn index_pulses_every_turn() {
+        // dwPPR 500: an index every 500 counts, phase 100: at 100, 600, 1100, ...
+        let mut c = ch(ChannelSpec {
+            index_phase: 100,
+            ..Default::default()
+        });
+        c.step(99, 0.001);
+        assert_eq!(c.index_events, 0);
+        c.step(100, 0.001);
+        assert_eq!(c.index_events, 1);
+        assert_eq!(c.last_index_count, Some(100));
+        c.step(1200, 0.001);
+        assert_eq!(c.index_events, 2);
+        assert_eq!(c.last_index_count, Some(1100));
+        c.step(50, 0.001); // down past 1100, 600 and 100
+        assert_eq!(c.index_events, 3);
+        assert_eq!(c.last_index_count, Some(100));
+    }
+}
