@@ -24,7 +24,7 @@ int MCCL_SimSetSensor(WORD wCardIndex, WORD wChannel, int nSensor, int nLevel);
 int MCCL_SimPlaceSensor(WORD wCardIndex, WORD wChannel, int nSensor, double dfFrom, double dfTo);
 int MCCL_SimSetEmergencyStop(WORD wCardIndex, int nLevel);
 int MCCL_SimGetOutput(WORD wCardIndex, WORD wChannel, int nOutput, int *pnValue);
-int MCCL_SimGetMotor(WORD wCardIndex, WORD wChannel, double *pdfPosition, int64_t *pllPulses);
+int MCCL_SimGetMotor(WORD wCardIndex, WORD wChannel, double *pdfPosition, long long *pllPulses);
 int MCCL_SimGetTime(double *pdfMs);
 
 #ifdef __cplusplus

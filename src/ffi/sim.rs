@@ -145,7 +145,7 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
     wCardIndex: WORD,
     wChannel: WORD,
     pdfPosition: *mut f64,
-    pllPulses: *mut i64,
+    pllPulses: *mut std::os::raw::c_longlong,
 ) -> c_int {
     guard(|| {
         out_ok(pdfPosition)?;

@@ -95,6 +95,8 @@ pub struct Channel {
     pub max_acc: i32,
     levels: SensorLevels,
     prev_levels: SensorLevels,
+    /// Levels at the end of the last step: a level forced between steps shows as an edge.
+    step_levels: SensorLevels,
 }
 
 impl Channel {
@@ -124,9 +126,11 @@ impl Channel {
             max_acc: MAX_PULSE_LIMIT,
             levels: SensorLevels::default(),
             prev_levels: SensorLevels::default(),
+            step_levels: SensorLevels::default(),
         };
         ch.update_sensors();
         ch.prev_levels = ch.levels;
+        ch.step_levels = ch.levels;
         ch
     }
 
@@ -308,7 +312,7 @@ impl Channel {
     /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
     /// (ideal or lagging), the encoder and sensors follow the motor.
     pub fn step(&mut self, cmd: i64, dt: f64) {
-        self.prev_levels = self.levels;
+        self.prev_levels = self.step_levels;
         let d_prev = self.out - self.prev_out;
         self.prev_out = self.out;
         self.prev_delta = d_prev;
@@ -322,6 +326,7 @@ impl Channel {
         };
         self.count_index(before, self.actual);
         self.update_sensors();
+        self.step_levels = self.levels;
     }
 
     /// Sets the motor where the command is (for a channel that is stopped and reset).
