@@ -14,5 +14,6 @@ pub mod error;
 pub mod ffi;
 pub mod mc3b;
 pub mod planner;
+pub mod sim;
 pub mod system;
 pub mod vendor;
