@@ -880,6 +880,42 @@ mod tests {
         assert_eq!(cfg.card(0).rio_slave(1, 0).map(|r| r.loopback), Some(true));
     }
 
+    /// The README's example is valid.
+    #[test]
+    fn readme_example_parses() {
+        let readme = include_str!("../../README.md");
+        let section = readme
+            .split("## The simulated machine: `MCCL_SIM`")
+            .nth(1)
+            .expect("README has the MCCL_SIM section");
+        let block = section
+            .split("```toml\n")
+            .nth(1)
+            .and_then(|b| b.split("```").next())
+            .expect("the section has a toml block");
+        let cfg = SimConfig::parse(block, "machine.toml").expect("README example parses");
+        assert_eq!(cfg.channel(0, 0).index_phase, 500);
+        assert_eq!(cfg.channel(0, 0).plant, Plant::Lag { tau_s: 0.02 });
+        assert_eq!(
+            cfg.card(0).rio_slave(0, 3).map(|r| r.inputs),
+            Some([1, 0, 0, 0])
+        );
+        // The two messages the README shows are the ones the library gives.
+        let shown: Vec<&str> = section
+            .lines()
+            .map(str::trim)
+            .filter(|l| l.starts_with("machine.toml:"))
+            .collect();
+        assert_eq!(shown.len(), 2);
+        let bad_limit = block.replace("limit_minus = -100.0", "limit_minus = 100.0");
+        let e = SimConfig::parse(&bad_limit, "machine.toml").expect_err("bad limit");
+        assert_eq!(e, shown[0]);
+        let typo = block.replace("limit_plus = 100.0", "lmit_plus = 100.0");
+        let e = SimConfig::parse(&typo, "machine.toml").expect_err("typo");
+        let cut = shown[1].trim_end_matches("...)");
+        assert!(e.starts_with(cut), "{e:?} should start with {cut:?}");
+    }
+
     #[test]
     fn full_example_with_every_form() {
         let text = r#"
