@@ -15,5 +15,6 @@ pub mod ffi;
 pub mod machine;
 pub mod mc3b;
 pub mod planner;
+pub mod sim;
 pub mod system;
 pub mod vendor;
