@@ -29,6 +29,8 @@ pub struct Running {
     pub groups: Vec<(usize, GroupDef)>,
     /// Started by `MCC_InitSimulation` rather than `MCC_InitSystem`.
     pub simulation: bool,
+    /// The simulated machine's configuration (`MCCL_SIM`).
+    pub sim: crate::sim::config::SimConfig,
 }
 
 /// Configuration plus the running card.
@@ -97,6 +99,12 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         eprintln!("MCCL: MCC_InitSystem failed: {msg}");
         McclError::NotInitialized
     })?;
+    let sim = crate::sim::config::SimConfig::from_env().map_err(|msg| {
+        for line in msg.lines() {
+            eprintln!("MCCL: MCC_InitSystem failed: {line}");
+        }
+        McclError::NotInitialized
+    })?;
     let groups_for = |sys: &System| {
         let groups = sys.config.effective_groups();
         if groups.iter().any(|(_, g)| g.card.0 >= cards.len()) {
@@ -124,8 +132,8 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     let machine = crate::machine::Machine::new(
         &sys.config.mac,
         &sys.config.encoder,
-        |_, _| crate::machine::ChannelSpec::default(),
-        |_| false,
+        |c, ch| crate::machine::ChannelSpec::from_sim(sim.channel(c, ch)),
+        |c| sim.card(c).emergency_stop,
         cards.len(),
     );
     let engine =
@@ -142,6 +150,7 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         encoder: sys.config.encoder,
         groups,
         simulation: kind == InitKind::Simulation,
+        sim,
     });
     Ok(())
 }

@@ -32,6 +32,23 @@ pub struct ChannelSpec {
     pub lag_s: Option<f64>,
 }
 
+impl ChannelSpec {
+    /// The channel as the simulation configuration describes it.
+    pub fn from_sim(c: &crate::sim::config::ChannelSim) -> ChannelSpec {
+        ChannelSpec {
+            home: c.home,
+            limit_plus: c.limit_plus,
+            limit_minus: c.limit_minus,
+            index_spacing: c.index_spacing,
+            index_phase: c.index_phase,
+            lag_s: match c.plant {
+                crate::sim::config::Plant::Ideal => None,
+                crate::sim::config::Plant::Lag { tau_s } => Some(tau_s),
+            },
+        }
+    }
+}
+
 /// A sensor the program or a test can force through `MCCL_Sim.h`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Sensor {

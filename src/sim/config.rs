@@ -119,12 +119,11 @@ impl ChannelSim {
         self.limit_minus.is_some_and(|l| pos <= l)
     }
 
-    /// The index pulse spacing in encoder counts: the configured one, else one pulse per
-    /// motor turn, `ppr × 4` (x4 decoding; at least 1, saturating).
+    /// The index pulse spacing in motor pulses (= encoder counts at x4): the configured
+    /// one, else one pulse per motor turn, `ppr` (DECISIONS.md: dwPPR counts per motor
+    /// turn at x4; at least 1).
     pub fn index_spacing_or(&self, ppr: u32) -> u32 {
-        self.index_spacing
-            .unwrap_or_else(|| ppr.saturating_mul(4))
-            .max(1)
+        self.index_spacing.unwrap_or(ppr).max(1)
     }
 
     /// The index phase reduced below `spacing` (a `spacing` of 0 counts as 1).
