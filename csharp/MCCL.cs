@@ -963,6 +963,22 @@ public static class MCCL
     public static extern int MCC_SetMaxPulseAcc(int nPulseAcc0, int nPulseAcc1, int nPulseAcc2, int nPulseAcc3, int nPulseAcc4, int nPulseAcc5, int nPulseAcc6, int nPulseAcc7, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMaxPulseAcc")]
     public static extern int MCC_GetMaxPulseAcc(ref int pnPulseAcc0, ref int pnPulseAcc1, ref int pnPulseAcc2, ref int pnPulseAcc3, ref int pnPulseAcc4, ref int pnPulseAcc5, ref int pnPulseAcc6, ref int pnPulseAcc7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosMode")]
+    public static extern int MCC_SetInPosMode(ushort wMode, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosMaxCheckTime")]
+    public static extern int MCC_SetInPosMaxCheckTime(ushort wMaxCheckTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosSettleTime")]
+    public static extern int MCC_SetInPosSettleTime(ushort wSettleTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableInPos")]
+    public static extern int MCC_EnableInPos(ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableInPos")]
+    public static extern int MCC_DisableInPos(ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosToleranceEx")]
+    public static extern int MCC_SetInPosToleranceEx(double dfTolerance0, double dfTolerance1, double dfTolerance2, double dfTolerance3, double dfTolerance4, double dfTolerance5, double dfTolerance6, double dfTolerance7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosToleranceEx")]
+    public static extern int MCC_GetInPosToleranceEx(ref double pdfTolerance0, ref double pdfTolerance1, ref double pdfTolerance2, ref double pdfTolerance3, ref double pdfTolerance4, ref double pdfTolerance5, ref double pdfTolerance6, ref double pdfTolerance7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosStatus")]
+    public static extern int MCC_GetInPosStatus(ref byte pbyInPos0, ref byte pbyInPos1, ref byte pbyInPos2, ref byte pbyInPos3, ref byte pbyInPos4, ref byte pbyInPos5, ref byte pbyInPos6, ref byte pbyInPos7, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableTrackError")]
     public static extern int MCC_EnableTrackError(ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableTrackError")]
@@ -1075,6 +1091,14 @@ public static class MCCL
     public static extern int MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaZX_Y")]
     public static extern int MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosCheckTime")]
+    public static extern int MCC_SetInPosCheckTime(ushort wCheckTime, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosStableTime")]
+    public static extern int MCC_GetInPosStableTime(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosTolerance")]
+    public static extern int MCC_SetInPosTolerance(ushort wTolerance0, ushort wTolerance1, ushort wTolerance2, ushort wTolerance3, ushort wTolerance4, ushort wTolerance5, ushort wTolerance6, ushort wTolerance7, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosTolerance")]
+    public static extern int MCC_GetInPosTolerance(ref ushort pwTolerance0, ref ushort pwTolerance1, ref ushort pwTolerance2, ref ushort pwTolerance3, ref ushort pwTolerance4, ref ushort pwTolerance5, ref ushort pwTolerance6, ref ushort pwTolerance7, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetOverSpeed")]
     public static extern double MCC_SetOverSpeed(double dfRate, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetOverSpeed")]

@@ -192,6 +192,14 @@ MCC_API int MCC_CALL MCC_SetMaxPulseSpeed(int nPulse0, int nPulse1, int nPulse2,
 MCC_API int MCC_CALL MCC_GetMaxPulseSpeed(int *pnSpeed0, int *pnSpeed1, int *pnSpeed2, int *pnSpeed3, int *pnSpeed4, int *pnSpeed5, int *pnSpeed6, int *pnSpeed7, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetMaxPulseAcc(int nPulseAcc0, int nPulseAcc1, int nPulseAcc2, int nPulseAcc3, int nPulseAcc4, int nPulseAcc5, int nPulseAcc6, int nPulseAcc7, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetMaxPulseAcc(int *pnPulseAcc0, int *pnPulseAcc1, int *pnPulseAcc2, int *pnPulseAcc3, int *pnPulseAcc4, int *pnPulseAcc5, int *pnPulseAcc6, int *pnPulseAcc7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetInPosMode(WORD wMode, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetInPosMaxCheckTime(WORD wMaxCheckTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetInPosSettleTime(WORD wSettleTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableInPos(WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_DisableInPos(WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_SetInPosToleranceEx(double dfTolerance0, double dfTolerance1, double dfTolerance2, double dfTolerance3, double dfTolerance4, double dfTolerance5, double dfTolerance6, double dfTolerance7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetInPosToleranceEx(double *pdfTolerance0, double *pdfTolerance1, double *pdfTolerance2, double *pdfTolerance3, double *pdfTolerance4, double *pdfTolerance5, double *pdfTolerance6, double *pdfTolerance7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetInPosStatus(BYTE *pbyInPos0, BYTE *pbyInPos1, BYTE *pbyInPos2, BYTE *pbyInPos3, BYTE *pbyInPos4, BYTE *pbyInPos5, BYTE *pbyInPos6, BYTE *pbyInPos7, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableTrackError(WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
 MCC_API int MCC_CALL MCC_DisableTrackError(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetTrackErrorLimit(double dfLimit, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
@@ -242,6 +250,10 @@ MCC_API int MCC_CALL MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, doub
 MCC_API int MCC_CALL MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2) */
+MCC_API int MCC_CALL MCC_SetInPosCheckTime(WORD wCheckTime, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetInPosStableTime(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetInPosTolerance(WORD wTolerance0, WORD wTolerance1, WORD wTolerance2, WORD wTolerance3, WORD wTolerance4, WORD wTolerance5, WORD wTolerance6, WORD wTolerance7, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetInPosTolerance(WORD *pwTolerance0, WORD *pwTolerance1, WORD *pwTolerance2, WORD *pwTolerance3, WORD *pwTolerance4, WORD *pwTolerance5, WORD *pwTolerance6, WORD *pwTolerance7, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));

@@ -1056,6 +1056,30 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetMaxPulseAcc")>
     Public Function MCC_GetMaxPulseAcc(ByRef pnPulseAcc0 As Integer, ByRef pnPulseAcc1 As Integer, ByRef pnPulseAcc2 As Integer, ByRef pnPulseAcc3 As Integer, ByRef pnPulseAcc4 As Integer, ByRef pnPulseAcc5 As Integer, ByRef pnPulseAcc6 As Integer, ByRef pnPulseAcc7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosMode")>
+    Public Function MCC_SetInPosMode(ByVal wMode As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosMaxCheckTime")>
+    Public Function MCC_SetInPosMaxCheckTime(ByVal wMaxCheckTime As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosSettleTime")>
+    Public Function MCC_SetInPosSettleTime(ByVal wSettleTime As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableInPos")>
+    Public Function MCC_EnableInPos(Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableInPos")>
+    Public Function MCC_DisableInPos(Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosToleranceEx")>
+    Public Function MCC_SetInPosToleranceEx(ByVal dfTolerance0 As Double, ByVal dfTolerance1 As Double, ByVal dfTolerance2 As Double, ByVal dfTolerance3 As Double, ByVal dfTolerance4 As Double, ByVal dfTolerance5 As Double, ByVal dfTolerance6 As Double, ByVal dfTolerance7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetInPosToleranceEx")>
+    Public Function MCC_GetInPosToleranceEx(ByRef pdfTolerance0 As Double, ByRef pdfTolerance1 As Double, ByRef pdfTolerance2 As Double, ByRef pdfTolerance3 As Double, ByRef pdfTolerance4 As Double, ByRef pdfTolerance5 As Double, ByRef pdfTolerance6 As Double, ByRef pdfTolerance7 As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetInPosStatus")>
+    Public Function MCC_GetInPosStatus(ByRef pbyInPos0 As Byte, ByRef pbyInPos1 As Byte, ByRef pbyInPos2 As Byte, ByRef pbyInPos3 As Byte, ByRef pbyInPos4 As Byte, ByRef pbyInPos5 As Byte, ByRef pbyInPos6 As Byte, ByRef pbyInPos7 As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableTrackError")>
     Public Function MCC_EnableTrackError(Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
     End Function
@@ -1207,6 +1231,18 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaZX_Y")>
     Public Function MCC_HelicaZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosCheckTime")>
+    Public Function MCC_SetInPosCheckTime(ByVal wCheckTime As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetInPosStableTime")>
+    Public Function MCC_GetInPosStableTime(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosTolerance")>
+    Public Function MCC_SetInPosTolerance(ByVal wTolerance0 As UShort, ByVal wTolerance1 As UShort, ByVal wTolerance2 As UShort, ByVal wTolerance3 As UShort, ByVal wTolerance4 As UShort, ByVal wTolerance5 As UShort, ByVal wTolerance6 As UShort, ByVal wTolerance7 As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetInPosTolerance")>
+    Public Function MCC_GetInPosTolerance(ByRef pwTolerance0 As UShort, ByRef pwTolerance1 As UShort, ByRef pwTolerance2 As UShort, ByRef pwTolerance3 As UShort, ByRef pwTolerance4 As UShort, ByRef pwTolerance5 As UShort, ByRef pwTolerance6 As UShort, ByRef pwTolerance7 As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetOverSpeed")>
     Public Function MCC_SetOverSpeed(ByVal dfRate As Double, Optional ByVal wGroupIndex As UShort = 0) As Double

@@ -145,7 +145,67 @@ pub struct GroupState {
     pub track_mask: u32,
     /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
     pub track_limit: Axes,
+    /// In-position settings (`MCC_SetInPos*`).
+    pub inpos: InPosSettings,
+    /// In-position check of the last command, while it runs.
+    inpos_wait: Option<InPosWait>,
+    /// `MCC_GetInPosStatus`: 0xFF per axis once in position, until the next command.
+    inpos_status: [u8; AXES],
 }
+
+/// In-position settings of a group (user manual §2.7.2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InPosSettings {
+    /// `IPM_*` mode.
+    pub mode: u16,
+    /// Maximum check time, s.
+    pub max_check_s: f64,
+    /// Settle time, s (the `IPM_SETTLE_*` modes).
+    pub settle_s: f64,
+    /// Tolerance per axis, UU.
+    pub tolerance: Axes,
+}
+
+/// Maximum check time before it is set (ms; the examples manual uses 1000).
+pub const DEFAULT_INPOS_CHECK_MS: f64 = 1000.0;
+
+impl Default for InPosSettings {
+    fn default() -> Self {
+        InPosSettings {
+            mode: c::IPM_ONETIME_BLOCK,
+            max_check_s: DEFAULT_INPOS_CHECK_MS / 1000.0,
+            settle_s: 0.0,
+            tolerance: [0.0; AXES],
+        }
+    }
+}
+
+/// An in-position check in progress.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct InPosWait {
+    mask: u32,
+    elapsed: f64,
+    settled: f64,
+    settings: InPosSettings,
+}
+
+impl InPosWait {
+    /// Every mode waits for the check; the `BLOCK` modes also stop the queue (with an
+    /// error record) when it fails, the `UNBLOCK` modes then go on.
+    fn blocks(&self) -> bool {
+        true
+    }
+
+    fn fails_with_error(&self) -> bool {
+        matches!(
+            self.settings.mode,
+            c::IPM_ONETIME_BLOCK | c::IPM_SETTLE_BLOCK
+        )
+    }
+}
+
+/// Error record of a failed in-position check (DECISIONS.md).
+pub const ERR_IN_POSITION: i32 = 0xF501;
 
 impl GroupState {
     /// A stopped group at position 0.
@@ -185,12 +245,15 @@ impl GroupState {
             ot_check: [false; AXES],
             track_mask: 0,
             track_limit: [f64::INFINITY; AXES],
+            inpos: InPosSettings::default(),
+            inpos_wait: None,
+            inpos_status: [0; AXES],
         }
     }
 
     /// Whether a check that needs the machine watches this group even when it stands.
     pub fn has_safety_checks(&self) -> bool {
-        self.track_mask != 0
+        self.track_mask != 0 || self.inpos_wait.is_some()
     }
 
     /// Velocity per axis (UU/s).
@@ -346,6 +409,7 @@ impl GroupState {
     }
 
     fn stop_here(&mut self) {
+        self.inpos_wait = None;
         self.running.clear();
         self.queue.clear();
         self.base = self.pos;
@@ -524,6 +588,62 @@ impl GroupState {
         self.error == 0
             && matches!(self.mode, Mode::Normal)
             && (!self.single_block || self.single_block_credit)
+            && !self.inpos_wait.is_some_and(|w| w.blocks())
+    }
+
+    /// Whether an in-position check is running (the engine feeds it the machine).
+    pub fn inpos_waiting(&self) -> bool {
+        self.inpos_wait.is_some()
+    }
+
+    /// The in-position mask of the check running.
+    pub fn inpos_mask_waiting(&self) -> u32 {
+        self.inpos_wait.map_or(0, |w| w.mask)
+    }
+
+    /// `MCC_GetInPosStatus`.
+    pub fn inpos_status(&self) -> [u8; AXES] {
+        self.inpos_status
+    }
+
+    /// One tick of the in-position check (user manual §2.7.2): `errs[i]` is the position
+    /// error of axis `i` (UU, motor against command) for the axes in the check. In
+    /// position: every axis within its tolerance (and, in the settle modes, for the
+    /// settle time): status 0xFF, the next command may run. Not in position within the
+    /// maximum check time: the `BLOCK` modes record 0xF501 and drop the rest of the queue;
+    /// the `UNBLOCK` modes let the queue go on without a record.
+    pub fn check_inpos(&mut self, errs: &[Option<f64>; AXES], dt: f64) {
+        let Some(mut w) = self.inpos_wait else {
+            return;
+        };
+        w.elapsed += dt;
+        let within = (0..AXES).all(|i| {
+            w.mask & (1 << i) == 0 || errs[i].is_none_or(|e| e.abs() <= w.settings.tolerance[i])
+        });
+        let settle = matches!(w.settings.mode, c::IPM_SETTLE_BLOCK | c::IPM_SETTLE_UNBLOCK);
+        if within {
+            w.settled += dt;
+        } else {
+            w.settled = 0.0;
+        }
+        let done = within && (!settle || w.settled >= w.settings.settle_s - TIME_EPS);
+        if done {
+            for i in 0..AXES {
+                if w.mask & (1 << i) != 0 {
+                    self.inpos_status[i] = 0xFF;
+                }
+            }
+            self.inpos_wait = None;
+        } else if w.elapsed >= w.settings.max_check_s - TIME_EPS {
+            self.inpos_wait = None;
+            if w.fails_with_error() {
+                self.stop_here();
+                self.set_error(ERR_IN_POSITION);
+            }
+        } else {
+            self.inpos_wait = Some(w);
+        }
+        self.update_status();
     }
 
     /// Pops queued switches that are now reached; returns the next motion/delay command.
@@ -549,6 +669,9 @@ impl GroupState {
     }
 
     fn start(&mut self, cmd: Command, tau: f64) {
+        if cmd.is_motion() {
+            self.inpos_status = [0; AXES];
+        }
         if let Some(p) = self.pending_override.take() {
             self.override_pct = p;
             if self.mode == Mode::Normal {
@@ -630,6 +753,17 @@ impl GroupState {
             };
             if self.running.is_empty() {
                 self.base = done.cmd.target;
+                if done.cmd.is_motion() && self.inpos_mask != 0 {
+                    self.inpos_wait = Some(InPosWait {
+                        mask: self.inpos_mask,
+                        elapsed: 0.0,
+                        settled: 0.0,
+                        settings: self.inpos,
+                    });
+                    if self.inpos_wait.is_some_and(|w| w.blocks()) {
+                        return;
+                    }
+                }
             } else {
                 let s = done.cmd.start();
                 for ((b, t), s) in self.base.iter_mut().zip(done.cmd.target).zip(s) {
@@ -724,7 +858,9 @@ impl GroupState {
     }
 
     fn update_status(&mut self) {
-        let active = !self.running.is_empty() || !self.queue.is_empty();
+        let active = !self.running.is_empty()
+            || !self.queue.is_empty()
+            || self.inpos_wait.is_some_and(|w| w.blocks());
         self.status = if !active && self.mode != Mode::Aborting {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
                 self.mode = Mode::Normal;

@@ -291,7 +291,7 @@ impl Shared {
                 chan.step(cmd, dt);
             }
         }
-        self.safety(&machine, full);
+        self.safety(&machine, full, dt);
         full
     }
 
@@ -299,12 +299,27 @@ impl Shared {
     /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
     /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
     /// group at once (its queue is dropped).
-    fn safety(&self, machine: &Machine, full: bool) {
+    fn safety(&self, machine: &Machine, full: bool, dt: f64) {
         let limit_mode = self.limit_check.load(Ordering::Relaxed);
         for g in &self.groups {
             let mut g = g.lock();
             if !g.busy() && !g.has_safety_checks() {
                 continue;
+            }
+            if g.inpos_waiting() {
+                let mask = g.inpos_mask_waiting();
+                let errs: [Option<f64>; AXES] = std::array::from_fn(|i| {
+                    let (card, ch) = g.axes[i].channel?;
+                    let chan = machine.channel(card, ch)?;
+                    let f = g.axes[i].factor.abs();
+                    (mask & (1 << i) != 0 && f > 0.0).then(|| chan.error_count() as f64 / f)
+                });
+                g.check_inpos(&errs, dt);
+                if full {
+                    self.publish(&mut g);
+                } else {
+                    self.status[g.index].store(g.status(), Ordering::Release);
+                }
             }
             if let Some(code) = safety::check(&g, machine, limit_mode) {
                 g.stop_for(code.record);

@@ -548,3 +548,245 @@ pub extern "C" fn MCC_UpdateCompParam() -> c_int {
         Ok(c::NO_ERR)
     })
 }
+
+/// In-position mode (`IPM_ONETIME_BLOCK`, `IPM_ONETIME_UNBLOCK`, `IPM_SETTLE_BLOCK`,
+/// `IPM_SETTLE_UNBLOCK`; user manual §2.7.2).
+#[no_mangle]
+pub extern "C" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
+    guard(|| {
+        if wMode > c::IPM_SETTLE_UNBLOCK {
+            return Err(McclError::Parameter);
+        }
+        update_group(wGroupIndex, |g| g.inpos.mode = wMode)
+    })
+}
+
+/// Longest time (ms) the in-position check waits after a command's last pulse.
+#[no_mangle]
+pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
+    guard(|| {
+        update_group(wGroupIndex, |g| {
+            g.inpos.max_check_s = f64::from(wMaxCheckTime) / 1000.0
+        })
+    })
+}
+
+/// How long (ms) the axes must stay within tolerance in the `IPM_SETTLE_*` modes.
+#[no_mangle]
+pub extern "C" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
+    guard(|| {
+        update_group(wGroupIndex, |g| {
+            g.inpos.settle_s = f64::from(wSettleTime) / 1000.0
+        })
+    })
+}
+
+fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> c_int {
+    guard(|| {
+        if dwAxisMask & !0xFF != 0 {
+            return Err(McclError::Parameter);
+        }
+        super::queue(wGroupIndex, |ctx| {
+            Ok(ctx.marker(crate::engine::command::Plan::InPos(on, dwAxisMask)))
+        })
+    })
+}
+
+/// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
+/// the command index.
+#[no_mangle]
+pub extern "C" fn MCC_EnableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
+    inpos_marker(wGroupIndex, dwAxisMask, true)
+}
+
+/// Queues "in-position check off" for the axes in the mask. Returns the command index.
+#[no_mangle]
+pub extern "C" fn MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
+    inpos_marker(wGroupIndex, dwAxisMask, false)
+}
+
+/// In-position tolerance per axis, UU (finite, >= 0).
+#[no_mangle]
+pub extern "C" fn MCC_SetInPosToleranceEx(
+    dfTolerance0: f64,
+    dfTolerance1: f64,
+    dfTolerance2: f64,
+    dfTolerance3: f64,
+    dfTolerance4: f64,
+    dfTolerance5: f64,
+    dfTolerance6: f64,
+    dfTolerance7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let v = super::finite8([
+            dfTolerance0,
+            dfTolerance1,
+            dfTolerance2,
+            dfTolerance3,
+            dfTolerance4,
+            dfTolerance5,
+            dfTolerance6,
+            dfTolerance7,
+        ])?;
+        if v.iter().any(|&t| t < 0.0) {
+            return Err(McclError::Parameter);
+        }
+        update_group(wGroupIndex, |g| g.inpos.tolerance = v)
+    })
+}
+
+/// Reads the in-position tolerances, UU.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetInPosToleranceEx(
+    pdfTolerance0: *mut f64,
+    pdfTolerance1: *mut f64,
+    pdfTolerance2: *mut f64,
+    pdfTolerance3: *mut f64,
+    pdfTolerance4: *mut f64,
+    pdfTolerance5: *mut f64,
+    pdfTolerance6: *mut f64,
+    pdfTolerance7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let p = [
+            pdfTolerance0,
+            pdfTolerance1,
+            pdfTolerance2,
+            pdfTolerance3,
+            pdfTolerance4,
+            pdfTolerance5,
+            pdfTolerance6,
+            pdfTolerance7,
+        ];
+        outs8(&p)?;
+        let v = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))?;
+        // SAFETY: checked non-null; the caller passes writable doubles.
+        unsafe { write8(&p, v) };
+        Ok(c::NO_ERR)
+    })
+}
+
+/// In-position status per axis: 0xFF once in position (held until the next command),
+/// 0 otherwise.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetInPosStatus(
+    pbyInPos0: *mut crate::vendor::BYTE,
+    pbyInPos1: *mut crate::vendor::BYTE,
+    pbyInPos2: *mut crate::vendor::BYTE,
+    pbyInPos3: *mut crate::vendor::BYTE,
+    pbyInPos4: *mut crate::vendor::BYTE,
+    pbyInPos5: *mut crate::vendor::BYTE,
+    pbyInPos6: *mut crate::vendor::BYTE,
+    pbyInPos7: *mut crate::vendor::BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let p = [
+            pbyInPos0, pbyInPos1, pbyInPos2, pbyInPos3, pbyInPos4, pbyInPos5, pbyInPos6, pbyInPos7,
+        ];
+        outs8(&p)?;
+        let v = with_group(wGroupIndex, |g| Ok(g.inpos_status()))?;
+        // SAFETY: checked non-null; the caller passes writable bytes.
+        unsafe { write8(&p, v) };
+        Ok(c::NO_ERR)
+    })
+}
+
+/// Obsolete name of [`MCC_SetInPosMaxCheckTime`].
+#[no_mangle]
+pub extern "C" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> c_int {
+    MCC_SetInPosMaxCheckTime(wCheckTime, wGroupIndex)
+}
+
+/// Obsolete: the settle (stable) time of the in-position check, ms.
+#[no_mangle]
+pub extern "C" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
+    guard(|| {
+        with_group(wGroupIndex, |g| {
+            Ok((g.inpos.settle_s * 1000.0).round() as c_int)
+        })
+    })
+}
+
+/// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
+/// pulses per UU).
+#[no_mangle]
+pub extern "C" fn MCC_SetInPosTolerance(
+    wTolerance0: WORD,
+    wTolerance1: WORD,
+    wTolerance2: WORD,
+    wTolerance3: WORD,
+    wTolerance4: WORD,
+    wTolerance5: WORD,
+    wTolerance6: WORD,
+    wTolerance7: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let v = [
+            wTolerance0,
+            wTolerance1,
+            wTolerance2,
+            wTolerance3,
+            wTolerance4,
+            wTolerance5,
+            wTolerance6,
+            wTolerance7,
+        ];
+        update_group(wGroupIndex, |g| {
+            for (i, t) in v.iter().enumerate() {
+                let f = g.axes[i].factor.abs();
+                g.inpos.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
+            }
+        })
+    })
+}
+
+/// Obsolete: reads the in-position tolerances in pulses.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetInPosTolerance(
+    pwTolerance0: *mut WORD,
+    pwTolerance1: *mut WORD,
+    pwTolerance2: *mut WORD,
+    pwTolerance3: *mut WORD,
+    pwTolerance4: *mut WORD,
+    pwTolerance5: *mut WORD,
+    pwTolerance6: *mut WORD,
+    pwTolerance7: *mut WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let p = [
+            pwTolerance0,
+            pwTolerance1,
+            pwTolerance2,
+            pwTolerance3,
+            pwTolerance4,
+            pwTolerance5,
+            pwTolerance6,
+            pwTolerance7,
+        ];
+        outs8(&p)?;
+        let v = with_group(wGroupIndex, |g| {
+            Ok(std::array::from_fn(|i| {
+                (g.inpos.tolerance[i] * g.axes[i].factor.abs())
+                    .round()
+                    .min(f64::from(WORD::MAX)) as WORD
+            }))
+        })?;
+        // SAFETY: checked non-null; the caller passes writable WORDs.
+        unsafe { write8(&p, v) };
+        Ok(c::NO_ERR)
+    })
+}

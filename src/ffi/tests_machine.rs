@@ -327,3 +327,69 @@ fn dry_run_moves_the_plan_not_the_machine() {
     assert_eq!(enc(0), 0, "encoders stay");
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+#[test]
+fn in_position_waits_for_the_motor() {
+    let _g = setup();
+    // A 50 ms lag: after a move at 10 UU/s the motor trails by 0.5 UU and closes in as
+    // e^(-t / 50 ms): within 0.01 UU after 50 ms x ln(50) = 196 ms.
+    crate::system::active().unwrap().machine.lock().cards[0][0]
+        .spec
+        .lag_s = Some(0.05);
+    assert_eq!(MCC_SetInPosMode(IPM_ONETIME_BLOCK, 0), NO_ERR);
+    assert_eq!(MCC_SetInPosMode(4, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetInPosMaxCheckTime(1000, 0), NO_ERR);
+    assert_eq!(
+        MCC_SetInPosToleranceEx(0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0),
+        NO_ERR
+    );
+    assert_eq!(
+        MCC_SetInPosToleranceEx(f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0),
+        PARAMETER_ERR
+    );
+    assert!(MCC_EnableInPos(0, IMP_AXIS_X) >= 0);
+    assert!(line_x(5.0) >= 0); // 500 ms of motion
+    assert!(line_x(6.0) >= 0);
+    run(500);
+    assert_eq!(x(), 5.0, "the first line ended");
+    let mut st = [0u8; 8];
+    let read = |st: &mut [u8; 8]| {
+        let [a, b, c, d, e, f, g, h] = st;
+        // SAFETY: eight valid pointers.
+        unsafe { MCC_GetInPosStatus(a, b, c, d, e, f, g, h, 0) }
+    };
+    assert_eq!(read(&mut st), NO_ERR);
+    assert_eq!(st[0], 0, "not yet in position");
+    run(190);
+    assert_eq!(x(), 5.0, "the next line waits for the motor");
+    run(150);
+    assert!(
+        x() > 5.0,
+        "in position after about 196 ms, then the next line runs"
+    );
+    run(1000);
+    assert_eq!(MCC_GetErrorCode(0), 0);
+    assert_eq!(read(&mut st), NO_ERR);
+    assert_eq!(
+        st[0], 0xFF,
+        "the last line ended in position; held until the next one"
+    );
+    assert_eq!(st[1], 0, "Y is not checked");
+    // A 100 ms limit fails: 0xF501, the rest of the queue is dropped.
+    assert_eq!(MCC_SetInPosMaxCheckTime(100, 0), NO_ERR);
+    assert!(line_x(7.0) >= 0);
+    assert!(line_x(8.0) >= 0);
+    run(2000);
+    assert_eq!(MCC_GetErrorCode(0), 0xF501);
+    assert_eq!(x(), 7.0, "the second line never ran");
+    assert_eq!(status(), GMS_STOP);
+    // UNBLOCK: the same failure lets the queue go on, without a record.
+    assert_eq!(MCC_ClearError(0), NO_ERR);
+    assert_eq!(MCC_SetInPosMode(IPM_ONETIME_UNBLOCK, 0), NO_ERR);
+    assert!(line_x(9.0) >= 0);
+    assert!(line_x(10.0) >= 0);
+    run(3000);
+    assert_eq!(MCC_GetErrorCode(0), 0);
+    assert_eq!(x(), 10.0);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}

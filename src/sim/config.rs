@@ -992,7 +992,11 @@ index = 11
         assert!(ch.home_active(-1.0) && ch.home_active(1.0) && !ch.home_active(1.001));
         assert!(ch.limit_plus_active(100.0) && !ch.limit_plus_active(99.9));
         assert!(ch.limit_minus_active(-100.0) && !ch.limit_minus_active(-99.9));
-        assert_eq!(ch.index_spacing_or(500), 500, "one index per motor turn: dwPPR pulses");
+        assert_eq!(
+            ch.index_spacing_or(500),
+            500,
+            "one index per motor turn: dwPPR pulses"
+        );
         assert_eq!(ch.index_phase_in(2000), 500);
         assert_eq!(ch.index_spacing_or(0), 1);
         assert_eq!(ch.index_phase_in(0), 0);
