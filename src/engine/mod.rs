@@ -8,6 +8,7 @@
 
 pub mod command;
 pub mod group;
+pub mod isr;
 pub mod snapshot;
 pub mod trace;
 
@@ -65,6 +66,10 @@ pub struct Shared {
     pub pos_ready: Vec<AtomicBool>,
     /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
     pub max_pulse_stock: AtomicU32,
+    /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
+    pub periph: Vec<Mutex<crate::card::Peripherals>>,
+    /// The interrupt routines registered per card (`isr`).
+    pub isr: isr::IsrTable,
     trace: Mutex<Option<trace::Trace>>,
 }
 
@@ -240,19 +245,23 @@ impl Shared {
         });
     }
 
-    /// One tick of the whole card.
-    fn tick(&self) {
+    /// One tick of the whole card; returns the interrupts to deliver.
+    fn tick(&self) -> isr::Collected {
         let dt = self.clock.period().as_secs_f64();
         let t_ns = self.clock.now_ns() + self.clock.period().as_nanos();
-        let mut trace = self.trace.lock();
-        for g in &self.groups {
-            let mut g = g.lock();
-            g.tick(dt);
-            self.publish(&mut g);
-            if let Some(t) = trace.as_mut() {
-                t.row(t_ns, &g);
+        {
+            let mut trace = self.trace.lock();
+            for g in &self.groups {
+                let mut g = g.lock();
+                g.tick(dt);
+                self.publish(&mut g);
+                if let Some(t) = trace.as_mut() {
+                    t.row(t_ns, &g);
+                }
             }
         }
+        let dt_ns = u64::try_from(self.clock.period().as_nanos()).unwrap_or(u64::MAX);
+        self.tick_peripherals(dt_ns)
     }
 }
 
@@ -298,6 +307,8 @@ impl Engine {
             servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
             pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
+            periph: (0..cards).map(|_| Mutex::default()).collect(),
+            isr: isr::IsrTable::new(cards),
             trace: Mutex::new(trace),
         });
         shared.for_each_group(|_| {});
@@ -351,9 +362,10 @@ fn run(shared: &Shared) {
         match shared.clock.wait_next() {
             Next::Stop => return,
             Next::Tick => {
-                shared.tick();
+                let interrupts = shared.tick();
                 shared.check_watch();
                 // Interrupt callbacks collected in the tick run here, without any lock.
+                shared.isr.deliver(&interrupts, &shared.clock);
                 shared.clock.tick_done();
             }
         }
