@@ -120,13 +120,24 @@ fn bump(b: &mut u8, n: u64) {
     *b = u8::try_from(u64::from(*b).saturating_add(n)).unwrap_or(u8::MAX);
 }
 
-fn ix(n: u8) -> usize {
-    usize::from(n & 7)
-}
-
 impl Pending {
-    /// Records one cause.
+    /// Records one cause (a channel or input number above 7 is ignored).
     pub fn raise(&mut self, i: Interrupt) {
+        let ix = |n: u8| usize::from(n);
+        if let Interrupt::LioOtp(n)
+        | Interrupt::LioOtn(n)
+        | Interrupt::LioHome(n)
+        | Interrupt::EncIndex(n)
+        | Interrupt::EncComp(n)
+        | Interrupt::PclOvp(n)
+        | Interrupt::PclOvn(n)
+        | Interrupt::AdcComp(n)
+        | Interrupt::RioInput(n) = i
+        {
+            if n > 7 {
+                return;
+            }
+        }
         match i {
             Interrupt::LioOtp(n) => bump(&mut self.lio[ix(n)], 1),
             Interrupt::LioOtn(n) => bump(&mut self.lio[8 + ix(n)], 1),
@@ -313,5 +324,9 @@ mod tests {
         assert_eq!(p.tmr[0], 255, "saturates");
         assert_eq!(p.rio[8], 1);
         assert!(!p.is_empty());
+        let q = p;
+        p.raise(Interrupt::EncComp(8));
+        p.raise(Interrupt::LioOtp(200));
+        assert_eq!(p, q, "out-of-range channels are ignored");
     }
 }
