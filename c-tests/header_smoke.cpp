@@ -5,13 +5,17 @@
 #include "MCCL_Sim.h"
 
 static void MCC_CALLBACK isr(ENCINT *p) { (void)p; }
+// The manuals write routines with _stdcall.
+static void _stdcall isr2(LIOINT *p) { (void)p; }
 
 int smoke();
 int smoke()
 {
     SYS_MAC_PARAM m;
     ENCISR cb = isr;
+    LIOISR cb2 = isr2;
     (void)cb;
+    (void)cb2;
     m.dwPPR = 1;
     (void)mcl_set_motor_maximum_velocity(0, 0, 100);   // direction_modifier defaulted
     (void)mcl_synchronous_move_motor(0, 1, 0, 1, 0, 1, 0); // execute defaulted

@@ -22,6 +22,117 @@ using System.Runtime.InteropServices;
 using System.Text;
 
 [StructLayout(LayoutKind.Sequential)]
+public struct LIOINT
+{
+    public byte OTP0;
+    public byte OTP1;
+    public byte OTP2;
+    public byte OTP3;
+    public byte OTP4;
+    public byte OTP5;
+    public byte OTP6;
+    public byte OTP7;
+    public byte OTN0;
+    public byte OTN1;
+    public byte OTN2;
+    public byte OTN3;
+    public byte OTN4;
+    public byte OTN5;
+    public byte OTN6;
+    public byte OTN7;
+    public byte HOME0;
+    public byte HOME1;
+    public byte HOME2;
+    public byte HOME3;
+    public byte HOME4;
+    public byte HOME5;
+    public byte HOME6;
+    public byte HOME7;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct ENCINT
+{
+    public byte INDEX0;
+    public byte INDEX1;
+    public byte INDEX2;
+    public byte INDEX3;
+    public byte INDEX4;
+    public byte INDEX5;
+    public byte INDEX6;
+    public byte INDEX7;
+    public byte COMP0;
+    public byte COMP1;
+    public byte COMP2;
+    public byte COMP3;
+    public byte COMP4;
+    public byte COMP5;
+    public byte COMP6;
+    public byte COMP7;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct PCLINT
+{
+    public byte OVP0;
+    public byte OVP1;
+    public byte OVP2;
+    public byte OVP3;
+    public byte OVP4;
+    public byte OVP5;
+    public byte OVP6;
+    public byte OVP7;
+    public byte OVN0;
+    public byte OVN1;
+    public byte OVN2;
+    public byte OVN3;
+    public byte OVN4;
+    public byte OVN5;
+    public byte OVN6;
+    public byte OVN7;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct ADCINT
+{
+    public byte COMP0;
+    public byte COMP1;
+    public byte COMP2;
+    public byte COMP3;
+    public byte COMP4;
+    public byte COMP5;
+    public byte COMP6;
+    public byte COMP7;
+    public byte CONV;
+    public byte TAG;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct TMRINT
+{
+    public byte TIMER;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct RIOINT
+{
+    public byte RDI0;
+    public byte RDI1;
+    public byte RDI2;
+    public byte RDI3;
+    public byte RDI4;
+    public byte RDI5;
+    public byte RDI6;
+    public byte RDI7;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct HSKINT
+{
+    public byte HANDSHAKE;
+}
+
+[StructLayout(LayoutKind.Sequential)]
 public struct SYS_COMP_PARAM
 {
     public uint dwInterval;
@@ -223,117 +334,6 @@ public struct SYS_GROUP_CONFIG
     public int[] nGroupUsed;
     [MarshalAs(UnmanagedType.ByValArray, SizeConst = 96)]
     public SYS_GROUP_INFO[] stGroupInfo;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct LIOINT
-{
-    public byte OTP0;
-    public byte OTP1;
-    public byte OTP2;
-    public byte OTP3;
-    public byte OTP4;
-    public byte OTP5;
-    public byte OTP6;
-    public byte OTP7;
-    public byte OTN0;
-    public byte OTN1;
-    public byte OTN2;
-    public byte OTN3;
-    public byte OTN4;
-    public byte OTN5;
-    public byte OTN6;
-    public byte OTN7;
-    public byte HOME0;
-    public byte HOME1;
-    public byte HOME2;
-    public byte HOME3;
-    public byte HOME4;
-    public byte HOME5;
-    public byte HOME6;
-    public byte HOME7;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct ENCINT
-{
-    public byte INDEX0;
-    public byte INDEX1;
-    public byte INDEX2;
-    public byte INDEX3;
-    public byte INDEX4;
-    public byte INDEX5;
-    public byte INDEX6;
-    public byte INDEX7;
-    public byte COMP0;
-    public byte COMP1;
-    public byte COMP2;
-    public byte COMP3;
-    public byte COMP4;
-    public byte COMP5;
-    public byte COMP6;
-    public byte COMP7;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct PCLINT
-{
-    public byte OVP0;
-    public byte OVP1;
-    public byte OVP2;
-    public byte OVP3;
-    public byte OVP4;
-    public byte OVP5;
-    public byte OVP6;
-    public byte OVP7;
-    public byte OVN0;
-    public byte OVN1;
-    public byte OVN2;
-    public byte OVN3;
-    public byte OVN4;
-    public byte OVN5;
-    public byte OVN6;
-    public byte OVN7;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct ADCINT
-{
-    public byte COMP0;
-    public byte COMP1;
-    public byte COMP2;
-    public byte COMP3;
-    public byte COMP4;
-    public byte COMP5;
-    public byte COMP6;
-    public byte COMP7;
-    public byte CONV;
-    public byte TAG;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct RIOINT
-{
-    public byte RDI0;
-    public byte RDI1;
-    public byte RDI2;
-    public byte RDI3;
-    public byte RDI4;
-    public byte RDI5;
-    public byte RDI6;
-    public byte RDI7;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct TMRINT
-{
-    public byte TIMER;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct HSKINT
-{
-    public byte HANDSHAKE;
 }
 
 /// <summary>The MCCL functions, constants and callback types.</summary>
@@ -604,17 +604,17 @@ public static class MCCL
 
     // ---- Callback types (keep the delegate instance alive while registered) ----
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
-    public delegate void PCLISR(ref PCLINT value);
-    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
-    public delegate void ADCISR(ref ADCINT value);
-    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void LIOISR(ref LIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void ENCISR(ref ENCINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
-    public delegate void RIOISR(ref RIOINT value);
+    public delegate void PCLISR(ref PCLINT value);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void ADCISR(ref ADCINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void TMRISR(ref TMRINT value);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void RIOISR(ref RIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void HSKISR(ref HSKINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
@@ -636,6 +636,8 @@ public static class MCCL
     public static extern int MCC_CloseGroup(int nGroupIndex);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CloseAllGroups")]
     public static extern int MCC_CloseAllGroups();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHSKRoutine")]
+    public static extern int MCC_SetHSKRoutine(HSKISR pfnLIORoutine, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMacParam")]
     public static extern int MCC_SetMacParam(ref SYS_MAC_PARAM pstMacParam, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMacParam")]
@@ -690,6 +692,8 @@ public static class MCCL
     public static extern int MCC_DisablePosReady(ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetEmgcStopStatus")]
     public static extern int MCC_GetEmgcStopStatus(ref ushort pwStatus, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutine")]
+    public static extern int MCC_SetLIORoutine(LIOISR pfnLIORoutine, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedLightOn")]
     public static extern int MCC_SetLedLightOn(ushort Channel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedLightOff")]
@@ -987,6 +991,8 @@ public static class MCCL
     public static extern int MCC_SetTrackErrorLimit(double dfLimit, sbyte cAxis, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetTrackErrorLimit")]
     public static extern int MCC_GetTrackErrorLimit(ref double pdfLimit, sbyte cAxis, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPCLRoutine")]
+    public static extern int MCC_SetPCLRoutine(PCLISR pfnPCLRoutine, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCompParam")]
     public static extern int MCC_SetCompParam(ref SYS_COMP_PARAM pstCompParam, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_UpdateCompParam")]
@@ -1033,6 +1039,8 @@ public static class MCCL
     public static extern int MCC_FixSpeed([MarshalAs(UnmanagedType.Bool)] bool bFix, ushort wGroupIndex = 0);
 
     // ---- Encoder Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCRoutine")]
+    public static extern int MCC_SetENCRoutine(ENCISR pfnEncoderRoutine, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCInputRate")]
     public static extern int MCC_SetENCInputRate(ushort wInputRate, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ClearENCCounter")]
@@ -1069,6 +1077,146 @@ public static class MCCL
     }
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCGearRate")]
     public static extern int MCC_SetENCGearRate(double dfGearRate, ushort wChannel, ushort wCardIndex = 0);
+
+    // ---- Timer & Watch Dog Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetTMRRoutine")]
+    public static extern int MCC_SetTMRRoutine(TMRISR pfnLIORoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetTimer")]
+    public static extern int MCC_SetTimer(uint dwValue, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableTimer")]
+    public static extern int MCC_EnableTimer(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableTimer")]
+    public static extern int MCC_DisableTimer(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableTimerTrigger")]
+    public static extern int MCC_EnableTimerTrigger(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableTimerTrigger")]
+    public static extern int MCC_DisableTimerTrigger(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetWatchDogTimer")]
+    public static extern int MCC_SetWatchDogTimer(uint wValue, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetWatchDogResetPeriod")]
+    public static extern int MCC_SetWatchDogResetPeriod(uint dwValue, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableWatchDogTimer")]
+    public static extern int MCC_EnableWatchDogTimer(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableWatchDogTimer")]
+    public static extern int MCC_DisableWatchDogTimer(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_RefreshWatchDogTimer")]
+    public static extern int MCC_RefreshWatchDogTimer(ushort wCardIndex = 0);
+
+    // ---- Remote Input/Output Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIORoutine")]
+    public static extern int MCC_SetRIORoutine(RIOISR pfnRIORoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableRIOSetControl")]
+    public static extern int MCC_EnableRIOSetControl(ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableRIOSetControl")]
+    public static extern int MCC_DisableRIOSetControl(ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableRIOSlaveControl")]
+    public static extern int MCC_EnableRIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableRIOSlaveControl")]
+    public static extern int MCC_DisableRIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOTransStatus")]
+    public static extern int MCC_GetRIOTransStatus(ref ushort pwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOMasterStatus")]
+    public static extern int MCC_GetRIOMasterStatus(ref ushort pwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOSlaveStatus")]
+    public static extern int MCC_GetRIOSlaveStatus(ref ushort pwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOSlaveFail")]
+    public static extern int MCC_GetRIOSlaveFail(ref uint pdwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOInputValue")]
+    public static extern int MCC_GetRIOInputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOOutputValue")]
+    public static extern int MCC_SetRIOOutputValue(ushort wValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOOutputValue")]
+    public static extern int MCC_GetRIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOTriggerType")]
+    public static extern int MCC_SetRIOTriggerType(ushort wType, ushort wSet, ushort wDigitalInput, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableRIOInputTrigger")]
+    public static extern int MCC_EnableRIOInputTrigger(ushort wSet, ushort wDigitalInput, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableRIOInputTrigger")]
+    public static extern int MCC_DisableRIOInputTrigger(ushort wSet, ushort wDigitalInput, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableRIOTransTrigger")]
+    public static extern int MCC_EnableRIOTransTrigger(ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableRIOTransTrigger")]
+    public static extern int MCC_DisableRIOTransTrigger(ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableARIOSlaveControl")]
+    public static extern int MCC_EnableARIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableARIOSlaveControl")]
+    public static extern int MCC_DisableARIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOTransStatus")]
+    public static extern int MCC_GetARIOTransStatus(ref ushort pwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOMasterStatus")]
+    public static extern int MCC_GetARIOMasterStatus(ref ushort pwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOSlaveStatus")]
+    public static extern int MCC_GetARIOSlaveStatus(ref ushort pwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOSlaveFail")]
+    public static extern int MCC_GetARIOSlaveFail(ref uint pdwStatus, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOInputValue")]
+    public static extern int MCC_GetARIOInputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIOOutputValue")]
+    public static extern int MCC_SetARIOOutputValue(ushort wValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOOutputValue")]
+    public static extern int MCC_GetARIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+
+    // ---- D/A Converter Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACOutput")]
+    public static extern int MCC_SetDACOutput(float fVoltage, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACTriggerOutput")]
+    public static extern int MCC_SetDACTriggerOutput(float fVoltage, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACTriggerSource")]
+    public static extern int MCC_SetDACTriggerSource(uint dwSource, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableDACTriggerMode")]
+    public static extern int MCC_EnableDACTriggerMode(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableDACTriggerMode")]
+    public static extern int MCC_DisableDACTriggerMode(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_StartDACConv")]
+    public static extern int MCC_StartDACConv(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_StopDACConv")]
+    public static extern int MCC_StopDACConv(ushort wCardIndex = 0);
+
+    // ---- A/D Converter Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCRoutine")]
+    public static extern int MCC_SetADCRoutine(ADCISR pfnADCRoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCConvType")]
+    public static extern int MCC_SetADCConvType(ushort wConvType, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetADCConvType")]
+    public static extern int MCC_GetADCConvType(ref ushort pwConvType, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCConvMode")]
+    public static extern int MCC_SetADCConvMode(ushort wConvMode, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetADCInput")]
+    public static extern int MCC_GetADCInput(ref float pfInput, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCSingleChannel")]
+    public static extern int MCC_SetADCSingleChannel(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetADCWorkStatus")]
+    public static extern int MCC_GetADCWorkStatus(ref ushort pwSTatus, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableADCConvTrigger")]
+    public static extern int MCC_EnableADCConvTrigger(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableADCConvTrigger")]
+    public static extern int MCC_DisableADCConvTrigger(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCTagChannel")]
+    public static extern int MCC_SetADCTagChannel(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableADCTagTrigger")]
+    public static extern int MCC_EnableADCTagTrigger(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableADCTagTrigger")]
+    public static extern int MCC_DisableADCTagTrigger(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCCompMask")]
+    public static extern int MCC_SetADCCompMask(ushort wMask, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCCompType")]
+    public static extern int MCC_SetADCCompType(ushort wCompType, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCCompValue")]
+    public static extern int MCC_SetADCCompValue(float fValue, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetADCCompValue")]
+    public static extern int MCC_GetADCCompValue(ref float pfValue, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableADCCompTrigger")]
+    public static extern int MCC_EnableADCCompTrigger(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableADCCompTrigger")]
+    public static extern int MCC_DisableADCCompTrigger(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableADCConvChannel")]
+    public static extern int MCC_EnableADCConvChannel(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableADCConvChannel")]
+    public static extern int MCC_DisableADCConvChannel(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_StartADCConv")]
+    public static extern int MCC_StartADCConv(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_StopADCConv")]
+    public static extern int MCC_StopADCConv(ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineX")]
     public static extern int MCC_LineX(double dfX, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_LineY")]
@@ -1105,4 +1253,6 @@ public static class MCCL
     public static extern double MCC_GetOverSpeed(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ChangeFeedSpeed")]
     public static extern double MCC_ChangeFeedSpeed(double dfSpeed, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutineEx")]
+    public static extern int MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, ushort wCardIndex = 0);
 }

@@ -17,6 +17,17 @@
 
 #define MULTI_CARD_SUPPORT
 
+/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems
+ * than Windows the calling convention keywords mean nothing. */
+#if !defined(_WIN32)
+#ifndef _stdcall
+#define _stdcall
+#endif
+#ifndef __stdcall
+#define __stdcall
+#endif
+#endif
+
 #define MAX_CARD_NUM 12
 
 #define MAX_AXIS_NUM 8
@@ -120,6 +131,117 @@ typedef uint16_t WORD;
 typedef uint32_t DWORD;
 
 typedef uint8_t BYTE;
+
+typedef struct {
+  BYTE OTP0;
+  BYTE OTP1;
+  BYTE OTP2;
+  BYTE OTP3;
+  BYTE OTP4;
+  BYTE OTP5;
+  BYTE OTP6;
+  BYTE OTP7;
+  BYTE OTN0;
+  BYTE OTN1;
+  BYTE OTN2;
+  BYTE OTN3;
+  BYTE OTN4;
+  BYTE OTN5;
+  BYTE OTN6;
+  BYTE OTN7;
+  BYTE HOME0;
+  BYTE HOME1;
+  BYTE HOME2;
+  BYTE HOME3;
+  BYTE HOME4;
+  BYTE HOME5;
+  BYTE HOME6;
+  BYTE HOME7;
+} LIOINT;
+
+typedef void (MCC_CALLBACK *LIOISR)(LIOINT*);
+
+typedef struct {
+  BYTE INDEX0;
+  BYTE INDEX1;
+  BYTE INDEX2;
+  BYTE INDEX3;
+  BYTE INDEX4;
+  BYTE INDEX5;
+  BYTE INDEX6;
+  BYTE INDEX7;
+  BYTE COMP0;
+  BYTE COMP1;
+  BYTE COMP2;
+  BYTE COMP3;
+  BYTE COMP4;
+  BYTE COMP5;
+  BYTE COMP6;
+  BYTE COMP7;
+} ENCINT;
+
+typedef void (MCC_CALLBACK *ENCISR)(ENCINT*);
+
+typedef struct {
+  BYTE OVP0;
+  BYTE OVP1;
+  BYTE OVP2;
+  BYTE OVP3;
+  BYTE OVP4;
+  BYTE OVP5;
+  BYTE OVP6;
+  BYTE OVP7;
+  BYTE OVN0;
+  BYTE OVN1;
+  BYTE OVN2;
+  BYTE OVN3;
+  BYTE OVN4;
+  BYTE OVN5;
+  BYTE OVN6;
+  BYTE OVN7;
+} PCLINT;
+
+typedef void (MCC_CALLBACK *PCLISR)(PCLINT*);
+
+typedef struct {
+  BYTE COMP0;
+  BYTE COMP1;
+  BYTE COMP2;
+  BYTE COMP3;
+  BYTE COMP4;
+  BYTE COMP5;
+  BYTE COMP6;
+  BYTE COMP7;
+  BYTE CONV;
+  BYTE TAG;
+} ADCINT;
+
+typedef void (MCC_CALLBACK *ADCISR)(ADCINT*);
+
+typedef struct {
+  BYTE TIMER;
+} TMRINT;
+
+typedef void (MCC_CALLBACK *TMRISR)(TMRINT*);
+
+typedef struct {
+  BYTE RDI0;
+  BYTE RDI1;
+  BYTE RDI2;
+  BYTE RDI3;
+  BYTE RDI4;
+  BYTE RDI5;
+  BYTE RDI6;
+  BYTE RDI7;
+} RIOINT;
+
+typedef void (MCC_CALLBACK *RIOISR)(RIOINT*);
+
+typedef struct {
+  BYTE HANDSHAKE;
+} HSKINT;
+
+typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
 typedef struct {
   DWORD dwInterval;
@@ -275,117 +397,6 @@ typedef struct {
   int32_t nGroupUsed[96];
   SYS_GROUP_INFO stGroupInfo[96];
 } SYS_GROUP_CONFIG;
-
-typedef struct {
-  BYTE OTP0;
-  BYTE OTP1;
-  BYTE OTP2;
-  BYTE OTP3;
-  BYTE OTP4;
-  BYTE OTP5;
-  BYTE OTP6;
-  BYTE OTP7;
-  BYTE OTN0;
-  BYTE OTN1;
-  BYTE OTN2;
-  BYTE OTN3;
-  BYTE OTN4;
-  BYTE OTN5;
-  BYTE OTN6;
-  BYTE OTN7;
-  BYTE HOME0;
-  BYTE HOME1;
-  BYTE HOME2;
-  BYTE HOME3;
-  BYTE HOME4;
-  BYTE HOME5;
-  BYTE HOME6;
-  BYTE HOME7;
-} LIOINT;
-
-typedef struct {
-  BYTE INDEX0;
-  BYTE INDEX1;
-  BYTE INDEX2;
-  BYTE INDEX3;
-  BYTE INDEX4;
-  BYTE INDEX5;
-  BYTE INDEX6;
-  BYTE INDEX7;
-  BYTE COMP0;
-  BYTE COMP1;
-  BYTE COMP2;
-  BYTE COMP3;
-  BYTE COMP4;
-  BYTE COMP5;
-  BYTE COMP6;
-  BYTE COMP7;
-} ENCINT;
-
-typedef struct {
-  BYTE OVP0;
-  BYTE OVP1;
-  BYTE OVP2;
-  BYTE OVP3;
-  BYTE OVP4;
-  BYTE OVP5;
-  BYTE OVP6;
-  BYTE OVP7;
-  BYTE OVN0;
-  BYTE OVN1;
-  BYTE OVN2;
-  BYTE OVN3;
-  BYTE OVN4;
-  BYTE OVN5;
-  BYTE OVN6;
-  BYTE OVN7;
-} PCLINT;
-
-typedef struct {
-  BYTE COMP0;
-  BYTE COMP1;
-  BYTE COMP2;
-  BYTE COMP3;
-  BYTE COMP4;
-  BYTE COMP5;
-  BYTE COMP6;
-  BYTE COMP7;
-  BYTE CONV;
-  BYTE TAG;
-} ADCINT;
-
-typedef struct {
-  BYTE RDI0;
-  BYTE RDI1;
-  BYTE RDI2;
-  BYTE RDI3;
-  BYTE RDI4;
-  BYTE RDI5;
-  BYTE RDI6;
-  BYTE RDI7;
-} RIOINT;
-
-typedef struct {
-  BYTE TIMER;
-} TMRINT;
-
-typedef struct {
-  BYTE HANDSHAKE;
-} HSKINT;
-
-typedef void (MCC_CALLBACK *PCLISR)(PCLINT*);
-
-typedef void (MCC_CALLBACK *ADCISR)(ADCINT*);
-
-typedef void (MCC_CALLBACK *LIOISR)(LIOINT*);
-
-typedef void (MCC_CALLBACK *ENCISR)(ENCINT*);
-
-typedef void (MCC_CALLBACK *RIOISR)(RIOINT*);
-
-typedef void (MCC_CALLBACK *TMRISR)(TMRINT*);
-
-typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
 typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
 

@@ -38,6 +38,7 @@ MCC_API int MCC_CALL MCC_CreateGroup(int xMapToCh, int yMapToCh, int zMapToCh, i
 MCC_API int MCC_CALL MCC_CreateGroupEx(int xMapToCh, int yMapToCh, int zMapToCh, int uMapToCh, int vMapToCh, int wMapToCh, int aMapToCh, int bMapToCh, int nCardIndex, int nMotionQueueSize MCC_DEFAULT(MOTION_QUEUE_SIZE));
 MCC_API int MCC_CALL MCC_CloseGroup(int nGroupIndex);
 MCC_API int MCC_CALL MCC_CloseAllGroups(void);
+MCC_API int MCC_CALL MCC_SetHSKRoutine(HSKISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetEncoderConfig(SYS_ENCODER_CONFIG *pstEncoderConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
@@ -63,6 +64,7 @@ MCC_API int MCC_CALL MCC_SetServoOff(WORD wChannel, WORD wCardIndex MCC_DEFAULT(
 MCC_API int MCC_CALL MCC_EnablePosReady(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisablePosReady(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetEmgcStopStatus(WORD *pwStatus, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLIORoutine(LIOISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLedLightOn(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLedLightOff(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetLedLightStatus(WORD Channel, WORD *Status, WORD wCardIndex MCC_DEFAULT(0));
@@ -204,6 +206,7 @@ MCC_API int MCC_CALL MCC_EnableTrackError(WORD wGroupIndex MCC_DEFAULT(0), DWORD
 MCC_API int MCC_CALL MCC_DisableTrackError(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetTrackErrorLimit(double dfLimit, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetTrackErrorLimit(double *pdfLimit, char cAxis, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetPCLRoutine(PCLISR pfnPCLRoutine, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetCompParam(SYS_COMP_PARAM *pstCompParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_UpdateCompParam(void);
 
@@ -229,12 +232,87 @@ MCC_API double MCC_CALL MCC_GetOverrideRate(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_FixSpeed(BOOL bFix, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Encoder Control */
+MCC_API int MCC_CALL MCC_SetENCRoutine(ENCISR pfnEncoderRoutine, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetENCInputRate(WORD wInputRate, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_ClearENCCounter(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetENCValue(long *plValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetENCValueEx(long long *pllValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetENCValue(long lValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetENCGearRate(double dfGearRate, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+
+/* Timer & Watch Dog Control */
+MCC_API int MCC_CALL MCC_SetTMRRoutine(TMRISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetTimer(DWORD dwValue, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableTimer(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableTimer(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableTimerTrigger(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableTimerTrigger(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetWatchDogTimer(DWORD wValue, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetWatchDogResetPeriod(DWORD dwValue, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableWatchDogTimer(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableWatchDogTimer(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_RefreshWatchDogTimer(WORD wCardIndex MCC_DEFAULT(0));
+
+/* Remote Input/Output Control */
+MCC_API int MCC_CALL MCC_SetRIORoutine(RIOISR pfnRIORoutine, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableRIOSetControl(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableRIOSetControl(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableRIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableRIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetRIOTransStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetRIOMasterStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetRIOSlaveStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetRIOSlaveFail(DWORD *pdwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetRIOInputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetRIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetRIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetRIOTriggerType(WORD wType, WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetARIOTransStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetARIOMasterStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetARIOSlaveStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetARIOSlaveFail(DWORD *pdwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetARIOInputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetARIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+
+/* D/A Converter Control */
+MCC_API int MCC_CALL MCC_SetDACOutput(float fVoltage, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDACTriggerOutput(float fVoltage, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDACTriggerSource(DWORD dwSource, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableDACTriggerMode(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableDACTriggerMode(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_StartDACConv(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_StopDACConv(WORD wCardIndex MCC_DEFAULT(0));
+
+/* A/D Converter Control */
+MCC_API int MCC_CALL MCC_SetADCRoutine(ADCISR pfnADCRoutine, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCConvType(WORD wConvType, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetADCConvType(WORD *pwConvType, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCConvMode(WORD wConvMode, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetADCInput(float *pfInput, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCSingleChannel(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetADCWorkStatus(WORD *pwSTatus, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableADCConvTrigger(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableADCConvTrigger(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCTagChannel(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableADCTagTrigger(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableADCTagTrigger(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCCompMask(WORD wMask, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCCompType(WORD wCompType, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCCompValue(float fValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetADCCompValue(float *pfValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableADCCompTrigger(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableADCCompTrigger(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableADCConvChannel(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableADCConvChannel(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_StartADCConv(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_StopADCConv(WORD wCardIndex MCC_DEFAULT(0));
 
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") */
 MCC_API int MCC_CALL MCC_LineX(double dfX, WORD wGroupIndex MCC_DEFAULT(0));
@@ -257,6 +335,9 @@ MCC_API int MCC_CALL MCC_GetInPosTolerance(WORD *pwTolerance0, WORD *pwTolerance
 MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
+
+/* Names the IMP manuals use that the headers lack (DECISIONS.md) */
+MCC_API int MCC_CALL MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -19,6 +19,9 @@ pub enum McclError {
     Group,
     /// A bad feed rate (`FEED_RATE_ERR`, -7).
     FeedRate,
+    /// A DAC call on a channel that runs in voltage-command mode
+    /// (`VOLTAGE_COMMAND_CHANNEL_ERR`, -9).
+    VoltageChannel,
     /// Hold with nothing to hold (`HOLD_ILLEGAL_ERR`, -11).
     HoldIllegal,
     /// Continue when not held (`CONTI_ILLEGAL_ERR`, -12).
@@ -42,6 +45,7 @@ impl McclError {
             McclError::Parameter => c::PARAMETER_ERR,
             McclError::Group => c::GROUP_PARAMETER_ERR,
             McclError::FeedRate => c::FEED_RATE_ERR,
+            McclError::VoltageChannel => c::VOLTAGE_COMMAND_CHANNEL_ERR,
             McclError::HoldIllegal => c::HOLD_ILLEGAL_ERR,
             McclError::ContiIllegal => c::CONTI_ILLEGAL_ERR,
             McclError::AbortIllegal => c::ABORT_ILLEGAL_ERR,

@@ -7,6 +7,7 @@
 //! [`mc3b`] (the MC3B stepper controller: protocol, emulator, its `mcl_*` C library).
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
+pub mod card;
 pub mod clock;
 pub mod config;
 pub mod engine;

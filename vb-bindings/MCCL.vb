@@ -11,6 +11,110 @@ Imports System.Runtime.InteropServices
 Imports System.Text
 
 <StructLayout(LayoutKind.Sequential)>
+Public Structure LIOINT
+    Public OTP0 As Byte
+    Public OTP1 As Byte
+    Public OTP2 As Byte
+    Public OTP3 As Byte
+    Public OTP4 As Byte
+    Public OTP5 As Byte
+    Public OTP6 As Byte
+    Public OTP7 As Byte
+    Public OTN0 As Byte
+    Public OTN1 As Byte
+    Public OTN2 As Byte
+    Public OTN3 As Byte
+    Public OTN4 As Byte
+    Public OTN5 As Byte
+    Public OTN6 As Byte
+    Public OTN7 As Byte
+    Public HOME0 As Byte
+    Public HOME1 As Byte
+    Public HOME2 As Byte
+    Public HOME3 As Byte
+    Public HOME4 As Byte
+    Public HOME5 As Byte
+    Public HOME6 As Byte
+    Public HOME7 As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure ENCINT
+    Public INDEX0 As Byte
+    Public INDEX1 As Byte
+    Public INDEX2 As Byte
+    Public INDEX3 As Byte
+    Public INDEX4 As Byte
+    Public INDEX5 As Byte
+    Public INDEX6 As Byte
+    Public INDEX7 As Byte
+    Public COMP0 As Byte
+    Public COMP1 As Byte
+    Public COMP2 As Byte
+    Public COMP3 As Byte
+    Public COMP4 As Byte
+    Public COMP5 As Byte
+    Public COMP6 As Byte
+    Public COMP7 As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure PCLINT
+    Public OVP0 As Byte
+    Public OVP1 As Byte
+    Public OVP2 As Byte
+    Public OVP3 As Byte
+    Public OVP4 As Byte
+    Public OVP5 As Byte
+    Public OVP6 As Byte
+    Public OVP7 As Byte
+    Public OVN0 As Byte
+    Public OVN1 As Byte
+    Public OVN2 As Byte
+    Public OVN3 As Byte
+    Public OVN4 As Byte
+    Public OVN5 As Byte
+    Public OVN6 As Byte
+    Public OVN7 As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure ADCINT
+    Public COMP0 As Byte
+    Public COMP1 As Byte
+    Public COMP2 As Byte
+    Public COMP3 As Byte
+    Public COMP4 As Byte
+    Public COMP5 As Byte
+    Public COMP6 As Byte
+    Public COMP7 As Byte
+    Public CONV As Byte
+    Public TAG As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure TMRINT
+    Public TIMER As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure RIOINT
+    Public RDI0 As Byte
+    Public RDI1 As Byte
+    Public RDI2 As Byte
+    Public RDI3 As Byte
+    Public RDI4 As Byte
+    Public RDI5 As Byte
+    Public RDI6 As Byte
+    Public RDI7 As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure HSKINT
+    Public HANDSHAKE As Byte
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
 Public Structure SYS_COMP_PARAM
     Public dwInterval As UInteger
     Public wHome_No As UShort
@@ -189,110 +293,6 @@ End Structure
 Public Structure SYS_GROUP_CONFIG
     <MarshalAs(UnmanagedType.ByValArray, SizeConst:=96)> Public nGroupUsed() As Integer
     <MarshalAs(UnmanagedType.ByValArray, SizeConst:=96)> Public stGroupInfo() As SYS_GROUP_INFO
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure LIOINT
-    Public OTP0 As Byte
-    Public OTP1 As Byte
-    Public OTP2 As Byte
-    Public OTP3 As Byte
-    Public OTP4 As Byte
-    Public OTP5 As Byte
-    Public OTP6 As Byte
-    Public OTP7 As Byte
-    Public OTN0 As Byte
-    Public OTN1 As Byte
-    Public OTN2 As Byte
-    Public OTN3 As Byte
-    Public OTN4 As Byte
-    Public OTN5 As Byte
-    Public OTN6 As Byte
-    Public OTN7 As Byte
-    Public HOME0 As Byte
-    Public HOME1 As Byte
-    Public HOME2 As Byte
-    Public HOME3 As Byte
-    Public HOME4 As Byte
-    Public HOME5 As Byte
-    Public HOME6 As Byte
-    Public HOME7 As Byte
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure ENCINT
-    Public INDEX0 As Byte
-    Public INDEX1 As Byte
-    Public INDEX2 As Byte
-    Public INDEX3 As Byte
-    Public INDEX4 As Byte
-    Public INDEX5 As Byte
-    Public INDEX6 As Byte
-    Public INDEX7 As Byte
-    Public COMP0 As Byte
-    Public COMP1 As Byte
-    Public COMP2 As Byte
-    Public COMP3 As Byte
-    Public COMP4 As Byte
-    Public COMP5 As Byte
-    Public COMP6 As Byte
-    Public COMP7 As Byte
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure PCLINT
-    Public OVP0 As Byte
-    Public OVP1 As Byte
-    Public OVP2 As Byte
-    Public OVP3 As Byte
-    Public OVP4 As Byte
-    Public OVP5 As Byte
-    Public OVP6 As Byte
-    Public OVP7 As Byte
-    Public OVN0 As Byte
-    Public OVN1 As Byte
-    Public OVN2 As Byte
-    Public OVN3 As Byte
-    Public OVN4 As Byte
-    Public OVN5 As Byte
-    Public OVN6 As Byte
-    Public OVN7 As Byte
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure ADCINT
-    Public COMP0 As Byte
-    Public COMP1 As Byte
-    Public COMP2 As Byte
-    Public COMP3 As Byte
-    Public COMP4 As Byte
-    Public COMP5 As Byte
-    Public COMP6 As Byte
-    Public COMP7 As Byte
-    Public CONV As Byte
-    Public TAG As Byte
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure RIOINT
-    Public RDI0 As Byte
-    Public RDI1 As Byte
-    Public RDI2 As Byte
-    Public RDI3 As Byte
-    Public RDI4 As Byte
-    Public RDI5 As Byte
-    Public RDI6 As Byte
-    Public RDI7 As Byte
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure TMRINT
-    Public TIMER As Byte
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure HSKINT
-    Public HANDSHAKE As Byte
 End Structure
 
 Public Module MCCL
@@ -560,17 +560,17 @@ Public Module MCCL
 
     ' ---- Callback types (keep the delegate instance alive while registered) ----
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Sub PCLISR(ByRef value As PCLINT)
-    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Sub ADCISR(ByRef value As ADCINT)
-    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub LIOISR(ByRef value As LIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub ENCISR(ByRef value As ENCINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Sub RIOISR(ByRef value As RIOINT)
+    Public Delegate Sub PCLISR(ByRef value As PCLINT)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub ADCISR(ByRef value As ADCINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub TMRISR(ByRef value As TMRINT)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub RIOISR(ByRef value As RIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub HSKISR(ByRef value As HSKINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
@@ -594,6 +594,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CloseAllGroups")>
     Public Function MCC_CloseAllGroups() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetHSKRoutine")>
+    Public Function MCC_SetHSKRoutine(ByVal pfnLIORoutine As HSKISR, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMacParam")>
     Public Function MCC_SetMacParam(ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -674,6 +677,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetEmgcStopStatus")>
     Public Function MCC_GetEmgcStopStatus(ByRef pwStatus As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIORoutine")>
+    Public Function MCC_SetLIORoutine(ByVal pfnLIORoutine As LIOISR, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedLightOn")>
     Public Function MCC_SetLedLightOn(ByVal Channel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -1092,6 +1098,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetTrackErrorLimit")>
     Public Function MCC_GetTrackErrorLimit(ByRef pdfLimit As Double, ByVal cAxis As SByte, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPCLRoutine")>
+    Public Function MCC_SetPCLRoutine(ByVal pfnPCLRoutine As PCLISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCompParam")>
     Public Function MCC_SetCompParam(ByRef pstCompParam As SYS_COMP_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1159,6 +1168,9 @@ Public Module MCCL
     End Function
 
     ' ---- Encoder Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCRoutine")>
+    Public Function MCC_SetENCRoutine(ByVal pfnEncoderRoutine As ENCISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCInputRate")>
     Public Function MCC_SetENCInputRate(ByVal wInputRate As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1198,6 +1210,212 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCGearRate")>
     Public Function MCC_SetENCGearRate(ByVal dfGearRate As Double, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Timer & Watch Dog Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetTMRRoutine")>
+    Public Function MCC_SetTMRRoutine(ByVal pfnLIORoutine As TMRISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetTimer")>
+    Public Function MCC_SetTimer(ByVal dwValue As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableTimer")>
+    Public Function MCC_EnableTimer(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableTimer")>
+    Public Function MCC_DisableTimer(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableTimerTrigger")>
+    Public Function MCC_EnableTimerTrigger(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableTimerTrigger")>
+    Public Function MCC_DisableTimerTrigger(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetWatchDogTimer")>
+    Public Function MCC_SetWatchDogTimer(ByVal wValue As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetWatchDogResetPeriod")>
+    Public Function MCC_SetWatchDogResetPeriod(ByVal dwValue As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableWatchDogTimer")>
+    Public Function MCC_EnableWatchDogTimer(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableWatchDogTimer")>
+    Public Function MCC_DisableWatchDogTimer(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_RefreshWatchDogTimer")>
+    Public Function MCC_RefreshWatchDogTimer(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Remote Input/Output Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIORoutine")>
+    Public Function MCC_SetRIORoutine(ByVal pfnRIORoutine As RIOISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableRIOSetControl")>
+    Public Function MCC_EnableRIOSetControl(ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableRIOSetControl")>
+    Public Function MCC_DisableRIOSetControl(ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableRIOSlaveControl")>
+    Public Function MCC_EnableRIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableRIOSlaveControl")>
+    Public Function MCC_DisableRIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOTransStatus")>
+    Public Function MCC_GetRIOTransStatus(ByRef pwStatus As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOMasterStatus")>
+    Public Function MCC_GetRIOMasterStatus(ByRef pwStatus As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOSlaveStatus")>
+    Public Function MCC_GetRIOSlaveStatus(ByRef pwStatus As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOSlaveFail")>
+    Public Function MCC_GetRIOSlaveFail(ByRef pdwStatus As UInteger, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOInputValue")>
+    Public Function MCC_GetRIOInputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOOutputValue")>
+    Public Function MCC_SetRIOOutputValue(ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOOutputValue")>
+    Public Function MCC_GetRIOOutputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOTriggerType")>
+    Public Function MCC_SetRIOTriggerType(ByVal wType As UShort, ByVal wSet As UShort, ByVal wDigitalInput As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableRIOInputTrigger")>
+    Public Function MCC_EnableRIOInputTrigger(ByVal wSet As UShort, ByVal wDigitalInput As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableRIOInputTrigger")>
+    Public Function MCC_DisableRIOInputTrigger(ByVal wSet As UShort, ByVal wDigitalInput As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableRIOTransTrigger")>
+    Public Function MCC_EnableRIOTransTrigger(ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableRIOTransTrigger")>
+    Public Function MCC_DisableRIOTransTrigger(ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableARIOSlaveControl")>
+    Public Function MCC_EnableARIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableARIOSlaveControl")>
+    Public Function MCC_DisableARIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOTransStatus")>
+    Public Function MCC_GetARIOTransStatus(ByRef pwStatus As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOMasterStatus")>
+    Public Function MCC_GetARIOMasterStatus(ByRef pwStatus As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOSlaveStatus")>
+    Public Function MCC_GetARIOSlaveStatus(ByRef pwStatus As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOSlaveFail")>
+    Public Function MCC_GetARIOSlaveFail(ByRef pdwStatus As UInteger, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOInputValue")>
+    Public Function MCC_GetARIOInputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIOOutputValue")>
+    Public Function MCC_SetARIOOutputValue(ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOOutputValue")>
+    Public Function MCC_GetARIOOutputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- D/A Converter Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDACOutput")>
+    Public Function MCC_SetDACOutput(ByVal fVoltage As Single, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDACTriggerOutput")>
+    Public Function MCC_SetDACTriggerOutput(ByVal fVoltage As Single, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDACTriggerSource")>
+    Public Function MCC_SetDACTriggerSource(ByVal dwSource As UInteger, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableDACTriggerMode")>
+    Public Function MCC_EnableDACTriggerMode(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableDACTriggerMode")>
+    Public Function MCC_DisableDACTriggerMode(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_StartDACConv")>
+    Public Function MCC_StartDACConv(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_StopDACConv")>
+    Public Function MCC_StopDACConv(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- A/D Converter Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCRoutine")>
+    Public Function MCC_SetADCRoutine(ByVal pfnADCRoutine As ADCISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCConvType")>
+    Public Function MCC_SetADCConvType(ByVal wConvType As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetADCConvType")>
+    Public Function MCC_GetADCConvType(ByRef pwConvType As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCConvMode")>
+    Public Function MCC_SetADCConvMode(ByVal wConvMode As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetADCInput")>
+    Public Function MCC_GetADCInput(ByRef pfInput As Single, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCSingleChannel")>
+    Public Function MCC_SetADCSingleChannel(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetADCWorkStatus")>
+    Public Function MCC_GetADCWorkStatus(ByRef pwSTatus As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableADCConvTrigger")>
+    Public Function MCC_EnableADCConvTrigger(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableADCConvTrigger")>
+    Public Function MCC_DisableADCConvTrigger(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCTagChannel")>
+    Public Function MCC_SetADCTagChannel(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableADCTagTrigger")>
+    Public Function MCC_EnableADCTagTrigger(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableADCTagTrigger")>
+    Public Function MCC_DisableADCTagTrigger(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCCompMask")>
+    Public Function MCC_SetADCCompMask(ByVal wMask As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCCompType")>
+    Public Function MCC_SetADCCompType(ByVal wCompType As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCCompValue")>
+    Public Function MCC_SetADCCompValue(ByVal fValue As Single, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetADCCompValue")>
+    Public Function MCC_GetADCCompValue(ByRef pfValue As Single, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableADCCompTrigger")>
+    Public Function MCC_EnableADCCompTrigger(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableADCCompTrigger")>
+    Public Function MCC_DisableADCCompTrigger(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableADCConvChannel")>
+    Public Function MCC_EnableADCConvChannel(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableADCConvChannel")>
+    Public Function MCC_DisableADCConvChannel(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_StartADCConv")>
+    Public Function MCC_StartADCConv(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_StopADCConv")>
+    Public Function MCC_StopADCConv(Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_LineX")>
     Public Function MCC_LineX(ByVal dfX As Double, Optional ByVal wGroupIndex As UShort = 0) As Integer
@@ -1252,5 +1470,8 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ChangeFeedSpeed")>
     Public Function MCC_ChangeFeedSpeed(ByVal dfSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIORoutineEx")>
+    Public Function MCC_SetLIORoutineEx(ByVal pfnLIORoutine As LIOISR, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
 End Module

@@ -275,6 +275,103 @@ Public Const DAC_SOURCE_SOFT As Long = 0
 Public Const DAC_SOURCE_PCL As Long = 1
 
 ' ---- Structures ----
+Public Type LIOINT
+    OTP0 As Byte
+    OTP1 As Byte
+    OTP2 As Byte
+    OTP3 As Byte
+    OTP4 As Byte
+    OTP5 As Byte
+    OTP6 As Byte
+    OTP7 As Byte
+    OTN0 As Byte
+    OTN1 As Byte
+    OTN2 As Byte
+    OTN3 As Byte
+    OTN4 As Byte
+    OTN5 As Byte
+    OTN6 As Byte
+    OTN7 As Byte
+    HOME0 As Byte
+    HOME1 As Byte
+    HOME2 As Byte
+    HOME3 As Byte
+    HOME4 As Byte
+    HOME5 As Byte
+    HOME6 As Byte
+    HOME7 As Byte
+End Type
+
+Public Type ENCINT
+    INDEX0 As Byte
+    INDEX1 As Byte
+    INDEX2 As Byte
+    INDEX3 As Byte
+    INDEX4 As Byte
+    INDEX5 As Byte
+    INDEX6 As Byte
+    INDEX7 As Byte
+    COMP0 As Byte
+    COMP1 As Byte
+    COMP2 As Byte
+    COMP3 As Byte
+    COMP4 As Byte
+    COMP5 As Byte
+    COMP6 As Byte
+    COMP7 As Byte
+End Type
+
+Public Type PCLINT
+    OVP0 As Byte
+    OVP1 As Byte
+    OVP2 As Byte
+    OVP3 As Byte
+    OVP4 As Byte
+    OVP5 As Byte
+    OVP6 As Byte
+    OVP7 As Byte
+    OVN0 As Byte
+    OVN1 As Byte
+    OVN2 As Byte
+    OVN3 As Byte
+    OVN4 As Byte
+    OVN5 As Byte
+    OVN6 As Byte
+    OVN7 As Byte
+End Type
+
+Public Type ADCINT
+    COMP0 As Byte
+    COMP1 As Byte
+    COMP2 As Byte
+    COMP3 As Byte
+    COMP4 As Byte
+    COMP5 As Byte
+    COMP6 As Byte
+    COMP7 As Byte
+    CONV As Byte
+    TAG As Byte
+End Type
+
+Public Type TMRINT
+    TIMER As Byte
+End Type
+
+Public Type RIOINT
+    RDI0 As Byte
+    RDI1 As Byte
+    RDI2 As Byte
+    RDI3 As Byte
+    RDI4 As Byte
+    RDI5 As Byte
+    RDI6 As Byte
+    RDI7 As Byte
+End Type
+
+Public Type HSKINT
+    HANDSHAKE As Byte
+End Type
+
 Public Type SYS_COMP_PARAM
     dwInterval As Long
     wHome_No As Integer
@@ -445,110 +542,13 @@ Public Type SYS_GROUP_CONFIG
     stGroupInfo(0 To 95) As SYS_GROUP_INFO
 End Type
 
-Public Type LIOINT
-    OTP0 As Byte
-    OTP1 As Byte
-    OTP2 As Byte
-    OTP3 As Byte
-    OTP4 As Byte
-    OTP5 As Byte
-    OTP6 As Byte
-    OTP7 As Byte
-    OTN0 As Byte
-    OTN1 As Byte
-    OTN2 As Byte
-    OTN3 As Byte
-    OTN4 As Byte
-    OTN5 As Byte
-    OTN6 As Byte
-    OTN7 As Byte
-    HOME0 As Byte
-    HOME1 As Byte
-    HOME2 As Byte
-    HOME3 As Byte
-    HOME4 As Byte
-    HOME5 As Byte
-    HOME6 As Byte
-    HOME7 As Byte
-End Type
-
-Public Type ENCINT
-    INDEX0 As Byte
-    INDEX1 As Byte
-    INDEX2 As Byte
-    INDEX3 As Byte
-    INDEX4 As Byte
-    INDEX5 As Byte
-    INDEX6 As Byte
-    INDEX7 As Byte
-    COMP0 As Byte
-    COMP1 As Byte
-    COMP2 As Byte
-    COMP3 As Byte
-    COMP4 As Byte
-    COMP5 As Byte
-    COMP6 As Byte
-    COMP7 As Byte
-End Type
-
-Public Type PCLINT
-    OVP0 As Byte
-    OVP1 As Byte
-    OVP2 As Byte
-    OVP3 As Byte
-    OVP4 As Byte
-    OVP5 As Byte
-    OVP6 As Byte
-    OVP7 As Byte
-    OVN0 As Byte
-    OVN1 As Byte
-    OVN2 As Byte
-    OVN3 As Byte
-    OVN4 As Byte
-    OVN5 As Byte
-    OVN6 As Byte
-    OVN7 As Byte
-End Type
-
-Public Type ADCINT
-    COMP0 As Byte
-    COMP1 As Byte
-    COMP2 As Byte
-    COMP3 As Byte
-    COMP4 As Byte
-    COMP5 As Byte
-    COMP6 As Byte
-    COMP7 As Byte
-    CONV As Byte
-    TAG As Byte
-End Type
-
-Public Type RIOINT
-    RDI0 As Byte
-    RDI1 As Byte
-    RDI2 As Byte
-    RDI3 As Byte
-    RDI4 As Byte
-    RDI5 As Byte
-    RDI6 As Byte
-    RDI7 As Byte
-End Type
-
-Public Type TMRINT
-    TIMER As Byte
-End Type
-
-Public Type HSKINT
-    HANDSHAKE As Byte
-End Type
-
 ' ---- Callbacks ----
-' PCLISR: Sub MyIsr(ByRef value As PCLINT), passed as AddressOf MyIsr
-' ADCISR: Sub MyIsr(ByRef value As ADCINT), passed as AddressOf MyIsr
 ' LIOISR: Sub MyIsr(ByRef value As LIOINT), passed as AddressOf MyIsr
 ' ENCISR: Sub MyIsr(ByRef value As ENCINT), passed as AddressOf MyIsr
-' RIOISR: Sub MyIsr(ByRef value As RIOINT), passed as AddressOf MyIsr
+' PCLISR: Sub MyIsr(ByRef value As PCLINT), passed as AddressOf MyIsr
+' ADCISR: Sub MyIsr(ByRef value As ADCINT), passed as AddressOf MyIsr
 ' TMRISR: Sub MyIsr(ByRef value As TMRINT), passed as AddressOf MyIsr
+' RIOISR: Sub MyIsr(ByRef value As RIOINT), passed as AddressOf MyIsr
 ' HSKISR: Sub MyIsr(ByRef value As HSKINT), passed as AddressOf MyIsr
 ' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
 
@@ -558,6 +558,7 @@ Public Declare Function MCC_CreateGroup Lib "MCCLPCI_IMP.dll" (ByVal xMapToCh As
 Public Declare Function MCC_CreateGroupEx Lib "MCCLPCI_IMP.dll" (ByVal xMapToCh As Long, ByVal yMapToCh As Long, ByVal zMapToCh As Long, ByVal uMapToCh As Long, ByVal vMapToCh As Long, ByVal wMapToCh As Long, ByVal aMapToCh As Long, ByVal bMapToCh As Long, ByVal nCardIndex As Long, Optional ByVal nMotionQueueSize As Long = MOTION_QUEUE_SIZE) As Long
 Public Declare Function MCC_CloseGroup Lib "MCCLPCI_IMP.dll" (ByVal nGroupIndex As Long) As Long
 Public Declare Function MCC_CloseAllGroups Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_SetHSKRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetMacParam Lib "MCCLPCI_IMP.dll" (ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetMacParam Lib "MCCLPCI_IMP.dll" (ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetEncoderConfig Lib "MCCLPCI_IMP.dll" (ByRef pstEncoderConfig As SYS_ENCODER_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -583,6 +584,7 @@ Public Declare Function MCC_SetServoOff Lib "MCCLPCI_IMP.dll" (ByVal wChannel As
 Public Declare Function MCC_EnablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetEmgcStopStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIORoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLedLightOn Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLedLightOff Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetLedLightStatus Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, ByRef Status As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -724,6 +726,7 @@ Public Declare Function MCC_EnableTrackError Lib "MCCLPCI_IMP.dll" (Optional ByV
 Public Declare Function MCC_DisableTrackError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetTrackErrorLimit Lib "MCCLPCI_IMP.dll" (ByVal dfLimit As Double, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetTrackErrorLimit Lib "MCCLPCI_IMP.dll" (ByRef pdfLimit As Double, ByVal cAxis As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetPCLRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnPCLRoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetCompParam Lib "MCCLPCI_IMP.dll" (ByRef pstCompParam As SYS_COMP_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_UpdateCompParam Lib "MCCLPCI_IMP.dll" () As Long
 
@@ -749,12 +752,87 @@ Public Declare Function MCC_GetOverrideRate Lib "MCCLPCI_IMP.dll" (Optional ByVa
 Public Declare Function MCC_FixSpeed Lib "MCCLPCI_IMP.dll" (ByVal bFix As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 
 ' ---- Encoder Control ----
+Public Declare Function MCC_SetENCRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnEncoderRoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCInputRate Lib "MCCLPCI_IMP.dll" (ByVal wInputRate As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_ClearENCCounter Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetENCValue Lib "MCCLPCI_IMP.dll" (ByRef plValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetENCValueEx Lib "MCCLPCI_IMP.dll" (ByRef pllValue As Currency, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCValue Lib "MCCLPCI_IMP.dll" (ByVal lValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCGearRate Lib "MCCLPCI_IMP.dll" (ByVal dfGearRate As Double, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+
+' ---- Timer & Watch Dog Control ----
+Public Declare Function MCC_SetTMRRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetTimer Lib "MCCLPCI_IMP.dll" (ByVal dwValue As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableTimerTrigger Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableTimerTrigger Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetWatchDogTimer Lib "MCCLPCI_IMP.dll" (ByVal wValue As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetWatchDogResetPeriod Lib "MCCLPCI_IMP.dll" (ByVal dwValue As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableWatchDogTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableWatchDogTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_RefreshWatchDogTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+
+' ---- Remote Input/Output Control ----
+Public Declare Function MCC_SetRIORoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnRIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableRIOSetControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableRIOSetControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableRIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableRIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetRIOTransStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetRIOMasterStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetRIOSlaveStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetRIOSlaveFail Lib "MCCLPCI_IMP.dll" (ByRef pdwStatus As Long, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetRIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetRIOTriggerType Lib "MCCLPCI_IMP.dll" (ByVal wType As Integer, ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetARIOTransStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetARIOMasterStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetARIOSlaveStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetARIOSlaveFail Lib "MCCLPCI_IMP.dll" (ByRef pdwStatus As Long, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetARIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+
+' ---- D/A Converter Control ----
+Public Declare Function MCC_SetDACOutput Lib "MCCLPCI_IMP.dll" (ByVal fVoltage As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetDACTriggerOutput Lib "MCCLPCI_IMP.dll" (ByVal fVoltage As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetDACTriggerSource Lib "MCCLPCI_IMP.dll" (ByVal dwSource As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableDACTriggerMode Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableDACTriggerMode Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_StartDACConv Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_StopDACConv Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+
+' ---- A/D Converter Control ----
+Public Declare Function MCC_SetADCRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnADCRoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCConvType Lib "MCCLPCI_IMP.dll" (ByVal wConvType As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetADCConvType Lib "MCCLPCI_IMP.dll" (ByRef pwConvType As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCConvMode Lib "MCCLPCI_IMP.dll" (ByVal wConvMode As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetADCInput Lib "MCCLPCI_IMP.dll" (ByRef pfInput As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCSingleChannel Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetADCWorkStatus Lib "MCCLPCI_IMP.dll" (ByRef pwSTatus As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableADCConvTrigger Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableADCConvTrigger Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCTagChannel Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableADCTagTrigger Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableADCTagTrigger Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCCompMask Lib "MCCLPCI_IMP.dll" (ByVal wMask As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCCompType Lib "MCCLPCI_IMP.dll" (ByVal wCompType As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCCompValue Lib "MCCLPCI_IMP.dll" (ByVal fValue As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetADCCompValue Lib "MCCLPCI_IMP.dll" (ByRef pfValue As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableADCCompTrigger Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableADCCompTrigger Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableADCConvChannel Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableADCConvChannel Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_StartADCConv Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_StopADCConv Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_LineX Lib "MCCLPCI_IMP.dll" (ByVal dfX As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_LineY Lib "MCCLPCI_IMP.dll" (ByVal dfY As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_LineZ Lib "MCCLPCI_IMP.dll" (ByVal dfZ As Double, Optional ByVal wGroupIndex As Integer = 0) As Long
@@ -773,3 +851,4 @@ Public Declare Function MCC_GetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByRef pwTol
 Public Declare Function MCC_SetOverSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_SetLIORoutineEx Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long

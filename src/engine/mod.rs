@@ -8,6 +8,7 @@
 
 pub mod command;
 pub mod group;
+pub mod isr;
 pub mod safety;
 pub mod snapshot;
 pub mod trace;
@@ -74,6 +75,10 @@ pub struct Shared {
     pub pos_ready: Vec<AtomicBool>,
     /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
     pub max_pulse_stock: AtomicU32,
+    /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
+    pub periph: Vec<Mutex<crate::card::Peripherals>>,
+    /// The interrupt routines registered per card (`isr`).
+    pub isr: isr::IsrTable,
     trace: Mutex<Option<trace::Trace>>,
 }
 
@@ -250,8 +255,8 @@ impl Shared {
     /// `live_snapshots` is set (callbacks registered). Under a virtual clock the program
     /// is waiting while ticks run, so a long run publishes every [`PUBLISH_EVERY`] ticks
     /// and at its last tick (see [`Shared::end_of_run`]); statuses are published every
-    /// tick. Returns whether it published everything.
-    fn tick(&self) -> bool {
+    /// tick. Returns whether it published everything, and the interrupts to deliver.
+    fn tick(&self) -> (bool, isr::Collected) {
         let dt = self.clock.period().as_secs_f64();
         let n = self.clock.ticks();
         let t_ns = u128::from(n + 1) * self.clock.period().as_nanos();
@@ -292,7 +297,10 @@ impl Shared {
             }
         }
         self.safety(&machine, full, dt);
-        full
+        drop(machine);
+        drop(trace);
+        let dt_ns = u64::try_from(self.clock.period().as_nanos()).unwrap_or(u64::MAX);
+        (full, self.tick_peripherals(dt_ns))
     }
 
     /// The checks that need the machine: emergency stop (0xF102), hardware limit
@@ -385,6 +393,8 @@ impl Engine {
             servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
             pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
+            periph: (0..cards).map(|_| Mutex::default()).collect(),
+            isr: isr::IsrTable::new(cards),
             trace: Mutex::new(trace),
         });
         shared.for_each_group(|_| {});
@@ -438,12 +448,13 @@ fn run(shared: &Shared) {
         match shared.clock.wait_next() {
             Next::Stop => return,
             Next::Tick => {
-                let published = shared.tick();
+                let (published, interrupts) = shared.tick();
                 shared.check_watch();
                 if !published {
                     shared.end_of_run();
                 }
                 // Interrupt callbacks collected in the tick run here, without any lock.
+                shared.isr.deliver(&interrupts, &shared.clock);
                 shared.clock.tick_done();
             }
         }

@@ -2,17 +2,22 @@
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
 //! plain `#[no_mangle] pub extern "C" fn` whose body calls [`guard`] and the core.
 
+pub mod adc;
 pub mod coordinate;
+pub mod dac;
 pub mod encoder;
+pub mod isr;
 pub mod jog;
 pub mod limits;
 pub mod local_io;
 pub mod motion;
 pub mod position;
 pub mod ptp;
+pub mod rio;
 pub mod sim;
 pub mod status;
 pub mod system;
+pub mod timer;
 pub mod trajectory;
 
 use crate::config::{CardIx, ChannelIx};
@@ -111,6 +116,8 @@ mod tests;
 mod tests_machine;
 #[cfg(test)]
 mod tests_motion;
+#[cfg(test)]
+mod tests_periph;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
 /// that does not run.

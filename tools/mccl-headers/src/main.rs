@@ -265,7 +265,7 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
     }
     let body = collapse_blank_lines(&body);
     Ok(format!(
-        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
+        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
 }

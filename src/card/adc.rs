@@ -1,0 +1,355 @@
+//! The A/D converter: 8 input channels (user manual §2.12; examples manual §37–38).
+//!
+//! - Conversion type per channel: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` read −5..5 V,
+//!   `ADC_TYPE_UNI_DIFF`/`_UNI_SING` read 0..10 V (user manual EN/ZH §2.12.1); an input
+//!   outside the range reads as the nearest end. The converter is ideal: the value read is
+//!   the input voltage itself (as a float).
+//! - `ADC_MODE_FREE` (the default): after `MCC_StartADCConv` every enabled channel converts
+//!   once per tick (the input only changes at tick boundaries in the virtual card), until
+//!   `MCC_StopADCConv`. `ADC_MODE_SINGLE`: `MCC_StartADCConv` converts the single channel
+//!   once, at once (the card needs ~8 µs, less than any tick), and its interrupts are
+//!   delivered after the next tick.
+//! - Comparator per channel on the 12-bit code of the channel's range:
+//!   `ADC_COMP_RISE` fires when the input goes from below the compare value to at or
+//!   above it between two conversions, `ADC_COMP_FALL` the other way, `ADC_COMP_LEVEL`
+//!   both; `MCC_SetADCCompMask(n)` ignores the n lowest bits of both codes. The first
+//!   conversion after the compare value, type or range changed only sets the reference.
+//! - Interrupts: `COMPn` (comparator of channel n, if enabled), `CONV` (a conversion
+//!   completed, if the conversion trigger is on), `TAG` (the tagged channel converted).
+
+use crate::config::AXES;
+use crate::engine::isr::{Interrupt, Pending};
+use crate::error::{McclError, McclResult};
+use crate::vendor::consts as c;
+
+/// Where an ADC channel's input comes from (set from Rust: configuration, tests).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AdcSource {
+    /// The output of DAC channel n of the same card (default: ADC n reads DAC n, as the
+    /// examples manual wires DAC 0 to ADC 0).
+    Dac(usize),
+    /// A constant voltage.
+    Constant(f32),
+}
+
+/// Resolution of the comparator's codes, bits.
+pub const BITS: u32 = 12;
+
+/// The voltage range of a conversion type.
+pub fn range(conv_type: u16) -> (f32, f32) {
+    match conv_type {
+        c::ADC_TYPE_UNI_DIFF | c::ADC_TYPE_UNI_SING => (0.0, 10.0),
+        _ => (-5.0, 5.0),
+    }
+}
+
+fn code(v: f32, conv_type: u16) -> u32 {
+    let (lo, hi) = range(conv_type);
+    let max = (1u32 << BITS) - 1;
+    let x = ((v.clamp(lo, hi) - lo) / (hi - lo) * max as f32).round();
+    (x as u32).min(max)
+}
+
+/// The A/D converter of one card.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Adc {
+    conv_type: [u16; AXES],
+    mode: u16,
+    channel_on: [bool; AXES],
+    running: bool,
+    single: usize,
+    input: [f32; AXES],
+    comp_value: [f32; AXES],
+    comp_type: [u16; AXES],
+    comp_on: [bool; AXES],
+    comp_mask: u16,
+    /// Whether the last conversion was at or above the compare value (None: no reference).
+    above: [Option<bool>; AXES],
+    conv_trigger: bool,
+    tag: usize,
+    tag_trigger: bool,
+    /// Input of each channel.
+    pub source: [AdcSource; AXES],
+}
+
+impl Default for Adc {
+    fn default() -> Adc {
+        Adc {
+            conv_type: [c::ADC_TYPE_BIP_DIFF; AXES],
+            mode: c::ADC_MODE_FREE,
+            channel_on: [false; AXES],
+            running: false,
+            single: 0,
+            input: [0.0; AXES],
+            comp_value: [0.0; AXES],
+            comp_type: [c::ADC_COMP_RISE; AXES],
+            comp_on: [false; AXES],
+            comp_mask: c::ADC_MASK_NO,
+            above: [None; AXES],
+            conv_trigger: false,
+            tag: 0,
+            tag_trigger: false,
+            source: std::array::from_fn(AdcSource::Dac),
+        }
+    }
+}
+
+impl Adc {
+    /// `MCC_SetADCConvType` (0..=3).
+    pub fn set_conv_type(&mut self, ch: usize, t: u16) -> McclResult<()> {
+        if t > c::ADC_TYPE_UNI_SING {
+            return Err(McclError::Parameter);
+        }
+        self.conv_type[ch] = t;
+        self.above[ch] = None;
+        Ok(())
+    }
+
+    /// `MCC_GetADCConvType`.
+    pub fn conv_type(&self, ch: usize) -> u16 {
+        self.conv_type[ch]
+    }
+
+    /// `MCC_SetADCConvMode`: `ADC_MODE_SINGLE` or `ADC_MODE_FREE`.
+    pub fn set_mode(&mut self, m: u16) -> McclResult<()> {
+        if m != c::ADC_MODE_SINGLE && m != c::ADC_MODE_FREE {
+            return Err(McclError::Parameter);
+        }
+        self.mode = m;
+        if m == c::ADC_MODE_SINGLE {
+            self.running = false;
+        }
+        Ok(())
+    }
+
+    /// `MCC_EnableADCConvChannel` / `MCC_DisableADCConvChannel`.
+    pub fn set_channel(&mut self, ch: usize, on: bool) {
+        self.channel_on[ch] = on;
+    }
+
+    /// `MCC_SetADCSingleChannel`.
+    pub fn set_single_channel(&mut self, ch: usize) {
+        self.single = ch;
+    }
+
+    /// `MCC_GetADCWorkStatus`: 1 while converting (free mode started), else 0.
+    pub fn work_status(&self) -> u16 {
+        u16::from(self.running)
+    }
+
+    /// `MCC_StopADCConv`.
+    pub fn stop(&mut self) {
+        self.running = false;
+    }
+
+    /// `MCC_GetADCInput`: the last converted value of a channel (0 before any).
+    pub fn input(&self, ch: usize) -> f32 {
+        self.input[ch]
+    }
+
+    /// `MCC_SetADCCompValue` (finite, −10..10 V).
+    pub fn set_comp_value(&mut self, ch: usize, v: f32) -> McclResult<()> {
+        super::dac::check_voltage(v)?;
+        self.comp_value[ch] = v;
+        self.above[ch] = None;
+        Ok(())
+    }
+
+    /// `MCC_GetADCCompValue`.
+    pub fn comp_value(&self, ch: usize) -> f32 {
+        self.comp_value[ch]
+    }
+
+    /// `MCC_SetADCCompType`: `ADC_COMP_RISE`, `_FALL` or `_LEVEL`.
+    pub fn set_comp_type(&mut self, ch: usize, t: u16) -> McclResult<()> {
+        if t > c::ADC_COMP_LEVEL {
+            return Err(McclError::Parameter);
+        }
+        self.comp_type[ch] = t;
+        self.above[ch] = None;
+        Ok(())
+    }
+
+    /// `MCC_SetADCCompMask`: `ADC_MASK_NO`..`ADC_MASK_BIT3`.
+    pub fn set_comp_mask(&mut self, m: u16) -> McclResult<()> {
+        if m > c::ADC_MASK_BIT3 {
+            return Err(McclError::Parameter);
+        }
+        self.comp_mask = m;
+        self.above = [None; AXES];
+        Ok(())
+    }
+
+    /// `MCC_EnableADCCompTrigger` / `MCC_DisableADCCompTrigger`.
+    pub fn set_comp_trigger(&mut self, ch: usize, on: bool) {
+        self.comp_on[ch] = on;
+    }
+
+    /// `MCC_EnableADCConvTrigger` / `MCC_DisableADCConvTrigger`.
+    pub fn set_conv_trigger(&mut self, on: bool) {
+        self.conv_trigger = on;
+    }
+
+    /// `MCC_SetADCTagChannel`.
+    pub fn set_tag_channel(&mut self, ch: usize) {
+        self.tag = ch;
+    }
+
+    /// `MCC_EnableADCTagTrigger` / `MCC_DisableADCTagTrigger`.
+    pub fn set_tag_trigger(&mut self, on: bool) {
+        self.tag_trigger = on;
+    }
+
+    /// Converts channel `ch` with input `v`: stores the value and raises its comparator.
+    fn convert(&mut self, ch: usize, v: f32, p: &mut Pending) {
+        let t = self.conv_type[ch];
+        let (lo, hi) = range(t);
+        let v = if v.is_finite() { v.clamp(lo, hi) } else { lo };
+        self.input[ch] = v;
+        let m = u32::from(self.comp_mask);
+        let above = code(v, t) >> m >= code(self.comp_value[ch], t) >> m;
+        if let Some(was) = self.above[ch] {
+            let fire = match self.comp_type[ch] {
+                c::ADC_COMP_RISE => !was && above,
+                c::ADC_COMP_FALL => was && !above,
+                _ => was != above,
+            };
+            if fire && self.comp_on[ch] {
+                p.raise(Interrupt::AdcComp(ch as u8));
+            }
+        }
+        self.above[ch] = Some(above);
+        if self.tag_trigger && self.tag == ch {
+            p.raise(Interrupt::AdcTag);
+        }
+    }
+
+    fn done(&self, p: &mut Pending) {
+        if self.conv_trigger {
+            p.raise(Interrupt::AdcConv);
+        }
+    }
+
+    /// `MCC_StartADCConv` with the inputs now: free mode starts converting (from the next
+    /// tick); single mode converts the single channel now.
+    pub fn start(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
+        if self.mode == c::ADC_MODE_FREE {
+            self.running = true;
+        } else {
+            let ch = self.single;
+            self.convert(ch, inputs[ch], p);
+            self.done(p);
+        }
+    }
+
+    /// Whether a tick converts anything (free mode started with a channel enabled).
+    pub fn converting(&self) -> bool {
+        self.running && self.channel_on.iter().any(|&x| x)
+    }
+
+    /// One tick of free-running conversion with the inputs now.
+    pub fn tick(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
+        if !self.converting() {
+            return;
+        }
+        for (ch, &v) in inputs.iter().enumerate() {
+            if self.channel_on[ch] {
+                self.convert(ch, v, p);
+            }
+        }
+        self.done(p);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(a: &mut Adc, volts: &[f32]) -> Vec<u8> {
+        volts
+            .iter()
+            .map(|&v| {
+                let mut p = Pending::default();
+                a.tick(&[v; AXES], &mut p);
+                p.adc[0]
+            })
+            .collect()
+    }
+
+    fn comparator(t: u16) -> Adc {
+        let mut a = Adc::default();
+        a.set_channel(0, true);
+        a.set_comp_value(0, 2.0).unwrap();
+        a.set_comp_type(0, t).unwrap();
+        a.set_comp_trigger(0, true);
+        a.start(&[0.0; AXES], &mut Pending::default());
+        a
+    }
+
+    const WAVE: [f32; 8] = [0.0, 1.0, 2.0, 3.0, 1.9, 1.0, 2.5, 0.0];
+
+    #[test]
+    fn rise_fall_level_edges() {
+        // crossings: up at 2.0 (tick 2), down at 1.9 (tick 4), up at 2.5, down at 0.0
+        assert_eq!(
+            run(&mut comparator(c::ADC_COMP_RISE), &WAVE),
+            [0, 0, 1, 0, 0, 0, 1, 0]
+        );
+        assert_eq!(
+            run(&mut comparator(c::ADC_COMP_FALL), &WAVE),
+            [0, 0, 0, 0, 1, 0, 0, 1]
+        );
+        assert_eq!(
+            run(&mut comparator(c::ADC_COMP_LEVEL), &WAVE),
+            [0, 0, 1, 0, 1, 0, 1, 1]
+        );
+    }
+
+    #[test]
+    fn first_conversion_above_is_not_an_edge_and_mask_blunts() {
+        let mut a = comparator(c::ADC_COMP_LEVEL);
+        assert_eq!(run(&mut a, &[3.0, 3.0]), [0, 0]);
+        // One code is 10 V / 4095 = 2.44 mV; 3 masked bits make steps of 8 codes (19.5 mV).
+        a.set_comp_mask(c::ADC_MASK_BIT3).unwrap();
+        assert_eq!(run(&mut a, &[2.001, 1.999, 2.001]), [0, 0, 0]);
+        assert_eq!(run(&mut a, &[1.9, 2.1]), [1, 1]);
+        a.set_comp_mask(c::ADC_MASK_NO).unwrap();
+        assert_eq!(run(&mut a, &[2.001, 1.99, 2.01]), [0, 1, 1]);
+        assert_eq!(a.set_comp_mask(4), Err(McclError::Parameter));
+        assert_eq!(a.set_comp_type(0, 3), Err(McclError::Parameter));
+    }
+
+    #[test]
+    fn ranges_single_mode_conv_and_tag() {
+        let mut a = Adc::default();
+        a.set_channel(3, true);
+        let mut p = Pending::default();
+        a.tick(&[7.0; AXES], &mut p);
+        assert_eq!(a.input(3), 0.0, "not started");
+        a.set_conv_trigger(true);
+        a.set_tag_channel(3);
+        a.set_tag_trigger(true);
+        a.start(&[0.0; AXES], &mut p);
+        assert_eq!(a.work_status(), 1);
+        a.tick(&[7.0; AXES], &mut p);
+        assert_eq!(a.input(3), 5.0, "bipolar clamps at 5 V");
+        assert_eq!((p.adc[8], p.adc[9]), (1, 1));
+        a.set_conv_type(3, c::ADC_TYPE_UNI_DIFF).unwrap();
+        a.tick(&[-1.0; AXES], &mut p);
+        assert_eq!(a.input(3), 0.0, "unipolar clamps at 0 V");
+        assert_eq!(a.set_conv_type(3, 4), Err(McclError::Parameter));
+
+        a.set_mode(c::ADC_MODE_SINGLE).unwrap();
+        assert_eq!(a.work_status(), 0);
+        a.set_single_channel(5);
+        let mut p = Pending::default();
+        a.start(&[1.25; AXES], &mut p);
+        assert_eq!(a.input(5), 1.25);
+        assert_eq!(a.input(3), 0.0, "only the single channel");
+        assert_eq!((p.adc[8], p.adc[9]), (1, 0));
+        let mut q = Pending::default();
+        a.tick(&[3.0; AXES], &mut q);
+        assert!(q.is_empty(), "single mode: no conversion per tick");
+        assert_eq!(a.set_mode(2), Err(McclError::Parameter));
+    }
+}

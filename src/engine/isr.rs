@@ -1,0 +1,339 @@
+//! Interrupts of the virtual card: the registered callbacks (`MCC_Set*Routine`) and the
+//! causes raised during a tick.
+//!
+//! # How a cause reaches a callback
+//!
+//! Every card has a [`Pending`] set of causes inside its [`crate::card::Peripherals`].
+//! Anything that detects an interrupt condition raises it there:
+//!
+//! - the card's own peripherals (timer, ADC, remote I/O) during
+//!   [`Shared::tick_peripherals`];
+//! - the program, between ticks (a single ADC conversion started by `MCC_StartADCConv`);
+//! - any other part of the engine (limit and home inputs, encoder index and compare,
+//!   closed-loop errors) through [`Shared::raise`]`(card, `[`Interrupt`]`)` — callable
+//!   from anywhere, also with a group lock held (lock order: group, then peripherals).
+//!
+//! At the end of each tick [`Shared::tick_peripherals`] takes every card's pending causes
+//! and the engine thread calls [`IsrTable::deliver`] after it released every lock: for
+//! each card in index order, the LIO, ENC, PCL, ADC, TMR, RIO and HSK routines, in that
+//! order, each once, with a struct holding every cause of its kind raised since the last
+//! delivery (several fields may be non-zero at once). A field counts how many times its
+//! cause occurred, saturating at 255 (`TMRINT.TIMER` = timer expirations in the tick). A
+//! kind with no cause, or with no routine registered, is skipped and its causes dropped.
+//!
+//! Callbacks run on the engine thread with no library lock held, so they may call any
+//! `MCC_*` function: `MCC_AbortMotionEx`, `MCC_GetCurPos`, even `MCC_CloseSystem` (which
+//! from the engine thread only stops the clock; no further callback of that tick runs).
+//! A routine unregistered by another thread while a tick delivers may run once more.
+
+use super::Shared;
+use crate::vendor::{ADCINT, ENCINT, HSKINT, LIOINT, PCLINT, RIOINT, TMRINT};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The callback kinds, in delivery order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Local I/O (`LIOISR`, `LIOINT`).
+    Lio = 0,
+    /// Encoder index and compare (`ENCISR`, `ENCINT`).
+    Enc = 1,
+    /// Position control loop (`PCLISR`, `PCLINT`).
+    Pcl = 2,
+    /// A/D converter (`ADCISR`, `ADCINT`).
+    Adc = 3,
+    /// Timer (`TMRISR`, `TMRINT`).
+    Tmr = 4,
+    /// Remote I/O (`RIOISR`, `RIOINT`).
+    Rio = 5,
+    /// Handshake (`HSKISR`, `HSKINT`).
+    Hsk = 6,
+}
+
+/// Number of callback kinds.
+pub const KINDS: usize = 7;
+
+/// One interrupt cause. Channel/input numbers are 0..=7.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interrupt {
+    /// Limit switch + of a channel (`LIOINT.OTPn`).
+    LioOtp(u8),
+    /// Limit switch − of a channel (`LIOINT.OTNn`).
+    LioOtn(u8),
+    /// Home sensor of a channel (`LIOINT.HOMEn`).
+    LioHome(u8),
+    /// Encoder index of a channel (`ENCINT.INDEXn`).
+    EncIndex(u8),
+    /// Encoder compare of a channel (`ENCINT.COMPn`).
+    EncComp(u8),
+    /// Closed-loop error over the positive bound (`PCLINT.OVPn`).
+    PclOvp(u8),
+    /// Closed-loop error over the negative bound (`PCLINT.OVNn`).
+    PclOvn(u8),
+    /// ADC comparator of a channel (`ADCINT.COMPn`).
+    AdcComp(u8),
+    /// An ADC conversion completed (`ADCINT.CONV`).
+    AdcConv,
+    /// The tagged ADC channel completed a conversion (`ADCINT.TAG`).
+    AdcTag,
+    /// The timer expired this many times (`TMRINT.TIMER`).
+    Timer(u64),
+    /// Remote digital input n (`RIOINT.RDIn`).
+    RioInput(u8),
+    /// A remote I/O transmission failed (byte 8 after `RIOINT`: the `FAIL` field of the
+    /// driver's longer RIOINT; programs using MCCL.h's 8-byte RIOINT see all RDI at 0).
+    RioFail,
+    /// Handshake (`HSKINT.HANDSHAKE`).
+    Handshake,
+}
+
+/// The causes raised on one card since the last delivery, as the bytes of the ISR
+/// structs (every field of those structs is a BYTE).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Pending {
+    /// `LIOINT`: OTP0..7, OTN0..7, HOME0..7.
+    pub lio: [u8; 24],
+    /// `ENCINT`: INDEX0..7, COMP0..7.
+    pub enc: [u8; 16],
+    /// `PCLINT`: OVP0..7, OVN0..7.
+    pub pcl: [u8; 16],
+    /// `ADCINT`: COMP0..7, CONV, TAG.
+    pub adc: [u8; 10],
+    /// `TMRINT`: TIMER.
+    pub tmr: [u8; 1],
+    /// `RIOINT`: RDI0..7, then FAIL.
+    pub rio: [u8; 9],
+    /// `HSKINT`: HANDSHAKE.
+    pub hsk: [u8; 1],
+}
+
+const _: () = {
+    assert!(std::mem::size_of::<LIOINT>() == 24);
+    assert!(std::mem::size_of::<ENCINT>() == 16);
+    assert!(std::mem::size_of::<PCLINT>() == 16);
+    assert!(std::mem::size_of::<ADCINT>() == 10);
+    assert!(std::mem::size_of::<RIOINT>() == 8);
+    assert!(std::mem::size_of::<TMRINT>() == 1);
+    assert!(std::mem::size_of::<HSKINT>() == 1);
+};
+
+fn bump(b: &mut u8, n: u64) {
+    *b = u8::try_from(u64::from(*b).saturating_add(n)).unwrap_or(u8::MAX);
+}
+
+impl Pending {
+    /// Records one cause (a channel or input number above 7 is ignored).
+    pub fn raise(&mut self, i: Interrupt) {
+        let ix = |n: u8| usize::from(n);
+        if let Interrupt::LioOtp(n)
+        | Interrupt::LioOtn(n)
+        | Interrupt::LioHome(n)
+        | Interrupt::EncIndex(n)
+        | Interrupt::EncComp(n)
+        | Interrupt::PclOvp(n)
+        | Interrupt::PclOvn(n)
+        | Interrupt::AdcComp(n)
+        | Interrupt::RioInput(n) = i
+        {
+            if n > 7 {
+                return;
+            }
+        }
+        match i {
+            Interrupt::LioOtp(n) => bump(&mut self.lio[ix(n)], 1),
+            Interrupt::LioOtn(n) => bump(&mut self.lio[8 + ix(n)], 1),
+            Interrupt::LioHome(n) => bump(&mut self.lio[16 + ix(n)], 1),
+            Interrupt::EncIndex(n) => bump(&mut self.enc[ix(n)], 1),
+            Interrupt::EncComp(n) => bump(&mut self.enc[8 + ix(n)], 1),
+            Interrupt::PclOvp(n) => bump(&mut self.pcl[ix(n)], 1),
+            Interrupt::PclOvn(n) => bump(&mut self.pcl[8 + ix(n)], 1),
+            Interrupt::AdcComp(n) => bump(&mut self.adc[ix(n)], 1),
+            Interrupt::AdcConv => bump(&mut self.adc[8], 1),
+            Interrupt::AdcTag => bump(&mut self.adc[9], 1),
+            Interrupt::Timer(k) => bump(&mut self.tmr[0], k),
+            Interrupt::RioInput(n) => bump(&mut self.rio[ix(n)], 1),
+            Interrupt::RioFail => bump(&mut self.rio[8], 1),
+            Interrupt::Handshake => bump(&mut self.hsk[0], 1),
+        }
+    }
+
+    /// Whether nothing was raised.
+    pub fn is_empty(&self) -> bool {
+        *self == Pending::default()
+    }
+
+    /// The bytes of one kind's struct.
+    pub fn bytes(&self, k: Kind) -> &[u8] {
+        match k {
+            Kind::Lio => &self.lio,
+            Kind::Enc => &self.enc,
+            Kind::Pcl => &self.pcl,
+            Kind::Adc => &self.adc,
+            Kind::Tmr => &self.tmr,
+            Kind::Rio => &self.rio,
+            Kind::Hsk => &self.hsk,
+        }
+    }
+}
+
+/// The interrupts one tick collected: `(card, causes)` for each card with a cause, in
+/// card order.
+pub type Collected = Vec<(usize, Pending)>;
+
+/// The registered routines: per card, one C function pointer per [`Kind`] (0 = none).
+#[derive(Debug)]
+pub struct IsrTable {
+    slots: Vec<[AtomicUsize; KINDS]>,
+}
+
+/// The delivery order of the kinds.
+pub const ORDER: [Kind; KINDS] = [
+    Kind::Lio,
+    Kind::Enc,
+    Kind::Pcl,
+    Kind::Adc,
+    Kind::Tmr,
+    Kind::Rio,
+    Kind::Hsk,
+];
+
+/// The C signature every routine shares: `void f(XXXINT *)` (the struct differs by kind).
+type RawIsr = unsafe extern "C" fn(*mut u8);
+
+impl IsrTable {
+    /// A table for `cards` cards with nothing registered.
+    pub fn new(cards: usize) -> IsrTable {
+        IsrTable {
+            slots: (0..cards)
+                .map(|_| std::array::from_fn(|_| AtomicUsize::new(0)))
+                .collect(),
+        }
+    }
+
+    /// Registers the routine at address `f` (0 unregisters) for `kind` on `card` (a card
+    /// checked with [`Shared::card`]).
+    pub fn set(&self, card: usize, kind: Kind, f: usize) {
+        self.slots[card][kind as usize].store(f, Ordering::Release);
+    }
+
+    /// Whether any routine is registered on any card.
+    pub fn any(&self) -> bool {
+        self.slots
+            .iter()
+            .any(|s| s.iter().any(|f| f.load(Ordering::Acquire) != 0))
+    }
+
+    /// The address registered for `kind` on `card` (0 when none).
+    pub fn get(&self, card: usize, kind: Kind) -> usize {
+        self.slots
+            .get(card)
+            .map_or(0, |s| s[kind as usize].load(Ordering::Acquire))
+    }
+
+    /// Calls the routines for the causes collected in a tick, in the order of the module
+    /// documentation. Call with no lock held. Stops when the clock is stopped (a routine
+    /// closed the system).
+    pub fn deliver(&self, collected: &Collected, clock: &crate::clock::Clock) {
+        for (card, pending) in collected {
+            for kind in ORDER {
+                let bytes = pending.bytes(kind);
+                if bytes.iter().all(|&b| b == 0) {
+                    continue;
+                }
+                let f = self.get(*card, kind);
+                if f == 0 {
+                    continue;
+                }
+                if clock.stopped() {
+                    return;
+                }
+                // A fresh copy per call: the routine may write to its struct.
+                let mut buf = [0u8; 24];
+                buf[..bytes.len()].copy_from_slice(bytes);
+                // SAFETY: `f` was stored from a non-null `XXXISR` of this kind, a C
+                // function taking a pointer to that kind's struct. `buf` holds the
+                // struct's bytes (all its fields are BYTE, no padding, alignment 1) and
+                // outlives the call; C routines cannot unwind into Rust.
+                unsafe {
+                    let f: RawIsr = std::mem::transmute::<usize, RawIsr>(f);
+                    f(buf.as_mut_ptr());
+                }
+            }
+        }
+    }
+}
+
+/// Error record of a card reset by its watchdog, set on every group of that card
+/// (no vendor code exists; 0xF103 is unused by the vendor's table, see README).
+pub const ERR_WATCHDOG_RESET: i32 = 0xF103;
+
+impl Shared {
+    /// Raises an interrupt cause on `card`; it is delivered at the end of the current
+    /// tick (or of the next one when raised between ticks). Unknown cards are ignored.
+    pub fn raise(&self, card: usize, i: Interrupt) {
+        if let Some(p) = self.periph.get(card) {
+            p.lock().pending.raise(i);
+        }
+    }
+
+    /// Runs every card's peripherals for one tick of `dt_ns` and takes the causes raised
+    /// since the last delivery. A watchdog that expired resets its card here (its groups
+    /// abort and record [`ERR_WATCHDOG_RESET`], servo-on and position-ready go off).
+    pub fn tick_peripherals(&self, dt_ns: u64) -> Collected {
+        let mut out = Collected::new();
+        for (card, p) in self.periph.iter().enumerate() {
+            let (reset, pending) = {
+                let mut p = p.lock();
+                let reset = p.tick(dt_ns);
+                (reset, std::mem::take(&mut p.pending))
+            };
+            if reset {
+                self.reset_card(card);
+            }
+            if !pending.is_empty() {
+                out.push((card, pending));
+            }
+        }
+        out
+    }
+
+    /// The card-level part of a watchdog reset (the peripherals reset themselves).
+    fn reset_card(&self, card: usize) {
+        self.servo_on[card].store(0, Ordering::Release);
+        self.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
+        self.for_each_group(|g| {
+            if g.def.card.0 == card {
+                g.abort(0.0, false);
+                g.set_error(ERR_WATCHDOG_RESET);
+            }
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pending_fields_land_on_the_struct_bytes() {
+        let mut p = Pending::default();
+        assert!(p.is_empty());
+        p.raise(Interrupt::LioOtn(2));
+        p.raise(Interrupt::LioHome(7));
+        p.raise(Interrupt::AdcComp(0));
+        p.raise(Interrupt::AdcComp(0));
+        p.raise(Interrupt::AdcTag);
+        p.raise(Interrupt::Timer(300));
+        p.raise(Interrupt::RioFail);
+        assert_eq!(p.lio[10], 1);
+        assert_eq!(p.lio[23], 1);
+        assert_eq!(p.adc[0], 2, "counted");
+        assert_eq!(p.adc[9], 1);
+        assert_eq!(p.tmr[0], 255, "saturates");
+        assert_eq!(p.rio[8], 1);
+        assert!(!p.is_empty());
+        let q = p;
+        p.raise(Interrupt::EncComp(8));
+        p.raise(Interrupt::LioOtp(200));
+        assert_eq!(p, q, "out-of-range channels are ignored");
+    }
+}

@@ -1,0 +1,109 @@
+//! D/A converter (user manual §2.11; examples manual §35–36; INTERFACE.md "D/A Converter
+//! Control"). A channel whose mechanism parameters in effect say `OCM_VOLTAGE` belongs
+//! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
+
+use super::{channel, guard};
+use crate::card::with_card;
+use crate::error::{McclError, McclResult};
+use crate::system;
+use crate::vendor::consts as c;
+use crate::vendor::{DWORD, WORD};
+use std::os::raw::c_int;
+
+/// Checks the card and channel and that the channel is free for the DAC calls.
+fn dac_channel(wChannel: WORD, wCardIndex: WORD) -> McclResult<usize> {
+    let ch = channel(wChannel)?.0;
+    let cd = system::active()?.card(super::card(wCardIndex)?)?;
+    let mode = system::with(|s| s.running.as_ref().map(|r| r.mac[cd][ch].wCommandMode));
+    match mode {
+        None => Err(McclError::NotInitialized),
+        Some(c::OCM_VOLTAGE) => Err(McclError::VoltageChannel),
+        Some(_) => Ok(ch),
+    }
+}
+
+fn on_channel(
+    wChannel: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut crate::card::dac::Dac, usize) -> McclResult<()>,
+) -> c_int {
+    guard(|| {
+        system::active()?;
+        let ch = dac_channel(wChannel, wCardIndex)?;
+        with_card(wCardIndex, |p| f(&mut p.dac, ch))?;
+        Ok(c::NO_ERR)
+    })
+}
+
+/// Outputs `fVoltage` (−10..10 V) on a DAC channel.
+#[no_mangle]
+pub extern "C" fn MCC_SetDACOutput(fVoltage: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
+    on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage))
+}
+
+/// Presets the voltage (−10..10 V) a channel outputs when its trigger source fires.
+#[no_mangle]
+pub extern "C" fn MCC_SetDACTriggerOutput(
+    fVoltage: f32,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    on_channel(wChannel, wCardIndex, |d, ch| {
+        d.set_trigger_output(ch, fVoltage)
+    })
+}
+
+/// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
+/// channel n of the same card); other bits are `PARAMETER_ERR`.
+#[no_mangle]
+pub extern "C" fn MCC_SetDACTriggerSource(
+    dwSource: DWORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    on_channel(wChannel, wCardIndex, |d, ch| {
+        d.set_trigger_source(ch, dwSource)
+    })
+}
+
+/// Turns a channel's trigger mode on.
+#[no_mangle]
+pub extern "C" fn MCC_EnableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    on_channel(wChannel, wCardIndex, |d, ch| {
+        d.set_trigger_mode(ch, true);
+        Ok(())
+    })
+}
+
+/// Turns a channel's trigger mode off.
+#[no_mangle]
+pub extern "C" fn MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    on_channel(wChannel, wCardIndex, |d, ch| {
+        d.set_trigger_mode(ch, false);
+        Ok(())
+    })
+}
+
+/// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
+/// from `MCC_InitSystem` on.
+#[no_mangle]
+pub extern "C" fn MCC_StartDACConv(wCardIndex: WORD) -> c_int {
+    guard(|| {
+        with_card(wCardIndex, |p| {
+            p.dac.set_running(true);
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
+/// kept).
+#[no_mangle]
+pub extern "C" fn MCC_StopDACConv(wCardIndex: WORD) -> c_int {
+    guard(|| {
+        with_card(wCardIndex, |p| {
+            p.dac.set_running(false);
+            Ok(c::NO_ERR)
+        })
+    })
+}

@@ -1,0 +1,104 @@
+//! Interrupt routine registration (`MCC_Set*Routine`; user manual §2.9.3, §2.10.3,
+//! §2.12.4, §2.13.1; INTERFACE.md §3.3–3.4). One routine per kind and card; NULL
+//! unregisters. Routines are called after each tick on the engine thread with no lock
+//! held, in the order documented in `crate::engine::isr`; they may call any `MCC_*`
+//! function. The registrations live as long as the running system (`MCC_CloseSystem`
+//! forgets them).
+
+use super::{card, guard};
+use crate::engine::isr::Kind;
+use crate::system;
+use crate::vendor::consts as c;
+use crate::vendor::{ADCISR, ENCISR, HSKISR, LIOISR, PCLISR, RIOISR, TMRISR, WORD};
+use std::os::raw::c_int;
+
+fn register(kind: Kind, f: usize, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let shared = system::active()?;
+        let cd = shared.card(card(wCardIndex)?)?;
+        shared.isr.set(cd, kind, f);
+        // Routines run between ticks and may read positions: publish every tick then.
+        shared
+            .live_snapshots
+            .store(shared.isr.any(), std::sync::atomic::Ordering::Relaxed);
+        Ok(c::NO_ERR)
+    })
+}
+
+/// Registers the local I/O routine (limit switches, home sensors) of a card.
+#[no_mangle]
+pub extern "C" fn MCC_SetLIORoutine(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Lio,
+        pfnLIORoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}
+
+/// The name the IMP manuals use for [`MCC_SetLIORoutine`]; the same function.
+#[no_mangle]
+pub extern "C" fn MCC_SetLIORoutineEx(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> c_int {
+    MCC_SetLIORoutine(pfnLIORoutine, wCardIndex)
+}
+
+/// Registers the encoder routine (index, compare) of a card.
+#[no_mangle]
+pub extern "C" fn MCC_SetENCRoutine(pfnEncoderRoutine: ENCISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Enc,
+        pfnEncoderRoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}
+
+/// Registers the position-control-loop routine of a card.
+#[no_mangle]
+pub extern "C" fn MCC_SetPCLRoutine(pfnPCLRoutine: PCLISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Pcl,
+        pfnPCLRoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}
+
+/// Registers the A/D converter routine (comparators, conversion done, tag) of a card.
+#[no_mangle]
+pub extern "C" fn MCC_SetADCRoutine(pfnADCRoutine: ADCISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Adc,
+        pfnADCRoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}
+
+/// Registers the timer routine of a card (the vendor names the parameter
+/// `pfnLIORoutine`).
+#[no_mangle]
+pub extern "C" fn MCC_SetTMRRoutine(pfnLIORoutine: TMRISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Tmr,
+        pfnLIORoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}
+
+/// Registers the remote I/O routine (digital input triggers, transmission errors).
+#[no_mangle]
+pub extern "C" fn MCC_SetRIORoutine(pfnRIORoutine: RIOISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Rio,
+        pfnRIORoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}
+
+/// Registers the handshake routine of a card (the vendor names the parameter
+/// `pfnLIORoutine`).
+#[no_mangle]
+pub extern "C" fn MCC_SetHSKRoutine(pfnLIORoutine: HSKISR, wCardIndex: WORD) -> c_int {
+    register(
+        Kind::Hsk,
+        pfnLIORoutine.map_or(0, |f| f as usize),
+        wCardIndex,
+    )
+}

@@ -1,0 +1,392 @@
+//! Remote I/O (user manual §2.14; examples manual §33–34; INTERFACE.md "Remote
+//! Input/Output Control", the B/C signatures with `wSet`). Behaviour in
+//! `crate::card::rio`: 2 sets; RIO has 4 ports (one slave each), ARIO 32 slaves (the
+//! `wPort` argument names the slave); data moves once per tick; simulated slaves loop
+//! their outputs back to their inputs unless set otherwise from Rust. Statuses read 1 for
+//! normal transfer, 0 for an error. Bad card, set, port, slave, input or NULL:
+//! `PARAMETER_ERR`, nothing changed.
+
+use super::{guard, out_ok, write_out};
+use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
+use crate::card::with_card;
+use crate::error::McclResult;
+use crate::vendor::consts as c;
+use crate::vendor::{DWORD, WORD};
+use std::os::raw::c_int;
+
+fn rio<R>(
+    wSet: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut Set<RIO_PORTS>) -> McclResult<R>,
+) -> McclResult<R> {
+    crate::system::active()?;
+    let s = set_ix(wSet)?;
+    with_card(wCardIndex, |p| f(&mut p.rio.rio[s]))
+}
+
+fn ario<R>(
+    wSet: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> McclResult<R>,
+) -> McclResult<R> {
+    crate::system::active()?;
+    let s = set_ix(wSet)?;
+    with_card(wCardIndex, |p| f(&mut p.rio.ario[s]))
+}
+
+/// Runs a setter; `NO_ERR` on success.
+fn done(r: McclResult<()>) -> McclResult<c_int> {
+    r.map(|()| c::NO_ERR)
+}
+
+/// Writes a value read by `get` to `p` (checked first).
+///
+/// # Safety
+/// `p` must be NULL or point to a writable T.
+unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<c_int> {
+    crate::system::active()?;
+    out_ok(p)?;
+    let v = get()?;
+    // SAFETY: checked non-null; writable by the caller's contract.
+    unsafe { write_out(p, v) };
+    Ok(c::NO_ERR)
+}
+
+// ---- RIO ----
+
+/// Starts data transfer of a RIO set.
+#[no_mangle]
+pub extern "C" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.control = true;
+            Ok(())
+        }))
+    })
+}
+
+/// Stops data transfer of a RIO set.
+#[no_mangle]
+pub extern "C" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.control = false;
+            Ok(())
+        }))
+    })
+}
+
+/// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
+#[no_mangle]
+pub extern "C" fn MCC_EnableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| done(rio(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true))))
+}
+
+/// Stops data transfer with one slave of a RIO set.
+#[no_mangle]
+pub extern "C" fn MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_slave_control(wSlave, false)
+        }))
+    })
+}
+
+/// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetRIOTransStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) })
+}
+
+/// Master status of a RIO set: 1 normal, 0 error.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetRIOMasterStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe {
+        read(pwStatus, || {
+            rio(wSet, wCardIndex, |s| Ok(s.master_status()))
+        })
+    })
+}
+
+/// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetRIOSlaveStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) })
+}
+
+/// Failed transmitting slaves of a RIO set, bit n = slave n.
+///
+/// # Safety
+/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable DWORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetRIOSlaveFail(
+    pdwStatus: *mut DWORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) })
+}
+
+/// The 16 inputs of a RIO port (bit n = input n), as last transferred.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetRIOInputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) })
+}
+
+/// Sets the 16 outputs of a RIO port (sent at the next transfer).
+#[no_mangle]
+pub extern "C" fn MCC_SetRIOOutputValue(
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| done(rio(wSet, wCardIndex, |s| s.set_output(wPort, wValue))))
+}
+
+/// The 16 outputs set for a RIO port.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetRIOOutputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) })
+}
+
+/// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
+/// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
+#[no_mangle]
+pub extern "C" fn MCC_SetRIOTriggerType(
+    wType: WORD,
+    wSet: WORD,
+    wDigitalInput: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_trigger_type(wDigitalInput, wType)
+        }))
+    })
+}
+
+/// An edge of the digital input calls the RIO routine with `RDIn` set.
+#[no_mangle]
+pub extern "C" fn MCC_EnableRIOInputTrigger(
+    wSet: WORD,
+    wDigitalInput: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_input_trigger(wDigitalInput, true)
+        }))
+    })
+}
+
+/// The digital input no longer calls the RIO routine.
+#[no_mangle]
+pub extern "C" fn MCC_DisableRIOInputTrigger(
+    wSet: WORD,
+    wDigitalInput: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_input_trigger(wDigitalInput, false)
+        }))
+    })
+}
+
+/// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
+/// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
+#[no_mangle]
+pub extern "C" fn MCC_EnableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_trans_trigger(true);
+            Ok(())
+        }))
+    })
+}
+
+/// Transfer errors no longer call the RIO routine.
+#[no_mangle]
+pub extern "C" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_trans_trigger(false);
+            Ok(())
+        }))
+    })
+}
+
+// ---- ARIO ----
+
+/// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
+#[no_mangle]
+pub extern "C" fn MCC_EnableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(ario(wSet, wCardIndex, |s| {
+            s.set_slave_control(wSlave, true)
+        }))
+    })
+}
+
+/// Stops data transfer with an ARIO slave.
+#[no_mangle]
+pub extern "C" fn MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(ario(wSet, wCardIndex, |s| {
+            s.set_slave_control(wSlave, false)
+        }))
+    })
+}
+
+/// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetARIOTransStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe {
+        read(pwStatus, || {
+            ario(wSet, wCardIndex, |s| Ok(s.trans_status()))
+        })
+    })
+}
+
+/// ARIO master status: 1 normal, 0 error.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetARIOMasterStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe {
+        read(pwStatus, || {
+            ario(wSet, wCardIndex, |s| Ok(s.master_status()))
+        })
+    })
+}
+
+/// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetARIOSlaveStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe {
+        read(pwStatus, || {
+            ario(wSet, wCardIndex, |s| Ok(s.slave_status()))
+        })
+    })
+}
+
+/// Failed transmitting ARIO slaves, bit n = slave n.
+///
+/// # Safety
+/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable DWORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetARIOSlaveFail(
+    pdwStatus: *mut DWORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) })
+}
+
+/// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetARIOInputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) })
+}
+
+/// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
+#[no_mangle]
+pub extern "C" fn MCC_SetARIOOutputValue(
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| done(ario(wSet, wCardIndex, |s| s.set_output(wPort, wValue))))
+}
+
+/// The 16 outputs set for ARIO slave `wPort`.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetARIOOutputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    // SAFETY: forwarded under this function's contract.
+    guard(|| unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) })
+}
