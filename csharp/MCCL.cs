@@ -694,12 +694,32 @@ public static class MCCL
     public static extern int MCC_GetEmgcStopStatus(ref ushort pwStatus, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutine")]
     public static extern int MCC_SetLIORoutine(LIOISR pfnLIORoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTriggerType")]
+    public static extern int MCC_SetLIOTriggerType(ushort wTriggerType, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableLIOTrigger")]
+    public static extern int MCC_EnableLIOTrigger(ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableLIOTrigger")]
+    public static extern int MCC_DisableLIOTrigger(ushort wPoint, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedLightOn")]
     public static extern int MCC_SetLedLightOn(ushort Channel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedLightOff")]
     public static extern int MCC_SetLedLightOff(ushort Channel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLedLightStatus")]
     public static extern int MCC_GetLedLightStatus(ushort Channel, ref ushort Status, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutValueEx")]
+    public static extern int MCC_SetLIOTrigOutValueEx(uint dwBitMask, uint dwBitValue, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutEnable")]
+    public static extern int MCC_SetLIOTrigOutEnable(ushort wEnable, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutValue")]
+    public static extern int MCC_SetLIOTrigOutValue(ushort wValue, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutSource")]
+    public static extern int MCC_SetLIOTrigOutSource(ushort wSource, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutPeriod")]
+    public static extern int MCC_SetLIOTrigOutPeriod(uint dwPeriod, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLIOCompStockCount")]
+    public static extern int MCC_GetLIOCompStockCount(ref ushort wCount, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EraseLIOCompValue")]
+    public static extern int MCC_EraseLIOCompValue(ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLimitFilterClk")]
     public static extern int MCC_SetLimitFilterClk(ushort Value, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHomeFilterClk")]
@@ -1077,6 +1097,84 @@ public static class MCCL
     }
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCGearRate")]
     public static extern int MCC_SetENCGearRate(double dfGearRate, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCLatchType")]
+    public static extern int MCC_SetENCLatchType(ushort wType, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCLatchSource")]
+    public static extern int MCC_SetENCLatchSource(uint wSource, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCLatchValue")]
+    private static extern int MCC_GetENCLatchValue_L32(ref int plLatchValue, ushort wChannel, ushort wCardIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCLatchValue")]
+    private static extern int MCC_GetENCLatchValue_L64(ref long plLatchValue, ushort wChannel, ushort wCardIndex);
+    public static int MCC_GetENCLatchValue(ref int plLatchValue, ushort wChannel, ushort wCardIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            long t0 = plLatchValue;
+            int r = MCC_GetENCLatchValue_L64(ref t0, wChannel, wCardIndex);
+            plLatchValue = unchecked((int)t0);
+            return r;
+        }
+        return MCC_GetENCLatchValue_L32(ref plLatchValue, wChannel, wCardIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableENCIndexTrigger")]
+    public static extern int MCC_EnableENCIndexTrigger(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableENCIndexTrigger")]
+    public static extern int MCC_DisableENCIndexTrigger(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCIndexStatus")]
+    public static extern int MCC_GetENCIndexStatus(ref ushort pwStatus, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCCompValue")]
+    private static extern int MCC_SetENCCompValue_L32(int lValue, ushort wChannel, ushort wCardIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCCompValue")]
+    private static extern int MCC_SetENCCompValue_L64(long lValue, ushort wChannel, ushort wCardIndex);
+    public static int MCC_SetENCCompValue(int lValue, ushort wChannel, ushort wCardIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            int r = MCC_SetENCCompValue_L64(lValue, wChannel, wCardIndex);
+            return r;
+        }
+        return MCC_SetENCCompValue_L32(lValue, wChannel, wCardIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCCompValue")]
+    private static extern int MCC_GetENCCompValue_L32(ref int lValue, ushort wChannel, ushort wCardIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCCompValue")]
+    private static extern int MCC_GetENCCompValue_L64(ref long lValue, ushort wChannel, ushort wCardIndex);
+    public static int MCC_GetENCCompValue(ref int lValue, ushort wChannel, ushort wCardIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            long t0 = lValue;
+            int r = MCC_GetENCCompValue_L64(ref t0, wChannel, wCardIndex);
+            lValue = unchecked((int)t0);
+            return r;
+        }
+        return MCC_GetENCCompValue_L32(ref lValue, wChannel, wCardIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetENCCompStockCount")]
+    public static extern int MCC_GetENCCompStockCount(ref ushort wCount, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableENCCompTrigger")]
+    public static extern int MCC_EnableENCCompTrigger(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableENCCompTrigger")]
+    public static extern int MCC_DisableENCCompTrigger(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EraseENCCompValue")]
+    public static extern int MCC_EraseENCCompValue(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Set3DCompareTolerance")]
+    public static extern int MCC_Set3DCompareTolerance(ushort wTolerance, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCCompValueTab")]
+    private static extern int MCC_SetENCCompValueTab_L32(int lStartValue, int lEndValue, int lDeltaValue, ushort wChannel, ushort wCardIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCCompValueTab")]
+    private static extern int MCC_SetENCCompValueTab_L64(long lStartValue, long lEndValue, long lDeltaValue, ushort wChannel, ushort wCardIndex);
+    public static int MCC_SetENCCompValueTab(int lStartValue, int lEndValue, int lDeltaValue, ushort wChannel, ushort wCardIndex = 0)
+    {
+        if (NativeLongIs64)
+        {
+            int r = MCC_SetENCCompValueTab_L64(lStartValue, lEndValue, lDeltaValue, wChannel, wCardIndex);
+            return r;
+        }
+        return MCC_SetENCCompValueTab_L32(lStartValue, lEndValue, lDeltaValue, wChannel, wCardIndex);
+    }
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Enable3DCompareChannel")]
+    public static extern int MCC_Enable3DCompareChannel(ushort wCompareAxisMask, ushort wCardIndex = 0);
 
     // ---- Timer & Watch Dog Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetTMRRoutine")]

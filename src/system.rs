@@ -141,6 +141,21 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
             eprintln!("MCCL: cannot start the engine thread: {e}");
             McclError::RunTime
         })?;
+    // ADC inputs the configuration wires (default: ADC n reads DAC n of the card).
+    for (c, p) in engine.shared().periph.iter().enumerate() {
+        let mut p = p.lock();
+        for ch in 0..AXES {
+            match sim.channel(c, ch).adc {
+                Some(crate::sim::config::AdcSource::Volts(v)) => {
+                    p.set_adc_source(ch, crate::card::adc::AdcSource::Constant(v))
+                }
+                Some(crate::sim::config::AdcSource::Dac(d)) => {
+                    p.set_adc_source(ch, crate::card::adc::AdcSource::Dac(usize::from(d)))
+                }
+                None => {}
+            }
+        }
+    }
     *ACTIVE.write() = Some(engine.shared().clone());
     sys.running = Some(Running {
         engine,

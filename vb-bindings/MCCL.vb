@@ -681,6 +681,15 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIORoutine")>
     Public Function MCC_SetLIORoutine(ByVal pfnLIORoutine As LIOISR, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTriggerType")>
+    Public Function MCC_SetLIOTriggerType(ByVal wTriggerType As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableLIOTrigger")>
+    Public Function MCC_EnableLIOTrigger(ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableLIOTrigger")>
+    Public Function MCC_DisableLIOTrigger(ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedLightOn")>
     Public Function MCC_SetLedLightOn(ByVal Channel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -689,6 +698,27 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLedLightStatus")>
     Public Function MCC_GetLedLightStatus(ByVal Channel As UShort, ByRef Status As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutValueEx")>
+    Public Function MCC_SetLIOTrigOutValueEx(ByVal dwBitMask As UInteger, ByVal dwBitValue As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutEnable")>
+    Public Function MCC_SetLIOTrigOutEnable(ByVal wEnable As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutValue")>
+    Public Function MCC_SetLIOTrigOutValue(ByVal wValue As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutSource")>
+    Public Function MCC_SetLIOTrigOutSource(ByVal wSource As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutPeriod")>
+    Public Function MCC_SetLIOTrigOutPeriod(ByVal dwPeriod As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLIOCompStockCount")>
+    Public Function MCC_GetLIOCompStockCount(ByRef wCount As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EraseLIOCompValue")>
+    Public Function MCC_EraseLIOCompValue(Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLimitFilterClk")>
     Public Function MCC_SetLimitFilterClk(ByVal Value As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -1210,6 +1240,95 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCGearRate")>
     Public Function MCC_SetENCGearRate(ByVal dfGearRate As Double, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCLatchType")>
+    Public Function MCC_SetENCLatchType(ByVal wType As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCLatchSource")>
+    Public Function MCC_SetENCLatchSource(ByVal wSource As UInteger, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCLatchValue")>
+    Private Function MCC_GetENCLatchValue_L32(ByRef plLatchValue As Integer, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCLatchValue")>
+    Private Function MCC_GetENCLatchValue_L64(ByRef plLatchValue As Long, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    Public Function MCC_GetENCLatchValue(ByRef plLatchValue As Integer, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim t0 As Long = plLatchValue
+            Dim r As Integer = MCC_GetENCLatchValue_L64(t0, wChannel, wCardIndex)
+            plLatchValue = CInt(t0)
+            Return r
+        End If
+        Return MCC_GetENCLatchValue_L32(plLatchValue, wChannel, wCardIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableENCIndexTrigger")>
+    Public Function MCC_EnableENCIndexTrigger(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableENCIndexTrigger")>
+    Public Function MCC_DisableENCIndexTrigger(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCIndexStatus")>
+    Public Function MCC_GetENCIndexStatus(ByRef pwStatus As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCCompValue")>
+    Private Function MCC_SetENCCompValue_L32(ByVal lValue As Integer, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCCompValue")>
+    Private Function MCC_SetENCCompValue_L64(ByVal lValue As Long, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    Public Function MCC_SetENCCompValue(ByVal lValue As Integer, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim r As Integer = MCC_SetENCCompValue_L64(lValue, wChannel, wCardIndex)
+            Return r
+        End If
+        Return MCC_SetENCCompValue_L32(lValue, wChannel, wCardIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCCompValue")>
+    Private Function MCC_GetENCCompValue_L32(ByRef lValue As Integer, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCCompValue")>
+    Private Function MCC_GetENCCompValue_L64(ByRef lValue As Long, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    Public Function MCC_GetENCCompValue(ByRef lValue As Integer, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim t0 As Long = lValue
+            Dim r As Integer = MCC_GetENCCompValue_L64(t0, wChannel, wCardIndex)
+            lValue = CInt(t0)
+            Return r
+        End If
+        Return MCC_GetENCCompValue_L32(lValue, wChannel, wCardIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetENCCompStockCount")>
+    Public Function MCC_GetENCCompStockCount(ByRef wCount As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableENCCompTrigger")>
+    Public Function MCC_EnableENCCompTrigger(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableENCCompTrigger")>
+    Public Function MCC_DisableENCCompTrigger(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EraseENCCompValue")>
+    Public Function MCC_EraseENCCompValue(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Set3DCompareTolerance")>
+    Public Function MCC_Set3DCompareTolerance(ByVal wTolerance As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCCompValueTab")>
+    Private Function MCC_SetENCCompValueTab_L32(ByVal lStartValue As Integer, ByVal lEndValue As Integer, ByVal lDeltaValue As Integer, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCCompValueTab")>
+    Private Function MCC_SetENCCompValueTab_L64(ByVal lStartValue As Long, ByVal lEndValue As Long, ByVal lDeltaValue As Long, ByVal wChannel As UShort, ByVal wCardIndex As UShort) As Integer
+    End Function
+    Public Function MCC_SetENCCompValueTab(ByVal lStartValue As Integer, ByVal lEndValue As Integer, ByVal lDeltaValue As Integer, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+        If NativeLongIs64 Then
+            Dim r As Integer = MCC_SetENCCompValueTab_L64(lStartValue, lEndValue, lDeltaValue, wChannel, wCardIndex)
+            Return r
+        End If
+        Return MCC_SetENCCompValueTab_L32(lStartValue, lEndValue, lDeltaValue, wChannel, wCardIndex)
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Enable3DCompareChannel")>
+    Public Function MCC_Enable3DCompareChannel(ByVal wCompareAxisMask As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
 
     ' ---- Timer & Watch Dog Control ----

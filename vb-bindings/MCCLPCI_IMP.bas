@@ -585,9 +585,19 @@ Public Declare Function MCC_EnablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal
 Public Declare Function MCC_DisablePosReady Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetEmgcStopStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIORoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIOTriggerType Lib "MCCLPCI_IMP.dll" (ByVal wTriggerType As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableLIOTrigger Lib "MCCLPCI_IMP.dll" (ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableLIOTrigger Lib "MCCLPCI_IMP.dll" (ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLedLightOn Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLedLightOff Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetLedLightStatus Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, ByRef Status As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIOTrigOutValueEx Lib "MCCLPCI_IMP.dll" (ByVal dwBitMask As Long, ByVal dwBitValue As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIOTrigOutEnable Lib "MCCLPCI_IMP.dll" (ByVal wEnable As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIOTrigOutValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIOTrigOutSource Lib "MCCLPCI_IMP.dll" (ByVal wSource As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLIOTrigOutPeriod Lib "MCCLPCI_IMP.dll" (ByVal dwPeriod As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetLIOCompStockCount Lib "MCCLPCI_IMP.dll" (ByRef wCount As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EraseLIOCompValue Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLimitFilterClk Lib "MCCLPCI_IMP.dll" (ByVal Value As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetHomeFilterClk Lib "MCCLPCI_IMP.dll" (ByVal Value As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetGpioFilterClk Lib "MCCLPCI_IMP.dll" (ByVal Value As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -759,6 +769,21 @@ Public Declare Function MCC_GetENCValue Lib "MCCLPCI_IMP.dll" (ByRef plValue As 
 Public Declare Function MCC_GetENCValueEx Lib "MCCLPCI_IMP.dll" (ByRef pllValue As Currency, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCValue Lib "MCCLPCI_IMP.dll" (ByVal lValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCGearRate Lib "MCCLPCI_IMP.dll" (ByVal dfGearRate As Double, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCLatchType Lib "MCCLPCI_IMP.dll" (ByVal wType As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCLatchSource Lib "MCCLPCI_IMP.dll" (ByVal wSource As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetENCLatchValue Lib "MCCLPCI_IMP.dll" (ByRef plLatchValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableENCIndexTrigger Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableENCIndexTrigger Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetENCIndexStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCCompValue Lib "MCCLPCI_IMP.dll" (ByVal lValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetENCCompValue Lib "MCCLPCI_IMP.dll" (ByRef lValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetENCCompStockCount Lib "MCCLPCI_IMP.dll" (ByRef wCount As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableENCCompTrigger Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableENCCompTrigger Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_EraseENCCompValue Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_Set3DCompareTolerance Lib "MCCLPCI_IMP.dll" (ByVal wTolerance As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCCompValueTab Lib "MCCLPCI_IMP.dll" (ByVal lStartValue As Long, ByVal lEndValue As Long, ByVal lDeltaValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_Enable3DCompareChannel Lib "MCCLPCI_IMP.dll" (ByVal wCompareAxisMask As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- Timer & Watch Dog Control ----
 Public Declare Function MCC_SetTMRRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long

@@ -290,10 +290,24 @@ impl Shared {
                 t.row(t_ns, &g);
             }
         }
-        for (card, chans) in machine.cards.iter_mut().enumerate() {
+        let now_ns = t_ns;
+        let m = &mut *machine;
+        for (card, chans) in m.cards.iter_mut().enumerate() {
             for (ch, chan) in chans.iter_mut().enumerate() {
                 let cmd = cmds[card][ch].unwrap_or_else(|| chan.command_pulses());
                 chan.step(cmd, dt);
+            }
+            let prev: [crate::machine::SensorLevels; AXES] =
+                std::array::from_fn(|i| chans[i].prev_levels());
+            let thresholds = m.settings[card].error_threshold;
+            let fired = m.triggers[card].tick(chans, &prev, &thresholds, now_ns);
+            if !fired.interrupts.is_empty() {
+                for &n in &fired.compares {
+                    self.periph[card].lock().dac_trigger(n);
+                }
+                for i in fired.interrupts {
+                    self.raise(card, i);
+                }
             }
         }
         self.safety(&machine, full, dt);

@@ -6,6 +6,7 @@ use super::{card, channel, finite, guard, out_ok, write_out};
 use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
+use crate::vendor::DWORD;
 use crate::vendor::WORD;
 use std::os::raw::{c_int, c_long, c_longlong};
 
@@ -107,6 +108,286 @@ pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex
             let v = ch.encoder();
             ch.gear_rate = r;
             ch.set_encoder(v);
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+fn with_triggers<R>(
+    wCardIndex: WORD,
+    f: impl FnOnce(
+        &mut crate::machine::triggers::CardTriggers,
+        &[crate::machine::Channel; 8],
+    ) -> McclResult<R>,
+) -> McclResult<R> {
+    let shared = system::active()?;
+    let cd = shared.card(card(wCardIndex)?)?;
+    let mut m = shared.machine.lock();
+    let m = &mut *m;
+    f(&mut m.triggers[cd], &m.cards[cd])
+}
+
+/// Latch type of a channel: `ENC_TRIG_FIRST` (keep the first event) or `ENC_TRIG_LAST`
+/// (every event). Setting it re-arms the latch.
+#[no_mangle]
+pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        if wType > c::ENC_TRIG_LAST {
+            return Err(McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t, _| {
+            t.latch_type[ch.0] = wType;
+            t.latch[ch.0] = None;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// Latch sources of a channel: `ENC_TRIG_INDEX0..7`, `ENC_TRIG_OTP0..7`,
+/// `ENC_TRIG_OTN0..7` (the count is latched when that index pulse passes or that limit
+/// switch turns active). Setting them re-arms the latch.
+#[no_mangle]
+pub extern "C" fn MCC_SetENCLatchSource(wSource: DWORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        if wSource & !0x00FF_FFFF != 0 {
+            return Err(McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t, _| {
+            t.latch_source[ch.0] = wSource;
+            t.latch[ch.0] = None;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The latched count of a channel (0 until something was latched).
+///
+/// # Safety
+/// `plLatchValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetENCLatchValue(
+    plLatchValue: *mut c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        out_ok(plLatchValue)?;
+        let v = with_triggers(wCardIndex, |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
+        // SAFETY: checked non-null; the caller passes a writable long.
+        unsafe { write_out(plLatchValue, v as c_long) };
+        Ok(c::NO_ERR)
+    })
+}
+
+fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        with_triggers(wCardIndex, |t, _| {
+            t.index_enabled[ch.0] = on;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
+/// passes.
+#[no_mangle]
+pub extern "C" fn MCC_EnableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    index_trigger(wChannel, wCardIndex, true)
+}
+
+/// Index pulses no longer call the encoder routine.
+#[no_mangle]
+pub extern "C" fn MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    index_trigger(wChannel, wCardIndex, false)
+}
+
+/// 1 when an index pulse of the channel passed since the last read (the read clears it).
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetENCIndexStatus(
+    pwStatus: *mut WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        out_ok(pwStatus)?;
+        let v = with_triggers(wCardIndex, |t, _| {
+            Ok(std::mem::take(&mut t.index_status[ch.0]))
+        })?;
+        // SAFETY: checked non-null; the caller passes a writable WORD.
+        unsafe { write_out(pwStatus, WORD::from(v)) };
+        Ok(c::NO_ERR)
+    })
+}
+
+fn push_compare(
+    t: &mut crate::machine::triggers::CardTriggers,
+    ch: usize,
+    v: i64,
+) -> McclResult<()> {
+    if t.stock[ch].len() >= crate::machine::triggers::MAX_COMPARE_STOCK {
+        return Err(McclError::BufferFull);
+    }
+    t.stock[ch].push_back(v);
+    Ok(())
+}
+
+/// Adds a compare value to the channel's stock: when the count reaches it the encoder
+/// routine is called (`ENCINT.COMPn`, if the compare trigger is on), trigger-outs and DAC
+/// triggers from this channel fire, and the next value of the stock is armed.
+#[no_mangle]
+pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
+        #[allow(clippy::useless_conversion)]
+        let v = i64::from(lValue);
+        with_triggers(wCardIndex, |t, _| {
+            push_compare(t, ch.0, v).map(|()| c::NO_ERR)
+        })
+    })
+}
+
+/// Adds the compare values start, start + delta, ... up to end (inclusive) to the stock.
+#[no_mangle]
+pub extern "C" fn MCC_SetENCCompValueTab(
+    lStartValue: c_long,
+    lEndValue: c_long,
+    lDeltaValue: c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        #[allow(clippy::useless_conversion)]
+        let (a, b, d) = (
+            i64::from(lStartValue),
+            i64::from(lEndValue),
+            i64::from(lDeltaValue),
+        );
+        if d == 0 || (b - a).signum() * d.signum() < 0 {
+            return Err(McclError::Parameter);
+        }
+        let n = (b - a) / d + 1;
+        with_triggers(wCardIndex, |t, _| {
+            if t.stock[ch.0].len() as i64 + n > crate::machine::triggers::MAX_COMPARE_STOCK as i64 {
+                return Err(McclError::BufferFull);
+            }
+            for k in 0..n {
+                t.stock[ch.0].push_back(a + k * d);
+            }
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The armed compare value of a channel (0 when the stock is empty).
+///
+/// # Safety
+/// `lValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetENCCompValue(
+    lValue: *mut c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        out_ok(lValue)?;
+        let v = with_triggers(wCardIndex, |t, _| {
+            Ok(t.stock[ch.0].front().copied().unwrap_or(0))
+        })?;
+        // SAFETY: checked non-null; the caller passes a writable long.
+        unsafe { write_out(lValue, v as c_long) };
+        Ok(c::NO_ERR)
+    })
+}
+
+/// How many compare values of the channel are waiting (the armed one included).
+///
+/// # Safety
+/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetENCCompStockCount(
+    wCount: *mut WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        out_ok(wCount)?;
+        let n = with_triggers(wCardIndex, |t, _| Ok(t.stock_count(ch.0)))?;
+        // SAFETY: checked non-null; the caller passes a writable WORD.
+        unsafe { write_out(wCount, n.min(usize::from(WORD::MAX)) as WORD) };
+        Ok(c::NO_ERR)
+    })
+}
+
+fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        with_triggers(wCardIndex, |t, chans| {
+            if on && !t.comp_enabled[ch.0] {
+                t.rebase(chans);
+            }
+            t.comp_enabled[ch.0] = on;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The channel's compare stock is active: values fire as the count reaches them.
+#[no_mangle]
+pub extern "C" fn MCC_EnableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    comp_trigger(wChannel, wCardIndex, true)
+}
+
+/// The channel's compare stock stops firing (the values stay).
+#[no_mangle]
+pub extern "C" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    comp_trigger(wChannel, wCardIndex, false)
+}
+
+/// Removes every compare value of the channel.
+#[no_mangle]
+pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let ch = channel(wChannel)?;
+        with_triggers(wCardIndex, |t, _| {
+            t.stock[ch.0].clear();
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// Channels compared together (bit n: channel n): with two or more, their armed values
+/// fire together when every one of them is reached within the 3-D tolerance.
+#[no_mangle]
+pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        if wCompareAxisMask > 0xFF {
+            return Err(McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t, _| {
+            t.compare_mask = wCompareAxisMask;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// Tolerance (counts) of the 3-D compare.
+#[no_mangle]
+pub extern "C" fn MCC_Set3DCompareTolerance(wTolerance: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        with_triggers(wCardIndex, |t, _| {
+            t.compare_tol = wTolerance;
             Ok(c::NO_ERR)
         })
     })

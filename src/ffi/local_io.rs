@@ -5,7 +5,7 @@
 use super::{card, channel, guard};
 use crate::system;
 use crate::vendor::consts as c;
-use crate::vendor::WORD;
+use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
 use std::sync::atomic::Ordering;
 
@@ -172,5 +172,194 @@ pub unsafe extern "C" fn MCC_GetHomeSensorStatus(
         // SAFETY: checked non-null; the caller passes a writable WORD.
         unsafe { super::write_out(pwStatus, WORD::from(v)) };
         Ok(c::NO_ERR)
+    })
+}
+
+fn with_triggers<R>(
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut crate::machine::triggers::CardTriggers) -> Result<R, crate::error::McclError>,
+) -> Result<R, crate::error::McclError> {
+    let shared = system::active()?;
+    let cd = shared.card(card(wCardIndex)?)?;
+    let mut m = shared.machine.lock();
+    f(&mut m.triggers[cd])
+}
+
+fn lio_point(wPoint: WORD) -> Result<usize, crate::error::McclError> {
+    let p = usize::from(wPoint);
+    if p < 24 {
+        Ok(p)
+    } else {
+        Err(crate::error::McclError::Parameter)
+    }
+}
+
+fn out_point(wPoint: WORD) -> Result<usize, crate::error::McclError> {
+    let p = usize::from(wPoint);
+    if p < 8 {
+        Ok(p)
+    } else {
+        Err(crate::error::McclError::Parameter)
+    }
+}
+
+/// Trigger type of a local input (`LIO_LDI_OTP0..7`, `OTN0..7`, `HOME0..7`):
+/// `LIO_INT_NO`, `LIO_INT_RISE` (default), `LIO_INT_FALL`, `LIO_INT_LEVEL` (every tick
+/// while active).
+#[no_mangle]
+pub extern "C" fn MCC_SetLIOTriggerType(
+    wTriggerType: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        let p = lio_point(wPoint)?;
+        if wTriggerType > c::LIO_INT_LEVEL {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.lio_type[p] = wTriggerType;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> c_int {
+    guard(|| {
+        let p = lio_point(wPoint)?;
+        with_triggers(wCardIndex, |t| {
+            t.lio_enabled[p] = on;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The local-input routine is called (`LIOINT`) on the point's trigger.
+#[no_mangle]
+pub extern "C" fn MCC_EnableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
+    lio_trigger(wPoint, wCardIndex, true)
+}
+
+/// The point no longer calls the local-input routine.
+#[no_mangle]
+pub extern "C" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
+    lio_trigger(wPoint, wCardIndex, false)
+}
+
+/// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
+/// (1) or off (0): when a compare of its source fires, the output takes its trigger
+/// value for the trigger period, then returns.
+#[no_mangle]
+pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let p = out_point(wPoint)?;
+        if wEnable > 1 {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.trig_out[p].0 = wEnable == 1;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The value a triggered output takes (1: servo off, 0: servo on, as the examples
+/// manual's §26 uses it).
+#[no_mangle]
+pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let p = out_point(wPoint)?;
+        if wValue > 1 {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.trig_out[p].1 = wValue == 1;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// Trigger values of several points at once: bit n of the mask selects point n.
+#[no_mangle]
+pub extern "C" fn MCC_SetLIOTrigOutValueEx(
+    dwBitMask: DWORD,
+    dwBitValue: DWORD,
+    wCardIndex: WORD,
+) -> c_int {
+    guard(|| {
+        if dwBitMask > 0xFF {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            for p in (0..8).filter(|p| dwBitMask & (1 << p) != 0) {
+                t.trig_out[p].1 = dwBitValue & (1 << p) != 0;
+            }
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
+#[no_mangle]
+pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        let p = out_point(wPoint)?;
+        if wSource > 0xFF {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.trig_out[p].2 = wSource;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// How long a triggered output holds its value, ns (rounded up to whole ticks).
+#[no_mangle]
+pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        with_triggers(wCardIndex, |t| {
+            t.trig_period_ns = u64::from(dwPeriod);
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+fn lio_sources(t: &crate::machine::triggers::CardTriggers) -> u16 {
+    t.trig_out.iter().filter(|o| o.0).fold(0, |m, o| m | o.2)
+}
+
+/// Compare values waiting on the channels that trigger local outputs.
+///
+/// # Safety
+/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        super::out_ok(wCount)?;
+        let n = with_triggers(wCardIndex, |t| {
+            let src = lio_sources(t);
+            Ok((0..8)
+                .filter(|ch| src & (1 << ch) != 0)
+                .map(|ch| t.stock_count(ch))
+                .sum::<usize>())
+        })?;
+        // SAFETY: checked non-null; the caller passes a writable WORD.
+        unsafe { super::write_out(wCount, n.min(usize::from(WORD::MAX)) as WORD) };
+        Ok(c::NO_ERR)
+    })
+}
+
+/// Removes the compare values of the channels that trigger local outputs.
+#[no_mangle]
+pub extern "C" fn MCC_EraseLIOCompValue(wCardIndex: WORD) -> c_int {
+    guard(|| {
+        with_triggers(wCardIndex, |t| {
+            let src = lio_sources(t);
+            for ch in (0..8).filter(|ch| src & (1 << ch) != 0) {
+                t.stock[ch].clear();
+            }
+            Ok(c::NO_ERR)
+        })
     })
 }

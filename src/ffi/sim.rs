@@ -125,7 +125,14 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
         let shared = system::active()?;
         let cd = shared.card(cd)?;
         let v = match nOutput {
-            MCCL_SIM_OUT_SERVO => shared.servo_on[cd].load(Ordering::Acquire) >> ch.0 & 1 == 1,
+            MCCL_SIM_OUT_SERVO => {
+                // A trigger-out on the point overrides it while active (1 = servo off).
+                let trig = shared.machine.lock().triggers[cd].trig_level[ch.0];
+                match trig {
+                    Some(off) => !off,
+                    None => shared.servo_on[cd].load(Ordering::Acquire) >> ch.0 & 1 == 1,
+                }
+            }
             MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
             MCCL_SIM_OUT_LED => shared.machine.lock().settings[cd].leds >> ch.0 & 1 == 1,
             _ => return Err(McclError::Parameter),

@@ -6,6 +6,7 @@
 //! motor was at `MCC_InitSystem` (machine coordinates).
 
 pub mod compensation;
+pub mod triggers;
 
 use crate::config::{encoder_multiplier, AXES};
 use crate::vendor::consts as c;
@@ -392,6 +393,8 @@ pub struct Machine {
     pub emergency: Vec<bool>,
     /// Per-card settings.
     pub settings: Vec<CardSettings>,
+    /// Per-card encoder compare, latch, index, local-input and trigger-out state.
+    pub triggers: Vec<triggers::CardTriggers>,
 }
 
 impl Machine {
@@ -411,6 +414,7 @@ impl Machine {
                 .collect(),
             emergency: (0..n).map(emergency).collect(),
             settings: vec![CardSettings::default(); n],
+            triggers: vec![triggers::CardTriggers::default(); n],
         }
     }
 

@@ -1,0 +1,299 @@
+//! What the card's inputs trigger (user manual §2.7.4, §2.9.3, §2.10; examples manual
+//! §25–30, §39): encoder compare values (a stock per channel, fired one after the other
+//! when the count reaches each), 3-D compare, the index trigger and status, the encoder
+//! latch, local-input interrupts from the limit and home sensors, local outputs pulsed by
+//! a compare (trigger-out), and the closed-loop error thresholds.
+
+use super::{Channel, SensorLevels};
+use crate::config::AXES;
+use crate::engine::isr::Interrupt;
+use crate::vendor::consts as c;
+use std::collections::VecDeque;
+
+/// Most compare values a channel's stock holds (the manuals give no number).
+pub const MAX_COMPARE_STOCK: usize = 65_536;
+
+/// Latch sources (`ENC_TRIG_*`) the virtual card honours.
+pub const LATCH_SOURCES: u32 = 0x00FF_FFFF | c::ENC_TRIG_TMR;
+
+/// Per-card trigger settings and state.
+#[derive(Debug, Clone)]
+pub struct CardTriggers {
+    /// Pending compare values per channel; the front one is armed.
+    pub stock: [VecDeque<i64>; AXES],
+    /// Compare trigger (and its interrupt) enabled per channel.
+    pub comp_enabled: [bool; AXES],
+    /// Channels compared together (`MCC_Enable3DCompareChannel`; 0 or one bit: each
+    /// channel on its own).
+    pub compare_mask: u16,
+    /// Tolerance (counts) of the 3-D compare.
+    pub compare_tol: u16,
+    /// Index interrupt enabled per channel.
+    pub index_enabled: [bool; AXES],
+    /// An index pulse passed since the status was last read.
+    pub index_status: [bool; AXES],
+    /// `ENC_TRIG_FIRST` / `ENC_TRIG_LAST` per channel.
+    pub latch_type: [u16; AXES],
+    /// Latch source bits per channel.
+    pub latch_source: [u32; AXES],
+    /// The latched count per channel.
+    pub latch: [Option<i64>; AXES],
+    /// Local-input interrupt type per point (`LIO_LDI_*`: OTP 0..7, OTN 8..15, HOME 16..23).
+    pub lio_type: [u16; 24],
+    /// Local-input interrupt enabled per point.
+    pub lio_enabled: [bool; 24],
+    /// Trigger-out per local output point: enabled, value while active, source bits.
+    pub trig_out: [(bool, bool, u16); AXES],
+    /// How long a triggered output holds its value, ns.
+    pub trig_period_ns: u64,
+    /// Until when each triggered output holds (virtual ns).
+    pub trig_until: [Option<u128>; AXES],
+    /// Output levels driven by trigger-out (bit per point), `None` where not driven.
+    pub trig_level: [Option<bool>; AXES],
+    prev_count: [i64; AXES],
+    prev_over: [(bool, bool); AXES],
+}
+
+impl Default for CardTriggers {
+    fn default() -> Self {
+        CardTriggers {
+            stock: std::array::from_fn(|_| VecDeque::new()),
+            comp_enabled: [false; AXES],
+            compare_mask: 0,
+            compare_tol: 0,
+            index_enabled: [false; AXES],
+            index_status: [false; AXES],
+            latch_type: [c::ENC_TRIG_FIRST; AXES],
+            latch_source: [0; AXES],
+            latch: [None; AXES],
+            lio_type: [c::LIO_INT_RISE; 24],
+            lio_enabled: [false; 24],
+            trig_out: [(false, false, 0); AXES],
+            trig_period_ns: 0,
+            trig_until: [None; AXES],
+            trig_level: [None; AXES],
+            prev_count: [0; AXES],
+            prev_over: [(false, false); AXES],
+        }
+    }
+}
+
+/// Whether the count went from `a` to `b` through (or onto) `v`.
+fn reached(a: i64, b: i64, v: i64) -> bool {
+    (a < v && v <= b) || (a > v && v >= b) || (a == v && b == v)
+}
+
+fn edge(kind: u16, before: bool, now: bool) -> bool {
+    match kind {
+        c::LIO_INT_RISE => !before && now,
+        c::LIO_INT_FALL => before && !now,
+        c::LIO_INT_LEVEL => now,
+        _ => false,
+    }
+}
+
+/// What a tick of the triggers produced.
+#[derive(Debug, Default)]
+pub struct Fired {
+    /// Interrupt causes to raise on the card.
+    pub interrupts: Vec<Interrupt>,
+    /// Channels whose encoder compare fired (DAC triggers follow them).
+    pub compares: Vec<usize>,
+}
+
+impl CardTriggers {
+    /// The compare values of channel `ch` still waiting (the armed one included).
+    pub fn stock_count(&self, ch: usize) -> usize {
+        self.stock[ch].len()
+    }
+
+    /// Resets the reference counts (after the counts were set or the card reset).
+    pub fn rebase(&mut self, chans: &[Channel; AXES]) {
+        for (p, ch) in self.prev_count.iter_mut().zip(chans) {
+            *p = ch.encoder();
+        }
+    }
+
+    /// One tick: `chans` after their step, `thresholds` the closed-loop error bounds,
+    /// `now_ns` the virtual time at the end of the tick.
+    pub fn tick(
+        &mut self,
+        chans: &[Channel; AXES],
+        prev_levels: &[SensorLevels; AXES],
+        thresholds: &[(u16, u16); AXES],
+        now_ns: u128,
+    ) -> Fired {
+        let mut out = Fired::default();
+        let counts: [i64; AXES] = std::array::from_fn(|i| chans[i].encoder());
+        // Encoder compare: each channel on its own, or the 3-D set together.
+        let multi = self.compare_mask.count_ones() > 1;
+        if multi {
+            let set: Vec<usize> = (0..AXES)
+                .filter(|i| self.compare_mask & (1 << i) != 0)
+                .collect();
+            let tol = i64::from(self.compare_tol);
+            let all = set.iter().all(|&i| {
+                self.comp_enabled[i]
+                    && self.stock[i].front().is_some_and(|&v| {
+                        (counts[i] - v).abs() <= tol || reached(self.prev_count[i], counts[i], v)
+                    })
+            });
+            if all && !set.is_empty() {
+                for &i in &set {
+                    self.stock[i].pop_front();
+                    out.compares.push(i);
+                }
+            }
+        }
+        for i in 0..AXES {
+            if !multi || self.compare_mask & (1 << i) == 0 {
+                while self.comp_enabled[i] {
+                    match self.stock[i].front() {
+                        Some(&v) if reached(self.prev_count[i], counts[i], v) => {
+                            self.stock[i].pop_front();
+                            out.compares.push(i);
+                        }
+                        _ => break,
+                    }
+                }
+            }
+            let ch = &chans[i];
+            if ch.index_events > 0 {
+                self.index_status[i] = true;
+                if self.index_enabled[i] {
+                    out.interrupts.push(Interrupt::EncIndex(i as u8));
+                }
+            }
+            // Latch: sources are the index pulses, the limit switches and the timer.
+            let lv = ch.levels();
+            let p = prev_levels[i];
+            let src = self.latch_source[i];
+            let hit = (0..AXES).any(|n| {
+                let (now, before) = (chans[n].levels(), prev_levels[n]);
+                (src & (1 << n) != 0 && chans[n].index_events > 0)
+                    || (src & (0x100 << n) != 0 && now.plus && !before.plus)
+                    || (src & (0x10000 << n) != 0 && now.minus && !before.minus)
+            });
+            if hit && (self.latch_type[i] == c::ENC_TRIG_LAST || self.latch[i].is_none()) {
+                self.latch[i] = Some(counts[i]);
+            }
+            // Local-input interrupts from the sensors.
+            let pts = [
+                (i, p.plus, lv.plus, Interrupt::LioOtp(i as u8)),
+                (8 + i, p.minus, lv.minus, Interrupt::LioOtn(i as u8)),
+                (16 + i, p.home, lv.home, Interrupt::LioHome(i as u8)),
+            ];
+            for (pt, before, now, int) in pts {
+                if self.lio_enabled[pt] && edge(self.lio_type[pt], before, now) {
+                    out.interrupts.push(int);
+                }
+            }
+            // Closed-loop error beyond its thresholds (a threshold of 0 is off).
+            let (plus, minus) = thresholds[i];
+            let e = ch.error_count();
+            let over = (
+                plus > 0 && e > i64::from(plus),
+                minus > 0 && e < -i64::from(minus),
+            );
+            if over.0 && !self.prev_over[i].0 {
+                out.interrupts.push(Interrupt::PclOvp(i as u8));
+            }
+            if over.1 && !self.prev_over[i].1 {
+                out.interrupts.push(Interrupt::PclOvn(i as u8));
+            }
+            self.prev_over[i] = over;
+        }
+        for &i in &out.compares {
+            out.interrupts.push(Interrupt::EncComp(i as u8));
+            // Trigger-out: outputs whose source includes this compare hold their value.
+            for pt in 0..AXES {
+                let (en, val, src) = self.trig_out[pt];
+                if en && src & (1 << i) != 0 {
+                    self.trig_level[pt] = Some(val);
+                    self.trig_until[pt] = Some(now_ns + u128::from(self.trig_period_ns));
+                }
+            }
+        }
+        for pt in 0..AXES {
+            let retriggered = out
+                .compares
+                .iter()
+                .any(|&c| self.trig_out[pt].2 & (1 << c) != 0);
+            if self.trig_until[pt].is_some_and(|u| now_ns >= u) && !retriggered {
+                self.trig_until[pt] = None;
+                self.trig_level[pt] = None;
+            }
+        }
+        self.prev_count = counts;
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::{default_encoder_config, default_mac_param};
+    use crate::machine::ChannelSpec;
+
+    fn chans() -> [Channel; AXES] {
+        std::array::from_fn(|_| {
+            Channel::new(
+                ChannelSpec::default(),
+                default_mac_param(),
+                default_encoder_config(),
+            )
+        })
+    }
+
+    #[test]
+    fn compare_values_fire_in_turn() {
+        let mut ch = chans();
+        let mut t = CardTriggers::default();
+        t.stock[0].extend([100, 200, 300]);
+        t.comp_enabled[0] = true;
+        let lv = [SensorLevels::default(); AXES];
+        let th = [(0, 0); AXES];
+        ch[0].step(150, 0.001);
+        let f = t.tick(&ch, &lv, &th, 1);
+        assert_eq!(f.compares, vec![0], "150 passed 100");
+        ch[0].step(400, 0.001);
+        let f = t.tick(&ch, &lv, &th, 2);
+        assert_eq!(f.compares, vec![0, 0], "200 and 300 in one tick");
+        assert_eq!(t.stock_count(0), 0);
+        assert!(f.interrupts.contains(&Interrupt::EncComp(0)));
+    }
+
+    #[test]
+    fn trigger_out_holds_for_the_period() {
+        let mut ch = chans();
+        let mut t = CardTriggers::default();
+        t.stock[0].push_back(10);
+        t.comp_enabled[0] = true;
+        t.trig_out[1] = (true, true, 1);
+        t.trig_period_ns = 500_000_000;
+        let lv = [SensorLevels::default(); AXES];
+        let th = [(0, 0); AXES];
+        ch[0].step(20, 0.001);
+        t.tick(&ch, &lv, &th, 1_000_000);
+        assert_eq!(t.trig_level[1], Some(true));
+        t.tick(&ch, &lv, &th, 400_000_000);
+        assert_eq!(t.trig_level[1], Some(true));
+        t.tick(&ch, &lv, &th, 501_000_000);
+        assert_eq!(t.trig_level[1], None, "back after 0.5 s");
+    }
+
+    #[test]
+    fn lio_edges_and_pcl_thresholds() {
+        let ch = chans();
+        let mut t = CardTriggers::default();
+        t.lio_enabled[0] = true; // OTP0, rising by default
+        let th = [(0, 0); AXES];
+        let mut prev = [SensorLevels::default(); AXES];
+        prev[0].plus = true; // was active, is not: a falling edge
+        let f = t.tick(&ch, &prev, &th, 1);
+        assert!(f.interrupts.is_empty());
+        t.lio_type[0] = c::LIO_INT_FALL;
+        let f = t.tick(&ch, &prev, &th, 2);
+        assert_eq!(f.interrupts, vec![Interrupt::LioOtp(0)]);
+    }
+}
