@@ -232,6 +232,19 @@ impl Channel {
         ((self.actual + self.base) * self.multiplier() * self.gear_rate * dir).round() as i64
     }
 
+    /// The encoder count the motor would show at `pulses` (motor pulses since the counter
+    /// was last zeroed): what a latch captures at an index pulse.
+    pub fn count_at(&self, pulses: i64) -> i64 {
+        let dir = if (self.enc.wABSwap == 1) ^ (self.enc.wAInverse == 1) ^ (self.enc.wBInverse == 1)
+        {
+            -1.0
+        } else {
+            1.0
+        };
+        ((pulses as f64) * self.multiplier() * self.gear_rate * dir).round() as i64
+            + self.enc_offset
+    }
+
     /// The encoder count (`MCC_GetENCValue`).
     pub fn encoder(&self) -> i64 {
         self.raw_count() + self.enc_offset
@@ -342,7 +355,7 @@ impl Channel {
             Some(tau) if tau > 0.0 => target + (self.actual - target) * (-dt / tau).exp(),
             _ => target,
         };
-        self.count_index(before, self.actual);
+        self.count_index(before + self.base, self.actual + self.base);
         self.update_sensors();
         self.step_levels = self.levels;
     }
@@ -364,7 +377,7 @@ impl Channel {
             self.index_events = (a - b).abs().min(f64::from(u32::MAX)) as u32;
             // Moving up the last index passed is the highest, moving down the lowest.
             let last = if b > a { b } else { b + 1.0 };
-            self.last_index_count = Some((last * spacing + phase) as i64);
+            self.last_index_count = Some((last * spacing + phase - self.base) as i64);
         }
     }
 }

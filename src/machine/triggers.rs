@@ -168,14 +168,27 @@ impl CardTriggers {
             let lv = ch.levels();
             let p = prev_levels[i];
             let src = self.latch_source[i];
-            let hit = (0..AXES).any(|n| {
+            // An index pulse latches the count it happened at (exactly, as the card's
+            // hardware latch does); a limit switch the count at the end of the tick.
+            let mut latched = None;
+            for n in 0..AXES {
                 let (now, before) = (chans[n].levels(), prev_levels[n]);
-                (src & (1 << n) != 0 && chans[n].index_events > 0)
-                    || (src & (0x100 << n) != 0 && now.plus && !before.plus)
+                if src & (1 << n) != 0 && chans[n].index_events > 0 {
+                    latched = match chans[n].last_index_count {
+                        Some(at) if n == i => Some(ch.count_at(at)),
+                        _ => Some(counts[i]),
+                    };
+                }
+                if (src & (0x100 << n) != 0 && now.plus && !before.plus)
                     || (src & (0x10000 << n) != 0 && now.minus && !before.minus)
-            });
-            if hit && (self.latch_type[i] == c::ENC_TRIG_LAST || self.latch[i].is_none()) {
-                self.latch[i] = Some(counts[i]);
+                {
+                    latched = Some(counts[i]);
+                }
+            }
+            if let Some(v) = latched {
+                if self.latch_type[i] == c::ENC_TRIG_LAST || self.latch[i].is_none() {
+                    self.latch[i] = Some(v);
+                }
             }
             // Local-input interrupts from the sensors.
             let pts = [
