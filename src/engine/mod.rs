@@ -267,10 +267,12 @@ impl Shared {
         let mut trace = self.trace.lock();
         let mut machine = self.machine.lock();
         let dry = self.dry_run.load(Ordering::Relaxed);
-        let mut cmds: Vec<[Option<i64>; AXES]> = vec![[None; AXES]; self.cards];
-        for g in &self.groups {
+        let mut cmds = [[None::<i64>; AXES]; CARDS];
+        let mut own_checks = [false; GROUPS];
+        for (n, g) in self.groups.iter().enumerate() {
             let mut g = g.lock();
             g.tick(dt);
+            own_checks[n] = g.has_safety_checks();
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
                 for (i, ax) in g.axes.iter().enumerate() {
@@ -310,7 +312,7 @@ impl Shared {
                 }
             }
         }
-        self.safety(&machine, full, dt);
+        self.safety(&machine, full, dt, &own_checks);
         drop(machine);
         drop(trace);
         let dt_ns = u64::try_from(self.clock.period().as_nanos()).unwrap_or(u64::MAX);
@@ -321,9 +323,16 @@ impl Shared {
     /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
     /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
     /// group at once (its queue is dropped).
-    fn safety(&self, machine: &Machine, full: bool, dt: f64) {
+    fn safety(&self, machine: &Machine, full: bool, dt: f64, own_checks: &[bool; GROUPS]) {
         let limit_mode = self.limit_check.load(Ordering::Relaxed);
-        for g in &self.groups {
+        // Checks every moving group needs; otherwise only groups with checks of their own
+        // (tracking error, in-position) are looked at again.
+        let global =
+            limit_mode >= 0 || machine.emergency.iter().any(|&e| e) || machine.pulse_limits_set;
+        for (n, g) in self.groups.iter().enumerate() {
+            if !global && !own_checks[n] {
+                continue;
+            }
             let mut g = g.lock();
             if !g.busy() && !g.has_safety_checks() {
                 continue;

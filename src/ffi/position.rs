@@ -327,6 +327,13 @@ pub extern "C" fn MCC_SetErrorCountThreshold(
     })
 }
 
+fn pulse_limits_lowered(m: &crate::machine::Machine) -> bool {
+    m.cards
+        .iter()
+        .flatten()
+        .any(|c| c.max_speed < MAX_PULSE_LIMIT || c.max_acc < MAX_PULSE_LIMIT)
+}
+
 fn pulse_limits(v: [c_int; 8]) -> McclResult<[i32; 8]> {
     if v.iter().any(|&x| !(1..=MAX_PULSE_LIMIT).contains(&x)) {
         return Err(McclError::Parameter);
@@ -356,6 +363,7 @@ pub extern "C" fn MCC_SetMaxPulseSpeed(
             for (ch, x) in m.cards[cd].iter_mut().zip(v) {
                 ch.max_speed = x;
             }
+            m.pulse_limits_set = pulse_limits_lowered(m);
             Ok(c::NO_ERR)
         })
     })
@@ -414,6 +422,7 @@ pub extern "C" fn MCC_SetMaxPulseAcc(
             for (ch, x) in m.cards[cd].iter_mut().zip(v) {
                 ch.max_acc = x;
             }
+            m.pulse_limits_set = pulse_limits_lowered(m);
             Ok(c::NO_ERR)
         })
     })

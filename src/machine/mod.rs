@@ -356,7 +356,14 @@ impl Channel {
             _ => target,
         };
         self.count_index(before + self.base, self.actual + self.base);
-        self.update_sensors();
+        // Sensors only change with position if there are any (or one is forced).
+        if self.spec.home.is_some()
+            || self.spec.limit_plus.is_some()
+            || self.spec.limit_minus.is_some()
+            || self.forced.iter().any(Option::is_some)
+        {
+            self.update_sensors();
+        }
         self.step_levels = self.levels;
     }
 
@@ -368,16 +375,21 @@ impl Channel {
 
     fn count_index(&mut self, from: f64, to: f64) {
         self.index_events = 0;
+        if from == to {
+            return;
+        }
         // Index pulses in x4 counts of the motor position: one count per pulse.
-        let spacing = f64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
-        let phase = f64::from(self.spec.index_phase);
-        let k = |x: f64| ((x - phase) / spacing).floor();
+        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
+        let phase = i64::from(self.spec.index_phase);
+        // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
+        // between pulses rounds down to the pulse it has passed.
+        let k = |x: f64| (x.floor() as i64 - phase).div_euclid(spacing);
         let (a, b) = (k(from), k(to));
         if a != b {
-            self.index_events = (a - b).abs().min(f64::from(u32::MAX)) as u32;
+            self.index_events = u32::try_from((a - b).unsigned_abs()).unwrap_or(u32::MAX);
             // Moving up the last index passed is the highest, moving down the lowest.
-            let last = if b > a { b } else { b + 1.0 };
-            self.last_index_count = Some((last * spacing + phase - self.base) as i64);
+            let last = if b > a { b } else { b + 1 };
+            self.last_index_count = Some(last * spacing + phase - self.base as i64);
         }
     }
 }
@@ -408,6 +420,8 @@ pub struct Machine {
     pub settings: Vec<CardSettings>,
     /// Per-card encoder compare, latch, index, local-input and trigger-out state.
     pub triggers: Vec<triggers::CardTriggers>,
+    /// Some channel's pulse speed or acceleration limit is below the default.
+    pub pulse_limits_set: bool,
 }
 
 impl Machine {
@@ -428,6 +442,7 @@ impl Machine {
             emergency: (0..n).map(emergency).collect(),
             settings: vec![CardSettings::default(); n],
             triggers: vec![triggers::CardTriggers::default(); n],
+            pulse_limits_set: false,
         }
     }
 

@@ -114,6 +114,18 @@ impl CardTriggers {
         }
     }
 
+    /// Whether anything on the card is armed: compares, index or local-input interrupts,
+    /// latches, closed-loop thresholds or a trigger-out holding. A card with nothing armed
+    /// skips its tick (re-arming a compare rebases the counts).
+    fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
+        self.comp_enabled.iter().any(|&e| e)
+            || self.index_enabled.iter().any(|&e| e)
+            || self.lio_enabled.iter().any(|&e| e)
+            || self.latch_source.iter().any(|&s| s != 0)
+            || thresholds.iter().any(|&(p, m)| p > 0 || m > 0)
+            || self.trig_until.iter().any(Option::is_some)
+    }
+
     /// One tick: `chans` after their step, `thresholds` the closed-loop error bounds,
     /// `now_ns` the virtual time at the end of the tick.
     pub fn tick(
@@ -124,6 +136,14 @@ impl CardTriggers {
         now_ns: u128,
     ) -> Fired {
         let mut out = Fired::default();
+        for (i, ch) in chans.iter().enumerate() {
+            if ch.index_events > 0 {
+                self.index_status[i] = true;
+            }
+        }
+        if !self.armed(thresholds) {
+            return out;
+        }
         let counts: [i64; AXES] = std::array::from_fn(|i| chans[i].encoder());
         // Encoder compare: each channel on its own, or the 3-D set together.
         let multi = self.compare_mask.count_ones() > 1;
@@ -158,11 +178,8 @@ impl CardTriggers {
                 }
             }
             let ch = &chans[i];
-            if ch.index_events > 0 {
-                self.index_status[i] = true;
-                if self.index_enabled[i] {
-                    out.interrupts.push(Interrupt::EncIndex(i as u8));
-                }
+            if ch.index_events > 0 && self.index_enabled[i] {
+                out.interrupts.push(Interrupt::EncIndex(i as u8));
             }
             // Latch: sources are the index pulses, the limit switches and the timer.
             let lv = ch.levels();
