@@ -1199,6 +1199,8 @@ public static class MCCL
     public static extern int MCC_DisableWatchDogTimer(ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_RefreshWatchDogTimer")]
     public static extern int MCC_RefreshWatchDogTimer(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueLIOOutputValue")]
+    public static extern int MCC_QueueLIOOutputValue(ushort wBitMask, ushort wValue, ushort wGroupIndex = 0);
 
     // ---- Remote Input/Output Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIORoutine")]
@@ -1235,6 +1237,8 @@ public static class MCCL
     public static extern int MCC_EnableRIOTransTrigger(ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableRIOTransTrigger")]
     public static extern int MCC_DisableRIOTransTrigger(ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueRIOOutputValue")]
+    public static extern int MCC_QueueRIOOutputValue(ushort wBitMask, ushort wValue, ushort wSet, ushort wPort, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableARIOSlaveControl")]
     public static extern int MCC_EnableARIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableARIOSlaveControl")]
@@ -1253,6 +1257,8 @@ public static class MCCL
     public static extern int MCC_SetARIOOutputValue(ushort wValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetARIOOutputValue")]
     public static extern int MCC_GetARIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueARIOOutputValue")]
+    public static extern int MCC_QueueARIOOutputValue(ushort wBitMask, ushort wValue, ushort wSet, ushort wPort, ushort wGroupIndex = 0);
 
     // ---- D/A Converter Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACOutput")]

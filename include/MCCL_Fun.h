@@ -277,6 +277,7 @@ MCC_API int MCC_CALL MCC_SetWatchDogResetPeriod(DWORD dwValue, WORD wCardIndex M
 MCC_API int MCC_CALL MCC_EnableWatchDogTimer(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableWatchDogTimer(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_RefreshWatchDogTimer(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_QueueLIOOutputValue(WORD wBitMask, WORD wValue, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Remote Input/Output Control */
 MCC_API int MCC_CALL MCC_SetRIORoutine(RIOISR pfnRIORoutine, WORD wCardIndex MCC_DEFAULT(0));
@@ -296,6 +297,7 @@ MCC_API int MCC_CALL MCC_EnableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WO
 MCC_API int MCC_CALL MCC_DisableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_QueueRIOOutputValue(WORD wBitMask, WORD wValue, WORD wSet, WORD wPort, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetARIOTransStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
@@ -305,6 +307,7 @@ MCC_API int MCC_CALL MCC_GetARIOSlaveFail(DWORD *pdwStatus, WORD wSet, WORD wCar
 MCC_API int MCC_CALL MCC_GetARIOInputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetARIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetARIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_QueueARIOOutputValue(WORD wBitMask, WORD wValue, WORD wSet, WORD wPort, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* D/A Converter Control */
 MCC_API int MCC_CALL MCC_SetDACOutput(float fVoltage, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));

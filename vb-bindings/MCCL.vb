@@ -1365,6 +1365,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_RefreshWatchDogTimer")>
     Public Function MCC_RefreshWatchDogTimer(Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueLIOOutputValue")>
+    Public Function MCC_QueueLIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
 
     ' ---- Remote Input/Output Control ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIORoutine")>
@@ -1418,6 +1421,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableRIOTransTrigger")>
     Public Function MCC_DisableRIOTransTrigger(ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueRIOOutputValue")>
+    Public Function MCC_QueueRIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableARIOSlaveControl")>
     Public Function MCC_EnableARIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1444,6 +1450,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetARIOOutputValue")>
     Public Function MCC_GetARIOOutputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueARIOOutputValue")>
+    Public Function MCC_QueueARIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
 
     ' ---- D/A Converter Control ----

@@ -797,6 +797,7 @@ Public Declare Function MCC_SetWatchDogResetPeriod Lib "MCCLPCI_IMP.dll" (ByVal 
 Public Declare Function MCC_EnableWatchDogTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableWatchDogTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_RefreshWatchDogTimer Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_QueueLIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 
 ' ---- Remote Input/Output Control ----
 Public Declare Function MCC_SetRIORoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnRIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -816,6 +817,7 @@ Public Declare Function MCC_EnableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal w
 Public Declare Function MCC_DisableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_QueueRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetARIOTransStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -825,6 +827,7 @@ Public Declare Function MCC_GetARIOSlaveFail Lib "MCCLPCI_IMP.dll" (ByRef pdwSta
 Public Declare Function MCC_GetARIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_QueueARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 
 ' ---- D/A Converter Control ----
 Public Declare Function MCC_SetDACOutput Lib "MCCLPCI_IMP.dll" (ByVal fVoltage As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long

@@ -47,6 +47,33 @@ pub enum Plan {
     Blend(bool),
     /// Queued in-position switch for the axes in the mask.
     InPos(bool, u32),
+    /// Queued output change (`MCC_Queue*OutputValue`), made when the queue reaches it.
+    Output(Output),
+}
+
+/// An output a queued command sets: the bits of `mask` take those of `value`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    /// The card's local outputs (the servo-on points 0..7).
+    Local {
+        /// Bits to change.
+        mask: u16,
+        /// Their new values.
+        value: u16,
+    },
+    /// A remote output word: RIO set/port, or ARIO set/slave.
+    Remote {
+        /// ARIO rather than RIO.
+        ario: bool,
+        /// Set 0..1.
+        set: u16,
+        /// Port (RIO) or slave (ARIO).
+        port: u16,
+        /// Bits to change.
+        mask: u16,
+        /// Their new values.
+        value: u16,
+    },
 }
 
 /// One queued command.
@@ -75,7 +102,7 @@ impl Command {
             Plan::Path(m) => m.duration(),
             Plan::Ptp(p) => p.duration(),
             Plan::Delay(s) => *s,
-            Plan::Blend(_) | Plan::InPos(..) => 0.0,
+            Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => 0.0,
         }
     }
 
@@ -326,7 +353,9 @@ impl Ctx<'_> {
             Plan::Blend(true) => ctype::BLEND_ON,
             Plan::Blend(false) => ctype::BLEND_OFF,
             Plan::InPos(true, _) => ctype::INPOS_ON,
-            _ => ctype::INPOS_OFF,
+            Plan::InPos(false, _) => ctype::INPOS_OFF,
+            // Not one of the manual's types: an output change never runs as a command.
+            _ => -1,
         };
         Command {
             index: 0,

@@ -12,7 +12,7 @@
 //! consecutive commands keep exact timing. Whenever the last running command ends, the
 //! position becomes its exact planned end: nothing accumulates over millions of moves.
 
-use super::command::{AxisMech, Command, Ctx, Plan, Settings};
+use super::command::{AxisMech, Command, Ctx, Output, Plan, Settings};
 use super::snapshot::{round_pulses, GroupSnapshot, Info, Motion};
 use crate::config::{GroupDef, AXES};
 use crate::error::{McclError, McclResult};
@@ -151,6 +151,8 @@ pub struct GroupState {
     inpos_wait: Option<InPosWait>,
     /// `MCC_GetInPosStatus`: 0xFF per axis once in position, until the next command.
     inpos_status: [u8; AXES],
+    /// Output changes the queue reached this tick (the engine makes them).
+    outputs: Vec<Output>,
 }
 
 /// In-position settings of a group (user manual §2.7.2).
@@ -248,6 +250,7 @@ impl GroupState {
             inpos: InPosSettings::default(),
             inpos_wait: None,
             inpos_status: [0; AXES],
+            outputs: Vec::new(),
         }
     }
 
@@ -601,6 +604,11 @@ impl GroupState {
         self.inpos_wait.map_or(0, |w| w.mask)
     }
 
+    /// Output changes the queue reached since the last call.
+    pub fn take_outputs(&mut self) -> Vec<Output> {
+        std::mem::take(&mut self.outputs)
+    }
+
     /// `MCC_GetInPosStatus`.
     pub fn inpos_status(&self) -> [u8; AXES] {
         self.inpos_status
@@ -660,6 +668,10 @@ impl GroupState {
                     } else {
                         self.inpos_mask &= !mask;
                     }
+                    self.queue.pop_front();
+                }
+                Plan::Output(o) => {
+                    self.outputs.push(o);
                     self.queue.pop_front();
                 }
                 _ => return self.queue.pop_front(),
@@ -822,7 +834,7 @@ impl GroupState {
         self.queue
             .iter()
             .map(|c| &c.plan)
-            .find(|p| !matches!(p, Plan::Blend(_) | Plan::InPos(..)))
+            .find(|p| !matches!(p, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
     }
 
     fn finish_abort(&mut self) {

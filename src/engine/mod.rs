@@ -273,6 +273,10 @@ impl Shared {
             let mut g = g.lock();
             g.tick(dt);
             own_checks[n] = g.has_safety_checks();
+            let outputs = g.take_outputs();
+            if !outputs.is_empty() {
+                self.make_outputs(g.def.card.0, &outputs);
+            }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
                 for (i, ax) in g.axes.iter().enumerate() {
@@ -317,6 +321,45 @@ impl Shared {
         drop(trace);
         let dt_ns = u64::try_from(self.clock.period().as_nanos()).unwrap_or(u64::MAX);
         (full, self.tick_peripherals(dt_ns))
+    }
+
+    /// Output changes of queued `MCC_Queue*OutputValue` commands.
+    fn make_outputs(&self, card: usize, outputs: &[command::Output]) {
+        for o in outputs {
+            match *o {
+                command::Output::Local { mask, value } => {
+                    if let Some(s) = self.servo_on.get(card) {
+                        let (m, v) = (u32::from(mask & 0xFF), u32::from(value & 0xFF));
+                        let _ = s.fetch_update(Ordering::AcqRel, Ordering::Acquire, |old| {
+                            Some(old & !m | v & m)
+                        });
+                    }
+                }
+                command::Output::Remote {
+                    ario,
+                    set,
+                    port,
+                    mask,
+                    value,
+                } => {
+                    if let Some(p) = self.periph.get(card) {
+                        let mut p = p.lock();
+                        let sets = if ario { None } else { Some(&mut p.rio.rio) };
+                        let r = match sets {
+                            Some(rio) => rio.get_mut(usize::from(set)).map(|s| {
+                                let old = s.output(port).unwrap_or(0);
+                                s.set_output(port, old & !mask | value & mask)
+                            }),
+                            None => p.rio.ario.get_mut(usize::from(set)).map(|s| {
+                                let old = s.output(port).unwrap_or(0);
+                                s.set_output(port, old & !mask | value & mask)
+                            }),
+                        };
+                        let _ = r;
+                    }
+                }
+            }
+        }
     }
 
     /// The checks that need the machine: emergency stop (0xF102), hardware limit

@@ -393,3 +393,38 @@ fn in_position_waits_for_the_motor() {
     assert_eq!(x(), 10.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+#[test]
+fn queued_outputs_change_when_the_queue_reaches_them() {
+    let _g = setup();
+    use super::local_io::MCC_SetServoOn;
+    use super::rio::*;
+    assert_eq!(MCC_SetServoOn(0, 0), NO_ERR);
+    assert!(line_x(1.0) >= 0); // 100 ms
+                               // Servo 0 off, servo 2 on, after the line; remote port 1 of RIO set 0 bits 0..3 = 0x5.
+    assert!(super::trajectory::MCC_QueueLIOOutputValue(0x05, 0x04, 0) >= 0);
+    assert!(super::trajectory::MCC_QueueRIOOutputValue(0x000F, 0x0005, 0, 1, 0) >= 0);
+    assert_eq!(
+        super::trajectory::MCC_QueueRIOOutputValue(0xF, 5, 2, 1, 0),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        super::trajectory::MCC_QueueARIOOutputValue(0xF, 5, 0, 32, 0),
+        PARAMETER_ERR
+    );
+    let servo = |ch: u16| {
+        let mut v = -1;
+        // SAFETY: valid pointer.
+        unsafe { MCCL_SimGetOutput(0, ch, MCCL_SIM_OUT_SERVO, &mut v) };
+        v
+    };
+    run(50);
+    assert_eq!((servo(0), servo(2)), (1, 0), "not yet: the line runs");
+    run(60);
+    assert_eq!((servo(0), servo(2)), (0, 1), "after the line");
+    let mut w: WORD = 0;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_GetRIOOutputValue(&mut w, 0, 1, 0) }, NO_ERR);
+    assert_eq!(w, 0x0005);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}

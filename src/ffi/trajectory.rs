@@ -201,3 +201,78 @@ pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
         })
     })
 }
+
+fn queue_output(wGroupIndex: WORD, o: crate::engine::command::Output) -> c_int {
+    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Output(o)))))
+}
+
+/// Queues a change of the card's local outputs (points 0..7, the servo-on outputs): the
+/// bits of `wBitMask` take those of `wValue` when the queue reaches it. Returns the
+/// command index.
+#[no_mangle]
+pub extern "C" fn MCC_QueueLIOOutputValue(
+    wBitMask: WORD,
+    wValue: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    if wBitMask > 0xFF {
+        return c::PARAMETER_ERR;
+    }
+    queue_output(
+        wGroupIndex,
+        crate::engine::command::Output::Local {
+            mask: wBitMask,
+            value: wValue,
+        },
+    )
+}
+
+/// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
+/// `wBitMask` take those of `wValue` when the queue reaches it. Returns the command index.
+#[no_mangle]
+pub extern "C" fn MCC_QueueRIOOutputValue(
+    wBitMask: WORD,
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    if wSet > 1 || wPort > 3 {
+        return c::PARAMETER_ERR;
+    }
+    queue_output(
+        wGroupIndex,
+        crate::engine::command::Output::Remote {
+            ario: false,
+            set: wSet,
+            port: wPort,
+            mask: wBitMask,
+            value: wValue,
+        },
+    )
+}
+
+/// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
+/// Returns the command index.
+#[no_mangle]
+pub extern "C" fn MCC_QueueARIOOutputValue(
+    wBitMask: WORD,
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    if wSet > 1 || wPort > 31 {
+        return c::PARAMETER_ERR;
+    }
+    queue_output(
+        wGroupIndex,
+        crate::engine::command::Output::Remote {
+            ario: true,
+            set: wSet,
+            port: wPort,
+            mask: wBitMask,
+            value: wValue,
+        },
+    )
+}
