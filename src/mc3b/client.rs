@@ -42,6 +42,27 @@ pub trait Transport {
     fn discard_input(&mut self) -> io::Result<()> {
         Ok(())
     }
+    /// The device's time: for a real line the monotonic clock (since the first call in
+    /// the process), for an in-process emulator its own clock.
+    fn now(&self) -> Duration {
+        monotonic()
+    }
+    /// Let `d` pass on the device side: a real line sleeps, an in-process emulator
+    /// advances its clock.
+    fn idle(&mut self, d: Duration) {
+        std::thread::sleep(d);
+    }
+    /// Whether the device runs in real time (a serial line); `false` for an in-process
+    /// emulator whose time only moves in [`Transport::idle`] and [`Transport::recv`].
+    fn is_realtime(&self) -> bool {
+        true
+    }
+}
+
+/// Time since the first call in this process (a monotonic clock).
+pub fn monotonic() -> Duration {
+    static EPOCH: once_cell::sync::Lazy<Instant> = once_cell::sync::Lazy::new(Instant::now);
+    EPOCH.elapsed()
 }
 
 fn serial_send(port: &mut dyn SerialPort, data: &[u8]) -> io::Result<()> {
@@ -101,6 +122,15 @@ impl Transport for Box<dyn Transport + Send> {
     fn discard_input(&mut self) -> io::Result<()> {
         self.as_mut().discard_input()
     }
+    fn now(&self) -> Duration {
+        self.as_ref().now()
+    }
+    fn idle(&mut self, d: Duration) {
+        self.as_mut().idle(d)
+    }
+    fn is_realtime(&self) -> bool {
+        self.as_ref().is_realtime()
+    }
 }
 
 /// Open a serial device at 19200 8N1 without flow control.
@@ -158,6 +188,15 @@ impl Transport for EmulatorLink {
     fn discard_input(&mut self) -> io::Result<()> {
         self.rx.clear();
         Ok(())
+    }
+    fn now(&self) -> Duration {
+        self.emulator.now()
+    }
+    fn idle(&mut self, d: Duration) {
+        self.emulator.advance(d);
+    }
+    fn is_realtime(&self) -> bool {
+        false
     }
 }
 
@@ -245,7 +284,9 @@ impl<T: Transport> Client<T> {
         let _ = self.port.discard_input();
         self.port.send(&encode(cmd))?;
         let id = cmd.id();
-        let deadline = Instant::now() + self.timeout;
+        // The transport's clock: real time on a serial line, the emulator's own time on
+        // an in-process link (so a timeout there costs no real time).
+        let deadline = self.port.now() + self.timeout;
         let mut buf = [0u8; 256];
         loop {
             while let Some(item) = self.parser.next_response() {
@@ -258,7 +299,7 @@ impl<T: Transport> Client<T> {
                     _ => {}
                 }
             }
-            let now = Instant::now();
+            let now = self.port.now();
             if now >= deadline {
                 return Err(ClientError::Timeout);
             }
