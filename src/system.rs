@@ -31,6 +31,8 @@ pub struct Running {
     pub simulation: bool,
     /// The simulated machine's configuration (`MCCL_SIM`).
     pub sim: crate::sim::config::SimConfig,
+    /// The MC3B devices behind cards with an `mc3b_port` (closed after the engine).
+    pub mc3b: Vec<crate::mc3b::backend::Device>,
 }
 
 /// Configuration plus the running card.
@@ -129,6 +131,18 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         eprintln!("MCCL: MCC_InitSystem failed: {msg}");
         McclError::NotInitialized
     })?;
+    // Cards whose channels 0..2 are an MC3B (never under MCC_InitSimulation): a real
+    // device moves in real time, so the realtime clock runs.
+    let mc3b = match kind {
+        InitKind::System => crate::mc3b::backend::open_devices(&sim, cards.len(), &groups)?,
+        InitKind::Simulation => Vec::new(),
+    };
+    let mode = if mc3b.is_empty() || mode == ClockMode::Realtime {
+        mode
+    } else {
+        eprintln!("MCCL: an MC3B card runs in real time: MCCL_CLOCK is ignored");
+        ClockMode::Realtime
+    };
     let machine = crate::machine::Machine::new(
         &sys.config.mac,
         &sys.config.encoder,
@@ -156,6 +170,7 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
             }
         }
     }
+    crate::mc3b::backend::attach(engine.shared(), &mc3b);
     *ACTIVE.write() = Some(engine.shared().clone());
     sys.running = Some(Running {
         engine,
@@ -166,8 +181,18 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         groups,
         simulation: kind == InitKind::Simulation,
         sim,
+        mc3b,
     });
     Ok(())
+}
+
+/// Whether the running system drives an MC3B (a card with `mc3b_port`).
+pub fn has_mc3b() -> bool {
+    SYSTEM
+        .lock()
+        .running
+        .as_ref()
+        .is_some_and(|r| !r.mc3b.is_empty())
 }
 
 /// `MCC_CloseSystem`: stops the engine and joins its thread (`INITIAL_MOTION_ERR` when

@@ -21,6 +21,9 @@ use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
 
+mod external;
+pub use external::External;
+
 /// Error record of software over-travel, + axis (DECISIONS.md).
 pub const ERR_OVER_TRAVEL: i32 = 0xF301;
 
@@ -153,6 +156,8 @@ pub struct GroupState {
     inpos_status: [u8; AXES],
     /// Output changes the queue reached this tick (the engine makes them).
     outputs: Vec<Output>,
+    /// Set when the group's channels are an MC3B: its commands run there (`external`).
+    external: Option<External>,
 }
 
 /// In-position settings of a group (user manual §2.7.2).
@@ -251,6 +256,7 @@ impl GroupState {
             inpos_wait: None,
             inpos_status: [0; AXES],
             outputs: Vec::new(),
+            external: None,
         }
     }
 
@@ -275,7 +281,9 @@ impl GroupState {
 
     /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).
     pub fn reset(&mut self, axes: [AxisMech; AXES]) {
+        let external = self.external.take();
         *self = GroupState::new(self.index, self.def, axes);
+        self.keep_external(external);
     }
 
     /// The planning context: settings, axes and the end of the queue.
@@ -323,6 +331,7 @@ impl GroupState {
     /// Queues a command; returns its index. `ABORT_NOT_FINISH_ERR` while an abort is
     /// still decelerating, `COMMAND_BUFFER_FULL_ERR` when the queue is full.
     pub fn enqueue(&mut self, mut cmd: Command) -> McclResult<i32> {
+        self.check_external(&cmd)?;
         if self.mode == Mode::Aborting {
             return Err(McclError::AbortNotFinished);
         }
@@ -364,6 +373,10 @@ impl GroupState {
         if !self.busy() || self.mode != Mode::Normal {
             return Err(McclError::HoldIllegal);
         }
+        // An MC3B cannot pause a synchronous move and resume it: only at a job's end.
+        if self.external.is_some() && !at_block_end {
+            return Err(McclError::NotAccepted);
+        }
         if at_block_end {
             self.mode = Mode::HoldAtBlockEnd;
         } else {
@@ -394,6 +407,8 @@ impl GroupState {
     /// once when 0, or when already held: then the deceleration is ignored, §2.6.2 IV).
     /// With `at_block_end`, the running command finishes and the queue is dropped.
     pub fn abort(&mut self, dec_s: f64, at_block_end: bool) {
+        // The MC3B stops at once (`S`); it has no controlled stop.
+        let dec_s = if self.external.is_some() { 0.0 } else { dec_s };
         self.queue.clear();
         self.pending_override = None;
         if at_block_end {
@@ -412,6 +427,7 @@ impl GroupState {
     }
 
     fn stop_here(&mut self) {
+        self.stop_external();
         self.inpos_wait = None;
         self.running.clear();
         self.queue.clear();
@@ -441,6 +457,10 @@ impl GroupState {
     /// motion ramps to it through the override ratio (v / its feed).
     pub fn change_feed_speed(&mut self, v: f64) {
         self.settings.feed = v;
+        if self.external.is_some() {
+            // A running MC3B job keeps its speed: later commands get the new feed.
+            return;
+        }
         let running_feed = self.running.back().and_then(|r| match r.cmd.plan {
             Plan::Path(_) => Some(r.cmd.info_feed),
             _ => None,
@@ -700,6 +720,9 @@ impl GroupState {
 
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
+        if self.external.is_some() {
+            return self.tick_external(dt);
+        }
         let before = self.pos;
         let dtau = self.advance_rate(dt);
         let delay_dt = if self.mode == Mode::Held { 0.0 } else { dt };
@@ -872,7 +895,8 @@ impl GroupState {
     fn update_status(&mut self) {
         let active = !self.running.is_empty()
             || !self.queue.is_empty()
-            || self.inpos_wait.is_some_and(|w| w.blocks());
+            || self.inpos_wait.is_some_and(|w| w.blocks())
+            || self.external_active();
         self.status = if !active && self.mode != Mode::Aborting {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
                 self.mode = Mode::Normal;

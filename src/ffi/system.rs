@@ -379,11 +379,16 @@ pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
     })
 }
 
-/// Turns dry run on: trajectories are planned and reported, nothing moves.
+/// Turns dry run on: trajectories are planned and reported, nothing moves
+/// (`COMMAND_NOTACCEPTED_ERR` when a card is an MC3B: its motion is the device's).
 #[no_mangle]
 pub extern "C" fn MCC_EnableDryRun() -> c_int {
     guard(|| {
-        system::active()?.dry_run.store(true, Ordering::Release);
+        let shared = system::active()?;
+        if system::has_mc3b() {
+            return Err(crate::error::McclError::NotAccepted);
+        }
+        shared.dry_run.store(true, Ordering::Release);
         Ok(c::NO_ERR)
     })
 }

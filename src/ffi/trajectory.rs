@@ -80,10 +80,19 @@ pub extern "C" fn MCC_RunSingleBlock(wGroupIndex: WORD) -> c_int {
     guard(|| with_group(wGroupIndex, |g| g.run_single_block()).map(|()| c::NO_ERR))
 }
 
-/// Blending on, effective at once (not through the queue).
+/// Blending on, effective at once (not through the queue); `COMMAND_NOTACCEPTED_ERR` on
+/// an MC3B group (its moves start and end at rest).
 #[no_mangle]
 pub extern "C" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.set_blend_now(true)))
+    guard(|| {
+        with_group(wGroupIndex, |g| {
+            if g.is_external() {
+                return Err(McclError::NotAccepted);
+            }
+            g.set_blend_now(true);
+            Ok(c::NO_ERR)
+        })
+    })
 }
 
 /// Blending off, effective at once.
@@ -148,12 +157,17 @@ pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
 }
 
 /// [`MCC_OverrideSpeed`]; with `bInstant` FALSE the new rate applies from the next
-/// command instead of the running one.
+/// command instead of the running one. On an MC3B group the rate applies from the next
+/// job; an instant change while a job runs is `COMMAND_NOTACCEPTED_ERR` (the MC3B
+/// cannot change the speed of a synchronous move).
 #[no_mangle]
 pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: WORD) -> f64 {
     guard(|| {
         let r = override_rate(dfRate)?;
         with_group(wGroupIndex, |g| {
+            if bInstant != 0 && g.external_busy() {
+                return Err(McclError::NotAccepted);
+            }
             g.override_speed(r, bInstant != 0);
             Ok(r)
         })

@@ -1,0 +1,553 @@
+//! The backend's conversions and its worker over the in-process emulator (the
+//! emulator's clock only moves when the worker waits, so every test is deterministic).
+
+use super::*;
+use crate::mc3b::client::EmulatorLink;
+use std::io;
+
+/// An in-process MC3B that records every frame sent, can go silent after a number of
+/// frames (a pulled cable), and can ask for a stop of a job at its n-th status query.
+pub(crate) struct Rec {
+    /// The device.
+    pub link: EmulatorLink,
+    /// Frames sent, without their CR.
+    pub sent: Vec<String>,
+    /// After this many frames, nothing reaches the device and nothing comes back.
+    pub mute_after: Option<usize>,
+    /// `(n, link, id)`: at the n-th `Q`, ask for a stop of job `id`.
+    pub stop_at_query: Option<(usize, Arc<Link>, u64)>,
+    queries: usize,
+}
+
+impl Rec {
+    pub(crate) fn new() -> Rec {
+        Rec {
+            link: EmulatorLink::new(),
+            sent: Vec::new(),
+            mute_after: None,
+            stop_at_query: None,
+            queries: 0,
+        }
+    }
+
+    /// Frames sent that start with `<id><letter>`.
+    pub(crate) fn count(&self, prefix: &str) -> usize {
+        self.sent.iter().filter(|s| s.starts_with(prefix)).count()
+    }
+
+    /// Step counters of the emulated device.
+    pub(crate) fn pos(&self) -> [i64; MOTORS] {
+        std::array::from_fn(|m| self.link.emulator.position(m))
+    }
+}
+
+impl Transport for Rec {
+    fn send(&mut self, data: &[u8]) -> io::Result<()> {
+        let line = String::from_utf8_lossy(data).trim_end().to_string();
+        let muted = self.mute_after.is_some_and(|n| self.sent.len() >= n);
+        if line.starts_with("0Q") {
+            self.queries += 1;
+            if let Some((n, link, id)) = &self.stop_at_query {
+                if self.queries == *n {
+                    link.request_stop(*id);
+                }
+            }
+        }
+        self.sent.push(line);
+        if muted {
+            return Ok(());
+        }
+        self.link.send(data)
+    }
+    fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        self.link.recv(buf, timeout)
+    }
+    fn discard_input(&mut self) -> io::Result<()> {
+        self.link.discard_input()
+    }
+    fn now(&self) -> Duration {
+        self.link.now()
+    }
+    fn idle(&mut self, d: Duration) {
+        self.link.idle(d)
+    }
+    fn is_realtime(&self) -> bool {
+        false
+    }
+}
+
+pub(crate) fn worker() -> (Arc<Link>, Worker<Rec>) {
+    match connect(Rec::new(), Duration::from_millis(100)) {
+        Ok(x) => x,
+        Err(e) => panic!("connect: {e}"),
+    }
+}
+
+#[test]
+fn speeds_are_whole_and_within_the_mc3b_ranges() {
+    assert_eq!(clamp_velocity(0.2), 1);
+    assert_eq!(clamp_velocity(1234.4), 1234);
+    assert_eq!(clamp_velocity(1234.5), 1235);
+    assert_eq!(clamp_velocity(7000.0), 5000);
+    assert_eq!(clamp_velocity(f64::NAN), 1);
+    assert_eq!(clamp_accel(5.0), 100);
+    assert_eq!(clamp_accel(2.0e6), 100_000);
+    // 2000 steps/s reached in 0.3 s: 6667 steps/s².
+    let s = speeds_for(
+        2000.0,
+        Ramp::Times {
+            acc_s: 0.3,
+            dec_s: 0.0,
+        },
+    );
+    assert_eq!(
+        s,
+        Speeds {
+            velocity: 2000,
+            acceleration: 6667,
+            deceleration: 100_000
+        }
+    );
+    assert_eq!(speeds_for(10.0, Ramp::Fastest).acceleration, 100_000);
+}
+
+#[test]
+fn a_square_runs_every_side_at_its_feed() {
+    // 10 UU sides at 100 steps/UU, feed 20 UU/s: 1000 steps in 0.5 s.
+    let segs = [
+        Seg {
+            steps: [1000, 0, 0],
+            secs: 0.5,
+        },
+        Seg {
+            steps: [0, 1000, 0],
+            secs: 0.5,
+        },
+        Seg {
+            steps: [-1000, 0, 0],
+            secs: 0.5,
+        },
+        Seg {
+            steps: [0, -1000, 0],
+            secs: 0.5,
+        },
+    ];
+    let s = sync_speeds(
+        &segs,
+        Ramp::Times {
+            acc_s: 0.1,
+            dec_s: 0.1,
+        },
+        1.0,
+    );
+    for sm in &s[..2] {
+        assert_eq!(
+            sm.map(|x| (x.velocity, x.acceleration)),
+            Some((2000, 20_000))
+        );
+    }
+    assert_eq!(s[2], None, "motor 2 does not move");
+    // Override 50 %.
+    let s = sync_speeds(&segs, Ramp::Fastest, 0.5);
+    assert_eq!(s[0].map(|x| x.velocity), Some(1000));
+}
+
+/// Cruise time of a synchronous move on the MC3B: the slowest motor at its maximum
+/// velocity (§4.16).
+fn device_secs(seg: &Seg, sp: &[Option<Speeds>; MOTORS]) -> f64 {
+    (0..MOTORS)
+        .filter(|&m| seg.steps[m] != 0)
+        .map(|m| {
+            let v = sp[m].map_or(1.0, |s| f64::from(s.velocity));
+            seg.steps[m].unsigned_abs() as f64 / v
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn chained_moves_never_run_faster_than_their_feed() {
+    // A circle of 64 chords: every chord at most at the feed, none below 1/√2 of it.
+    let n = 64;
+    let r = 2000.0;
+    let segs: Vec<Seg> = (0..n)
+        .map(|j| {
+            let a0 = std::f64::consts::TAU * j as f64 / n as f64;
+            let a1 = std::f64::consts::TAU * (j + 1) as f64 / n as f64;
+            let d = [r * (a1.cos() - a0.cos()), r * (a1.sin() - a0.sin())];
+            let len = (d[0] * d[0] + d[1] * d[1]).sqrt();
+            Seg {
+                steps: [d[0].round() as i64, d[1].round() as i64, 0],
+                secs: len / 2000.0,
+            }
+        })
+        .collect();
+    let sp = sync_speeds(&segs, Ramp::Fastest, 1.0);
+    let mut ratios: Vec<f64> = segs.iter().map(|s| s.secs / device_secs(s, &sp)).collect();
+    ratios.sort_by(f64::total_cmp);
+    let (lo, hi) = (ratios[0], ratios[ratios.len() - 1]);
+    assert!(hi <= 1.0 + 2e-3, "fastest chord at {hi} of its feed");
+    assert!(
+        lo >= std::f64::consts::FRAC_1_SQRT_2 - 2e-3,
+        "slowest at {lo}"
+    );
+    let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
+    println!("circle chords run at {lo:.3}..{hi:.3} of the feed, mean {mean:.3}");
+}
+
+/// Largest distance from the circle of `r` around the origin to the polyline through
+/// `pts` (sampled finely along every chord).
+fn max_deviation(pts: &[(f64, f64)], r: f64) -> f64 {
+    let mut worst = 0.0f64;
+    for w in pts.windows(2) {
+        let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+        for k in 0..=200 {
+            let t = f64::from(k) / 200.0;
+            let (x, y) = (x0 + (x1 - x0) * t, y0 + (y1 - y0) * t);
+            worst = worst.max(((x * x + y * y).sqrt() - r).abs());
+        }
+    }
+    worst
+}
+
+#[test]
+fn arcs_become_chords_within_the_tolerance() {
+    for &(r, tol) in &[(5.0, 0.01), (100.0, 0.001), (0.3, 0.01), (1.0, 2.0)] {
+        let start = [r, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let path = match Path::circle(crate::planner::Plane::XY, &start, [0.0, 0.0], true, None) {
+            Ok(p) => p,
+            Err(e) => panic!("circle: {e}"),
+        };
+        let pts = chord_points(&path, tol);
+        let n = chord_count(r, std::f64::consts::TAU, tol);
+        assert_eq!(pts.len(), n);
+        assert!(sagitta(r, std::f64::consts::TAU, n) <= tol + 1e-12);
+        assert!(n >= 4, "no chord spans more than 90 degrees");
+        assert_eq!(
+            pts.last().copied(),
+            Some(path.end()),
+            "ends exactly at the end"
+        );
+        let mut poly = vec![(start[0], start[1])];
+        poly.extend(pts.iter().map(|p| (p[0], p[1])));
+        let dev = max_deviation(&poly, r);
+        assert!(dev <= tol * 1.0001, "r {r}: deviation {dev} > {tol}");
+        // One chord fewer would break the tolerance (the count is the smallest).
+        if n > 4 {
+            assert!(sagitta(r, std::f64::consts::TAU, n - 1) > tol);
+        }
+    }
+}
+
+#[test]
+fn chord_endpoints_rounded_to_steps_stay_within_tolerance_plus_half_a_step() {
+    // Radius 5 UU at 100 steps/UU, tolerance 1 step (0.01 UU): the chord ends rounded
+    // to whole steps leave the polyline within 1 + √2/2 steps of the true circle.
+    let (r, k) = (5.0, 100.0);
+    let tol = CHORD_TOLERANCE_STEPS / k;
+    let start = [r, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+    let path = match Path::circle(crate::planner::Plane::XY, &start, [0.0, 0.0], true, None) {
+        Ok(p) => p,
+        Err(e) => panic!("circle: {e}"),
+    };
+    let pts = chord_points(&path, tol);
+    let mut poly = vec![(r * k, 0.0)];
+    poly.extend(pts.iter().map(|p| ((p[0] * k).round(), (p[1] * k).round())));
+    let dev = max_deviation(&poly, r * k);
+    println!(
+        "circle r=5 UU, 100 steps/UU: {} chords, sagitta {:.3} steps, with rounding {dev:.3} steps",
+        pts.len(),
+        sagitta(r, std::f64::consts::TAU, pts.len()) * k
+    );
+    assert!(dev <= 1.0 + std::f64::consts::FRAC_1_SQRT_2, "{dev}");
+}
+
+#[test]
+fn a_single_move_is_a_plain_synchronous_move() {
+    let (link, mut w) = worker();
+    link.post(
+        7,
+        Job::Sync {
+            segs: vec![[1000, -500, 0]],
+            speeds: [
+                Some(speeds_for(
+                    2000.0,
+                    Ramp::Times {
+                        acc_s: 0.05,
+                        dec_s: 0.05,
+                    },
+                )),
+                Some(speeds_for(
+                    1000.0,
+                    Ramp::Times {
+                        acc_s: 0.05,
+                        dec_s: 0.05,
+                    },
+                )),
+                None,
+            ],
+        },
+    );
+    assert!(w.run_pending());
+    assert!(!w.run_pending(), "one job only");
+    let r = link.take_report(7);
+    assert_eq!(
+        r,
+        Some(Report {
+            id: 7,
+            outcome: Outcome::Done,
+            position: [1000, -500, 0]
+        })
+    );
+    let t = w.transport();
+    assert_eq!(t.pos(), [1000, -500, 0]);
+    // 0I, 0P, then V/A/D of motors 0 and 1, the move, status queries.
+    assert_eq!(&t.sent[..2], ["0I", "0P"]);
+    assert!(t.sent.contains(&"0V0,2000".to_string()));
+    assert!(t.sent.contains(&"0A0,40000".to_string()));
+    assert_eq!(
+        t.count("0V1"),
+        0,
+        "1000 steps/s is motor 1's setting already (0I)"
+    );
+    assert!(t.sent.contains(&"0D1,20000".to_string()));
+    assert_eq!(t.count("0Y"), 1);
+    assert!(t.sent.contains(&"0Y1000,0,500,1,0,0".to_string()));
+    assert!(t.count("0Q") >= 2, "polled until idle");
+    // The same settings again are not sent again.
+    let before = t.sent.len();
+    link.post(
+        8,
+        Job::Sync {
+            segs: vec![[-1000, 500, 0]],
+            speeds: [
+                Some(speeds_for(
+                    2000.0,
+                    Ramp::Times {
+                        acc_s: 0.05,
+                        dec_s: 0.05,
+                    },
+                )),
+                Some(speeds_for(
+                    1000.0,
+                    Ramp::Times {
+                        acc_s: 0.05,
+                        dec_s: 0.05,
+                    },
+                )),
+                None,
+            ],
+        },
+    );
+    assert!(w.run_pending());
+    let t = w.transport();
+    assert!(t.sent[before..].iter().all(|s| !s.starts_with("0V")));
+    assert_eq!(t.pos(), [0, 0, 0]);
+}
+
+#[test]
+fn several_moves_are_one_chain() {
+    let (link, mut w) = worker();
+    let segs = vec![[100, 0, 0], [0, 100, 0], [-100, 0, 0], [0, -100, 7]];
+    link.post(
+        1,
+        Job::Sync {
+            segs,
+            speeds: [Some(speeds_for(5000.0, Ramp::Fastest)); MOTORS],
+        },
+    );
+    assert!(w.run_pending());
+    assert_eq!(link.take_report(1).map(|r| r.outcome), Some(Outcome::Done));
+    let t = w.transport();
+    let ys: Vec<&String> = t.sent.iter().filter(|s| s.starts_with("0Y")).collect();
+    assert_eq!(
+        ys,
+        [
+            "0Y100,0,0,0,0,0,0",
+            "0Y0,0,100,0,0,0,0",
+            "0Y100,1,0,0,0,0,0",
+            "0Y0,0,100,1,7,0,1"
+        ]
+    );
+    assert_eq!(t.pos(), [0, 0, 7]);
+}
+
+#[test]
+fn a_point_to_point_job_moves_each_motor_on_its_own() {
+    let (link, mut w) = worker();
+    link.post(
+        1,
+        Job::Independent {
+            steps: [300, 0, -40],
+            speeds: [
+                Some(speeds_for(3000.0, Ramp::Fastest)),
+                None,
+                Some(speeds_for(100.0, Ramp::Fastest)),
+            ],
+        },
+    );
+    assert!(w.run_pending());
+    let r = link.take_report(1);
+    assert_eq!(
+        r.map(|r| (r.outcome, r.position)),
+        Some((Outcome::Done, [300, 0, -40]))
+    );
+    let t = w.transport();
+    assert!(t.sent.contains(&"0M0,300,0".to_string()));
+    assert!(t.sent.contains(&"0M2,40,1".to_string()));
+    assert_eq!(t.count("0M1"), 0);
+    assert_eq!(t.pos(), [300, 0, -40]);
+}
+
+#[test]
+fn a_stop_during_the_move_reports_the_models_estimate() {
+    let (link, mut w) = worker();
+    // 5000 steps at 1000 steps/s: still running at the 20th status query (~200 ms).
+    w.transport().stop_at_query = Some((20, link.clone(), 3));
+    link.post(
+        3,
+        Job::Sync {
+            segs: vec![[5000, 2500, 0]],
+            speeds: [
+                Some(speeds_for(1000.0, Ramp::Fastest)),
+                Some(speeds_for(500.0, Ramp::Fastest)),
+                None,
+            ],
+        },
+    );
+    assert!(w.run_pending());
+    let Some(r) = link.take_report(3) else {
+        panic!("no report")
+    };
+    assert_eq!(r.outcome, Outcome::Stopped);
+    let dev = w.transport().pos();
+    assert!(dev[0] > 0 && dev[0] < 5000, "stopped on the way: {dev:?}");
+    // Over the in-process device the model runs in lockstep: the estimate is exact.
+    assert_eq!(r.position, dev);
+    assert_eq!(w.steps(), dev);
+    assert!(w.transport().sent.contains(&"0S0".to_string()));
+}
+
+#[test]
+fn a_stop_before_the_start_moves_nothing() {
+    let (link, mut w) = worker();
+    link.post(
+        4,
+        Job::Sync {
+            segs: vec![[10, 0, 0], [10, 0, 0]],
+            speeds: [Some(speeds_for(100.0, Ramp::Fastest)), None, None],
+        },
+    );
+    link.request_stop(4);
+    assert!(w.run_pending());
+    let r = link.take_report(4);
+    assert_eq!(
+        r.map(|r| (r.outcome, r.position)),
+        Some((Outcome::Stopped, [0; 3]))
+    );
+    assert_eq!(w.transport().count("0Y"), 0);
+}
+
+#[test]
+fn silence_is_a_link_fault_and_the_estimate_is_reported() {
+    let (link, mut w) = worker();
+    // 0I, 0P, V, A, D, Y reach the device; then the cable is pulled.
+    let n = w.transport().sent.len() + 4;
+    w.transport().mute_after = Some(n);
+    link.post(
+        5,
+        Job::Sync {
+            segs: vec![[2000, 0, 0]],
+            speeds: [
+                Some(speeds_for(
+                    2000.0,
+                    Ramp::Times {
+                        acc_s: 0.1,
+                        dec_s: 0.1,
+                    },
+                )),
+                None,
+                None,
+            ],
+        },
+    );
+    assert!(w.run_pending());
+    let Some(r) = link.take_report(5) else {
+        panic!("no report")
+    };
+    assert_eq!(r.outcome, Outcome::Failed(Fault::Link));
+    assert_eq!(Fault::Link.record(), ERR_MC3B_LINK);
+    // The move had started: the estimate is where the model thinks the motor is.
+    assert!(r.position[0] > 0, "{:?}", r.position);
+}
+
+#[test]
+fn a_refused_command_is_a_device_fault() {
+    let (link, mut w) = worker();
+    // Something else keeps motor 0 busy: its V answers E1.
+    let _ = w.transport().link.emulator.handle(&Command::Move {
+        id: 0,
+        motor: 0,
+        steps: 100_000,
+        direction: 0,
+    });
+    link.post(
+        6,
+        Job::Sync {
+            segs: vec![[10, 0, 0]],
+            speeds: [Some(speeds_for(1234.0, Ramp::Fastest)), None, None],
+        },
+    );
+    assert!(w.run_pending());
+    let r = link.take_report(6);
+    assert_eq!(r.map(|r| r.outcome), Some(Outcome::Failed(Fault::Device)));
+    assert_eq!(Fault::Device.record(), ERR_MC3B_DEVICE);
+}
+
+#[test]
+fn a_device_that_is_not_an_mc3b_is_refused() {
+    struct Other;
+    impl Transport for Other {
+        fn send(&mut self, _: &[u8]) -> io::Result<()> {
+            Ok(())
+        }
+        fn recv(&mut self, _: &mut [u8], _: Duration) -> io::Result<usize> {
+            Ok(0)
+        }
+        fn now(&self) -> Duration {
+            Duration::from_secs(1000)
+        }
+    }
+    // Silent: the greeting times out (with a clock that never moves the deadline is
+    // reached at once).
+    let e = connect(Other, Duration::ZERO).err();
+    assert!(e.is_some_and(|m| m.contains("0I")));
+}
+
+#[test]
+fn a_device_thread_runs_jobs_and_stops_at_drop() {
+    let dev = match Device::start(0, Box::new(EmulatorLink::new()), Duration::from_millis(50)) {
+        Ok(d) => d,
+        Err(e) => panic!("{e}"),
+    };
+    let link = dev.link();
+    link.post(
+        1,
+        Job::Sync {
+            segs: vec![[50, 0, 0]],
+            speeds: [Some(speeds_for(5000.0, Ramp::Fastest)), None, None],
+        },
+    );
+    // The in-process device needs no real time: the thread answers quickly, but it is
+    // a thread; wait for it with a generous bound.
+    let t0 = std::time::Instant::now();
+    let r = loop {
+        if let Some(r) = link.take_report(1) {
+            break r;
+        }
+        assert!(t0.elapsed() < Duration::from_secs(10), "no report in 10 s");
+        std::thread::sleep(Duration::from_millis(1));
+    };
+    assert_eq!((r.outcome, r.position), (Outcome::Done, [50, 0, 0]));
+    assert_eq!(dev.card(), 0);
+    drop(dev);
+}
