@@ -158,14 +158,14 @@ pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
 
 /// [`MCC_OverrideSpeed`]; with `bInstant` FALSE the new rate applies from the next
 /// command instead of the running one. On an MC3B group the rate applies from the next
-/// job; an instant change while a job runs is `COMMAND_NOTACCEPTED_ERR` (the MC3B
-/// cannot change the speed of a synchronous move).
+/// job; an instant change while the group moves or has commands queued is
+/// `COMMAND_NOTACCEPTED_ERR` (the MC3B cannot change the speed of a running move).
 #[no_mangle]
 pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: WORD) -> f64 {
     guard(|| {
         let r = override_rate(dfRate)?;
         with_group(wGroupIndex, |g| {
-            if bInstant != 0 && g.external_busy() {
+            if bInstant != 0 && g.is_external() && g.busy() {
                 return Err(McclError::NotAccepted);
             }
             g.override_speed(r, bInstant != 0);

@@ -516,8 +516,7 @@ impl<T: Transport> Worker<T> {
     /// Runs jobs until the link shuts down.
     pub fn run(mut self) {
         while let Some((id, job)) = self.link.next_job(true) {
-            let r = self.execute(id, &job);
-            self.link.report(r);
+            self.run_one(id, &job);
         }
     }
 
@@ -526,12 +525,23 @@ impl<T: Transport> Worker<T> {
     pub fn run_pending(&mut self) -> bool {
         match self.link.next_job(false) {
             Some((id, job)) => {
-                let r = self.execute(id, &job);
-                self.link.report(r);
+                self.run_one(id, &job);
                 true
             }
             None => false,
         }
+    }
+
+    /// Runs a job and reports it; a panic inside still reports (a failure), so the
+    /// group never waits for a report that cannot come.
+    fn run_one(&mut self, id: u64, job: &Job) {
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.execute(id, job)))
+            .unwrap_or(Report {
+                id,
+                outcome: Outcome::Failed(Fault::Device),
+                position: self.steps,
+            });
+        self.link.report(r);
     }
 
     /// The transport (tests look at the emulator behind it).
@@ -817,12 +827,7 @@ impl Drop for Device {
 /// Reply timeout of the backend: `MCL_TIMEOUT_MS` (a positive integer of ms, as for the
 /// `mcl_*` library) or 500 ms.
 pub fn reply_timeout() -> Duration {
-    std::env::var("MCL_TIMEOUT_MS")
-        .ok()
-        .and_then(|v| v.trim().parse::<u64>().ok())
-        .filter(|&ms| ms > 0)
-        .map(Duration::from_millis)
-        .unwrap_or(super::client::DEFAULT_TIMEOUT)
+    super::client::timeout_from_env()
 }
 
 /// Opens the MC3B of every card of `sim` (among the first `cards`) that names an

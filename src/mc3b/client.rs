@@ -133,6 +133,18 @@ impl Transport for Box<dyn Transport + Send> {
     }
 }
 
+/// Reply timeout from the environment: `MCL_TIMEOUT_MS` milliseconds if it holds a
+/// positive integer, else [`DEFAULT_TIMEOUT`] (used by the `mcl_*` library and the
+/// backend alike).
+pub fn timeout_from_env() -> Duration {
+    std::env::var("MCL_TIMEOUT_MS")
+        .ok()
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .filter(|&ms| ms > 0)
+        .map(Duration::from_millis)
+        .unwrap_or(DEFAULT_TIMEOUT)
+}
+
 /// Open a serial device at 19200 8N1 without flow control.
 pub fn open_port(path: &str, timeout: Duration) -> Result<TTYPort, serialport::Error> {
     let builder = serialport::new(path, BAUD_RATE)

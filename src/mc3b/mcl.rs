@@ -47,7 +47,7 @@ use std::time::Duration;
 use once_cell::sync::Lazy;
 use parking_lot::Mutex;
 
-use super::client::{open_port, Client, ClientError, Transport, DEFAULT_TIMEOUT};
+use super::client::{open_port, Client, ClientError, Transport};
 use super::codec::{Command, ErrorCode};
 
 /// Status: the call completed.
@@ -93,12 +93,7 @@ pub fn com_port_path(com_port: c_int) -> Option<String> {
 }
 
 fn reply_timeout() -> Duration {
-    std::env::var("MCL_TIMEOUT_MS")
-        .ok()
-        .and_then(|v| v.trim().parse::<u64>().ok())
-        .filter(|&ms| ms > 0)
-        .map(Duration::from_millis)
-        .unwrap_or(DEFAULT_TIMEOUT)
+    super::client::timeout_from_env()
 }
 
 fn status_of(e: &ClientError) -> c_int {
