@@ -1,0 +1,317 @@
+// mc3b_backend.cpp: MCC_* motion on a card whose channels 0..2 are an MC3B (`mc3b_port`
+// in MCCL_SIM), against the mc3b-emu emulator on a real pseudo-terminal.
+//
+//   mc3b_backend <path to mc3b-emu>
+//
+// The same program (an XY square, a line, a circle, a half circle, a point-to-point move)
+// runs twice: first on the plain virtual card (fast clock), recording MCC_GetPulsePos
+// after each step; then on the MC3B, where after each step the emulator's own step
+// counters ("pos" on its control channel) must equal what the virtual card put out:
+// every command ends exactly on its rounded end point (the last chord of an arc ends on
+// the arc's end), so the tolerance at command ends is 0 steps. MCC_GetPulsePos and
+// MCC_GetCurPos on the MC3B card must report those same confirmed steps.
+//
+// Then what is MC3B-specific: refused functions and their codes, MCC_JogConti stopped by
+// MCC_AbortMotion (the position is then an estimate; the error against the emulator's
+// counter is printed and bounded), and the emulator quitting mid-program (the group stops
+// with error record 0xF901). The emulator runs in real time: every wait is bounded and
+// says what it waited for.
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "MCCL.h"
+#include "MCCL_Fun.h"
+#include "MCCL_Sim.h"
+#include "check.h"
+
+static const double K = 100.0;              // pulses (= MC3B steps) per UU
+static const int ERR_MC3B_LINK = 0xF901;    // README "MC3B": no reply / line failed
+
+struct Emu {
+    pid_t pid = -1;
+    FILE *ctl = nullptr;   // its stdin: control commands
+    FILE *out = nullptr;   // its stdout: the device path, then one reply per command
+    std::string path;
+};
+
+static bool spawn(const char *exe, Emu &e)
+{
+    int in[2], out[2];
+    if (pipe(in) != 0 || pipe(out) != 0)
+        return false;
+    pid_t pid = fork();
+    if (pid < 0)
+        return false;
+    if (pid == 0) {
+        dup2(in[0], 0);
+        dup2(out[1], 1);
+        close(in[1]);
+        close(out[0]);
+        execl(exe, exe, (char *)nullptr);
+        _exit(127);
+    }
+    close(in[0]);
+    close(out[1]);
+    e.pid = pid;
+    e.ctl = fdopen(in[1], "w");
+    e.out = fdopen(out[0], "r");
+    char line[256];
+    if (!e.ctl || !e.out || !fgets(line, sizeof line, e.out))
+        return false;
+    line[strcspn(line, "\r\n")] = 0;
+    e.path = line;
+    return e.path.rfind("/dev/", 0) == 0;
+}
+
+static std::string ctl(Emu &e, const char *cmd)
+{
+    char line[256] = {0};
+    fprintf(e.ctl, "%s\n", cmd);
+    fflush(e.ctl);
+    if (!fgets(line, sizeof line, e.out))
+        return "";
+    line[strcspn(line, "\r\n")] = 0;
+    return line;
+}
+
+static bool emu_pos(Emu &e, long p[3])
+{
+    std::string r = ctl(e, "pos");
+    return sscanf(r.c_str(), "pos %ld %ld %ld", &p[0], &p[1], &p[2]) == 3;
+}
+
+static void reap(Emu &e)
+{
+    if (e.ctl) {
+        fclose(e.ctl);   // end of file on its stdin: the emulator exits
+        e.ctl = nullptr;
+    }
+    if (e.out) {
+        fclose(e.out);
+        e.out = nullptr;
+    }
+    if (e.pid > 0) {
+        int st;
+        for (int i = 0; i < 200 && waitpid(e.pid, &st, WNOHANG) == 0; i++)
+            usleep(10000);
+        if (waitpid(e.pid, &st, WNOHANG) == 0) {
+            kill(e.pid, SIGKILL);
+            waitpid(e.pid, &st, 0);
+        }
+        e.pid = -1;
+    }
+}
+
+static double now_s()
+{
+    using namespace std::chrono;
+    return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+// Waits for GMS_STOP, at most `limit` seconds of real time; returns the time it took.
+static double wait_stop(WORD g, double limit, const char *what)
+{
+    double t0 = now_s();
+    while (MCC_GetMotionStatus(g) != GMS_STOP) {
+        if (now_s() - t0 > limit) {
+            fprintf(stderr, "mc3b_backend: %s did not stop within %.0f s (status %d)\n", what,
+                    limit, MCC_GetMotionStatus(g));
+            CHECK(!"motion stopped in time");
+            return -1;
+        }
+        MCC_TimeDelay(5);
+    }
+    return now_s() - t0;
+}
+
+static void set_params()
+{
+    SYS_MAC_PARAM p;
+    memset(&p, 0, sizeof p);
+    p.dwPPR = 100;   // 100 pulses per UU: one pulse = one MC3B (half) step
+    p.wRPM = 3000;   // PtP 100 % = 50 UU/s = 5000 steps/s, the MC3B's top speed
+    p.dfPitch = 1.0;
+    p.dfGearRatio = 1.0;
+    p.dfHighLimit = 50000.0;
+    p.dfLowLimit = -50000.0;
+    p.wPulseMode = DDA_FMT_PD;
+    p.wCommandMode = OCM_PULSE;
+    p.wOverTravelUpSensorMode = SL_UNUSED;
+    p.wOverTravelDownSensorMode = SL_UNUSED;
+    for (WORD ch = 0; ch < MAX_AXIS_NUM; ch++)
+        CHECK_EQ(MCC_SetMacParam(&p, ch, 0), NO_ERR);
+    CHECK_EQ(MCC_CloseAllGroups(), NO_ERR);
+    // X, Y, Z on the MC3B's motors 0..2, U on channel 3 (which the MC3B does not have).
+    CHECK_EQ(MCC_CreateGroup(0, 1, 2, 3, -1, -1, -1, -1, 0), 0);
+}
+
+static int init()
+{
+    SYS_CARD_CONFIG card[MAX_CARD_NUM];
+    memset(card, 0, sizeof card);
+    card[0].wCardType = IMP_III_8_AXIS_PCI_CARD;
+    return MCC_InitSystem(1, card, 1);
+}
+
+struct Pulses {
+    long p[3];
+};
+
+static Pulses pulses(WORD g)
+{
+    long a[8] = {0};
+    CHECK_EQ(MCC_GetPulsePos(&a[0], &a[1], &a[2], &a[3], &a[4], &a[5], &a[6], &a[7], g), NO_ERR);
+    Pulses r = {{a[0], a[1], a[2]}};
+    return r;
+}
+
+static const char *STEP_NAMES[] = {"square (4 chained lines)", "line to (3.33, 7.77)",
+                                   "circle about (8.33, 7.77)", "half circle to (13.33, 7.77)",
+                                   "PtP to (0, 0)"};
+
+// The motion program; after each step `at(step)` looks at where the axes are.
+template <class F> static void program(WORD g, F at)
+{
+    CHECK(MCC_SetFeedSpeed(20, g) == 20.0);   // 2000 steps/s
+    CHECK_EQ(MCC_SetAccTime(20, g), NO_ERR);
+    CHECK_EQ(MCC_SetDecTime(20, g), NO_ERR);
+    CHECK(MCC_SetPtPSpeed(20, g) == 20.0);    // 10 UU/s = 1000 steps/s
+    CHECK_EQ(MCC_Line(10, 0, 0, 0, 0, 0, 0, 0, g), 0);
+    CHECK_EQ(MCC_Line(10, 10, 0, 0, 0, 0, 0, 0, g), 1);
+    CHECK_EQ(MCC_Line(0, 10, 0, 0, 0, 0, 0, 0, g), 2);
+    CHECK_EQ(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, g), 3);
+    at(0);
+    CHECK(MCC_Line(3.33, 7.77, 0, 0, 0, 0, 0, 0, g) >= 0);
+    at(1);
+    CHECK(MCC_CircleXY(8.33, 7.77, CIR_CCW, g) >= 0);
+    at(2);
+    CHECK(MCC_ArcXY(8.33, 12.77, 13.33, 7.77, g) >= 0);
+    at(3);
+    CHECK(MCC_PtP(0, 0, 0, 0, 0, 0, 0, 0, g) >= 0);
+    at(4);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: mc3b_backend <mc3b-emu>\n");
+        return 2;
+    }
+    signal(SIGPIPE, SIG_IGN);
+    Emu emu;
+    if (!spawn(argv[1], emu)) {
+        fprintf(stderr, "mc3b_backend: cannot start %s\n", argv[1]);
+        return 1;
+    }
+    printf("mc3b-emu on %s\n", emu.path.c_str());
+
+    char simfile[] = "/tmp/mc3b_backend_XXXXXX";
+    int fd = mkstemp(simfile);
+    CHECK(fd >= 0);
+    std::string toml = "[[card]]\nindex = 0\nmc3b_port = \"" + emu.path + "\"\n";
+    CHECK(write(fd, toml.data(), toml.size()) == (ssize_t)toml.size());
+    close(fd);
+    char badfile[] = "/tmp/mc3b_backend_bad_XXXXXX";
+    fd = mkstemp(badfile);
+    const char *bad = "[[card]]\nindex = 0\nmc3b_port = \"/nonexistent/ttyMC3B\"\n";
+    CHECK(write(fd, bad, strlen(bad)) == (ssize_t)strlen(bad));
+    close(fd);
+
+    set_params();
+
+    // 1. The virtual card: where it puts the axes after each step.
+    std::vector<Pulses> want;
+    std::vector<double> vtime;   // virtual ms each step took (to 5 ms)
+    unsetenv("MCCL_SIM");
+    setenv("MCCL_CLOCK", "fast", 1);
+    CHECK_EQ(init(), NO_ERR);
+    double t_prev = 0;
+    program(0, [&](int step) {
+        wait_stop(0, 60, STEP_NAMES[step]);
+        want.push_back(pulses(0));
+        double t_ms = 0;
+        CHECK_EQ(MCCL_SimGetTime(&t_ms), NO_ERR);
+        vtime.push_back(t_ms - t_prev);
+        t_prev = t_ms;
+    });
+    CHECK_EQ(MCC_CloseSystem(), NO_ERR);
+    CHECK_EQ((long)want.size(), 5L);
+
+    // 2. A port that does not open: MCC_InitSystem fails (message on stderr).
+    setenv("MCCL_SIM", badfile, 1);
+    CHECK_EQ(init(), INITIAL_MOTION_ERR);
+
+    // 3. The MC3B.
+    setenv("MCCL_SIM", simfile, 1);
+    setenv("MCCL_CLOCK", "realtime", 1);
+    CHECK_EQ(init(), NO_ERR);
+    double total = 0;
+    program(0, [&](int step) {
+        double t = wait_stop(0, 60, STEP_NAMES[step]);
+        total += t;
+        long dev[3] = {0, 0, 0};
+        CHECK(emu_pos(emu, dev));
+        Pulses got = pulses(0);
+        const Pulses &w = want[step];
+        printf("%-30s virtual card %5.2f s %5ld %5ld %5ld | MC3B %5.2f s %5ld %5ld %5ld, reported %5ld %5ld %5ld\n",
+               STEP_NAMES[step], vtime[step] / 1000.0, w.p[0], w.p[1], w.p[2], t, dev[0], dev[1],
+               dev[2], got.p[0], got.p[1], got.p[2]);
+        for (int i = 0; i < 3; i++) {
+            CHECK_EQ(dev[i], w.p[i]);      // the device is where the virtual card put the axis
+            CHECK_EQ(got.p[i], dev[i]);    // and reports the steps it confirmed
+        }
+        CHECK_EQ(MCC_GetErrorCode(0), 0);
+    });
+    printf("the program took %.2f s on the MC3B\n", total);
+    double x, y, z, u, v, w, a, b;
+    CHECK_EQ(MCC_GetCurPos(&x, &y, &z, &u, &v, &w, &a, &b, 0), NO_ERR);
+    CHECK_NEAR(x, 0.0, 0.5 / K);
+    CHECK_NEAR(y, 0.0, 0.5 / K);
+
+    // What the MC3B cannot do is refused, and nothing is queued.
+    CHECK_EQ(MCC_EnableBlend(0), COMMAND_NOTACCEPTED_ERR);
+    CHECK_EQ(MCC_EnableDryRun(), COMMAND_NOTACCEPTED_ERR);
+    CHECK_EQ(MCC_Line(0, 0, 0, 5, 0, 0, 0, 0, 0), PARAMETER_ERR);   // U: channel 3
+    CHECK(MCC_Line(30, 0, 0, 0, 0, 0, 0, 0, 0) >= 0);
+    CHECK_EQ(MCC_HoldMotion(0, 0), COMMAND_NOTACCEPTED_ERR);       // no pause mid-move
+    CHECK(MCC_OverrideSpeed(50, 0) == (double)COMMAND_NOTACCEPTED_ERR);
+    wait_stop(0, 60, "line to (30, 0)");
+    long dev[3];
+    CHECK(emu_pos(emu, dev));
+    CHECK_EQ(dev[0], 3000);
+
+    // JogConti: runs until MCC_AbortMotion stops it (S); the position is then estimated.
+    CHECK(MCC_JogConti(-1, 20, 'X', 0) >= 0);   // 10 UU/s = 1000 steps/s
+    MCC_TimeDelay(400);
+    CHECK_EQ(MCC_GetMotionStatus(0), GMS_RUNNING);
+    CHECK_EQ(MCC_AbortMotion(0), NO_ERR);
+    wait_stop(0, 10, "the aborted jog");
+    CHECK(emu_pos(emu, dev));
+    Pulses est = pulses(0);
+    long err = est.p[0] - dev[0];
+    printf("JogConti stopped after ~0.4 s: MC3B at %ld steps, estimate %ld (error %ld steps)\n",
+           dev[0], est.p[0], err);
+    CHECK(dev[0] < 3000 - 200 && dev[0] > 3000 - 600);
+    CHECK(labs(err) <= 25);
+    CHECK_EQ(MCC_GetErrorCode(0), 0);
+
+    // The emulator goes away: the next move fails and the group records 0xF901.
+    CHECK(ctl(emu, "quit") == "ok");
+    reap(emu);
+    CHECK(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, 0) >= 0);
+    double t = wait_stop(0, 10, "the move to a dead MC3B");
+    printf("dead MC3B: group stopped after %.2f s with error 0x%X\n", t, MCC_GetErrorCode(0));
+    CHECK_EQ(MCC_GetErrorCode(0), ERR_MC3B_LINK);
+    CHECK_EQ(MCC_CloseSystem(), NO_ERR);
+
+    unlink(simfile);
+    unlink(badfile);
+    return check_done("mc3b_backend");
+}
