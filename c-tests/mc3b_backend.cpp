@@ -11,11 +11,12 @@
 // the arc's end), so the tolerance at command ends is 0 steps. MCC_GetPulsePos and
 // MCC_GetCurPos on the MC3B card must report those same confirmed steps.
 //
-// Then what is MC3B-specific: refused functions and their codes, MCC_JogConti stopped by
-// MCC_AbortMotion (the position is then an estimate; the error against the emulator's
-// counter is printed and bounded), and the emulator quitting mid-program (the group stops
-// with error record 0xF901). The emulator runs in real time: every wait is bounded and
-// says what it waited for.
+// Then what is MC3B-specific: two groups on one MC3B (GROUP_PARAMETER_ERR),
+// MCC_InitSimulation (never opens the port), refused functions and their codes,
+// MCC_JogConti stopped by MCC_AbortMotion (the position is then an estimate; the error
+// against the emulator's counter is printed and bounded), and the emulator quitting
+// mid-program (the group stops with error record 0xF901). The emulator runs in real time:
+// every wait is bounded and says what it waited for.
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -248,9 +249,22 @@ int main(int argc, char **argv)
     setenv("MCCL_SIM", badfile, 1);
     CHECK_EQ(init(), INITIAL_MOTION_ERR);
 
-    // 3. The MC3B.
+    // MCC_InitSimulation never uses the hardware: the unopenable port is not touched.
+    SYS_CARD_CONFIG sim_card[MAX_CARD_NUM];
+    memset(sim_card, 0, sizeof sim_card);
+    sim_card[0].wCardType = IMP_III_8_AXIS_PCI_CARD;
+    CHECK_EQ(MCC_InitSimulation(1, sim_card, 1), NO_ERR);
+    CHECK_EQ(MCC_EnableDryRun(), NO_ERR);
+    CHECK_EQ(MCC_CloseSystem(), NO_ERR);
+
+    // 3. The MC3B. Two groups on its channels 0..2 cannot share it.
     setenv("MCCL_SIM", simfile, 1);
     setenv("MCCL_CLOCK", "realtime", 1);
+    CHECK_EQ(MCC_CloseAllGroups(), NO_ERR);
+    CHECK_EQ(MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 0), 0);
+    CHECK_EQ(MCC_CreateGroup(1, -1, -1, -1, -1, -1, -1, -1, 0), 1);
+    CHECK_EQ(init(), GROUP_PARAMETER_ERR);
+    set_params();
     CHECK_EQ(init(), NO_ERR);
     double total = 0;
     program(0, [&](int step) {
