@@ -951,6 +951,12 @@ public static class MCCL
     public static extern int MCC_SetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetHomeConfig")]
     public static extern int MCC_GetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Home")]
+    public static extern int MCC_Home(int nOrder0, int nOrder1, int nOrder2, int nOrder3, int nOrder4, int nOrder5, int nOrder6, int nOrder7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetGoHomeStatus")]
+    public static extern int MCC_GetGoHomeStatus();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_AbortGoHome")]
+    public static extern int MCC_AbortGoHome();
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetHomeSensorStatus")]
     public static extern int MCC_GetHomeSensorStatus(ref ushort pwStatus, ushort wChannel, ushort wCardIndex = 0);
 

@@ -185,6 +185,9 @@ MCC_API int MCC_CALL MCC_ClearError(WORD wGroupIndex MCC_DEFAULT(0));
 /* Go Home */
 MCC_API int MCC_CALL MCC_SetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_Home(int nOrder0, int nOrder1, int nOrder2, int nOrder3, int nOrder4, int nOrder5, int nOrder6, int nOrder7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetGoHomeStatus(void);
+MCC_API int MCC_CALL MCC_AbortGoHome(void);
 MCC_API int MCC_CALL MCC_GetHomeSensorStatus(WORD *pwStatus, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 
 /* Position Control */

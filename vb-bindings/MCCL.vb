@@ -1039,6 +1039,15 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetHomeConfig")>
     Public Function MCC_GetHomeConfig(ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Home")>
+    Public Function MCC_Home(ByVal nOrder0 As Integer, ByVal nOrder1 As Integer, ByVal nOrder2 As Integer, ByVal nOrder3 As Integer, ByVal nOrder4 As Integer, ByVal nOrder5 As Integer, ByVal nOrder6 As Integer, ByVal nOrder7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetGoHomeStatus")>
+    Public Function MCC_GetGoHomeStatus() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_AbortGoHome")>
+    Public Function MCC_AbortGoHome() As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetHomeSensorStatus")>
     Public Function MCC_GetHomeSensorStatus(ByRef pwStatus As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function

@@ -705,6 +705,9 @@ Public Declare Function MCC_ClearError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGr
 ' ---- Go Home ----
 Public Declare Function MCC_SetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_Home Lib "MCCLPCI_IMP.dll" (ByVal nOrder0 As Long, ByVal nOrder1 As Long, ByVal nOrder2 As Long, ByVal nOrder3 As Long, ByVal nOrder4 As Long, ByVal nOrder5 As Long, ByVal nOrder6 As Long, ByVal nOrder7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetGoHomeStatus Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_AbortGoHome Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_GetHomeSensorStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- Position Control ----
