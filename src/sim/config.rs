@@ -1341,6 +1341,19 @@ index = 11
     }
 
     #[test]
+    fn home_contact() {
+        let ok = "[[card]]\nindex = 0\n[[card.channel]]\nindex = 1\nhome_contact = \"nc\"\n";
+        let cfg = SimConfig::parse(ok, "t.toml").expect("nc parses");
+        assert!(cfg.channel(0, 1).home_nc && !cfg.channel(0, 0).home_nc);
+        let text = ok.replace("\"nc\"", "\"closed\"");
+        assert_msg(
+            &err(&text),
+            5,
+            &["card[0].channel[1].home_contact", "\"no\"", "\"closed\""],
+        );
+    }
+
+    #[test]
     fn empty_mc3b_port() {
         let text = "[[card]]\nindex = 0\nmc3b_port = \"\"\n";
         assert_msg(&err(text), 3, &["card[0].mc3b_port", "serial port"]);
