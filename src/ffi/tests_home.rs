@@ -186,13 +186,70 @@ const CASE1: [(u16, i64); 14] = [
     (16, -2999),
 ];
 
-#[test]
-fn every_mode_case_1() {
-    let _g = fresh();
-    for (mode, want) in CASE1 {
-        let (end, _) = home_one(MACHINE, cfg(mode));
-        assert_eq!(end, want, "mode {mode}");
+/// The machines of the three cases: the sensor ahead (Case 1), around the start (Case 2),
+/// behind the start (Case 3).
+fn machine(case: u8) -> String {
+    match case {
+        2 => MACHINE.replace("[-3.0, -2.0]", "[-1.0, 1.0]"),
+        3 => MACHINE.replace("[-3.0, -2.0]", "[1.0, 2.0]"),
+        _ => MACHINE.to_owned(),
     }
+}
+
+/// One test per mode and case: homes channel 0 in `mode` on the machine of `case` and
+/// compares the motor's final position with the table.
+fn mode_case(mode: u16, case: u8, table: &[(u16, i64)]) {
+    let _g = fresh();
+    let want = table.iter().find(|(m, _)| *m == mode).map(|e| e.1);
+    assert_eq!(
+        Some(home_one(&machine(case), cfg(mode)).0),
+        want,
+        "mode {mode}, case {case}"
+    );
+}
+
+macro_rules! mode_case_tests {
+    ($($name:ident: $mode:expr, $case:expr, $table:expr;)*) => {$(
+        #[test]
+        fn $name() {
+            mode_case($mode, $case, &$table);
+        }
+    )*};
+}
+
+mode_case_tests! {
+    mode_3_case_1: 3, 1, CASE1;
+    mode_4_case_1: 4, 1, CASE1;
+    mode_5_case_1: 5, 1, CASE1;
+    mode_6_case_1: 6, 1, CASE1;
+    mode_7_case_1: 7, 1, CASE1;
+    mode_8_case_1: 8, 1, CASE1;
+    mode_9: 9, 1, CASE1;
+    mode_10: 10, 1, CASE1;
+    mode_11: 11, 1, CASE1;
+    mode_12_case_1: 12, 1, CASE1;
+    mode_13_case_1: 13, 1, CASE1;
+    mode_14_case_1: 14, 1, CASE1;
+    mode_15: 15, 1, CASE1;
+    mode_16: 16, 1, CASE1;
+    mode_3_case_2: 3, 2, CASE2;
+    mode_4_case_2: 4, 2, CASE2;
+    mode_5_case_2: 5, 2, CASE2;
+    mode_6_case_2: 6, 2, CASE2;
+    mode_7_case_2: 7, 2, CASE2;
+    mode_8_case_2: 8, 2, CASE2;
+    mode_12_case_2: 12, 2, CASE2;
+    mode_13_case_2: 13, 2, CASE2;
+    mode_14_case_2: 14, 2, CASE2;
+    mode_3_case_3: 3, 3, CASE3;
+    mode_4_case_3: 4, 3, CASE3;
+    mode_5_case_3: 5, 3, CASE3;
+    mode_6_case_3: 6, 3, CASE3;
+    mode_7_case_3: 7, 3, CASE3;
+    mode_8_case_3: 8, 3, CASE3;
+    mode_12_case_3: 12, 3, CASE3;
+    mode_13_case_3: 13, 3, CASE3;
+    mode_14_case_3: 14, 3, CASE3;
 }
 
 /// Case 2 (starting inside the sensor): the sensor on [-1, 1] UU (-500..500 p) holds the
@@ -229,22 +286,14 @@ const CASE3: [(u16, i64); 9] = [
 ];
 
 #[test]
-fn home_sensor_modes_case_2_and_3() {
+fn limit_modes_have_no_case_2_or_3() {
     let _g = fresh();
-    let case2 = MACHINE.replace("[-3.0, -2.0]", "[-1.0, 1.0]");
-    let case3 = MACHINE.replace("[-3.0, -2.0]", "[1.0, 2.0]");
-    for (mode, want) in CASE2 {
-        assert_eq!(home_one(&case2, cfg(mode)).0, want, "mode {mode}, case 2");
-    }
-    for (mode, want) in CASE3 {
-        assert_eq!(home_one(&case3, cfg(mode)).0, want, "mode {mode}, case 3");
-    }
-    // The limit modes have no Case 2 or 3: starting inside a sensor changes nothing.
+    // Starting inside the home sensor changes nothing for the modes that do not use it.
     for (mode, want) in CASE1
         .iter()
         .filter(|(m, _)| matches!(m, 9 | 10 | 11 | 15 | 16))
     {
-        assert_eq!(home_one(&case2, cfg(*mode)).0, *want, "mode {mode}");
+        assert_eq!(home_one(&machine(2), cfg(*mode)).0, *want, "mode {mode}");
     }
 }
 
