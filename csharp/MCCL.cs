@@ -1227,6 +1227,8 @@ public static class MCCL
     public static extern int MCC_SetRIOOutputValue(ushort wValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOOutputValue")]
     public static extern int MCC_GetRIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOTransError")]
+    public static extern int MCC_SetRIOTransError(ushort wTime, ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOTriggerType")]
     public static extern int MCC_SetRIOTriggerType(ushort wType, ushort wSet, ushort wDigitalInput, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableRIOInputTrigger")]
@@ -1239,6 +1241,10 @@ public static class MCCL
     public static extern int MCC_DisableRIOTransTrigger(ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueRIOOutputValue")]
     public static extern int MCC_QueueRIOOutputValue(ushort wBitMask, ushort wValue, ushort wSet, ushort wPort, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIOUpdateRate")]
+    public static extern int MCC_SetARIOUpdateRate(double dfUpdateRate, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIOClockDivider")]
+    public static extern int MCC_SetARIOClockDivider(ushort wDivider, ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableARIOSlaveControl")]
     public static extern int MCC_EnableARIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableARIOSlaveControl")]
@@ -1259,6 +1265,8 @@ public static class MCCL
     public static extern int MCC_GetARIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueARIOOutputValue")]
     public static extern int MCC_QueueARIOOutputValue(ushort wBitMask, ushort wValue, ushort wSet, ushort wPort, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIONode2NodeDelay")]
+    public static extern int MCC_SetARIONode2NodeDelay(uint dwDelay, ushort wCardIndex = 0);
 
     // ---- D/A Converter Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACOutput")]

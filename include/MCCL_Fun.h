@@ -292,12 +292,15 @@ MCC_API int MCC_CALL MCC_GetRIOSlaveFail(DWORD *pdwStatus, WORD wSet, WORD wCard
 MCC_API int MCC_CALL MCC_GetRIOInputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetRIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetRIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetRIOTransError(WORD wTime, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetRIOTriggerType(WORD wType, WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_QueueRIOOutputValue(WORD wBitMask, WORD wValue, WORD wSet, WORD wPort, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIOUpdateRate(double dfUpdateRate, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIOClockDivider(WORD wDivider, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetARIOTransStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
@@ -308,6 +311,7 @@ MCC_API int MCC_CALL MCC_GetARIOInputValue(WORD *pwValue, WORD wSet, WORD wPort,
 MCC_API int MCC_CALL MCC_SetARIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetARIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_QueueARIOOutputValue(WORD wBitMask, WORD wValue, WORD wSet, WORD wPort, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIONode2NodeDelay(DWORD dwDelay, WORD wCardIndex MCC_DEFAULT(0));
 
 /* D/A Converter Control */
 MCC_API int MCC_CALL MCC_SetDACOutput(float fVoltage, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));

@@ -1406,6 +1406,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOOutputValue")>
     Public Function MCC_GetRIOOutputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOTransError")>
+    Public Function MCC_SetRIOTransError(ByVal wTime As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOTriggerType")>
     Public Function MCC_SetRIOTriggerType(ByVal wType As UShort, ByVal wSet As UShort, ByVal wDigitalInput As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1423,6 +1426,12 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueRIOOutputValue")>
     Public Function MCC_QueueRIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIOUpdateRate")>
+    Public Function MCC_SetARIOUpdateRate(ByVal dfUpdateRate As Double, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIOClockDivider")>
+    Public Function MCC_SetARIOClockDivider(ByVal wDivider As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableARIOSlaveControl")>
     Public Function MCC_EnableARIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -1453,6 +1462,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueARIOOutputValue")>
     Public Function MCC_QueueARIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIONode2NodeDelay")>
+    Public Function MCC_SetARIONode2NodeDelay(ByVal dwDelay As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
 
     ' ---- D/A Converter Control ----

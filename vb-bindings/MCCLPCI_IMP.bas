@@ -812,12 +812,15 @@ Public Declare Function MCC_GetRIOSlaveFail Lib "MCCLPCI_IMP.dll" (ByRef pdwStat
 Public Declare Function MCC_GetRIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetRIOTransError Lib "MCCLPCI_IMP.dll" (ByVal wTime As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetRIOTriggerType Lib "MCCLPCI_IMP.dll" (ByVal wType As Integer, ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_QueueRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIOUpdateRate Lib "MCCLPCI_IMP.dll" (ByVal dfUpdateRate As Double, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIOClockDivider Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetARIOTransStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -828,6 +831,7 @@ Public Declare Function MCC_GetARIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwVal
 Public Declare Function MCC_SetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_QueueARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIONode2NodeDelay Lib "MCCLPCI_IMP.dll" (ByVal dwDelay As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- D/A Converter Control ----
 Public Declare Function MCC_SetDACOutput Lib "MCCLPCI_IMP.dll" (ByVal fVoltage As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
