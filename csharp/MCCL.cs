@@ -706,6 +706,12 @@ public static class MCCL
     public static extern int MCC_SetLedLightOff(ushort Channel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLedLightStatus")]
     public static extern int MCC_GetLedLightStatus(ushort Channel, ref ushort Status, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedTrigOutEnable")]
+    public static extern int MCC_SetLedTrigOutEnable(ushort wEnable, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedTrigOutValue")]
+    public static extern int MCC_SetLedTrigOutValue(ushort wOutput, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedTrigOutSource")]
+    public static extern int MCC_SetLedTrigOutSource(ushort wSource, ushort wPoint, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutValueEx")]
     public static extern int MCC_SetLIOTrigOutValueEx(uint dwBitMask, uint dwBitValue, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutEnable")]

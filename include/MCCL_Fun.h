@@ -71,6 +71,9 @@ MCC_API int MCC_CALL MCC_DisableLIOTrigger(WORD wPoint, WORD wCardIndex MCC_DEFA
 MCC_API int MCC_CALL MCC_SetLedLightOn(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLedLightOff(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetLedLightStatus(WORD Channel, WORD *Status, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedTrigOutEnable(WORD wEnable, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedTrigOutValue(WORD wOutput, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedTrigOutSource(WORD wSource, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLIOTrigOutValueEx(DWORD dwBitMask, DWORD dwBitValue, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLIOTrigOutEnable(WORD wEnable, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLIOTrigOutValue(WORD wValue, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));

@@ -699,6 +699,15 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLedLightStatus")>
     Public Function MCC_GetLedLightStatus(ByVal Channel As UShort, ByRef Status As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedTrigOutEnable")>
+    Public Function MCC_SetLedTrigOutEnable(ByVal wEnable As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedTrigOutValue")>
+    Public Function MCC_SetLedTrigOutValue(ByVal wOutput As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedTrigOutSource")>
+    Public Function MCC_SetLedTrigOutSource(ByVal wSource As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutValueEx")>
     Public Function MCC_SetLIOTrigOutValueEx(ByVal dwBitMask As UInteger, ByVal dwBitValue As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function

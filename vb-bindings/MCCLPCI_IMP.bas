@@ -591,6 +591,9 @@ Public Declare Function MCC_DisableLIOTrigger Lib "MCCLPCI_IMP.dll" (ByVal wPoin
 Public Declare Function MCC_SetLedLightOn Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLedLightOff Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetLedLightStatus Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, ByRef Status As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedTrigOutEnable Lib "MCCLPCI_IMP.dll" (ByVal wEnable As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedTrigOutValue Lib "MCCLPCI_IMP.dll" (ByVal wOutput As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedTrigOutSource Lib "MCCLPCI_IMP.dll" (ByVal wSource As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIOTrigOutValueEx Lib "MCCLPCI_IMP.dll" (ByVal dwBitMask As Long, ByVal dwBitValue As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIOTrigOutEnable Lib "MCCLPCI_IMP.dll" (ByVal wEnable As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIOTrigOutValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
