@@ -1067,6 +1067,8 @@ public static class MCCL
     // ---- Encoder Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCRoutine")]
     public static extern int MCC_SetENCRoutine(ENCISR pfnEncoderRoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCFilterClock")]
+    public static extern int MCC_SetENCFilterClock(ushort wDivider, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCInputRate")]
     public static extern int MCC_SetENCInputRate(ushort wInputRate, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ClearENCCounter")]

@@ -246,6 +246,7 @@ MCC_API int MCC_CALL MCC_FixSpeed(BOOL bFix, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Encoder Control */
 MCC_API int MCC_CALL MCC_SetENCRoutine(ENCISR pfnEncoderRoutine, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetENCFilterClock(WORD wDivider, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetENCInputRate(WORD wInputRate, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_ClearENCCounter(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetENCValue(long *plValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));

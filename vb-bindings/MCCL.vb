@@ -1210,6 +1210,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCRoutine")>
     Public Function MCC_SetENCRoutine(ByVal pfnEncoderRoutine As ENCISR, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCFilterClock")>
+    Public Function MCC_SetENCFilterClock(ByVal wDivider As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCInputRate")>
     Public Function MCC_SetENCInputRate(ByVal wInputRate As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function

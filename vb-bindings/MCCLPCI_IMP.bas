@@ -766,6 +766,7 @@ Public Declare Function MCC_FixSpeed Lib "MCCLPCI_IMP.dll" (ByVal bFix As Long, 
 
 ' ---- Encoder Control ----
 Public Declare Function MCC_SetENCRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnEncoderRoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCFilterClock Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCInputRate Lib "MCCLPCI_IMP.dll" (ByVal wInputRate As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_ClearENCCounter Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetENCValue Lib "MCCLPCI_IMP.dll" (ByRef plValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long

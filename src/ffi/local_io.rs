@@ -136,7 +136,17 @@ pub unsafe extern "C" fn MCC_GetLedLightStatus(
     })
 }
 
-fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
+/// Index in `CardSettings::filters` of the limit switch inputs' filter clock.
+pub(super) const FILTER_LIMIT: usize = 0;
+/// The home sensor inputs' filter clock.
+pub(super) const FILTER_HOME: usize = 1;
+/// The general-purpose inputs' filter clock.
+pub(super) const FILTER_GPIO: usize = 2;
+/// The encoder inputs' filter clock (`MCC_SetENCFilterClock`).
+pub(super) const FILTER_ENC: usize = 3;
+
+/// Keeps filter clock `k` of the card (any WORD: the manuals give no range).
+pub(super) fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
     guard(|| {
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
@@ -148,19 +158,19 @@ fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
 /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(0, Value, wCardIndex)
+    filter(FILTER_LIMIT, Value, wCardIndex)
 }
 
 /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(1, Value, wCardIndex)
+    filter(FILTER_HOME, Value, wCardIndex)
 }
 
 /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(2, Value, wCardIndex)
+    filter(FILTER_GPIO, Value, wCardIndex)
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.

@@ -535,3 +535,35 @@ fn led_trigger_out_shows_its_value_for_the_trigger_period() {
     assert_eq!(led(3), 1);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+#[test]
+fn enc_filter_clock_is_kept_per_card_like_the_other_filter_clocks() {
+    let _g = fresh();
+    assert_eq!(MCC_SetENCFilterClock(3, 0), INITIAL_MOTION_ERR);
+    assert_eq!(init_ms(2, 1), NO_ERR);
+    let filters = |cd: usize| crate::system::active().unwrap().machine.lock().settings[cd].filters;
+    assert_eq!(
+        MCC_SetENCFilterClock(3, 2),
+        PARAMETER_ERR,
+        "card 2 not initialised"
+    );
+    assert_eq!(MCC_SetENCFilterClock(3, 12), PARAMETER_ERR);
+    assert_eq!(
+        (filters(0), filters(1)),
+        ([0; 4], [0; 4]),
+        "nothing changed"
+    );
+    // Any WORD, as for the limit, home and GPIO filter clocks (the manuals give no
+    // range); kept beside them: [limit, home, GPIO, encoder].
+    assert_eq!(MCC_SetENCFilterClock(0xFFFF, 1), NO_ERR);
+    assert_eq!(MCC_SetENCFilterClock(0, 0), NO_ERR);
+    assert_eq!(MCC_SetLimitFilterClk(2, 1), NO_ERR);
+    assert_eq!(MCC_SetGpioFilterClk(4, 1), NO_ERR);
+    assert_eq!((filters(0), filters(1)), ([0; 4], [2, 0, 4, 0xFFFF]));
+    // The simulated encoder has no noise to filter: the count is unchanged by it.
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    assert!(line_x(1.0) >= 0);
+    run(1000);
+    assert_eq!(enc(0), 500, "1 UU at 500 pulses per UU, x4");
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
