@@ -455,8 +455,9 @@ pub struct CardSettings {
     pub dividers: [u32; 2],
     /// LED outputs, one bit per channel.
     pub leds: u8,
-    /// Limit, home and GPIO input filter clocks.
-    pub filters: [u16; 3],
+    /// Limit, home, GPIO and encoder input filter clocks (kept: the simulated inputs
+    /// neither bounce nor pick up noise).
+    pub filters: [u16; 4],
     /// Closed-loop error counter thresholds (+, −) per channel.
     pub error_threshold: [(u16, u16); AXES],
 }
