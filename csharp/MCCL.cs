@@ -706,6 +706,12 @@ public static class MCCL
     public static extern int MCC_SetLedLightOff(ushort Channel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetLedLightStatus")]
     public static extern int MCC_GetLedLightStatus(ushort Channel, ref ushort Status, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedTrigOutEnable")]
+    public static extern int MCC_SetLedTrigOutEnable(ushort wEnable, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedTrigOutValue")]
+    public static extern int MCC_SetLedTrigOutValue(ushort wOutput, ushort wPoint, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLedTrigOutSource")]
+    public static extern int MCC_SetLedTrigOutSource(ushort wSource, ushort wPoint, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutValueEx")]
     public static extern int MCC_SetLIOTrigOutValueEx(uint dwBitMask, uint dwBitValue, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIOTrigOutEnable")]
@@ -951,6 +957,12 @@ public static class MCCL
     public static extern int MCC_SetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetHomeConfig")]
     public static extern int MCC_GetHomeConfig(ref SYS_HOME_CONFIG pstHomeConfig, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Home")]
+    public static extern int MCC_Home(int nOrder0, int nOrder1, int nOrder2, int nOrder3, int nOrder4, int nOrder5, int nOrder6, int nOrder7, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetGoHomeStatus")]
+    public static extern int MCC_GetGoHomeStatus();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_AbortGoHome")]
+    public static extern int MCC_AbortGoHome();
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetHomeSensorStatus")]
     public static extern int MCC_GetHomeSensorStatus(ref ushort pwStatus, ushort wChannel, ushort wCardIndex = 0);
 
@@ -1061,6 +1073,8 @@ public static class MCCL
     // ---- Encoder Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCRoutine")]
     public static extern int MCC_SetENCRoutine(ENCISR pfnEncoderRoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCFilterClock")]
+    public static extern int MCC_SetENCFilterClock(ushort wDivider, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetENCInputRate")]
     public static extern int MCC_SetENCInputRate(ushort wInputRate, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ClearENCCounter")]
@@ -1227,6 +1241,8 @@ public static class MCCL
     public static extern int MCC_SetRIOOutputValue(ushort wValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetRIOOutputValue")]
     public static extern int MCC_GetRIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOTransError")]
+    public static extern int MCC_SetRIOTransError(ushort wTime, ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOTriggerType")]
     public static extern int MCC_SetRIOTriggerType(ushort wType, ushort wSet, ushort wDigitalInput, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableRIOInputTrigger")]
@@ -1239,6 +1255,10 @@ public static class MCCL
     public static extern int MCC_DisableRIOTransTrigger(ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueRIOOutputValue")]
     public static extern int MCC_QueueRIOOutputValue(ushort wBitMask, ushort wValue, ushort wSet, ushort wPort, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIOUpdateRate")]
+    public static extern int MCC_SetARIOUpdateRate(double dfUpdateRate, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIOClockDivider")]
+    public static extern int MCC_SetARIOClockDivider(ushort wDivider, ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableARIOSlaveControl")]
     public static extern int MCC_EnableARIOSlaveControl(ushort wSet, ushort wSlave = 0, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableARIOSlaveControl")]
@@ -1259,6 +1279,8 @@ public static class MCCL
     public static extern int MCC_GetARIOOutputValue(ref ushort pwValue, ushort wSet, ushort wPort, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_QueueARIOOutputValue")]
     public static extern int MCC_QueueARIOOutputValue(ushort wBitMask, ushort wValue, ushort wSet, ushort wPort, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetARIONode2NodeDelay")]
+    public static extern int MCC_SetARIONode2NodeDelay(uint dwDelay, ushort wCardIndex = 0);
 
     // ---- D/A Converter Control ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACOutput")]

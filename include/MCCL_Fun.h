@@ -71,6 +71,9 @@ MCC_API int MCC_CALL MCC_DisableLIOTrigger(WORD wPoint, WORD wCardIndex MCC_DEFA
 MCC_API int MCC_CALL MCC_SetLedLightOn(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLedLightOff(WORD Channel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetLedLightStatus(WORD Channel, WORD *Status, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedTrigOutEnable(WORD wEnable, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedTrigOutValue(WORD wOutput, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetLedTrigOutSource(WORD wSource, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLIOTrigOutValueEx(DWORD dwBitMask, DWORD dwBitValue, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLIOTrigOutEnable(WORD wEnable, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetLIOTrigOutValue(WORD wValue, WORD wPoint, WORD wCardIndex MCC_DEFAULT(0));
@@ -185,6 +188,9 @@ MCC_API int MCC_CALL MCC_ClearError(WORD wGroupIndex MCC_DEFAULT(0));
 /* Go Home */
 MCC_API int MCC_CALL MCC_SetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetHomeConfig(SYS_HOME_CONFIG *pstHomeConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_Home(int nOrder0, int nOrder1, int nOrder2, int nOrder3, int nOrder4, int nOrder5, int nOrder6, int nOrder7, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetGoHomeStatus(void);
+MCC_API int MCC_CALL MCC_AbortGoHome(void);
 MCC_API int MCC_CALL MCC_GetHomeSensorStatus(WORD *pwStatus, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 
 /* Position Control */
@@ -243,6 +249,7 @@ MCC_API int MCC_CALL MCC_FixSpeed(BOOL bFix, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Encoder Control */
 MCC_API int MCC_CALL MCC_SetENCRoutine(ENCISR pfnEncoderRoutine, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetENCFilterClock(WORD wDivider, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetENCInputRate(WORD wInputRate, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_ClearENCCounter(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetENCValue(long *plValue, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
@@ -292,12 +299,15 @@ MCC_API int MCC_CALL MCC_GetRIOSlaveFail(DWORD *pdwStatus, WORD wSet, WORD wCard
 MCC_API int MCC_CALL MCC_GetRIOInputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetRIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetRIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetRIOTransError(WORD wTime, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetRIOTriggerType(WORD wType, WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableRIOInputTrigger(WORD wSet, WORD wDigitalInput, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableRIOTransTrigger(WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_QueueRIOOutputValue(WORD wBitMask, WORD wValue, WORD wSet, WORD wPort, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIOUpdateRate(double dfUpdateRate, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIOClockDivider(WORD wDivider, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_EnableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_DisableARIOSlaveControl(WORD wSet, WORD wSlave MCC_DEFAULT(0), WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetARIOTransStatus(WORD *pwStatus, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
@@ -308,6 +318,7 @@ MCC_API int MCC_CALL MCC_GetARIOInputValue(WORD *pwValue, WORD wSet, WORD wPort,
 MCC_API int MCC_CALL MCC_SetARIOOutputValue(WORD wValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetARIOOutputValue(WORD *pwValue, WORD wSet, WORD wPort, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_QueueARIOOutputValue(WORD wBitMask, WORD wValue, WORD wSet, WORD wPort, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetARIONode2NodeDelay(DWORD dwDelay, WORD wCardIndex MCC_DEFAULT(0));
 
 /* D/A Converter Control */
 MCC_API int MCC_CALL MCC_SetDACOutput(float fVoltage, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));

@@ -22,6 +22,9 @@ pub enum McclError {
     /// A DAC call on a channel that runs in voltage-command mode
     /// (`VOLTAGE_COMMAND_CHANNEL_ERR`, -9).
     VoltageChannel,
+    /// No go home to act on: `MCC_Home` was not called, or its homing was aborted
+    /// (`HOME_COMMAND_NOTCALLED_ERR`, -10).
+    HomeNotCalled,
     /// Hold with nothing to hold (`HOLD_ILLEGAL_ERR`, -11).
     HoldIllegal,
     /// Continue when not held (`CONTI_ILLEGAL_ERR`, -12).
@@ -46,6 +49,7 @@ impl McclError {
             McclError::Group => c::GROUP_PARAMETER_ERR,
             McclError::FeedRate => c::FEED_RATE_ERR,
             McclError::VoltageChannel => c::VOLTAGE_COMMAND_CHANNEL_ERR,
+            McclError::HomeNotCalled => c::HOME_COMMAND_NOTCALLED_ERR,
             McclError::HoldIllegal => c::HOLD_ILLEGAL_ERR,
             McclError::ContiIllegal => c::CONTI_ILLEGAL_ERR,
             McclError::AbortIllegal => c::ABORT_ILLEGAL_ERR,

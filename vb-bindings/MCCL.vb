@@ -699,6 +699,15 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetLedLightStatus")>
     Public Function MCC_GetLedLightStatus(ByVal Channel As UShort, ByRef Status As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedTrigOutEnable")>
+    Public Function MCC_SetLedTrigOutEnable(ByVal wEnable As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedTrigOutValue")>
+    Public Function MCC_SetLedTrigOutValue(ByVal wOutput As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLedTrigOutSource")>
+    Public Function MCC_SetLedTrigOutSource(ByVal wSource As UShort, ByVal wPoint As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIOTrigOutValueEx")>
     Public Function MCC_SetLIOTrigOutValueEx(ByVal dwBitMask As UInteger, ByVal dwBitValue As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1039,6 +1048,15 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetHomeConfig")>
     Public Function MCC_GetHomeConfig(ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Home")>
+    Public Function MCC_Home(ByVal nOrder0 As Integer, ByVal nOrder1 As Integer, ByVal nOrder2 As Integer, ByVal nOrder3 As Integer, ByVal nOrder4 As Integer, ByVal nOrder5 As Integer, ByVal nOrder6 As Integer, ByVal nOrder7 As Integer, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetGoHomeStatus")>
+    Public Function MCC_GetGoHomeStatus() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_AbortGoHome")>
+    Public Function MCC_AbortGoHome() As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetHomeSensorStatus")>
     Public Function MCC_GetHomeSensorStatus(ByRef pwStatus As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1200,6 +1218,9 @@ Public Module MCCL
     ' ---- Encoder Control ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCRoutine")>
     Public Function MCC_SetENCRoutine(ByVal pfnEncoderRoutine As ENCISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCFilterClock")>
+    Public Function MCC_SetENCFilterClock(ByVal wDivider As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetENCInputRate")>
     Public Function MCC_SetENCInputRate(ByVal wInputRate As UShort, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -1406,6 +1427,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetRIOOutputValue")>
     Public Function MCC_GetRIOOutputValue(ByRef pwValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOTransError")>
+    Public Function MCC_SetRIOTransError(ByVal wTime As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOTriggerType")>
     Public Function MCC_SetRIOTriggerType(ByVal wType As UShort, ByVal wSet As UShort, ByVal wDigitalInput As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1423,6 +1447,12 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueRIOOutputValue")>
     Public Function MCC_QueueRIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIOUpdateRate")>
+    Public Function MCC_SetARIOUpdateRate(ByVal dfUpdateRate As Double, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIOClockDivider")>
+    Public Function MCC_SetARIOClockDivider(ByVal wDivider As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableARIOSlaveControl")>
     Public Function MCC_EnableARIOSlaveControl(ByVal wSet As UShort, Optional ByVal wSlave As UShort = 0, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -1453,6 +1483,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_QueueARIOOutputValue")>
     Public Function MCC_QueueARIOOutputValue(ByVal wBitMask As UShort, ByVal wValue As UShort, ByVal wSet As UShort, ByVal wPort As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetARIONode2NodeDelay")>
+    Public Function MCC_SetARIONode2NodeDelay(ByVal dwDelay As UInteger, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
 
     ' ---- D/A Converter Control ----

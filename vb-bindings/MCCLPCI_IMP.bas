@@ -591,6 +591,9 @@ Public Declare Function MCC_DisableLIOTrigger Lib "MCCLPCI_IMP.dll" (ByVal wPoin
 Public Declare Function MCC_SetLedLightOn Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLedLightOff Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetLedLightStatus Lib "MCCLPCI_IMP.dll" (ByVal Channel As Integer, ByRef Status As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedTrigOutEnable Lib "MCCLPCI_IMP.dll" (ByVal wEnable As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedTrigOutValue Lib "MCCLPCI_IMP.dll" (ByVal wOutput As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetLedTrigOutSource Lib "MCCLPCI_IMP.dll" (ByVal wSource As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIOTrigOutValueEx Lib "MCCLPCI_IMP.dll" (ByVal dwBitMask As Long, ByVal dwBitValue As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIOTrigOutEnable Lib "MCCLPCI_IMP.dll" (ByVal wEnable As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetLIOTrigOutValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wPoint As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -705,6 +708,9 @@ Public Declare Function MCC_ClearError Lib "MCCLPCI_IMP.dll" (Optional ByVal wGr
 ' ---- Go Home ----
 Public Declare Function MCC_SetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetHomeConfig Lib "MCCLPCI_IMP.dll" (ByRef pstHomeConfig As SYS_HOME_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_Home Lib "MCCLPCI_IMP.dll" (ByVal nOrder0 As Long, ByVal nOrder1 As Long, ByVal nOrder2 As Long, ByVal nOrder3 As Long, ByVal nOrder4 As Long, ByVal nOrder5 As Long, ByVal nOrder6 As Long, ByVal nOrder7 As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetGoHomeStatus Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_AbortGoHome Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_GetHomeSensorStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- Position Control ----
@@ -763,6 +769,7 @@ Public Declare Function MCC_FixSpeed Lib "MCCLPCI_IMP.dll" (ByVal bFix As Long, 
 
 ' ---- Encoder Control ----
 Public Declare Function MCC_SetENCRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnEncoderRoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetENCFilterClock Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetENCInputRate Lib "MCCLPCI_IMP.dll" (ByVal wInputRate As Integer, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_ClearENCCounter Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetENCValue Lib "MCCLPCI_IMP.dll" (ByRef plValue As Long, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -812,12 +819,15 @@ Public Declare Function MCC_GetRIOSlaveFail Lib "MCCLPCI_IMP.dll" (ByRef pdwStat
 Public Declare Function MCC_GetRIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetRIOTransError Lib "MCCLPCI_IMP.dll" (ByVal wTime As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetRIOTriggerType Lib "MCCLPCI_IMP.dll" (ByVal wType As Integer, ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableRIOInputTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, ByVal wDigitalInput As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableRIOTransTrigger Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_QueueRIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIOUpdateRate Lib "MCCLPCI_IMP.dll" (ByVal dfUpdateRate As Double, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIOClockDivider Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableARIOSlaveControl Lib "MCCLPCI_IMP.dll" (ByVal wSet As Integer, Optional ByVal wSlave As Integer = 0, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetARIOTransStatus Lib "MCCLPCI_IMP.dll" (ByRef pwStatus As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -828,6 +838,7 @@ Public Declare Function MCC_GetARIOInputValue Lib "MCCLPCI_IMP.dll" (ByRef pwVal
 Public Declare Function MCC_SetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByRef pwValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_QueueARIOOutputValue Lib "MCCLPCI_IMP.dll" (ByVal wBitMask As Integer, ByVal wValue As Integer, ByVal wSet As Integer, ByVal wPort As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetARIONode2NodeDelay Lib "MCCLPCI_IMP.dll" (ByVal dwDelay As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 
 ' ---- D/A Converter Control ----
 Public Declare Function MCC_SetDACOutput Lib "MCCLPCI_IMP.dll" (ByVal fVoltage As Single, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long

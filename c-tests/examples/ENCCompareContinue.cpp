@@ -3,14 +3,14 @@
 // 50000; X and Y run 60 UU, i.e. 30000 counts at 500 counts/UU, so 10000, 20000 and
 // 30000 fire (three routine calls, COMP0 each time) and two stay in the stock. Each turns
 // Y's servo-on output (SERVO_POINT) off for 0.5 s (trigger value 1 = Servo-Off), then back
-// on. Then §27: channels 0 and 1 compared together within a tolerance of 100 counts; the
+// on, and lights Y's LED for the same 0.5 s (the LED trigger-out of the A header). Then §27: channels 0 and 1 compared together within a tolerance of 100 counts; the
 // pair fires only when both reach their values.
 #include "MotionSys.h"
 #include "MCCL_Sim.h"
 
 #define SERVO_POINT 1
 
-static volatile int ENC_ISR = 0, SERVO_OFF_SEEN = 0, COMP1_SEEN = 0;
+static volatile int ENC_ISR = 0, SERVO_OFF_SEEN = 0, LED_ON_SEEN = 0, COMP1_SEEN = 0;
 
 void _stdcall ENC_ISR_Function(ENCINT *pstINTSource)
 {
@@ -21,6 +21,10 @@ void _stdcall ENC_ISR_Function(ENCINT *pstINTSource)
         MCCL_SimGetOutput(CARD_INDEX, SERVO_POINT, MCCL_SIM_OUT_SERVO, &nServo);
         if (nServo == 0)
             SERVO_OFF_SEEN++;   // the trigger-out acted in the same tick
+        WORD wLed = 0;
+        MCC_GetLedLightStatus(SERVO_POINT, &wLed, CARD_INDEX);
+        if (wLed == 1)
+            LED_ON_SEEN++;
     }
     if (pstINTSource->COMP1)
         COMP1_SEEN++;
@@ -43,6 +47,10 @@ int main()
     CHECK_EQ(MCC_SetLIOTrigOutValue(1, SERVO_POINT, CARD_INDEX), NO_ERR);   // 1: Servo-Off
     CHECK_EQ(MCC_SetLIOTrigOutSource(IO_TRIG_ENC0, SERVO_POINT, CARD_INDEX), NO_ERR);
     CHECK_EQ(MCC_SetLIOTrigOutPeriod(500000000, CARD_INDEX), NO_ERR);       // 0.5 s in ns
+    // Y's LED lights on the same compares, for the same period.
+    CHECK_EQ(MCC_SetLedTrigOutEnable(1, SERVO_POINT, CARD_INDEX), NO_ERR);
+    CHECK_EQ(MCC_SetLedTrigOutValue(1, SERVO_POINT, CARD_INDEX), NO_ERR);   // 1: lit
+    CHECK_EQ(MCC_SetLedTrigOutSource(LED_TRIG_ENC0, SERVO_POINT, CARD_INDEX), NO_ERR);
     // Step 3.2: the routine.
     CHECK_EQ(MCC_SetENCRoutine(ENC_ISR_Function, CARD_INDEX), NO_ERR);
     CHECK_EQ(MCC_EnableENCCompTrigger(ENC_COMP_CH0, CARD_INDEX), NO_ERR);
@@ -60,6 +68,14 @@ int main()
     CHECK_EQ(ENC_ISR, 3);          // 10000, 20000, 30000 reached
     CHECK_EQ(SERVO_OFF_SEEN, 3);
     CHECK_EQ(nServo, 1);
+    WORD wLed = 9;
+    CHECK_EQ(MCC_GetLedLightStatus(SERVO_POINT, &wLed, CARD_INDEX), NO_ERR);
+    printf("  Y's LED lit at each: %d, dark after: %d\n", LED_ON_SEEN, wLed == 0);
+    CHECK_EQ(LED_ON_SEEN, 3);
+    CHECK_EQ(wLed, 0);
+    CHECK_EQ(MCC_SetLedTrigOutEnable(1, 8, CARD_INDEX), PARAMETER_ERR);
+    CHECK_EQ(MCC_SetLedTrigOutValue(2, SERVO_POINT, CARD_INDEX), PARAMETER_ERR);
+    CHECK_EQ(MCC_SetLedTrigOutSource(0x100, SERVO_POINT, CARD_INDEX), PARAMETER_ERR);
     // Step 4: two values still waiting; erase them.
     CHECK_EQ(MCC_GetLIOCompStockCount(&wCount, CARD_INDEX), NO_ERR);
     CHECK_EQ(wCount, 2);

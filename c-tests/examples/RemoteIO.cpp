@@ -3,7 +3,10 @@
 //
 // The virtual card's remote I/O slaves loop their outputs back to their inputs (a wire
 // from output n to input n), so what the program writes it reads back after the next
-// transfer; data moves once per tick (1 ms here).
+// transfer; data moves once per tick (1 ms here), ARIO data once per bus cycle (by
+// default shorter than a tick). Then the calls the manuals do not document: the vendor
+// test's MCC_SetRIOTransError(5, 0, 0) and the ARIO update rate, clock divider and
+// node-to-node delay (README "Remote I/O" for the cycle formula).
 // Signatures are the B/C ones with wSet (DECISIONS.md); the manual's A-form calls
 // MCC_EnableARIOSlaveControl(RIO_SLAVE0, CARD_INDEX) and
 // MCC_GetARIOTransStatus(&w, CARD_INDEX) compile to the same calls here for slave 0 of
@@ -88,6 +91,44 @@ int main()
     CHECK_EQ(nRDI0, 5);
     CHECK_EQ(MCC_GetRIOInputValue(&wValue, RIO_SET1, RIO_PORT0, CARD_INDEX), NO_ERR);
     CHECK_EQ(wValue, 0);
+
+    // The vendor test's call: set 0 tolerates 5 consecutive failed transfers of a slave
+    // before it reports it. With working slaves the statuses stay 1.
+    CHECK_EQ(MCC_SetRIOTransError(5, RIO_SET0, CARD_INDEX), NO_ERR);
+    CHECK_EQ(MCC_SetRIOTransError(5, 2, CARD_INDEX), PARAMETER_ERR);
+    MCC_TimeDelay(10);
+    CHECK_EQ(MCC_GetRIOTransStatus(&wTransStatus, RIO_SET1, CARD_INDEX), NO_ERR);
+    CHECK_EQ(wTransStatus, 1);
+
+    // ARIO set 0 at 100 updates per second: the outputs reach the slave (and come back)
+    // 10 ms after the call, not before.
+    CHECK_EQ(MCC_SetARIOUpdateRate(100.0, RIO_SET0, CARD_INDEX), NO_ERR);
+    CHECK_EQ(MCC_SetARIOOutputValue(0x0F0F, RIO_SET0, RIO_SLAVE0, CARD_INDEX), NO_ERR);
+    MCC_TimeDelay(9);
+    CHECK_EQ(MCC_GetARIOInputValue(&wValue, RIO_SET0, RIO_SLAVE0, CARD_INDEX), NO_ERR);
+    CHECK_EQ(wValue, 0x8001);
+    MCC_TimeDelay(1);
+    CHECK_EQ(MCC_GetARIOInputValue(&wValue, RIO_SET0, RIO_SLAVE0, CARD_INDEX), NO_ERR);
+    CHECK_EQ(wValue, 0x0F0F);
+    // A bit every 1000 system clocks (10 us: 32 bits = 320 us per slave) and 68000 clocks
+    // (680 us) between slaves: 1 ms per slave. With 20 slaves transmitting a cycle takes
+    // 20 ms, longer than the 10 ms asked for, so the bus sets the pace.
+    for (WORD wSlave = RIO_SLAVE1; wSlave < RIO_SLAVE20; wSlave++)
+        CHECK_EQ(MCC_EnableARIOSlaveControl(RIO_SET0, wSlave, CARD_INDEX), NO_ERR);
+    CHECK_EQ(MCC_SetARIOClockDivider(1000, RIO_SET0, CARD_INDEX), NO_ERR);
+    CHECK_EQ(MCC_SetARIONode2NodeDelay(68000), NO_ERR);    // C++ default: card 0
+    CHECK_EQ(MCC_SetARIOOutputValue(0xF0F0, RIO_SET0, RIO_SLAVE0, CARD_INDEX), NO_ERR);
+    MCC_TimeDelay(19);
+    CHECK_EQ(MCC_GetARIOInputValue(&wValue, RIO_SET0, RIO_SLAVE0, CARD_INDEX), NO_ERR);
+    CHECK_EQ(wValue, 0x0F0F);
+    MCC_TimeDelay(1);
+    CHECK_EQ(MCC_GetARIOInputValue(&wValue, RIO_SET0, RIO_SLAVE0, CARD_INDEX), NO_ERR);
+    printf("  ARIO, 20 slaves at divider 1000 and 680 us apart: 0x%04X after 20 ms\n", wValue);
+    CHECK_EQ(wValue, 0xF0F0);
+    CHECK_EQ(MCC_SetARIOUpdateRate(0.0, RIO_SET0, CARD_INDEX), PARAMETER_ERR);
+    CHECK_EQ(MCC_SetARIOUpdateRate(-1.0, RIO_SET0, CARD_INDEX), PARAMETER_ERR);
+    CHECK_EQ(MCC_SetARIOClockDivider(0, RIO_SET0, CARD_INDEX), PARAMETER_ERR);
+    CHECK_EQ(MCC_SetARIONode2NodeDelay(0, 12), PARAMETER_ERR);
 
     // Bad set, slave, port: PARAMETER_ERR.
     CHECK_EQ(MCC_SetARIOOutputValue(1, 2, RIO_SLAVE0, CARD_INDEX), PARAMETER_ERR);

@@ -54,7 +54,7 @@ impl Peripherals {
             let inputs = self.adc_inputs();
             self.adc.tick(&inputs, &mut self.pending);
         }
-        self.rio.tick(&mut self.pending);
+        self.rio.tick(dt_ns, &mut self.pending);
         reset
     }
 

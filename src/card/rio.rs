@@ -11,11 +11,22 @@
 //!   the `wPort` argument) of 16 outputs and 16 inputs; data moves while the slave's
 //!   control (`MCC_EnableARIOSlaveControl`) is on.
 //!
-//! Transfer happens once per tick: a transmitting slave takes the master's outputs and
-//! the master latches the slave's inputs. A simulated slave's inputs loop back from its
-//! outputs unless set otherwise from Rust ([`RioInput`]); a slave or master can be made
-//! to fail ([`Master::set_slave_failed`], [`Master::set_master_failed`]): a failed slave
-//! stops transferring, and the status functions report it.
+//! In a transfer a transmitting slave takes the master's outputs and the master latches
+//! the slave's inputs. RIO sets transfer once per tick. ARIO sets transfer once per cycle
+//! ([`ArioTiming`]): a cycle lasts `n × (32 × divider + delay) × 10 ns` for `n`
+//! transmitting slaves (16 output and 16 input bits each at the system clock of 10 ns
+//! divided by `MCC_SetARIOClockDivider`, then the node-to-node delay of
+//! `MCC_SetARIONode2NodeDelay` in system clocks), or one period of
+//! `MCC_SetARIOUpdateRate` if that is longer; a set transfers in the ticks in which a
+//! cycle ends, at most once per tick.
+//!
+//! A simulated slave's inputs loop back from its outputs unless set otherwise from Rust
+//! ([`RioInput`]); a slave or master can be made to fail ([`Master::set_slave_failed`],
+//! [`Master::set_master_failed`]). A failing slave does not transfer; each transfer it
+//! fails counts, and once it has failed more consecutive transfers than the set tolerates
+//! (`MCC_SetRIOTransError`, default 0) the set reports it: `…SlaveFail` has its bit, the
+//! slave and transfer statuses read 0, and the transfer trigger fires. Its first good
+//! transfer clears the report. A failed master is reported at once.
 
 use crate::engine::isr::{Interrupt, Pending};
 use crate::error::{McclError, McclResult};
@@ -29,6 +40,12 @@ pub const RIO_PORTS: usize = 4;
 pub const ARIO_SLAVES: usize = 32;
 /// RIO digital inputs with a trigger.
 pub const DIS: usize = 8;
+/// The card's system clock period, ns (user manual §2.13: the timer counts it).
+pub const SYSTEM_CLOCK_NS: u64 = 10;
+/// Bits one ARIO slave exchanges per cycle: 16 outputs and 16 inputs.
+pub const ARIO_BITS_PER_SLAVE: u64 = 32;
+/// ARIO clock divider before any `MCC_SetARIOClockDivider`: 10 (a 10 Mbit/s bus).
+pub const ARIO_DEFAULT_DIVIDER: u16 = 10;
 
 /// What a simulated slave's inputs read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -49,7 +66,15 @@ pub struct Set<const N: usize> {
     inputs: [u16; N],
     /// What each slave's inputs read.
     pub source: [RioInput; N],
+    /// Simulation: slaves whose transfers fail.
+    broken: u32,
+    /// Slaves reported failed: their consecutive failed transfers exceeded `tolerance`.
     slave_fail: u32,
+    /// Consecutive failed transfers per slave.
+    fail_run: [u32; N],
+    /// Consecutive failed transfers a slave may have before it is reported
+    /// (`MCC_SetRIOTransError`).
+    tolerance: u16,
     master_fail: bool,
     trig_type: [u16; DIS],
     trig_on: [bool; DIS],
@@ -66,7 +91,10 @@ impl<const N: usize> Set<N> {
             outputs: [0; N],
             inputs: [0; N],
             source: [RioInput::Loopback; N],
+            broken: 0,
             slave_fail: 0,
+            fail_run: [0; N],
+            tolerance: 0,
             master_fail: false,
             trig_type: [c::RIO_INT_RISE; DIS],
             trig_on: [false; DIS],
@@ -85,15 +113,35 @@ impl<const N: usize> Set<N> {
         }
     }
 
-    /// Slave control on or off (`MCC_Enable/Disable(A)RIOSlaveControl`).
+    /// Slave control on or off (`MCC_Enable/Disable(A)RIOSlaveControl`). Turning it off
+    /// forgets the slave's failed transfers.
     pub fn set_slave_control(&mut self, s: u16, on: bool) -> McclResult<()> {
-        let bit = 1u32 << Self::slave(s)?;
+        let i = Self::slave(s)?;
+        let bit = 1u32 << i;
         if on {
             self.slave_on |= bit;
         } else {
             self.slave_on &= !bit;
+            self.slave_fail &= !bit;
+            self.fail_run[i] = 0;
         }
         Ok(())
+    }
+
+    /// Slaves whose control is on.
+    pub fn transmitting(&self) -> u32 {
+        self.slave_on
+    }
+
+    /// `MCC_SetRIOTransError`: consecutive failed transfers a slave may have before the
+    /// set reports it (0: at its first failed transfer). Takes effect at the next transfer.
+    pub fn set_tolerance(&mut self, n: u16) {
+        self.tolerance = n;
+    }
+
+    /// The tolerance set by [`Set::set_tolerance`].
+    pub fn tolerance(&self) -> u16 {
+        self.tolerance
     }
 
     /// Outputs of a port/slave (`MCC_Set(A)RIOOutputValue`).
@@ -112,7 +160,7 @@ impl<const N: usize> Set<N> {
         Ok(self.inputs[Self::slave(s)?])
     }
 
-    /// Failed slaves among the transmitting ones, bit n = slave n.
+    /// Slaves reported failed among the transmitting ones, bit n = slave n.
     pub fn slave_fail(&self) -> u32 {
         self.slave_fail & self.slave_on
     }
@@ -122,7 +170,7 @@ impl<const N: usize> Set<N> {
         u16::from(!self.master_fail)
     }
 
-    /// 1 when every transmitting slave works, 0 when one failed.
+    /// 1 when no transmitting slave is reported failed, 0 when one is.
     pub fn slave_status(&self) -> u16 {
         u16::from(self.slave_fail() == 0)
     }
@@ -132,15 +180,21 @@ impl<const N: usize> Set<N> {
         self.master_status() & self.slave_status()
     }
 
-    /// Simulation: slave `s` fails (or works again).
+    /// Simulation: slave `s` fails its transfers from now on (or works again); the set
+    /// notices at its transfers.
     pub fn set_slave_failed(&mut self, s: usize, failed: bool) {
         if s < N {
             if failed {
-                self.slave_fail |= 1 << s;
+                self.broken |= 1 << s;
             } else {
-                self.slave_fail &= !(1 << s);
+                self.broken &= !(1 << s);
             }
         }
+    }
+
+    /// Consecutive failed transfers of slave `s` so far.
+    pub fn failed_transfers(&self, s: usize) -> u32 {
+        self.fail_run.get(s).copied().unwrap_or(0)
     }
 
     /// Simulation: the master fails (or works again).
@@ -173,10 +227,29 @@ impl<const N: usize> Set<N> {
         self.trans_trigger = on;
     }
 
-    /// One transfer; raises input edges and transmission failures.
-    fn tick(&mut self, p: &mut Pending) {
+    /// One transfer; counts failed slave transfers, raises input edges and the
+    /// transmission failure (the status going from 1 to 0).
+    fn transfer(&mut self, p: &mut Pending) {
         if !self.control {
             return;
+        }
+        if !self.master_fail {
+            for s in (0..N).filter(|s| self.slave_on & (1 << s) != 0) {
+                let bit = 1u32 << s;
+                if self.broken & bit != 0 {
+                    self.fail_run[s] = self.fail_run[s].saturating_add(1);
+                    if self.fail_run[s] > u32::from(self.tolerance) {
+                        self.slave_fail |= bit;
+                    }
+                    continue;
+                }
+                self.fail_run[s] = 0;
+                self.slave_fail &= !bit;
+                self.inputs[s] = match self.source[s] {
+                    RioInput::Loopback => self.outputs[s],
+                    RioInput::Constant(v) => v,
+                };
+            }
         }
         let ok = self.trans_status() == 1;
         if self.trans_trigger && self.was_ok && !ok {
@@ -185,14 +258,6 @@ impl<const N: usize> Set<N> {
         self.was_ok = ok;
         if self.master_fail {
             return;
-        }
-        for s in 0..N {
-            if self.slave_on & !self.slave_fail & (1 << s) != 0 {
-                self.inputs[s] = match self.source[s] {
-                    RioInput::Loopback => self.outputs[s],
-                    RioInput::Constant(v) => v,
-                };
-            }
         }
         let di = (self.inputs[0] & 0xFF) as u8;
         if let Some(last) = self.last_di {
@@ -217,6 +282,84 @@ impl<const N: usize> Set<N> {
     }
 }
 
+/// When the ARIO sets of a card transfer (INTERFACE.md: `MCC_SetARIOUpdateRate`,
+/// `MCC_SetARIOClockDivider` per set, `MCC_SetARIONode2NodeDelay` per card; the manuals
+/// say nothing more). A cycle with `n` transmitting slaves (at least 1) takes
+/// `n × (32 × divider + delay) × 10 ns`; a set with an update rate waits at least
+/// `1 / rate` between cycles. The cycle count restarts when any of the three is set.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ArioTiming {
+    /// Least time between cycles per set, ns (`MCC_SetARIOUpdateRate`); `None`: as fast
+    /// as the bus allows.
+    pub update_ns: [Option<u64>; SETS],
+    /// Serial clock divider per set: one bit takes `divider` system clocks (1..65535).
+    pub divider: [u16; SETS],
+    /// Gap after each slave's frame, system clocks (`MCC_SetARIONode2NodeDelay`).
+    pub node_delay: u32,
+    /// Time since the set's last cycle ended (or its timing was set), ns.
+    elapsed_ns: [u64; SETS],
+}
+
+impl Default for ArioTiming {
+    fn default() -> Self {
+        ArioTiming {
+            update_ns: [None; SETS],
+            divider: [ARIO_DEFAULT_DIVIDER; SETS],
+            node_delay: 0,
+            elapsed_ns: [0; SETS],
+        }
+    }
+}
+
+impl ArioTiming {
+    /// `MCC_SetARIOUpdateRate`: `rate` updates per second at most (finite, > 0); the
+    /// period is rounded to whole ns (at least 1).
+    pub fn set_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
+        if !rate.is_finite() || rate <= 0.0 || set >= SETS {
+            return Err(McclError::Parameter);
+        }
+        // `as` saturates: a rate so low that the period exceeds u64 ns (584 years) waits
+        // that long.
+        self.update_ns[set] = Some(((1e9 / rate).round() as u64).max(1));
+        self.elapsed_ns[set] = 0;
+        Ok(())
+    }
+
+    /// `MCC_SetARIOClockDivider`: 1..65535 system clocks per bit (0 is `PARAMETER_ERR`).
+    pub fn set_divider(&mut self, set: usize, divider: u16) -> McclResult<()> {
+        if divider == 0 || set >= SETS {
+            return Err(McclError::Parameter);
+        }
+        self.divider[set] = divider;
+        self.elapsed_ns[set] = 0;
+        Ok(())
+    }
+
+    /// `MCC_SetARIONode2NodeDelay`: system clocks after each slave's frame, both sets.
+    pub fn set_node_delay(&mut self, clocks: u32) {
+        self.node_delay = clocks;
+        self.elapsed_ns = [0; SETS];
+    }
+
+    /// How long a cycle of set `set` takes with the slaves in `transmitting`, ns: the
+    /// bus time, or the update period if that is longer.
+    pub fn cycle_ns(&self, set: usize, transmitting: u32) -> u64 {
+        let n = u64::from(transmitting.count_ones().max(1));
+        let per_slave =
+            ARIO_BITS_PER_SLAVE * u64::from(self.divider[set]) + u64::from(self.node_delay);
+        let bus = n.saturating_mul(per_slave).saturating_mul(SYSTEM_CLOCK_NS);
+        bus.max(self.update_ns[set].unwrap_or(0))
+    }
+
+    /// Advances set `set` by `dt_ns`; true when a cycle ended in that time.
+    fn advance(&mut self, set: usize, dt_ns: u64, transmitting: u32) -> bool {
+        let period = self.cycle_ns(set, transmitting).max(1);
+        let e = self.elapsed_ns[set].saturating_add(dt_ns);
+        self.elapsed_ns[set] = e % period;
+        e >= period
+    }
+}
+
 /// The remote I/O of one card: RIO and ARIO masters, two sets each.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Master {
@@ -224,6 +367,8 @@ pub struct Master {
     pub rio: [Set<RIO_PORTS>; SETS],
     /// ARIO sets.
     pub ario: [Set<ARIO_SLAVES>; SETS],
+    /// When the ARIO sets transfer.
+    pub ario_timing: ArioTiming,
 }
 
 impl Default for Master {
@@ -231,6 +376,7 @@ impl Default for Master {
         Master {
             rio: std::array::from_fn(|_| Set::new(false)),
             ario: std::array::from_fn(|_| Set::new(true)),
+            ario_timing: ArioTiming::default(),
         }
     }
 }
@@ -246,10 +392,15 @@ pub fn set_ix(w: u16) -> McclResult<usize> {
 }
 
 impl Master {
-    /// One tick of transfers of every set.
-    pub fn tick(&mut self, p: &mut Pending) {
-        self.rio.iter_mut().for_each(|s| s.tick(p));
-        self.ario.iter_mut().for_each(|s| s.tick(p));
+    /// One tick of `dt_ns`: every RIO set transfers, each ARIO set if one of its cycles
+    /// ended in the tick.
+    pub fn tick(&mut self, dt_ns: u64, p: &mut Pending) {
+        self.rio.iter_mut().for_each(|s| s.transfer(p));
+        for (i, s) in self.ario.iter_mut().enumerate() {
+            if self.ario_timing.advance(i, dt_ns, s.transmitting()) {
+                s.transfer(p);
+            }
+        }
     }
 
     /// Watchdog reset: every output to 0.
@@ -285,9 +436,10 @@ impl Master {
 mod tests {
     use super::*;
 
+    /// One 1 ms tick.
     fn step(m: &mut Master) -> Pending {
         let mut p = Pending::default();
-        m.tick(&mut p);
+        m.tick(1_000_000, &mut p);
         p
     }
 
@@ -339,14 +491,119 @@ mod tests {
 
         m.rio[0].set_trans_trigger(true);
         m.set_slave_failed(false, 0, 0, true);
+        assert_eq!(m.rio[0].slave_fail(), 0, "noticed at the next transfer");
+        assert_eq!(step(&mut m).rio[8], 1, "FAIL once (tolerance 0)");
         assert_eq!(m.rio[0].slave_fail(), 1);
         assert_eq!((m.rio[0].trans_status(), m.rio[0].slave_status()), (0, 0));
-        assert_eq!(step(&mut m).rio[8], 1, "FAIL once");
         assert_eq!(step(&mut m).rio[8], 0);
         m.set_slave_failed(false, 0, 0, false);
+        step(&mut m);
+        assert_eq!(m.rio[0].slave_fail(), 0, "a good transfer clears it");
         m.set_master_failed(false, 0, true);
         assert_eq!(m.rio[0].master_status(), 0);
         assert_eq!(m.rio[0].slave_status(), 1);
+        assert_eq!(step(&mut m).rio[8], 1, "the master failure is a new edge");
         assert_eq!(step(&mut m).rio[8], 0, "still failing: no new edge");
+    }
+
+    #[test]
+    fn trans_error_tolerates_that_many_failed_transfers() {
+        let mut m = Master::default();
+        let s = &mut m.rio[0];
+        s.control = true;
+        s.set_slave_control(1, true).unwrap();
+        s.set_trans_trigger(true);
+        s.set_tolerance(5); // the vendor test's MCC_SetRIOTransError(5, 0, 0)
+        m.set_slave_failed(false, 0, 1, true);
+        // Transfers 1..5 fail and are tolerated; the 6th is reported.
+        for n in 1..=5 {
+            assert_eq!(step(&mut m).rio[8], 0, "transfer {n} tolerated");
+            assert_eq!(m.rio[0].failed_transfers(1), n);
+            assert_eq!((m.rio[0].slave_fail(), m.rio[0].trans_status()), (0, 1));
+        }
+        assert_eq!(step(&mut m).rio[8], 1, "6th failed transfer");
+        assert_eq!((m.rio[0].slave_fail(), m.rio[0].trans_status()), (0b10, 0));
+        // Recovery clears the run; a new failure starts counting from 0 again.
+        m.set_slave_failed(false, 0, 1, false);
+        step(&mut m);
+        assert_eq!(
+            (m.rio[0].slave_fail(), m.rio[0].failed_transfers(1)),
+            (0, 0)
+        );
+        m.set_slave_failed(false, 0, 1, true);
+        (0..5).for_each(|_| assert_eq!(step(&mut m).rio[8], 0));
+        assert_eq!(step(&mut m).rio[8], 1);
+        // Disabling the slave forgets it; no transfer, no count.
+        m.rio[0].set_slave_control(1, false).unwrap();
+        assert_eq!(m.rio[0].failed_transfers(1), 0);
+        step(&mut m);
+        assert_eq!(m.rio[0].failed_transfers(1), 0);
+        // A set that does not transfer (set control off) counts nothing.
+        m.rio[0].set_slave_control(1, true).unwrap();
+        m.rio[0].control = false;
+        for _ in 0..10 {
+            step(&mut m);
+        }
+        assert_eq!(m.rio[0].failed_transfers(1), 0);
+    }
+
+    /// Ticks (1 ms each) in 1..=n in which ARIO set 0 transferred slave 0's output (a
+    /// new value before every tick, never written before).
+    fn ario_transfer_ticks(m: &mut Master, n: u16) -> Vec<u16> {
+        let mut at = Vec::new();
+        for t in 1..=n {
+            let v = m.ario[0].output(0).unwrap() + 1;
+            m.ario[0].set_output(0, v).unwrap();
+            step(m);
+            if m.ario[0].input(0) == Ok(v) {
+                at.push(t);
+            }
+        }
+        at
+    }
+
+    #[test]
+    fn ario_cycles_follow_rate_divider_and_node_delay() {
+        let mut m = Master::default();
+        m.ario[0].set_slave_control(0, true).unwrap();
+        // Default: 1 slave x 32 bits x 10 clocks x 10 ns = 3.2 us: every tick.
+        assert_eq!(m.ario_timing.cycle_ns(0, 1), 3_200);
+        assert_eq!(ario_transfer_ticks(&mut m, 3), [1, 2, 3]);
+        // 100 Hz: a cycle every 10 ms from the call: ticks 10 and 20.
+        m.ario_timing.set_update_rate(0, 100.0).unwrap();
+        assert_eq!(ario_transfer_ticks(&mut m, 20), [10, 20]);
+        // Divider 5000 and a delay of 90000 clocks: 32 x 50 us + 0.9 ms = 2.5 ms, longer
+        // than 1 / 1000 Hz: cycles end at 2.5, 5, 7.5, 10 ms = ticks 3, 5, 8, 10.
+        m.ario_timing.set_update_rate(0, 1000.0).unwrap();
+        m.ario_timing.set_divider(0, 5000).unwrap();
+        m.ario_timing.set_node_delay(90_000);
+        assert_eq!(m.ario_timing.cycle_ns(0, 1), 2_500_000);
+        assert_eq!(ario_transfer_ticks(&mut m, 10), [3, 5, 8, 10]);
+        // Two transmitting slaves double the bus time: 5 ms.
+        m.ario[0].set_slave_control(7, true).unwrap();
+        m.ario_timing.set_node_delay(90_000);
+        assert_eq!(ario_transfer_ticks(&mut m, 10), [5, 10]);
+        // Set 1 keeps its own (default) timing.
+        assert_eq!(m.ario_timing.cycle_ns(1, 1), 32 * 10 * 10 + 90_000 * 10);
+        // Bad values change nothing.
+        let before = m.ario_timing.clone();
+        for r in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert_eq!(
+                m.ario_timing.set_update_rate(0, r),
+                Err(McclError::Parameter)
+            );
+        }
+        assert_eq!(
+            m.ario_timing.set_update_rate(2, 1.0),
+            Err(McclError::Parameter)
+        );
+        assert_eq!(m.ario_timing.set_divider(0, 0), Err(McclError::Parameter));
+        assert_eq!(m.ario_timing, before);
+        // Extreme values saturate instead of overflowing.
+        m.ario_timing.set_update_rate(0, f64::MIN_POSITIVE).unwrap();
+        assert_eq!(m.ario_timing.cycle_ns(0, 1), u64::MAX);
+        m.ario_timing.set_update_rate(0, 1e300).unwrap();
+        assert_eq!(m.ario_timing.update_ns[0], Some(1));
+        assert!(ario_transfer_ticks(&mut m, 1).is_empty(), "bus-bound 5 ms");
     }
 }

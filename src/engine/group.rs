@@ -158,6 +158,9 @@ pub struct GroupState {
     outputs: Vec<Output>,
     /// Set when the group's channels are an MC3B: its commands run there (`external`).
     external: Option<External>,
+    /// Axes whose channels are being homed (`MCC_Home`), one bit each: the homing drives
+    /// their positions and the group takes no command meanwhile.
+    homing: u32,
 }
 
 /// In-position settings of a group (user manual §2.7.2).
@@ -257,7 +260,45 @@ impl GroupState {
             inpos_status: [0; AXES],
             outputs: Vec::new(),
             external: None,
+            homing: 0,
         }
+    }
+
+    /// Axes being homed, one bit each.
+    pub fn homing(&self) -> u32 {
+        self.homing
+    }
+
+    /// `MCC_Home` starts on the channels of axes `mask`: the group must be idle.
+    pub fn begin_homing(&mut self, mask: u32) -> McclResult<()> {
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        self.homing = mask;
+        self.update_status();
+        Ok(())
+    }
+
+    /// Homing moved axis `i` to reference position `x` (UU) at speed `v` (UU/s).
+    pub fn set_homing_axis(&mut self, i: usize, x: f64, v: f64) {
+        let p = x - self.offset[i];
+        self.pos[i] = p;
+        self.base[i] = p;
+        self.queue_end[i] = p;
+        self.vel[i] = v;
+    }
+
+    /// Axis `i` reached its working home: its position, reference and pulses read 0.
+    pub fn home_zero_axis(&mut self, i: usize) {
+        self.offset[i] = 0.0;
+        self.set_homing_axis(i, 0.0, 0.0);
+    }
+
+    /// The homing ended (done, aborted or failed): the group is its own again.
+    pub fn end_homing(&mut self) {
+        self.homing = 0;
+        self.vel = [0.0; AXES];
+        self.update_status();
     }
 
     /// Whether a check that needs the machine watches this group even when it stands.
@@ -331,6 +372,9 @@ impl GroupState {
     /// Queues a command; returns its index. `ABORT_NOT_FINISH_ERR` while an abort is
     /// still decelerating, `COMMAND_BUFFER_FULL_ERR` when the queue is full.
     pub fn enqueue(&mut self, mut cmd: Command) -> McclResult<i32> {
+        if self.homing != 0 {
+            return Err(McclError::NotAccepted);
+        }
         self.check_external(&cmd)?;
         if self.mode == Mode::Aborting {
             return Err(McclError::AbortNotFinished);
@@ -720,6 +764,11 @@ impl GroupState {
 
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
+        if self.homing != 0 {
+            // The homing sets the positions (`set_homing_axis`).
+            self.update_status();
+            return;
+        }
         if self.external.is_some() {
             return self.tick_external(dt);
         }
@@ -893,6 +942,11 @@ impl GroupState {
     }
 
     fn update_status(&mut self) {
+        if self.homing != 0 {
+            // Homing axes move (or wait for the others) until the homing ends.
+            self.status = c::GMS_RUNNING;
+            return;
+        }
         let active = !self.running.is_empty()
             || !self.queue.is_empty()
             || self.inpos_wait.is_some_and(|w| w.blocks())

@@ -8,6 +8,7 @@
 
 pub mod command;
 pub mod group;
+pub mod homing;
 pub mod isr;
 pub mod safety;
 pub mod snapshot;
@@ -79,6 +80,16 @@ pub struct Shared {
     pub periph: Vec<Mutex<crate::card::Peripherals>>,
     /// The interrupt routines registered per card (`isr`).
     pub isr: isr::IsrTable,
+    /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
+    homing: Mutex<Option<homing::Homing>>,
+    /// `MCC_GetGoHomeStatus`: [`homing::HOME_BUSY`], [`homing::HOME_DONE`] or
+    /// [`homing::HOME_NONE`].
+    home_status: AtomicI32,
+    /// The tick count and count of go-home status reads at it (see [`Shared::poll`]).
+    home_poll: AtomicU64,
+    /// A fast-clock wait on the go-home status in progress: the status it saw, or
+    /// `i32::MIN` when none.
+    home_watch: AtomicI32,
     trace: Mutex<Option<trace::Trace>>,
 }
 
@@ -151,34 +162,160 @@ impl Shared {
     /// Counts reads of one kind at the same virtual time; from the
     /// [`SPIN_POLLS`]th on the program is taken to be waiting.
     fn repeated(&self, g: u16, kind: usize) -> bool {
+        match self.last_poll.get(usize::from(g)) {
+            Some(l) => self.repeated_in(&l[kind]),
+            None => false,
+        }
+    }
+
+    fn repeated_in(&self, cell: &AtomicU64) -> bool {
         if !self.clock.mode().virtual_time() {
             return false;
         }
-        let Some(l) = self.last_poll.get(usize::from(g)) else {
-            return false;
-        };
         let now = self.clock.ticks();
-        let (tick, count) = unpack_poll(l[kind].load(Ordering::Acquire));
+        let (tick, count) = unpack_poll(cell.load(Ordering::Acquire));
         let count = if tick == now { count + 1 } else { 1 };
-        l[kind].store(pack_poll(now, count), Ordering::Release);
+        cell.store(pack_poll(now, count), Ordering::Release);
         count >= SPIN_POLLS
     }
 
     fn mark_polled(&self, g: u16, kind: usize) {
         if let Some(l) = self.last_poll.get(usize::from(g)) {
-            let now = self.clock.ticks();
-            let (tick, count) = unpack_poll(l[kind].load(Ordering::Acquire));
-            if tick != now {
-                // Time moved on during the poll: the next read is the first at this time.
-                l[kind].store(pack_poll(now, 0), Ordering::Release);
-            } else {
-                l[kind].store(pack_poll(now, count), Ordering::Release);
-            }
+            self.mark_polled_in(&l[kind]);
         }
+    }
+
+    fn mark_polled_in(&self, cell: &AtomicU64) {
+        let now = self.clock.ticks();
+        let (tick, count) = unpack_poll(cell.load(Ordering::Acquire));
+        if tick != now {
+            // Time moved on during the poll: the next read is the first at this time.
+            cell.store(pack_poll(now, 0), Ordering::Release);
+        } else {
+            cell.store(pack_poll(now, count), Ordering::Release);
+        }
+    }
+
+    /// `MCC_GetGoHomeStatus`: the status, after letting virtual time run when the program
+    /// spins on it (as [`Shared::poll`] does for motion status: `fast` runs ticks until
+    /// the status changes, `stepped` one tick).
+    pub fn home_status(&self) -> i32 {
+        let status = self.home_status.load(Ordering::Acquire);
+        if status == homing::HOME_BUSY && self.repeated_in(&self.home_poll) {
+            match self.clock.mode() {
+                ClockMode::Realtime => {}
+                ClockMode::Stepped => self.clock.wait_ticks(1),
+                ClockMode::Fast => {
+                    self.home_watch.store(status, Ordering::Release);
+                    self.clock
+                        .wait_ticks(self.clock.ticks_for(crate::clock::FAST_POLL_MAX));
+                    self.home_watch.store(i32::MIN, Ordering::Release);
+                }
+            }
+            self.mark_polled_in(&self.home_poll);
+        }
+        self.home_status.load(Ordering::Acquire)
+    }
+
+    /// `MCC_Home`: starts homing the channels of `card` whose order is 0..7 (255 skips
+    /// one) with the go-home parameters `cfgs`. `COMMAND_NOTFINISHED_ERR` while a homing
+    /// runs or a group driving one of the channels is busy, `COMMAND_NOTACCEPTED_ERR` in
+    /// dry run (nothing moves, so no sensor can be found). Nothing changes on an error.
+    pub fn start_homing(
+        &self,
+        card: usize,
+        orders: [i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<()> {
+        if self.dry_run.load(Ordering::Acquire) {
+            return Err(McclError::NotAccepted);
+        }
+        let machine = self.machine.lock();
+        let chans = machine.cards.get(card).ok_or(McclError::Parameter)?;
+        let mut slot = self.homing.lock();
+        if slot.is_some() {
+            return Err(McclError::NotFinished);
+        }
+        let h = homing::Homing::new(card, orders, cfgs, chans);
+        let chan_mask = h.channel_mask();
+        let axes_of = |g: &GroupState| {
+            (0..AXES).fold(0u32, |m, i| match g.axes[i].channel {
+                Some((c, ch)) if c == card && chan_mask & (1 << ch) != 0 => m | 1 << i,
+                _ => m,
+            })
+        };
+        // Every group driving a homed channel must be idle; mark them, undo on failure.
+        let mut marked: Vec<usize> = Vec::new();
+        for (n, g) in self.groups.iter().enumerate() {
+            let mut g = g.lock();
+            let mask = axes_of(&g);
+            if mask == 0 {
+                continue;
+            }
+            if let Err(e) = g.begin_homing(mask) {
+                drop(g);
+                for &m in &marked {
+                    let mut g = self.groups[m].lock();
+                    g.end_homing();
+                    self.publish(&mut g);
+                }
+                return Err(e);
+            }
+            self.publish(&mut g);
+            marked.push(n);
+        }
+        if chan_mask == 0 {
+            self.home_status.store(homing::HOME_DONE, Ordering::Release);
+        } else {
+            *slot = Some(h);
+            self.home_status.store(homing::HOME_BUSY, Ordering::Release);
+        }
+        Ok(())
+    }
+
+    /// `MCC_AbortGoHome`: the homing channels decelerate to a stop and the homing ends
+    /// without completing. `HOME_COMMAND_NOTCALLED_ERR` when no homing was started (or
+    /// the last one was aborted); `NO_ERR` after one completed.
+    pub fn abort_homing(&self) -> McclResult<()> {
+        match self.homing.lock().as_mut() {
+            Some(h) => {
+                h.abort();
+                Ok(())
+            }
+            None if self.home_status.load(Ordering::Acquire) == homing::HOME_DONE => Ok(()),
+            None => Err(McclError::HomeNotCalled),
+        }
+    }
+
+    /// Drops a homing in progress (`MCC_ResetMotion`, `MCC_UpdateParam`): the channels
+    /// stop where they are.
+    fn cancel_homing(&self) {
+        if self.homing.lock().take().is_some() {
+            self.home_status.store(homing::HOME_NONE, Ordering::Release);
+        }
+    }
+
+    /// One tick of the homing in progress (with the machine locked).
+    fn tick_homing(&self, machine: &mut Machine, dt: f64) -> Option<homing::HomeTick> {
+        let mut slot = self.homing.lock();
+        let h = slot.as_mut()?;
+        let card = h.card();
+        let emergency = machine.emergency.get(card).copied().unwrap_or(false);
+        let chans = machine.cards.get_mut(card)?;
+        let out = h.tick(chans, emergency, dt);
+        if let Some(status) = out.finished {
+            *slot = None;
+            self.home_status.store(status, Ordering::Release);
+        }
+        Some(out)
     }
 
     /// During a tick: ends a fast-clock poll's run when its group's status changed.
     fn check_watch(&self) {
+        let h = self.home_watch.load(Ordering::Acquire);
+        if h != i32::MIN && self.home_status.load(Ordering::Acquire) != h {
+            self.clock.end_run_now();
+        }
         let g = self.watch.0.load(Ordering::Acquire);
         if let Ok(g) = usize::try_from(g) {
             if self.status[g].load(Ordering::Acquire) != self.watch.1.load(Ordering::Acquire) {
@@ -243,6 +380,7 @@ impl Shared {
 
     /// Resets every group (`MCC_ResetMotion`, `MCC_UpdateParam`) with new mechanism facts.
     pub fn reset_all(&self, mac: &MacTable) {
+        self.cancel_homing();
         self.for_each_group(|g| {
             let axes = axes_of(&g.def, mac);
             g.reset(axes);
@@ -269,9 +407,13 @@ impl Shared {
         let dry = self.dry_run.load(Ordering::Relaxed);
         let mut cmds = [[None::<i64>; AXES]; CARDS];
         let mut own_checks = [false; GROUPS];
+        let homed = self.tick_homing(&mut machine, dt);
         for (n, g) in self.groups.iter().enumerate() {
             let mut g = g.lock();
             g.tick(dt);
+            if let Some(h) = &homed {
+                apply_homing(&mut g, h);
+            }
             own_checks[n] = g.has_safety_checks();
             let outputs = g.take_outputs();
             if !outputs.is_empty() {
@@ -294,6 +436,14 @@ impl Shared {
             }
             if let Some(t) = trace.as_mut() {
                 t.row(t_ns, &g);
+            }
+        }
+        if let Some(h) = &homed {
+            // The homed channels get the homing's position, grouped or not, dry run or not.
+            for (ch, a) in h.axes.iter().enumerate() {
+                if let (Some((x, _)), Some(chan)) = (a.pos, machine.channel(h.card, ch)) {
+                    cmds[h.card][ch] = Some(snapshot::round_pulses(x * chan.factor()));
+                }
             }
         }
         let now_ns = t_ns;
@@ -377,7 +527,8 @@ impl Shared {
                 continue;
             }
             let mut g = g.lock();
-            if !g.busy() && !g.has_safety_checks() {
+            if (!g.busy() && !g.has_safety_checks()) || g.homing() != 0 {
+                // Homing watches its own limit switches and emergency stop.
                 continue;
             }
             if g.inpos_waiting() {
@@ -412,6 +563,37 @@ impl Shared {
         if self.clock.last_of_run() {
             self.for_each_group(|_| {});
         }
+    }
+}
+
+/// Applies a tick of homing to a group that drives homed channels: their positions and
+/// speeds, the zeroing at the working home, error records, and the end of the homing.
+fn apply_homing(g: &mut GroupState, h: &homing::HomeTick) {
+    if g.homing() == 0 {
+        return;
+    }
+    for i in 0..AXES {
+        if g.homing() & (1 << i) == 0 {
+            continue;
+        }
+        let Some((card, ch)) = g.axes[i].channel else {
+            continue;
+        };
+        let Some(a) = h.axes.get(ch).filter(|_| card == h.card) else {
+            continue;
+        };
+        if a.zeroed {
+            g.home_zero_axis(i);
+        }
+        if let Some((x, v)) = a.pos {
+            g.set_homing_axis(i, x, v);
+        }
+        if let Some(record) = a.record {
+            g.set_error(record);
+        }
+    }
+    if h.finished.is_some() {
+        g.end_homing();
     }
 }
 
@@ -461,6 +643,10 @@ impl Engine {
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
             periph: (0..cards).map(|_| Mutex::default()).collect(),
             isr: isr::IsrTable::new(cards),
+            homing: Mutex::new(None),
+            home_status: AtomicI32::new(homing::HOME_NONE),
+            home_poll: AtomicU64::new(u64::MAX),
+            home_watch: AtomicI32::new(i32::MIN),
             trace: Mutex::new(trace),
         });
         shared.for_each_group(|_| {});

@@ -113,6 +113,13 @@ pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex
     })
 }
 
+/// Filter clock (divider) of the encoder inputs, kept per card like the other input
+/// filter clocks: the simulated encoder has no electrical noise to filter.
+#[no_mangle]
+pub extern "C" fn MCC_SetENCFilterClock(wDivider: WORD, wCardIndex: WORD) -> c_int {
+    super::local_io::filter(super::local_io::FILTER_ENC, wDivider, wCardIndex)
+}
+
 fn with_triggers<R>(
     wCardIndex: WORD,
     f: impl FnOnce(

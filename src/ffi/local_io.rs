@@ -1,6 +1,7 @@
 //! Local I/O outputs (user manual §2.9.2; INTERFACE.md "Local I/O Control"): the servo-on
-//! signal of each channel and the card's position-ready signal. The virtual card keeps
-//! the state of each output; the simulated machine reads it.
+//! signal of each channel, the card's position-ready signal and the 8 LEDs, and their
+//! trigger-out by encoder compares. The virtual card keeps the state of each output; the
+//! simulated machine reads it.
 
 use super::{card, channel, guard};
 use crate::system;
@@ -102,7 +103,18 @@ pub extern "C" fn MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) -> c_int {
     led(Channel, wCardIndex, false)
 }
 
-/// A channel's LED output: 1 on, 0 off.
+/// What LED `ch` of card `cd` shows: its trigger-out value while a trigger holds it,
+/// else what `MCC_SetLedLightOn`/`Off` set.
+pub(super) fn led_lit(m: &crate::machine::Machine, cd: usize, ch: usize) -> bool {
+    let own = m.settings.get(cd).is_some_and(|s| s.leds >> ch & 1 == 1);
+    m.triggers
+        .get(cd)
+        .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
+        .unwrap_or(own)
+}
+
+/// A channel's LED output: 1 on, 0 off (while an LED trigger-out holds it: its trigger
+/// value).
 ///
 /// # Safety
 /// `Status` must be NULL (refused with `PARAMETER_ERR`) or writable.
@@ -117,14 +129,24 @@ pub unsafe extern "C" fn MCC_GetLedLightStatus(
         super::out_ok(Status)?;
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
-        let v = shared.machine.lock().settings[cd].leds >> ch.0 & 1;
+        let v = led_lit(&shared.machine.lock(), cd, ch.0);
         // SAFETY: checked non-null; the caller passes a writable WORD.
         unsafe { super::write_out(Status, WORD::from(v)) };
         Ok(c::NO_ERR)
     })
 }
 
-fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
+/// Index in `CardSettings::filters` of the limit switch inputs' filter clock.
+pub(super) const FILTER_LIMIT: usize = 0;
+/// The home sensor inputs' filter clock.
+pub(super) const FILTER_HOME: usize = 1;
+/// The general-purpose inputs' filter clock.
+pub(super) const FILTER_GPIO: usize = 2;
+/// The encoder inputs' filter clock (`MCC_SetENCFilterClock`).
+pub(super) const FILTER_ENC: usize = 3;
+
+/// Keeps filter clock `k` of the card (any WORD: the manuals give no range).
+pub(super) fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
     guard(|| {
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
@@ -136,19 +158,19 @@ fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
 /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(0, Value, wCardIndex)
+    filter(FILTER_LIMIT, Value, wCardIndex)
 }
 
 /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(1, Value, wCardIndex)
+    filter(FILTER_HOME, Value, wCardIndex)
 }
 
 /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(2, Value, wCardIndex)
+    filter(FILTER_GPIO, Value, wCardIndex)
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.
@@ -314,12 +336,64 @@ pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
     })
 }
 
-/// How long a triggered output holds its value, ns (rounded up to whole ticks).
+/// How long a triggered output or LED holds its value, ns (rounded up to whole ticks).
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
     guard(|| {
         with_triggers(wCardIndex, |t| {
             t.trig_period_ns = u64::from(dwPeriod);
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
+/// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
+/// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
+/// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
+#[no_mangle]
+pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        // Before init: INITIAL_MOTION_ERR whatever the arguments.
+        system::active()?;
+        let p = out_point(wPoint)?;
+        if wEnable > 1 {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.led_trig_out[p].0 = wEnable == 1;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The value a triggered LED shows: 1 lit, 0 dark.
+#[no_mangle]
+pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        system::active()?;
+        let p = out_point(wPoint)?;
+        if wOutput > 1 {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.led_trig_out[p].1 = wOutput == 1;
+            Ok(c::NO_ERR)
+        })
+    })
+}
+
+/// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
+#[no_mangle]
+pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        system::active()?;
+        let p = out_point(wPoint)?;
+        if wSource > 0xFF {
+            return Err(crate::error::McclError::Parameter);
+        }
+        with_triggers(wCardIndex, |t| {
+            t.led_trig_out[p].2 = wSource;
             Ok(c::NO_ERR)
         })
     })

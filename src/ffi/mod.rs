@@ -6,6 +6,7 @@ pub mod adc;
 pub mod coordinate;
 pub mod dac;
 pub mod encoder;
+pub mod home;
 pub mod isr;
 pub mod jog;
 pub mod limits;
@@ -112,6 +113,8 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_home;
 #[cfg(test)]
 mod tests_machine;
 #[cfg(test)]

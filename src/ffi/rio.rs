@@ -1,12 +1,14 @@
 //! Remote I/O (user manual §2.14; examples manual §33–34; INTERFACE.md "Remote
 //! Input/Output Control", the B/C signatures with `wSet`). Behaviour in
 //! `crate::card::rio`: 2 sets; RIO has 4 ports (one slave each), ARIO 32 slaves (the
-//! `wPort` argument names the slave); data moves once per tick; simulated slaves loop
-//! their outputs back to their inputs unless set otherwise from Rust. Statuses read 1 for
-//! normal transfer, 0 for an error. Bad card, set, port, slave, input or NULL:
-//! `PARAMETER_ERR`, nothing changed.
+//! `wPort` argument names the slave); RIO data moves once per tick, ARIO data once per
+//! cycle (update rate, clock divider, node-to-node delay); simulated slaves loop their
+//! outputs back to their inputs unless set otherwise from Rust. Statuses read 1 for
+//! normal transfer, 0 for an error; a slave's failure is reported once it has failed more
+//! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
+//! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::{guard, out_ok, write_out};
+use super::{finite, guard, out_ok, write_out};
 use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
 use crate::card::with_card;
 use crate::error::McclResult;
@@ -193,6 +195,19 @@ pub unsafe extern "C" fn MCC_GetRIOOutputValue(
     guard(|| unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) })
 }
 
+/// Consecutive failed transfers a slave of the RIO set may have before the set reports
+/// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
+/// first failed transfer, 5 the sixth. Undocumented by the vendor; see the README.
+#[no_mangle]
+pub extern "C" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        done(rio(wSet, wCardIndex, |s| {
+            s.set_tolerance(wTime);
+            Ok(())
+        }))
+    })
+}
+
 /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
 /// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
 #[no_mangle]
@@ -261,6 +276,51 @@ pub extern "C" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_
 }
 
 // ---- ARIO ----
+
+fn ario_timing(
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> McclResult<()>,
+) -> McclResult<c_int> {
+    crate::system::active()?;
+    done(with_card(wCardIndex, |p| f(&mut p.rio.ario_timing)))
+}
+
+/// At most `dfUpdateRate` transfer cycles per second (Hz; finite and > 0) for the ARIO
+/// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
+/// restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        crate::system::active()?;
+        let r = finite(dfUpdateRate)?;
+        let s = set_ix(wSet)?;
+        ario_timing(wCardIndex, |t| t.set_update_rate(s, r))
+    })
+}
+
+/// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
+/// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
+/// restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        crate::system::active()?;
+        let s = set_ix(wSet)?;
+        ario_timing(wCardIndex, |t| t.set_divider(s, wDivider))
+    })
+}
+
+/// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
+/// of the card. The cycle count restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
+    guard(|| {
+        ario_timing(wCardIndex, |t| {
+            t.set_node_delay(dwDelay);
+            Ok(())
+        })
+    })
+}
 
 /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
 #[no_mangle]

@@ -428,3 +428,142 @@ fn queued_outputs_change_when_the_queue_reaches_them() {
     assert_eq!(w, 0x0005);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+fn led(ch: u16) -> WORD {
+    let mut v: WORD = 9;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_GetLedLightStatus(ch, &mut v, 0) }, NO_ERR);
+    let mut sim = 9;
+    // SAFETY: valid pointer.
+    assert_eq!(
+        unsafe { MCCL_SimGetOutput(0, ch, MCCL_SIM_OUT_LED, &mut sim) },
+        NO_ERR
+    );
+    assert_eq!(i32::from(v), sim, "MCCL_SimGetOutput reads the same LED");
+    v
+}
+
+fn led_settings() -> [(bool, bool, u16); 8] {
+    crate::system::active().unwrap().machine.lock().triggers[0].led_trig_out
+}
+
+#[test]
+fn led_trigger_out_checks_its_arguments() {
+    let _g = fresh();
+    assert_eq!(MCC_SetLedTrigOutEnable(1, 0, 0), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_SetLedTrigOutValue(1, 0, 0), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_SetLedTrigOutSource(1, 0, 0), INITIAL_MOTION_ERR);
+    assert_eq!(
+        MCC_SetLedTrigOutEnable(1, 8, 0),
+        INITIAL_MOTION_ERR,
+        "bad point"
+    );
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    let before = led_settings();
+    let bad = [
+        MCC_SetLedTrigOutEnable(2, 0, 0),
+        MCC_SetLedTrigOutEnable(1, 8, 0),
+        MCC_SetLedTrigOutEnable(1, 0, 1), // one card only
+        MCC_SetLedTrigOutValue(2, 0, 0),
+        MCC_SetLedTrigOutValue(1, 8, 0),
+        MCC_SetLedTrigOutValue(1, 0, 12),
+        MCC_SetLedTrigOutSource(0x100, 0, 0),
+        MCC_SetLedTrigOutSource(1, 8, 0),
+        MCC_SetLedTrigOutSource(1, 0, 1),
+    ];
+    assert!(bad.iter().all(|&r| r == PARAMETER_ERR), "{bad:?}");
+    assert_eq!(led_settings(), before, "failed calls change nothing");
+    // Every point, value and source bit in range is taken.
+    assert_eq!(MCC_SetLedTrigOutEnable(1, 7, 0), NO_ERR);
+    assert_eq!(MCC_SetLedTrigOutValue(1, 7, 0), NO_ERR);
+    assert_eq!(MCC_SetLedTrigOutSource(0xFF, 7, 0), NO_ERR);
+    assert_eq!(led_settings()[7], (true, true, 0xFF));
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn led_trigger_out_shows_its_value_for_the_trigger_period() {
+    let _g = setup(); // 1 ms ticks, X at 10 UU/s with no acc/dec: 5 counts per tick
+    assert_eq!(MCC_SetLedLightOn(3, 0), NO_ERR);
+    // LED 3 (lit) goes dark, LED 4 lights on compare 0; LED 5 waits for compare 1; LED 6
+    // has the source but is not enabled.
+    for (pt, value, source, enable) in [
+        (3, 0, LED_TRIG_ENC0, 1),
+        (4, 1, LED_TRIG_ENC0, 1),
+        (5, 1, LED_TRIG_ENC1, 1),
+        (6, 1, LED_TRIG_ENC0, 0),
+    ] {
+        assert_eq!(MCC_SetLedTrigOutValue(value, pt, 0), NO_ERR);
+        assert_eq!(MCC_SetLedTrigOutSource(source as WORD, pt, 0), NO_ERR);
+        assert_eq!(MCC_SetLedTrigOutEnable(enable, pt, 0), NO_ERR);
+    }
+    assert_eq!(MCC_SetLIOTrigOutPeriod(5_000_000, 0), NO_ERR); // 5 ms, shared with the LIO
+    assert_eq!(MCC_SetENCCompValue(100, 0, 0), NO_ERR);
+    assert_eq!(MCC_EnableENCCompTrigger(0, 0), NO_ERR);
+    assert!(line_x(1.0) >= 0);
+    let mut rows = Vec::new();
+    for _ in 0..40 {
+        run(1);
+        rows.push((enc(0), [led(3), led(4), led(5), led(6)]));
+    }
+    // X is at 0.01 n UU = 5 n counts after tick n: the count reaches 100 at tick 20, and
+    // the LEDs hold for 5 ms: ticks 20..24; at 25 ms the hold has ended.
+    assert_eq!(rows[19].0, 100);
+    assert_eq!(rows[18].0, 95);
+    for (i, (_, l)) in rows.iter().enumerate() {
+        let tick = i + 1;
+        let held = (20..25).contains(&tick);
+        let want = if held { [0, 1, 0, 0] } else { [1, 0, 0, 0] };
+        assert_eq!(*l, want, "tick {tick}");
+    }
+    // The servo-on outputs have no trigger-out: untouched.
+    let mut v = 9;
+    // SAFETY: valid pointer.
+    assert_eq!(
+        unsafe { MCCL_SimGetOutput(0, 4, MCCL_SIM_OUT_SERVO, &mut v) },
+        NO_ERR
+    );
+    assert_eq!(v, 0);
+    // While a trigger holds an LED, MCC_SetLedLightOff changes what it returns to.
+    assert_eq!(MCC_SetENCCompValue(300, 0, 0), NO_ERR); // at tick 60
+    run(20);
+    assert_eq!((enc(0), led(3)), (300, 0), "tick 60: held dark");
+    assert_eq!(MCC_SetLedLightOff(3, 0), NO_ERR);
+    run(5);
+    assert_eq!(led(3), 0, "returns to off");
+    assert_eq!(MCC_SetLedLightOn(3, 0), NO_ERR);
+    assert_eq!(led(3), 1);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn enc_filter_clock_is_kept_per_card_like_the_other_filter_clocks() {
+    let _g = fresh();
+    assert_eq!(MCC_SetENCFilterClock(3, 0), INITIAL_MOTION_ERR);
+    assert_eq!(init_ms(2, 1), NO_ERR);
+    let filters = |cd: usize| crate::system::active().unwrap().machine.lock().settings[cd].filters;
+    assert_eq!(
+        MCC_SetENCFilterClock(3, 2),
+        PARAMETER_ERR,
+        "card 2 not initialised"
+    );
+    assert_eq!(MCC_SetENCFilterClock(3, 12), PARAMETER_ERR);
+    assert_eq!(
+        (filters(0), filters(1)),
+        ([0; 4], [0; 4]),
+        "nothing changed"
+    );
+    // Any WORD, as for the limit, home and GPIO filter clocks (the manuals give no
+    // range); kept beside them: [limit, home, GPIO, encoder].
+    assert_eq!(MCC_SetENCFilterClock(0xFFFF, 1), NO_ERR);
+    assert_eq!(MCC_SetENCFilterClock(0, 0), NO_ERR);
+    assert_eq!(MCC_SetLimitFilterClk(2, 1), NO_ERR);
+    assert_eq!(MCC_SetGpioFilterClk(4, 1), NO_ERR);
+    assert_eq!((filters(0), filters(1)), ([0; 4], [2, 0, 4, 0xFFFF]));
+    // The simulated encoder has no noise to filter: the count is unchanged by it.
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    assert!(line_x(1.0) >= 0);
+    run(1000);
+    assert_eq!(enc(0), 500, "1 UU at 500 pulses per UU, x4");
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}

@@ -31,6 +31,8 @@ pub struct ChannelSpec {
     pub index_phase: u32,
     /// First-order lag time constant of the plant (s); `None`: ideal.
     pub lag_s: Option<f64>,
+    /// The home sensor is a normally-closed contact: its input is low while hit.
+    pub home_nc: bool,
 }
 
 impl ChannelSpec {
@@ -46,6 +48,7 @@ impl ChannelSpec {
                 crate::sim::config::Plant::Ideal => None,
                 crate::sim::config::Plant::Lag { tau_s } => Some(tau_s),
             },
+            home_nc: c.home_nc,
         }
     }
 }
@@ -105,6 +108,8 @@ pub struct Channel {
     pub index_events: u32,
     /// The last index pulse passed, as a raw count.
     pub last_index_count: Option<i64>,
+    /// Motor positions (pulses, machine frame) at the start and end of the last step.
+    last_move: (f64, f64),
     /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
     pub latched: [bool; 2],
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`, 1..32767).
@@ -139,6 +144,7 @@ impl Channel {
             raw: [false; 3],
             index_events: 0,
             last_index_count: None,
+            last_move: (0.0, 0.0),
             latched: [false; 2],
             max_speed: MAX_PULSE_LIMIT,
             max_acc: MAX_PULSE_LIMIT,
@@ -184,6 +190,24 @@ impl Channel {
         self.prev_delta = 0;
         self.comp = Compensation::new(&self.comp_param);
         self.set_encoder(count);
+        self.update_sensors();
+    }
+
+    /// Go home's end (user manual §2.8): the commanded position becomes the working home,
+    /// pulse 0 of the command counter, and the encoder reads 0 there. The motor does not
+    /// move (a lagging one keeps its following error); compensation restarts from its
+    /// home point (`wHome_No`).
+    pub fn home_here(&mut self) {
+        let here = self.out as f64;
+        self.base += here;
+        self.actual -= here;
+        self.cmd = 0;
+        self.out = 0;
+        self.prev_out = 0;
+        self.prev_delta = 0;
+        self.last_move = (self.base + self.actual, self.base + self.actual);
+        self.comp = Compensation::new(&self.comp_param);
+        self.set_encoder(0);
         self.update_sensors();
     }
 
@@ -332,12 +356,40 @@ impl Channel {
         }
     }
 
-    /// The home sensor as the card reads it with the go-home wiring `mode`.
+    /// The home sensor as the card reads it with the go-home wiring `mode`: the input is
+    /// high while a normally-open contact is hit (low for a normally-closed one,
+    /// `home_contact = "nc"`); `SL_NORMAL_OPEN` reads high as active, `SL_NORMAL_CLOSE`
+    /// low. A setting that does not match the contact reads active while nothing is hit.
     pub fn home_level(&self, mode: u16) -> bool {
+        let input = self.raw[0] != self.spec.home_nc;
         match mode {
-            c::SL_NORMAL_CLOSE => !self.raw[0],
-            _ => self.raw[0],
+            c::SL_NORMAL_CLOSE => !input,
+            _ => input,
         }
+    }
+
+    fn index_grid(&self) -> (i64, i64) {
+        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
+        (spacing, i64::from(self.spec.index_phase))
+    }
+
+    /// The `n`th (from 0) index pulse the motor passed in the last step, in the pulse
+    /// frame of the command counter (what a latch captures), or `None` when it passed
+    /// fewer than `n + 1`. Pulses are passed in the order of the motion.
+    pub fn index_passed(&self, n: u32) -> Option<i64> {
+        let (spacing, phase) = self.index_grid();
+        let k = |x: f64| (x.floor() as i64 - phase).div_euclid(spacing);
+        let (from, to) = self.last_move;
+        let (a, b) = (k(from), k(to));
+        let n = i64::from(n);
+        let idx = if b > a {
+            // Moving up: pulses a+1 ..= b.
+            (a + 1 + n <= b).then_some(a + 1 + n)
+        } else {
+            // Moving down: pulses a, a-1, ..., b+1.
+            (a - n > b).then_some(a - n)
+        }?;
+        Some(idx * spacing + phase - self.base as i64)
     }
 
     /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
@@ -375,12 +427,12 @@ impl Channel {
 
     fn count_index(&mut self, from: f64, to: f64) {
         self.index_events = 0;
+        self.last_move = (from, to);
         if from == to {
             return;
         }
         // Index pulses in x4 counts of the motor position: one count per pulse.
-        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
-        let phase = i64::from(self.spec.index_phase);
+        let (spacing, phase) = self.index_grid();
         // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
         // between pulses rounds down to the pulse it has passed.
         let k = |x: f64| (x.floor() as i64 - phase).div_euclid(spacing);
@@ -403,8 +455,9 @@ pub struct CardSettings {
     pub dividers: [u32; 2],
     /// LED outputs, one bit per channel.
     pub leds: u8,
-    /// Limit, home and GPIO input filter clocks.
-    pub filters: [u16; 3],
+    /// Limit, home, GPIO and encoder input filter clocks (kept: the simulated inputs
+    /// neither bounce nor pick up noise).
+    pub filters: [u16; 4],
     /// Closed-loop error counter thresholds (+, −) per channel.
     pub error_threshold: [(u16, u16); AXES],
 }

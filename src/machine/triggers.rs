@@ -1,8 +1,8 @@
 //! What the card's inputs trigger (user manual §2.7.4, §2.9.3, §2.10; examples manual
 //! §25–30, §39): encoder compare values (a stock per channel, fired one after the other
 //! when the count reaches each), 3-D compare, the index trigger and status, the encoder
-//! latch, local-input interrupts from the limit and home sensors, local outputs pulsed by
-//! a compare (trigger-out), and the closed-loop error thresholds.
+//! latch, local-input interrupts from the limit and home sensors, local outputs and LEDs
+//! pulsed by a compare (trigger-out), and the closed-loop error thresholds.
 
 use super::{Channel, SensorLevels};
 use crate::config::AXES;
@@ -50,6 +50,13 @@ pub struct CardTriggers {
     pub trig_until: [Option<u128>; AXES],
     /// Output levels driven by trigger-out (bit per point), `None` where not driven.
     pub trig_level: [Option<bool>; AXES],
+    /// LED trigger-out per LED point (`MCC_SetLedTrigOut*`): enabled, value while active
+    /// (true: lit), source bits. The LEDs share the trigger period.
+    pub led_trig_out: [(bool, bool, u16); AXES],
+    /// Until when each triggered LED holds (virtual ns).
+    pub led_trig_until: [Option<u128>; AXES],
+    /// LED levels driven by trigger-out, `None` where not driven.
+    pub led_trig_level: [Option<bool>; AXES],
     prev_count: [i64; AXES],
     prev_over: [(bool, bool); AXES],
 }
@@ -72,6 +79,9 @@ impl Default for CardTriggers {
             trig_period_ns: 0,
             trig_until: [None; AXES],
             trig_level: [None; AXES],
+            led_trig_out: [(false, false, 0); AXES],
+            led_trig_until: [None; AXES],
+            led_trig_level: [None; AXES],
             prev_count: [0; AXES],
             prev_over: [(false, false); AXES],
         }
@@ -81,6 +91,30 @@ impl Default for CardTriggers {
 /// Whether the count went from `a` to `b` through (or onto) `v`.
 fn reached(a: i64, b: i64, v: i64) -> bool {
     (a < v && v <= b) || (a > v && v >= b) || (a == v && b == v)
+}
+
+/// Trigger-out of one kind of output after the compares of a tick: an enabled point whose
+/// source includes a compare that fired holds its value until `now_ns + period_ns`
+/// (again from now if it was holding); a point whose hold ended returns to its own level.
+fn trigger_outputs(
+    outs: &[(bool, bool, u16); AXES],
+    until: &mut [Option<u128>; AXES],
+    level: &mut [Option<bool>; AXES],
+    compares: &[usize],
+    now_ns: u128,
+    period_ns: u64,
+) {
+    for pt in 0..AXES {
+        let (en, val, src) = outs[pt];
+        let hit = compares.iter().any(|&c| src & (1 << c) != 0);
+        if en && hit {
+            level[pt] = Some(val);
+            until[pt] = Some(now_ns + u128::from(period_ns));
+        } else if until[pt].is_some_and(|u| now_ns >= u) {
+            until[pt] = None;
+            level[pt] = None;
+        }
+    }
 }
 
 fn edge(kind: u16, before: bool, now: bool) -> bool {
@@ -115,8 +149,8 @@ impl CardTriggers {
     }
 
     /// Whether anything on the card is armed: compares, index or local-input interrupts,
-    /// latches, closed-loop thresholds or a trigger-out holding. A card with nothing armed
-    /// skips its tick (re-arming a compare rebases the counts).
+    /// latches, closed-loop thresholds or a trigger-out (output or LED) holding. A card
+    /// with nothing armed skips its tick (re-arming a compare rebases the counts).
     fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
         self.comp_enabled.iter().any(|&e| e)
             || self.index_enabled.iter().any(|&e| e)
@@ -124,6 +158,7 @@ impl CardTriggers {
             || self.latch_source.iter().any(|&s| s != 0)
             || thresholds.iter().any(|&(p, m)| p > 0 || m > 0)
             || self.trig_until.iter().any(Option::is_some)
+            || self.led_trig_until.iter().any(Option::is_some)
     }
 
     /// One tick: `chans` after their step, `thresholds` the closed-loop error bounds,
@@ -235,25 +270,25 @@ impl CardTriggers {
         }
         for &i in &out.compares {
             out.interrupts.push(Interrupt::EncComp(i as u8));
-            // Trigger-out: outputs whose source includes this compare hold their value.
-            for pt in 0..AXES {
-                let (en, val, src) = self.trig_out[pt];
-                if en && src & (1 << i) != 0 {
-                    self.trig_level[pt] = Some(val);
-                    self.trig_until[pt] = Some(now_ns + u128::from(self.trig_period_ns));
-                }
-            }
         }
-        for pt in 0..AXES {
-            let retriggered = out
-                .compares
-                .iter()
-                .any(|&c| self.trig_out[pt].2 & (1 << c) != 0);
-            if self.trig_until[pt].is_some_and(|u| now_ns >= u) && !retriggered {
-                self.trig_until[pt] = None;
-                self.trig_level[pt] = None;
-            }
-        }
+        // Trigger-out: local outputs and LEDs whose source includes a compare that fired.
+        let period = self.trig_period_ns;
+        trigger_outputs(
+            &self.trig_out,
+            &mut self.trig_until,
+            &mut self.trig_level,
+            &out.compares,
+            now_ns,
+            period,
+        );
+        trigger_outputs(
+            &self.led_trig_out,
+            &mut self.led_trig_until,
+            &mut self.led_trig_level,
+            &out.compares,
+            now_ns,
+            period,
+        );
         self.prev_count = counts;
         out
     }
@@ -310,6 +345,42 @@ mod tests {
         assert_eq!(t.trig_level[1], Some(true));
         t.tick(&ch, &lv, &th, 501_000_000);
         assert_eq!(t.trig_level[1], None, "back after 0.5 s");
+    }
+
+    #[test]
+    fn led_trigger_out_follows_its_own_source_and_the_shared_period() {
+        let mut ch = chans();
+        let mut t = CardTriggers::default();
+        t.stock[2].extend([10, 20]);
+        t.comp_enabled[2] = true;
+        t.led_trig_out[5] = (true, true, 1 << 2); // LED 5 lights on compare 2
+        t.led_trig_out[6] = (true, true, 1 << 3); // LED 6 waits for compare 3
+        t.trig_out[5] = (false, true, 1 << 2); // the local output 5 is not enabled
+        t.trig_period_ns = 3_000_000;
+        let lv = [SensorLevels::default(); AXES];
+        let th = [(0, 0); AXES];
+        ch[2].step(15, 0.001);
+        t.tick(&ch, &lv, &th, 1_000_000);
+        assert_eq!(t.led_trig_level[5], Some(true), "compare 2 passed 10");
+        assert_eq!((t.led_trig_level[6], t.trig_level[5]), (None, None));
+        t.tick(&ch, &lv, &th, 3_000_000);
+        assert_eq!(t.led_trig_level[5], Some(true), "held until 4 ms");
+        ch[2].step(25, 0.001);
+        t.tick(&ch, &lv, &th, 4_000_000);
+        assert_eq!(
+            t.led_trig_level[5],
+            Some(true),
+            "retriggered at 4 ms: until 7 ms"
+        );
+        t.tick(&ch, &lv, &th, 6_000_000);
+        assert_eq!(t.led_trig_level[5], Some(true));
+        t.tick(&ch, &lv, &th, 7_000_000);
+        assert_eq!(t.led_trig_level[5], None, "back after the period");
+        t.comp_enabled[2] = false;
+        assert!(
+            !t.armed(&th),
+            "no LED holds any more: the card may skip its ticks"
+        );
     }
 
     #[test]

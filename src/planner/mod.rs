@@ -19,6 +19,7 @@
 
 #![warn(missing_docs)]
 
+mod axis1d;
 mod blend;
 mod path;
 mod profile;
@@ -28,6 +29,7 @@ mod ramp;
 #[cfg(test)]
 mod tests;
 
+pub use axis1d::Axis1D;
 pub use blend::{blended_position, blended_velocity, PathMove};
 pub use path::{ArcSeg, LineSeg, Path, Plane};
 pub use profile::Profile;

@@ -74,6 +74,9 @@ pub enum AdcSource {
 pub struct ChannelSim {
     /// Home sensor region `(from, to)`, active while `from ≤ position ≤ to`; `from < to`.
     pub home: Option<(f64, f64)>,
+    /// The home sensor is a normally-closed contact (`home_contact = "nc"`): its input
+    /// is low while hit. Default: normally open, high while hit.
+    pub home_nc: bool,
     /// The + limit switch is active while `position ≥ limit_plus`.
     pub limit_plus: Option<f64>,
     /// The − limit switch is active while `position ≤ limit_minus` (< `limit_plus`).
@@ -93,6 +96,7 @@ pub struct ChannelSim {
 /// An ideal channel: no sensors, index pulses once per turn, no lag, ADC at 0 V.
 const IDEAL_CHANNEL: ChannelSim = ChannelSim {
     home: None,
+    home_nc: false,
     limit_plus: None,
     limit_minus: None,
     index_spacing: None,
@@ -287,6 +291,7 @@ struct RawCard {
 struct RawChannel {
     index: Spanned<i64>,
     home: Option<Spanned<Vec<Spanned<f64>>>>,
+    home_contact: Option<Spanned<String>>,
     limit_plus: Option<Spanned<f64>>,
     limit_minus: Option<Spanned<f64>>,
     index_spacing: Option<Spanned<i64>>,
@@ -434,6 +439,16 @@ impl Validator<'_> {
                         "must be [from, to], two numbers, not {} value(s)",
                         other.len()
                     ),
+                ),
+            }
+        }
+        if let Some(contact) = &raw.home_contact {
+            match contact.get_ref().as_str() {
+                "no" => ch.home_nc = false,
+                "nc" => ch.home_nc = true,
+                other => self.fail(
+                    contact.span(),
+                    format!("must be \"no\" (normally open) or \"nc\" (normally closed), not \"{other}\""),
                 ),
             }
         }
@@ -853,6 +868,7 @@ mod tests {
         want.cards[0].mc3b_port = Some("/dev/pts/5".to_owned());
         want.cards[0].channels[0] = ChannelSim {
             home: Some((-1.0, 1.0)),
+            home_nc: false,
             limit_plus: Some(100.0),
             limit_minus: Some(-100.0),
             index_spacing: Some(2000),
@@ -1321,6 +1337,19 @@ index = 11
                 "set 1 slave 4 is configured twice",
                 "line 5",
             ],
+        );
+    }
+
+    #[test]
+    fn home_contact() {
+        let ok = "[[card]]\nindex = 0\n[[card.channel]]\nindex = 1\nhome_contact = \"nc\"\n";
+        let cfg = SimConfig::parse(ok, "t.toml").expect("nc parses");
+        assert!(cfg.channel(0, 1).home_nc && !cfg.channel(0, 0).home_nc);
+        let text = ok.replace("\"nc\"", "\"closed\"");
+        assert_msg(
+            &err(&text),
+            5,
+            &["card[0].channel[1].home_contact", "\"no\"", "\"closed\""],
         );
     }
 
