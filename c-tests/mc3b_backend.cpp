@@ -292,6 +292,8 @@ int main(int argc, char **argv)
     // What the MC3B cannot do is refused, and nothing is queued.
     CHECK_EQ(MCC_EnableBlend(0), COMMAND_NOTACCEPTED_ERR);
     CHECK_EQ(MCC_EnableDryRun(), COMMAND_NOTACCEPTED_ERR);
+    CHECK_EQ(MCC_Home(0, 0, 0, 255, 255, 255, 255, 255, 0), COMMAND_NOTACCEPTED_ERR);
+    CHECK_EQ(MCC_GetGoHomeStatus(), HOME_COMMAND_NOTCALLED_ERR);
     CHECK_EQ(MCC_Line(0, 0, 0, 5, 0, 0, 0, 0, 0), PARAMETER_ERR);   // U: channel 3
     CHECK(MCC_Line(30, 0, 0, 0, 0, 0, 0, 0, 0) >= 0);
     CHECK_EQ(MCC_HoldMotion(0, 0), COMMAND_NOTACCEPTED_ERR);       // no pause mid-move

@@ -271,6 +271,10 @@ impl GroupState {
 
     /// `MCC_Home` starts on the channels of axes `mask`: the group must be idle.
     pub fn begin_homing(&mut self, mask: u32) -> McclResult<()> {
+        // An MC3B homes with its own `H` command, which is not wired up: refused.
+        if self.external.is_some() {
+            return Err(McclError::NotAccepted);
+        }
         if self.busy() {
             return Err(McclError::NotFinished);
         }

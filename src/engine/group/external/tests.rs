@@ -334,6 +334,9 @@ fn what_the_mc3b_cannot_do_is_refused() {
     assert_eq!(r.g.enqueue(cmd), Err(McclError::Parameter));
     // More than 2^32 - 1 steps in one move.
     assert_eq!(r.line(5.0e7, 0.0), Err(McclError::Parameter));
+    // Go home runs on the simulated machine, not on the MC3B: refused.
+    assert_eq!(r.g.begin_homing(1), Err(McclError::NotAccepted));
+    assert_eq!(r.g.homing(), 0);
     // Hold now: refused; hold at the end of the job: accepted.
     r.line(1.0, 0.0).expect("line");
     r.g.tick(0.001);
