@@ -11,6 +11,12 @@
 // the arc's end), so the tolerance at command ends is 0 steps. MCC_GetPulsePos and
 // MCC_GetCurPos on the MC3B card must report those same confirmed steps.
 //
+// Go home (mode 9) runs the MC3B's own homing: X's − limit switch is MC3B input 0
+// (`mc3b_limit_bits`, active high as wOverTravelDownSensorMode = SL_NORMAL_OPEN says); the
+// test works the switch through the emulator's control channel while X seeks, backs off
+// at 10 steps/s and approaches again; then phase 3 moves dfOffset (1 UU = 100 steps) up
+// and X reads 0 there.
+//
 // Then what is MC3B-specific: two groups on one MC3B (GROUP_PARAMETER_ERR),
 // MCC_InitSimulation (never opens the port), refused functions and their codes,
 // MCC_JogConti stopped by MCC_AbortMotion (the position is then an estimate; the error
@@ -148,6 +154,9 @@ static void set_params()
     p.wOverTravelDownSensorMode = SL_UNUSED;
     for (WORD ch = 0; ch < MAX_AXIS_NUM; ch++)
         CHECK_EQ(MCC_SetMacParam(&p, ch, 0), NO_ERR);
+    // X's − limit switch is wired normally open (on the MC3B: input 0, active at +5 V).
+    p.wOverTravelDownSensorMode = SL_NORMAL_OPEN;
+    CHECK_EQ(MCC_SetMacParam(&p, 0, 0), NO_ERR);
     CHECK_EQ(MCC_CloseAllGroups(), NO_ERR);
     // X, Y, Z on the MC3B's motors 0..2, U on channel 3 (which the MC3B does not have).
     CHECK_EQ(MCC_CreateGroup(0, 1, 2, 3, -1, -1, -1, -1, 0), 0);
@@ -216,7 +225,8 @@ int main(int argc, char **argv)
     char simfile[] = "/tmp/mc3b_backend_XXXXXX";
     int fd = mkstemp(simfile);
     CHECK(fd >= 0);
-    std::string toml = "[[card]]\nindex = 0\nmc3b_port = \"" + emu.path + "\"\n";
+    std::string toml = "[[card]]\nindex = 0\nmc3b_port = \"" + emu.path + "\"\n"
+                       "[[card.channel]]\nindex = 0\nmc3b_limit_bits = [-1, 0]\n";
     CHECK(write(fd, toml.data(), toml.size()) == (ssize_t)toml.size());
     close(fd);
     char badfile[] = "/tmp/mc3b_backend_bad_XXXXXX";
@@ -317,6 +327,66 @@ int main(int argc, char **argv)
     CHECK(dev[0] < 3000 - 200 && dev[0] > 3000 - 600);
     CHECK(labs(err) <= 25);
     CHECK_EQ(MCC_GetErrorCode(0), 0);
+
+    // Go home, mode 9, down at 10 UU/s (1000 steps/s), dfOffset 1 UU.
+    SYS_HOME_CONFIG h;
+    memset(&h, 0, sizeof h);
+    h.wMode = 9;
+    h.wDirection = 1;
+    h.dfHighSpeed = 10;
+    h.dfLowSpeed = 2;
+    h.dfAccTime = 20;
+    h.dfDecTime = 20;
+    h.dfOffset = 1;
+    CHECK_EQ(MCC_SetHomeConfig(&h, 0, 0), NO_ERR);
+    CHECK(emu_pos(emu, dev));
+    long from = dev[0];
+    CHECK_EQ(MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0), NO_ERR);
+    CHECK_EQ(MCC_GetGoHomeStatus(), 0);
+    CHECK_EQ(MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0), COMMAND_NOTFINISHED_ERR);
+    CHECK_EQ(MCC_Line(1, 0, 0, 0, 0, 0, 0, 0, 0), COMMAND_NOTACCEPTED_ERR);
+    // Waits (at most 5 s) until X's step counter passes `edge` downwards (down) or upwards.
+    auto wait_x = [&](long edge, bool down, const char *what) {
+        double t0 = now_s();
+        long d[3] = {0, 0, 0};
+        while (emu_pos(emu, d) && (down ? d[0] > edge : d[0] < edge) && now_s() - t0 < 5)
+            usleep(2000);
+        if (down ? d[0] > edge : d[0] < edge) {
+            fprintf(stderr, "mc3b_backend: %s: X at %ld, not past %ld\n", what, d[0], edge);
+            CHECK(!"X moved as the homing should");
+        }
+        return d[0];
+    };
+    wait_x(from - 300, true, "seeking the - limit");
+    CHECK(ctl(emu, "home 0 1 1").rfind("ok", 0) == 0);          // the switch closes: X stops, backs off
+    long stop = wait_x(from - 300, true, "stopped");
+    wait_x(stop + 2, false, "backing off at 10 steps/s");
+    CHECK(ctl(emu, "home 0 1 0").rfind("ok", 0) == 0);          // off the switch: it approaches again
+    long back = wait_x(stop + 2, false, "turned");
+    wait_x(back - 1, true, "approaching at 10 steps/s");
+    CHECK(ctl(emu, "home 0 1 1").rfind("ok", 0) == 0);          // on the switch: the machine home
+    CHECK(emu_pos(emu, dev));
+    long edge = dev[0];
+    double t0 = now_s();
+    while (MCC_GetGoHomeStatus() == 0 && now_s() - t0 < 5)
+        MCC_TimeDelay(5);
+    CHECK_EQ(MCC_GetGoHomeStatus(), 1);
+    CHECK(emu_pos(emu, dev));
+    printf("go home on the MC3B: switch found at %ld steps, working home at %ld\n", edge, dev[0]);
+    CHECK(labs(dev[0] - (edge + 100)) <= 1);        // phase 3: dfOffset = 100 steps up
+    CHECK_EQ(MCC_GetCurPos(&x, &y, &z, &u, &v, &w, &a, &b, 0), NO_ERR);
+    CHECK_EQ(x, 0.0);
+    CHECK_EQ(pulses(0).p[0], 0L);
+    long home = dev[0];
+    CHECK(MCC_Line(2, 0, 0, 0, 0, 0, 0, 0, 0) >= 0);
+    wait_stop(0, 10, "the move from the working home");
+    CHECK(emu_pos(emu, dev));
+    CHECK_EQ(dev[0], home + 200);
+    CHECK_EQ(MCC_GetErrorCode(0), 0);
+    // Modes that need a home sensor or the index: not on an MC3B.
+    h.wMode = 3;
+    CHECK_EQ(MCC_SetHomeConfig(&h, 0, 0), NO_ERR);
+    CHECK_EQ(MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0), COMMAND_NOTACCEPTED_ERR);
 
     // The emulator goes away: the next move fails and the group records 0xF901.
     CHECK(ctl(emu, "quit") == "ok");

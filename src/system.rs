@@ -134,7 +134,9 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     // Cards whose channels 0..2 are an MC3B (never under MCC_InitSimulation): a real
     // device moves in real time, so the realtime clock runs.
     let mc3b = match kind {
-        InitKind::System => crate::mc3b::backend::open_devices(&sim, cards.len(), &groups)?,
+        InitKind::System => {
+            crate::mc3b::backend::open_devices(&sim, cards.len(), &groups, &sys.config.mac)?
+        }
         InitKind::Simulation => Vec::new(),
     };
     let mode = if mc3b.is_empty() || mode == ClockMode::Realtime {

@@ -269,9 +269,9 @@ impl GroupState {
         self.homing
     }
 
-    /// `MCC_Home` starts on the channels of axes `mask`: the group must be idle.
+    /// `MCC_Home` on the simulated machine starts on the channels of axes `mask`: the
+    /// group must be idle. A group on an MC3B homes on the device (`begin_mc3b_home`).
     pub fn begin_homing(&mut self, mask: u32) -> McclResult<()> {
-        // An MC3B homes with its own `H` command, which is not wired up: refused.
         if self.external.is_some() {
             return Err(McclError::NotAccepted);
         }
@@ -768,7 +768,7 @@ impl GroupState {
 
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
-        if self.homing != 0 {
+        if self.homing != 0 && self.external.is_none() {
             // The homing sets the positions (`set_homing_axis`).
             self.update_status();
             return;

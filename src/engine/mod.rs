@@ -90,6 +90,10 @@ pub struct Shared {
     /// A fast-clock wait on the go-home status in progress: the status it saw, or
     /// `i32::MIN` when none.
     home_watch: AtomicI32,
+    /// Cards whose channels 0..2 are an MC3B, one bit each.
+    mc3b_cards: AtomicU32,
+    /// The card whose MC3B runs a go home, or -1.
+    mc3b_home_card: AtomicI32,
     trace: Mutex<Option<trace::Trace>>,
 }
 
@@ -230,6 +234,12 @@ impl Shared {
         if self.dry_run.load(Ordering::Acquire) {
             return Err(McclError::NotAccepted);
         }
+        if self.home_status.load(Ordering::Acquire) == homing::HOME_BUSY {
+            return Err(McclError::NotFinished);
+        }
+        if self.mc3b_cards.load(Ordering::Acquire) & (1 << card) != 0 {
+            return self.start_mc3b_homing(card, orders, cfgs);
+        }
         let machine = self.machine.lock();
         let chans = machine.cards.get(card).ok_or(McclError::Parameter)?;
         let mut slot = self.homing.lock();
@@ -273,10 +283,60 @@ impl Shared {
         Ok(())
     }
 
+    /// Marks `card` as an MC3B (its groups run on the device).
+    pub fn mark_mc3b(&self, card: usize) {
+        if card < 32 {
+            self.mc3b_cards.fetch_or(1 << card, Ordering::AcqRel);
+        }
+    }
+
+    /// `MCC_Home` on a card whose channels 0..2 are an MC3B: the device's own homing
+    /// (`H`: seek the limit switch at the maximum velocity, back off and approach it at
+    /// 10 steps/s), which is modes 9 and 16 of the manual; then phase 3 (`dfOffset`) as a
+    /// move. `COMMAND_NOTACCEPTED_ERR` for another mode (the MC3B has no home sensor and
+    /// no index input), a channel above 2, a channel no group drives, or a motor with no
+    /// limit switch in the search direction (`mc3b_limit_bits`: it would seek for ever).
+    fn start_mc3b_homing(
+        &self,
+        card: usize,
+        orders: [i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<()> {
+        let homed: Vec<usize> = (0..AXES)
+            .filter(|&c| orders[c] != homing::ORDER_SKIP)
+            .collect();
+        if homed.is_empty() {
+            self.home_status.store(homing::HOME_DONE, Ordering::Release);
+            return Ok(());
+        }
+        for g in &self.groups {
+            let mut g = g.lock();
+            if g.def.card.0 != card || !g.is_external() {
+                continue;
+            }
+            let (mask, stages, motors) = g.plan_mc3b_home(&orders, cfgs)?;
+            g.begin_mc3b_home(mask, stages, motors)?;
+            self.publish(&mut g);
+            self.mc3b_home_card
+                .store(i32::try_from(card).unwrap_or(-1), Ordering::Release);
+            self.home_status.store(homing::HOME_BUSY, Ordering::Release);
+            return Ok(());
+        }
+        Err(McclError::NotAccepted)
+    }
+
     /// `MCC_AbortGoHome`: the homing channels decelerate to a stop and the homing ends
     /// without completing. `HOME_COMMAND_NOTCALLED_ERR` when no homing was started (or
     /// the last one was aborted); `NO_ERR` after one completed.
     pub fn abort_homing(&self) -> McclResult<()> {
+        if let Ok(card) = usize::try_from(self.mc3b_home_card.load(Ordering::Acquire)) {
+            self.for_each_group(|g| {
+                if g.def.card.0 == card {
+                    g.abort_mc3b_home();
+                }
+            });
+            return Ok(());
+        }
         match self.homing.lock().as_mut() {
             Some(h) => {
                 h.abort();
@@ -290,7 +350,8 @@ impl Shared {
     /// Drops a homing in progress (`MCC_ResetMotion`, `MCC_UpdateParam`): the channels
     /// stop where they are.
     fn cancel_homing(&self) {
-        if self.homing.lock().take().is_some() {
+        let mc3b = self.mc3b_home_card.swap(-1, Ordering::AcqRel) >= 0;
+        if self.homing.lock().take().is_some() || mc3b {
             self.home_status.store(homing::HOME_NONE, Ordering::Release);
         }
     }
@@ -413,6 +474,12 @@ impl Shared {
             g.tick(dt);
             if let Some(h) = &homed {
                 apply_homing(&mut g, h);
+            }
+            if let Some(status) = g.take_home_result() {
+                // A go home on an MC3B ended.
+                self.home_status.store(status, Ordering::Release);
+                self.mc3b_home_card.store(-1, Ordering::Release);
+                g.end_homing();
             }
             own_checks[n] = g.has_safety_checks();
             let outputs = g.take_outputs();
@@ -647,6 +714,8 @@ impl Engine {
             home_status: AtomicI32::new(homing::HOME_NONE),
             home_poll: AtomicU64::new(u64::MAX),
             home_watch: AtomicI32::new(i32::MIN),
+            mc3b_cards: AtomicU32::new(0),
+            mc3b_home_card: AtomicI32::new(-1),
             trace: Mutex::new(trace),
         });
         shared.for_each_group(|_| {});

@@ -277,6 +277,15 @@ pub enum Job {
         /// Settings of the motors that move.
         speeds: [Option<Speeds>; MOTORS],
     },
+    /// The MC3B's own homing (`H`, §4.14, §6.9) of the motors given a direction 0/1:
+    /// seek the limit switch of that direction at the maximum velocity, back off and
+    /// approach it again at 10 steps/s. Ends when every one of them is idle.
+    Home {
+        /// Direction per motor (`None`: that motor stays).
+        dirs: [Option<u32>; MOTORS],
+        /// Settings of the motors that home.
+        speeds: [Option<Speeds>; MOTORS],
+    },
 }
 
 impl Job {
@@ -290,13 +299,42 @@ impl Job {
                 t
             }),
             Job::Independent { steps, .. } => *steps,
+            // Where a homing ends is the device's to find: no planned travel.
+            Job::Home { .. } => [0; MOTORS],
         }
     }
 
     fn speeds(&self) -> &[Option<Speeds>; MOTORS] {
         match self {
-            Job::Sync { speeds, .. } | Job::Independent { speeds, .. } => speeds,
+            Job::Sync { speeds, .. }
+            | Job::Independent { speeds, .. }
+            | Job::Home { speeds, .. } => speeds,
         }
+    }
+
+    /// The direction (0 up, 1 down) each motor travels last in the job, if it moves.
+    fn last_dirs(&self) -> [Option<u32>; MOTORS] {
+        let mut d = [None; MOTORS];
+        match self {
+            Job::Sync { segs, .. } => {
+                for s in segs {
+                    for m in 0..MOTORS {
+                        if s[m] != 0 {
+                            d[m] = Some(u32::from(s[m] < 0));
+                        }
+                    }
+                }
+            }
+            Job::Independent { steps, .. } => {
+                for m in 0..MOTORS {
+                    if steps[m] != 0 {
+                        d[m] = Some(u32::from(steps[m] < 0));
+                    }
+                }
+            }
+            Job::Home { dirs, .. } => d = *dirs,
+        }
+        d
     }
 
     fn moving(&self) -> [bool; MOTORS] {
@@ -314,6 +352,11 @@ impl Job {
                     m[i] = steps[i] != 0;
                 }
             }
+            Job::Home { dirs, .. } => {
+                for i in 0..MOTORS {
+                    m[i] = dirs[i].is_some();
+                }
+            }
         }
         m
     }
@@ -326,6 +369,10 @@ pub enum Fault {
     Link,
     /// The device refused a command or answered out of turn ([`ERR_MC3B_DEVICE`]).
     Device,
+    /// Motor `0` ended a move at its limit switch for the direction it travelled: the
+    /// MC3B stopped it there, short of the move's end (where exactly it cannot say).
+    /// The group records 0xF701 + the axis on that motor.
+    Limit(usize),
 }
 
 impl Fault {
@@ -334,6 +381,7 @@ impl Fault {
         match self {
             Fault::Link => ERR_MC3B_LINK,
             Fault::Device => ERR_MC3B_DEVICE,
+            Fault::Limit(_) => crate::engine::safety::ERR_LIMIT,
         }
     }
 
@@ -480,11 +528,36 @@ pub struct Worker<T: Transport> {
 /// Controller ID of the MC3B (no daisy chaining, §4.2).
 const ID: u8 = 0;
 
+/// The home (limit) masks of one motor as §6.5 sends them: AND and XOR for direction 0,
+/// then for direction 1. All 0: no limit switch.
+pub type LimitMasks = [u32; 4];
+
+/// The masks of a motor whose direction-0 and direction-1 limit switches are the MC3B
+/// inputs `bits` (0..5, -1 none), each active at the level in `high` (`true`: +5 V).
+pub fn limit_masks(bits: [i8; 2], high: [Option<bool>; 2]) -> LimitMasks {
+    let pair = |bit: i8, level: Option<bool>| match (u8::try_from(bit), level) {
+        (Ok(b @ 0..=5), Some(l)) => super::mcl::limit_masks(i32::from(b), l).unwrap_or((0, 0)),
+        _ => (0, 0),
+    };
+    let (a0, x0) = pair(bits[0], high[0]);
+    let (a1, x1) = pair(bits[1], high[1]);
+    [a0, x0, a1, x1]
+}
+
 /// Opens the conversation with an MC3B on `transport`: `0I` (motors off, defaults) and
 /// `0P` (product 1). Returns the link to give groups and the worker to run.
 pub fn connect<T: Transport>(
     transport: T,
     timeout: Duration,
+) -> Result<(Arc<Link>, Worker<T>), String> {
+    connect_with(transport, timeout, &[[0; 4]; MOTORS])
+}
+
+/// [`connect`], then sets the limit masks of every motor that has limit switches (`L`).
+pub fn connect_with<T: Transport>(
+    transport: T,
+    timeout: Duration,
+    limits: &[LimitMasks; MOTORS],
 ) -> Result<(Arc<Link>, Worker<T>), String> {
     let mut client = Client::new(transport, timeout);
     client
@@ -500,6 +573,23 @@ pub fn connect<T: Transport>(
     let now = client.transport().now();
     let mut model = Emulator::new();
     let _ = model.handle(&Command::Initialize { id: ID });
+    for (m, l) in limits.iter().enumerate() {
+        if l.iter().all(|&x| x == 0) {
+            continue;
+        }
+        let cmd = Command::SetLimits {
+            id: ID,
+            motor: m as u32,
+            h0_and: l[0],
+            h0_xor: l[1],
+            h1_and: l[2],
+            h1_xor: l[3],
+        };
+        client
+            .command(&cmd)
+            .map_err(|e| format!("limit masks of motor {m} (0L): {e}"))?;
+        let _ = model.handle(&cmd);
+    }
     let worker = Worker {
         client,
         link: link.clone(),
@@ -586,6 +676,19 @@ impl<T: Transport> Worker<T> {
                 Outcome::Failed(fault)
             }
         };
+        if let Job::Home { dirs, .. } = job {
+            // The model has no limit inputs: it would seek for ever. Where the homing
+            // ended is the group's new origin; the model goes on from there, standing.
+            for (m, d) in dirs.iter().enumerate() {
+                if d.is_some() {
+                    self.catch_up();
+                    let _ = self.model.handle(&Command::Stop {
+                        id: ID,
+                        motor: m as u32,
+                    });
+                }
+            }
+        }
         self.steps = if outcome == Outcome::Done {
             let t = job.total();
             std::array::from_fn(|m| start[m] + t[m])
@@ -706,21 +809,56 @@ impl<T: Transport> Worker<T> {
                     })?;
                 }
             }
+            Job::Home { dirs, .. } => {
+                for (m, d) in dirs.iter().enumerate() {
+                    let Some(direction) = *d else {
+                        continue;
+                    };
+                    if self.link.stop_wanted(id) {
+                        self.stop_motors(&moving)?;
+                        return Ok(Outcome::Stopped);
+                    }
+                    self.send(Command::Home {
+                        id: ID,
+                        motor: m as u32,
+                        direction,
+                    })?;
+                }
+            }
         }
+        let dirs = job.last_dirs();
         loop {
             if self.link.stop_wanted(id) {
                 self.stop_motors(&moving)?;
                 return Ok(Outcome::Stopped);
             }
             let mut running = false;
+            let mut at_limit = None;
             for (m, &mv) in moving.iter().enumerate() {
-                if mv && self.client.query_status(ID, m as u32)?.running {
+                if !mv {
+                    continue;
+                }
+                let st = self.client.query_status(ID, m as u32)?;
+                if st.running {
                     running = true;
                     break;
                 }
+                let home = match dirs[m] {
+                    Some(0) => st.home0,
+                    Some(_) => st.home1,
+                    None => false,
+                };
+                if home && at_limit.is_none() {
+                    at_limit = Some(m);
+                }
             }
             if !running {
-                return Ok(Outcome::Done);
+                // A move that ends on the limit switch ahead was stopped by it (§6.5: no
+                // motion proceeds beyond a home); a homing ends there by design.
+                return Ok(match at_limit {
+                    Some(m) if !matches!(job, Job::Home { .. }) => Outcome::Failed(Fault::Limit(m)),
+                    _ => Outcome::Done,
+                });
             }
             self.pause(id);
         }
@@ -773,14 +911,21 @@ pub struct Device {
     card: usize,
     link: Arc<Link>,
     thread: Option<JoinHandle<()>>,
+    limits: [LimitMasks; MOTORS],
 }
 
 impl Device {
     /// Opens the serial port at `path` (19200 8N1), greets the MC3B and starts the
     /// worker. The error says what failed.
-    pub fn open(card: usize, path: &str, timeout: Duration) -> Result<Device, String> {
+    /// `limits` are the motors' limit masks (`L`), set before anything moves.
+    pub fn open(
+        card: usize,
+        path: &str,
+        timeout: Duration,
+        limits: &[LimitMasks; MOTORS],
+    ) -> Result<Device, String> {
         let port = open_port(path, timeout).map_err(|e| format!("cannot open {path}: {e}"))?;
-        Device::start(card, Box::new(port), timeout).map_err(|e| format!("{path}: {e}"))
+        Device::start(card, Box::new(port), timeout, limits).map_err(|e| format!("{path}: {e}"))
     }
 
     /// [`Device::open`] over any transport.
@@ -788,8 +933,9 @@ impl Device {
         card: usize,
         transport: Box<dyn Transport + Send>,
         timeout: Duration,
+        limits: &[LimitMasks; MOTORS],
     ) -> Result<Device, String> {
-        let (link, worker) = connect(transport, timeout)?;
+        let (link, worker) = connect_with(transport, timeout, limits)?;
         if link.shut_down() {
             return Err("link closed".into());
         }
@@ -801,7 +947,13 @@ impl Device {
             card,
             link,
             thread: Some(thread),
+            limits: *limits,
         })
+    }
+
+    /// The limit masks set on the device's motors.
+    pub fn limits(&self) -> [LimitMasks; MOTORS] {
+        self.limits
     }
 
     /// The card whose channels 0..2 this MC3B is.
@@ -839,10 +991,11 @@ pub fn open_devices(
     sim: &crate::sim::config::SimConfig,
     cards: usize,
     groups: &[(usize, crate::config::GroupDef)],
+    mac: &crate::engine::MacTable,
 ) -> crate::error::McclResult<Vec<Device>> {
     use crate::error::McclError;
     let mut devices = Vec::new();
-    for card in 0..cards {
+    for (card, mac) in mac.iter().enumerate().take(cards) {
         let Some(path) = sim.card(card).mc3b_port.as_deref() else {
             continue;
         };
@@ -860,7 +1013,9 @@ pub fn open_devices(
             );
             return Err(McclError::Group);
         }
-        match Device::open(card, path, reply_timeout()) {
+        let limits: [LimitMasks; MOTORS] =
+            std::array::from_fn(|m| motor_limits(sim.channel(card, m), &mac[m]));
+        match Device::open(card, path, reply_timeout(), &limits) {
             Ok(d) => devices.push(d),
             Err(msg) => {
                 eprintln!("MCCL: MCC_InitSystem failed: card {card} (MC3B): {msg}");
@@ -871,12 +1026,43 @@ pub fn open_devices(
     Ok(devices)
 }
 
+/// The limit masks of the motor on a channel: its configured `mc3b_limit_bits` (+, −),
+/// each active at the level of the program's wiring setting (`SL_NORMAL_OPEN`: +5 V,
+/// `SL_NORMAL_CLOSE`: 0 V, `SL_UNUSED`: no switch). Direction 0 counts steps up, so the +
+/// switch is direction 0's unless the channel's output is reversed (`wPosToEncoderDir`).
+pub fn motor_limits(
+    ch: &crate::sim::config::ChannelSim,
+    mac: &crate::vendor::SYS_MAC_PARAM,
+) -> LimitMasks {
+    use crate::vendor::consts as c;
+    let Some([plus, minus]) = ch.mc3b_limit_bits else {
+        return [0; 4];
+    };
+    let level = |mode: u16| match mode {
+        c::SL_NORMAL_OPEN => Some(true),
+        c::SL_NORMAL_CLOSE => Some(false),
+        _ => None,
+    };
+    let (up, down) = (
+        level(mac.wOverTravelUpSensorMode),
+        level(mac.wOverTravelDownSensorMode),
+    );
+    if mac.wPosToEncoderDir == 1 {
+        limit_masks([minus, plus], [down, up])
+    } else {
+        limit_masks([plus, minus], [up, down])
+    }
+}
+
 /// Makes every group on the card of a device run on it.
 pub fn attach(shared: &crate::engine::Shared, devices: &[Device]) {
     for d in devices {
+        shared.mark_mc3b(d.card());
+        let limits = d.limits();
         shared.for_each_group(|g| {
             if g.def.card.0 == d.card() {
                 g.attach_mc3b(d.link());
+                g.set_mc3b_limits(limits.map(|l| [l[0] != 0, l[2] != 0]));
             }
         });
     }

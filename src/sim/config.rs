@@ -91,6 +91,9 @@ pub struct ChannelSim {
     pub plant: Plant,
     /// The source of the card's ADC input with this channel's number; `None`: 0 V.
     pub adc: Option<AdcSource>,
+    /// On a card that is an MC3B (channels 0..2): the MC3B limit inputs (bits 0..5, -1
+    /// none) wired as this motor's + and − limit switches (`mc3b_limit_bits`).
+    pub mc3b_limit_bits: Option<[i8; 2]>,
 }
 
 /// An ideal channel: no sensors, index pulses once per turn, no lag, ADC at 0 V.
@@ -103,6 +106,7 @@ const IDEAL_CHANNEL: ChannelSim = ChannelSim {
     index_phase: 0,
     plant: Plant::Ideal,
     adc: None,
+    mc3b_limit_bits: None,
 };
 
 impl ChannelSim {
@@ -298,6 +302,7 @@ struct RawChannel {
     index_phase: Option<Spanned<i64>>,
     plant: Option<Spanned<toml::Value>>,
     adc: Option<Spanned<toml::Value>>,
+    mc3b_limit_bits: Option<Spanned<Vec<Spanned<i64>>>>,
 }
 
 #[derive(Deserialize)]
@@ -393,6 +398,14 @@ impl Validator<'_> {
             }
             first_at[i] = Some(ch.index.span().start);
             card.channels[i] = self.channel(ch);
+            if let Some(bits) = &ch.mc3b_limit_bits {
+                if card.mc3b_port.is_none() || i >= 3 {
+                    self.fail(
+                        bits.span(),
+                        "only for channels 0..2 of a card with mc3b_port (the MC3B's motors)",
+                    );
+                }
+            }
         }
         let mut rio_first_at: Vec<((u8, u8), usize)> = Vec::new();
         for r in &raw.rio {
@@ -501,6 +514,18 @@ impl Validator<'_> {
         }
         if let Some(adc) = &raw.adc {
             ch.adc = self.adc(adc);
+        }
+        if let Some(bits) = &raw.mc3b_limit_bits {
+            match bits.get_ref().as_slice() {
+                [p, m] if (-1..=5).contains(p.get_ref()) && (-1..=5).contains(m.get_ref()) => {
+                    // In range -1..5, so the narrowing keeps the value.
+                    ch.mc3b_limit_bits = Some([*p.get_ref() as i8, *m.get_ref() as i8]);
+                }
+                _ => self.fail(
+                    bits.span(),
+                    "must be [plus, minus]: two MC3B limit input bits 0..5, or -1 for none",
+                ),
+            }
         }
         ch
     }
@@ -875,6 +900,7 @@ mod tests {
             index_phase: 0,
             plant: Plant::Lag { tau_s: 0.02 },
             adc: Some(AdcSource::Dac(0)),
+            mc3b_limit_bits: Some([0, 1]),
         };
         want.cards[0].channels[1].adc = Some(AdcSource::Volts(2.5));
         want.cards[0].rio = vec![
@@ -1351,6 +1377,19 @@ index = 11
             5,
             &["card[0].channel[1].home_contact", "\"no\"", "\"closed\""],
         );
+    }
+
+    #[test]
+    fn mc3b_limit_bits() {
+        let ok = "[[card]]\nindex = 0\nmc3b_port = \"/dev/x\"\n[[card.channel]]\nindex = 2\nmc3b_limit_bits = [5, -1]\n";
+        let cfg = SimConfig::parse(ok, "t.toml").expect("parses");
+        assert_eq!(cfg.channel(0, 2).mc3b_limit_bits, Some([5, -1]));
+        let e = err(&ok.replace("[5, -1]", "[6, 0]"));
+        assert_msg(&e, 6, &["card[0].channel[2].mc3b_limit_bits", "0..5"]);
+        let e = err(&ok.replace("index = 2", "index = 3"));
+        assert_msg(&e, 6, &["mc3b_limit_bits", "channels 0..2"]);
+        let e = err(&ok.replace("mc3b_port = \"/dev/x\"\n", ""));
+        assert_msg(&e, 5, &["mc3b_limit_bits", "mc3b_port"]);
     }
 
     #[test]

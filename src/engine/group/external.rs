@@ -96,13 +96,36 @@ pub struct External {
     next_id: u64,
     /// Take the position of the report awaited as the new origin (`MCC_ResetMotion`).
     rezero: bool,
+    /// Per motor: a limit switch is set for direction 0 and for direction 1.
+    limits: [[bool; 2]; MOTORS],
+    /// A go home in progress on the device (`MCC_Home`).
+    home: Option<HomeRun>,
 }
+
+/// A go home on the MC3B: its own homing (`H`) per order of channels, then the moves to
+/// the working homes; the motors' positions read 0 at the end.
+#[derive(Debug)]
+struct HomeRun {
+    /// Jobs still to run, in order.
+    stages: VecDeque<Job>,
+    /// The job running.
+    current: Option<u64>,
+    /// The motors homed.
+    motors: [bool; MOTORS],
+    /// `MCC_AbortGoHome` asked for a stop.
+    aborted: bool,
+    /// How it ended ([`HOME_DONE`], [`HOME_NONE`]), for the engine to take.
+    result: Option<i32>,
+}
+
+use crate::engine::homing::{HOME_DONE, HOME_NONE};
 
 impl External {
     /// Back to reference position 0 where the device is (`MCC_ResetMotion`,
     /// `MCC_UpdateParam`); a running job is stopped first.
     fn rezeroed(mut self) -> External {
         self.pending.clear();
+        self.home = None;
         match self.phase {
             Phase::Busy { id, .. } | Phase::Stopping { id } => {
                 self.link.request_stop(id);
@@ -153,6 +176,8 @@ impl GroupState {
             phase: Phase::Idle,
             next_id: 1,
             rezero: false,
+            limits: [[false; 2]; MOTORS],
+            home: None,
         });
         self.external_positions();
     }
@@ -234,9 +259,236 @@ impl GroupState {
         x.planned = x.steps;
     }
 
+    /// The error record of a failed job: a limit stop names the axis on its motor.
+    fn fault_record(&self, f: backend::Fault) -> i32 {
+        match (f, &self.external) {
+            (backend::Fault::Limit(m), Some(x)) => {
+                let axis = x.motor.iter().position(|&mm| mm == Some(m)).unwrap_or(0);
+                f.record() + axis as i32
+            }
+            _ => f.record(),
+        }
+    }
+
+    /// The MC3B's limit switches as the device was set up: per motor, direction 0 and 1.
+    pub fn set_mc3b_limits(&mut self, limits: [[bool; 2]; MOTORS]) {
+        if let Some(x) = self.external.as_mut() {
+            x.limits = limits;
+        }
+    }
+
+    /// The jobs of `MCC_Home` with `orders` (per channel, 255 skips) and the go-home
+    /// parameters `cfgs` on this MC3B group: the device's homing (`H`) per order, then
+    /// one move of every motor by its `dfOffset` (phase 3); with the axes mask and the
+    /// motors homed. `COMMAND_NOTACCEPTED_ERR` for a mode other than 9 and 16 (the MC3B
+    /// has no home sensor or index input; its homing is their search of the limit
+    /// switch), a homed channel this group does not drive on the device, or a motor with
+    /// no limit switch in the search direction (it would seek for ever).
+    #[allow(clippy::type_complexity)]
+    pub fn plan_mc3b_home(
+        &self,
+        orders: &[i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<(u32, Vec<Job>, [bool; MOTORS])> {
+        use crate::engine::homing::ORDER_SKIP;
+        let x = self.external.as_ref().ok_or(McclError::NotAccepted)?;
+        if orders[MOTORS..].iter().any(|&o| o != ORDER_SKIP) {
+            return Err(McclError::NotAccepted);
+        }
+        // Per motor: order, direction, speeds, phase-3 steps.
+        let mut plan: [Option<(i32, u32, Speeds, i64)>; MOTORS] = [None; MOTORS];
+        let mut mask = 0u32;
+        for m in 0..MOTORS {
+            if orders[m] == ORDER_SKIP {
+                continue;
+            }
+            let i = x
+                .motor
+                .iter()
+                .position(|&mm| mm == Some(m))
+                .ok_or(McclError::NotAccepted)?;
+            let h = &cfgs[m];
+            if h.wMode != 9 && h.wMode != 16 {
+                return Err(McclError::NotAccepted);
+            }
+            let k = self.axes[i].factor;
+            // Direction 0 counts steps up.
+            let up = (h.wDirection == 0) == (k > 0.0);
+            if !x.limits[m][usize::from(!up)] {
+                return Err(McclError::NotAccepted);
+            }
+            let speeds = backend::speeds_for(
+                h.dfHighSpeed * k.abs(),
+                Ramp::Times {
+                    acc_s: h.dfAccTime / 1000.0,
+                    dec_s: h.dfDecTime / 1000.0,
+                },
+            );
+            plan[m] = Some((
+                orders[m],
+                u32::from(!up),
+                speeds,
+                round_pulses(h.dfOffset * k),
+            ));
+            mask |= 1 << i;
+        }
+        let mut used: Vec<i32> = plan.iter().flatten().map(|p| p.0).collect();
+        used.sort_unstable();
+        used.dedup();
+        let mut stages = Vec::new();
+        for o in used {
+            let pick = |m: usize| plan[m].filter(|p| p.0 == o);
+            stages.push(Job::Home {
+                dirs: std::array::from_fn(|m| pick(m).map(|p| p.1)),
+                speeds: std::array::from_fn(|m| pick(m).map(|p| p.2)),
+            });
+        }
+        let offsets: [i64; MOTORS] = std::array::from_fn(|m| plan[m].map_or(0, |p| p.3));
+        if offsets.iter().any(|&n| n != 0) {
+            stages.push(Job::Independent {
+                steps: offsets,
+                speeds: std::array::from_fn(|m| plan[m].map(|p| p.2)),
+            });
+        }
+        Ok((mask, stages, plan.map(|p| p.is_some())))
+    }
+
+    /// `MCC_Home` on the MC3B: runs `stages` (homings, then the moves to the working
+    /// homes) on the device; axes `mask` are homed (motors `motors`). The group must be
+    /// idle; it takes no motion command until the homing ends.
+    pub fn begin_mc3b_home(
+        &mut self,
+        mask: u32,
+        stages: Vec<Job>,
+        motors: [bool; MOTORS],
+    ) -> McclResult<()> {
+        if self.external.is_none() {
+            return Err(McclError::NotAccepted);
+        }
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        if let Some(x) = self.external.as_mut() {
+            x.home = Some(HomeRun {
+                stages: stages.into(),
+                current: None,
+                motors,
+                aborted: false,
+                result: None,
+            });
+        }
+        self.homing = mask;
+        self.update_status();
+        Ok(())
+    }
+
+    /// `MCC_AbortGoHome` on the MC3B: the job running stops (`S`, at once: the MC3B has
+    /// no controlled stop) and the homing ends without completing.
+    pub fn abort_mc3b_home(&mut self) {
+        if let Some(x) = self.external.as_mut() {
+            if let Some(h) = x.home.as_mut() {
+                h.aborted = true;
+                if let Some(id) = h.current {
+                    x.link.request_stop(id);
+                }
+            }
+        }
+    }
+
+    /// The end of an MC3B go home, once: [`HOME_DONE`] or [`HOME_NONE`].
+    pub fn take_home_result(&mut self) -> Option<i32> {
+        let x = self.external.as_mut()?;
+        let r = x.home.as_ref()?.result?;
+        x.home = None;
+        Some(r)
+    }
+
+    /// Runs the go home in progress; returns whether there is one (then nothing else
+    /// runs this tick).
+    fn tick_home(&mut self) -> bool {
+        let mut record = None;
+        let mut zeroed = [false; MOTORS];
+        {
+            let Some(x) = self.external.as_mut() else {
+                return false;
+            };
+            let Some(h) = x.home.as_mut() else {
+                return false;
+            };
+            if h.result.is_some() {
+                return true;
+            }
+            if let Some(id) = h.current {
+                let Some(r) = x.link.take_report(id) else {
+                    return true;
+                };
+                x.steps = r.position;
+                x.planned = r.position;
+                x.phase = Phase::Idle;
+                h.current = None;
+                match r.outcome {
+                    Outcome::Done => {}
+                    Outcome::Stopped => h.result = Some(HOME_NONE),
+                    Outcome::Failed(f) => {
+                        record = Some(f);
+                        h.result = Some(HOME_NONE);
+                    }
+                }
+            }
+            if h.result.is_none() && h.aborted {
+                h.result = Some(HOME_NONE);
+            }
+            if h.result.is_none() {
+                match h.stages.pop_front() {
+                    Some(job) => {
+                        let id = x.next_id;
+                        x.next_id = x.next_id.wrapping_add(1);
+                        x.link.post(id, job);
+                        x.phase = Phase::Busy { id, retire: 0 };
+                        h.current = Some(id);
+                    }
+                    None => {
+                        // At the working homes: they are position 0 from now on.
+                        for (m, z) in zeroed.iter_mut().enumerate() {
+                            if h.motors[m] {
+                                x.origin[m] = x.steps[m];
+                                *z = true;
+                            }
+                        }
+                        h.result = Some(HOME_DONE);
+                    }
+                }
+            }
+        }
+        if let Some(f) = record {
+            let code = self.fault_record(f);
+            self.set_error(code);
+        }
+        let motor = self.external.as_ref().map(|x| x.motor);
+        for i in 0..AXES {
+            if let Some(Some(m)) = motor.map(|mm| mm[i]) {
+                if zeroed[m] {
+                    self.offset[i] = 0.0;
+                }
+            }
+        }
+        self.external_positions();
+        for i in 0..AXES {
+            if motor.is_some_and(|mm| mm[i].is_some()) {
+                self.base[i] = self.pos[i];
+                self.queue_end[i] = self.pos[i];
+            }
+        }
+        true
+    }
+
     /// One tick of an MC3B group: takes the device's report, runs a delay, starts the
     /// next job, and takes the position from the device's steps.
     pub(super) fn tick_external(&mut self, dt: f64) {
+        if self.tick_home() {
+            self.update_status();
+            return;
+        }
         self.take_report();
         // A delay that starts now counts this tick; one that ends lets the next job start.
         self.hand_out();
@@ -304,8 +556,9 @@ impl GroupState {
                 }
             }
             (_, Outcome::Failed(f)) => {
+                let record = self.fault_record(f);
                 self.stop_here();
-                self.set_error(f.record());
+                self.set_error(record);
                 self.after_stop();
             }
             _ => self.after_stop(),

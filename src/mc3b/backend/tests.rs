@@ -16,6 +16,10 @@ pub(crate) struct Rec {
     pub mute_after: Option<usize>,
     /// `(n, link, id)`: at the n-th `Q`, ask for a stop of job `id`.
     pub stop_at_query: Option<(usize, Arc<Link>, u64)>,
+    /// Limit switches that follow a motor: `(motor, input bit, at)`: the input is high
+    /// (active) while the motor's step counter is at or below `at` (`at` < 0) or at or
+    /// above it (`at` > 0). Updated whenever the emulator's time moves.
+    pub switches: Vec<(usize, u8, i64)>,
     queries: usize,
 }
 
@@ -26,7 +30,16 @@ impl Rec {
             sent: Vec::new(),
             mute_after: None,
             stop_at_query: None,
+            switches: Vec::new(),
             queries: 0,
+        }
+    }
+
+    fn follow_switches(&mut self) {
+        for &(m, bit, at) in &self.switches {
+            let p = self.link.emulator.position(m);
+            let hit = if at < 0 { p <= at } else { p >= at };
+            self.link.emulator.set_input(bit, hit);
         }
     }
 
@@ -60,7 +73,9 @@ impl Transport for Rec {
         self.link.send(data)
     }
     fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
-        self.link.recv(buf, timeout)
+        let n = self.link.recv(buf, timeout);
+        self.follow_switches();
+        n
     }
     fn discard_input(&mut self) -> io::Result<()> {
         self.link.discard_input()
@@ -69,7 +84,8 @@ impl Transport for Rec {
         self.link.now()
     }
     fn idle(&mut self, d: Duration) {
-        self.link.idle(d)
+        self.link.idle(d);
+        self.follow_switches();
     }
     fn is_realtime(&self) -> bool {
         false
@@ -77,10 +93,91 @@ impl Transport for Rec {
 }
 
 pub(crate) fn worker() -> (Arc<Link>, Worker<Rec>) {
-    match connect(Rec::new(), Duration::from_millis(100)) {
+    worker_with(Rec::new(), &[[0; 4]; MOTORS])
+}
+
+/// A worker over `rec` whose motors get the limit masks `limits`.
+pub(crate) fn worker_with(rec: Rec, limits: &[LimitMasks; MOTORS]) -> (Arc<Link>, Worker<Rec>) {
+    match connect_with(rec, Duration::from_millis(100), limits) {
         Ok(x) => x,
         Err(e) => panic!("connect: {e}"),
     }
+}
+
+#[test]
+fn limit_masks_from_bits_and_wiring() {
+    use crate::vendor::consts as c;
+    // Bit 2 active high (normally open) for direction 0, bit 5 active low for 1.
+    assert_eq!(
+        limit_masks([2, 5], [Some(true), Some(false)]),
+        [4, 0, 32, 32]
+    );
+    assert_eq!(
+        limit_masks([-1, 5], [Some(true), None]),
+        [0; 4],
+        "none, unused"
+    );
+    let mut mac = crate::config::default_mac_param();
+    mac.wOverTravelUpSensorMode = c::SL_NORMAL_OPEN;
+    mac.wOverTravelDownSensorMode = c::SL_NORMAL_CLOSE;
+    let ch = crate::sim::config::ChannelSim {
+        mc3b_limit_bits: Some([0, 1]),
+        ..Default::default()
+    };
+    assert_eq!(motor_limits(&ch, &mac), [1, 0, 2, 2]);
+    // A reversed output: the + switch limits direction 1.
+    mac.wPosToEncoderDir = 1;
+    assert_eq!(motor_limits(&ch, &mac), [2, 2, 1, 0]);
+    assert_eq!(motor_limits(&Default::default(), &mac), [0; 4]);
+}
+
+#[test]
+fn homing_seeks_backs_off_and_approaches_the_switch() {
+    // Motor 0 homes in direction 1 onto bit 0 (active high) at 1000 steps/s; the switch
+    // is active at or below -500. The MC3B stops on it, backs off at 10 steps/s until
+    // it is off (-499) and comes back until it is on: it ends exactly at -500.
+    let mut rec = Rec::new();
+    rec.switches.push((0, 0, -500));
+    let (link, mut w) = worker_with(rec, &[[0, 0, 1, 0], [0; 4], [0; 4]]);
+    let sp = speeds_for(1000.0, Ramp::Fastest);
+    link.post(
+        1,
+        Job::Home {
+            dirs: [Some(1), None, None],
+            speeds: [Some(sp), None, None],
+        },
+    );
+    assert!(w.run_pending());
+    let r = link.take_report(1).expect("report");
+    assert_eq!(r.outcome, Outcome::Done);
+    assert_eq!(w.transport().pos(), [-500, 0, 0]);
+    assert_eq!(w.transport().count("0H0,1"), 1);
+    // A move onward, into the active switch: the MC3B does not start it; the worker
+    // says it ended on the limit switch.
+    link.post(
+        2,
+        Job::Independent {
+            steps: [-100, 0, 0],
+            speeds: [Some(sp), None, None],
+        },
+    );
+    assert!(w.run_pending());
+    assert_eq!(
+        link.take_report(2).map(|r| r.outcome),
+        Some(Outcome::Failed(Fault::Limit(0)))
+    );
+    assert_eq!(w.transport().pos(), [-500, 0, 0]);
+    // Away from it is fine.
+    link.post(
+        3,
+        Job::Independent {
+            steps: [300, 0, 0],
+            speeds: [Some(sp), None, None],
+        },
+    );
+    assert!(w.run_pending());
+    assert_eq!(link.take_report(3).map(|r| r.outcome), Some(Outcome::Done));
+    assert_eq!(w.transport().pos(), [-200, 0, 0]);
 }
 
 #[test]
@@ -525,7 +622,12 @@ fn a_device_that_is_not_an_mc3b_is_refused() {
 
 #[test]
 fn a_device_thread_runs_jobs_and_stops_at_drop() {
-    let dev = match Device::start(0, Box::new(EmulatorLink::new()), Duration::from_millis(50)) {
+    let dev = match Device::start(
+        0,
+        Box::new(EmulatorLink::new()),
+        Duration::from_millis(50),
+        &[[0; 4]; MOTORS],
+    ) {
         Ok(d) => d,
         Err(e) => panic!("{e}"),
     };

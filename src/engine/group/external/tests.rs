@@ -418,3 +418,178 @@ fn a_delay_waits_between_jobs() {
     assert_eq!(r.dev(), [0, 0, 0]);
     assert_eq!(r.ys().len(), 2);
 }
+
+/// Go home on the MC3B (modes 9 and 16): the group of `rig()` with X's motor given a −
+/// limit switch on input 0 (active high) that the motor meets at or below -500 steps.
+fn homing_rig() -> Rig {
+    use crate::mc3b::backend::tests::worker_with;
+    let mut r = rig();
+    let mut rec = Rec::new();
+    rec.switches.push((0, 0, -500));
+    let (link, w) = worker_with(rec, &[[0, 0, 1, 0], [0; 4], [0; 4]]);
+    r.g.attach_mc3b(link.clone());
+    r.g.set_mc3b_limits([[false, true], [false, false], [false, false]]);
+    r.link = link;
+    r.w = w;
+    r
+}
+
+fn home_cfg(mode: u16) -> crate::vendor::SYS_HOME_CONFIG {
+    crate::vendor::SYS_HOME_CONFIG {
+        wMode: mode,
+        wDirection: 1,
+        dfAccTime: 100.0,
+        dfDecTime: 100.0,
+        dfHighSpeed: 10.0,
+        dfLowSpeed: 2.0,
+        ..Default::default()
+    }
+}
+
+const X_ONLY: [i32; 8] = [0, 255, 255, 255, 255, 255, 255, 255];
+
+impl Rig {
+    /// Ticks and runs the device until the homing ends; its result.
+    fn run_home(&mut self) -> i32 {
+        for _ in 0..100_000 {
+            self.g.tick(0.001);
+            if let Some(r) = self.g.take_home_result() {
+                self.g.end_homing();
+                return r;
+            }
+            self.w.run_pending();
+        }
+        panic!("homing never ended");
+    }
+}
+
+#[test]
+fn go_home_uses_the_mc3b_homing_then_moves_to_the_working_home() {
+    use crate::engine::homing::{HOME_DONE, HOME_NONE};
+    let mut r = homing_rig();
+    let mut cfgs = [home_cfg(9); 8];
+    cfgs[0].dfOffset = 2.0;
+    let (mask, stages, motors) = r.g.plan_mc3b_home(&X_ONLY, &cfgs).expect("plan");
+    // X (axis 0) homes in direction 1 at 10 UU/s = 1000 steps/s, reached in 100 ms;
+    // then phase 3: 2 UU = 200 steps up at the same speed.
+    assert_eq!((mask, motors), (1, [true, false, false]));
+    let sp = backend::speeds_for(
+        1000.0,
+        Ramp::Times {
+            acc_s: 0.1,
+            dec_s: 0.1,
+        },
+    );
+    assert_eq!(
+        stages,
+        [
+            Job::Home {
+                dirs: [Some(1), None, None],
+                speeds: [Some(sp), None, None]
+            },
+            Job::Independent {
+                steps: [200, 0, 0],
+                speeds: [Some(sp), None, None]
+            }
+        ]
+    );
+    r.line(1.0, 1.0).expect("line");
+    assert_eq!(
+        r.g.begin_mc3b_home(mask, stages.clone(), motors),
+        Err(McclError::NotFinished),
+        "the group has motion to do"
+    );
+    r.run();
+    r.g.begin_mc3b_home(mask, stages, motors).expect("home");
+    assert_eq!(r.g.status(), c::GMS_RUNNING);
+    assert_eq!(
+        r.line(5.0, 0.0),
+        Err(McclError::NotAccepted),
+        "no motion while homing"
+    );
+    assert_eq!(r.run_home(), HOME_DONE);
+    // The MC3B ends its homing exactly on the switch's edge (-500, found at 10 steps/s),
+    // the working home is 200 steps above: X reads 0 there, Y kept its position.
+    assert_eq!(r.dev(), [-300, 100, 0]);
+    assert!(close(r.pos(), [0.0, 1.0]), "{:?}", r.pos());
+    assert_eq!(r.g.pulses(0), 0);
+    assert_eq!(r.g.status(), c::GMS_STOP);
+    assert_eq!(r.line(1.0, 1.0), Ok(1));
+    r.run();
+    assert_eq!(r.dev(), [-200, 100, 0]);
+    assert_eq!(r.w.transport().count("0H"), 1);
+
+    // MCC_AbortGoHome before the device took the job: nothing moves, nothing is zeroed.
+    let mut r = homing_rig();
+    let (mask, stages, motors) = r.g.plan_mc3b_home(&X_ONLY, &cfgs).expect("plan");
+    r.g.begin_mc3b_home(mask, stages, motors).expect("home");
+    r.g.tick(0.001);
+    r.g.abort_mc3b_home();
+    assert_eq!(r.run_home(), HOME_NONE);
+    assert_eq!((r.dev(), r.w.transport().count("0H")), ([0, 0, 0], 0));
+
+    // A stop while it seeks (the switch is far: 1000 s away), as the abort asks for it,
+    // at the job's 30th status query (about 300 ms of device time): the homing ends
+    // without completing, with no error record and the position estimated.
+    let mut r = homing_rig();
+    r.w.transport().switches = vec![(0, 0, -1_000_000)];
+    let (mask, stages, motors) = r.g.plan_mc3b_home(&X_ONLY, &cfgs).expect("plan");
+    r.g.begin_mc3b_home(mask, stages, motors).expect("home");
+    r.w.transport().stop_at_query = Some((30, r.link.clone(), 1));
+    assert_eq!(r.run_home(), HOME_NONE);
+    assert_eq!(r.g.error(), 0);
+    let x = r.g.pos()[0];
+    assert!(x < -1.0, "it had moved: estimate {x}");
+    assert!(
+        (x * K - r.dev()[0] as f64).abs() <= 1.0,
+        "estimate {x} vs {:?}",
+        r.dev()
+    );
+}
+
+#[test]
+fn go_home_refusals_on_the_mc3b() {
+    let r = homing_rig();
+    let ok = [home_cfg(16); 8];
+    assert!(
+        r.g.plan_mc3b_home(&X_ONLY, &ok).is_ok(),
+        "mode 16 is the same search"
+    );
+    for mode in [3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15] {
+        // The MC3B has no home sensor and no index input.
+        let cfgs = [home_cfg(mode); 8];
+        assert_eq!(
+            r.g.plan_mc3b_home(&X_ONLY, &cfgs).map(|_| ()),
+            Err(McclError::NotAccepted),
+            "mode {mode}"
+        );
+    }
+    // X up: no + switch is set; Y: none at all; channel 3 (U) is not on the MC3B.
+    let mut up = ok;
+    up[0].wDirection = 0;
+    assert_eq!(
+        r.g.plan_mc3b_home(&X_ONLY, &up).map(|_| ()),
+        Err(McclError::NotAccepted)
+    );
+    let y = [255, 0, 255, 255, 255, 255, 255, 255];
+    assert_eq!(
+        r.g.plan_mc3b_home(&y, &ok).map(|_| ()),
+        Err(McclError::NotAccepted)
+    );
+    let u = [255, 255, 255, 0, 255, 255, 255, 255];
+    assert_eq!(
+        r.g.plan_mc3b_home(&u, &ok).map(|_| ()),
+        Err(McclError::NotAccepted)
+    );
+}
+
+#[test]
+fn a_move_stopped_by_a_limit_switch_records_0xf701() {
+    let mut r = homing_rig();
+    // X down to -10 UU (-1000 steps): the MC3B stops it on the switch at -500.
+    r.line(-10.0, 0.0).expect("line");
+    r.run();
+    assert_eq!(r.g.error(), 0xF701, "axis X");
+    assert_eq!(r.g.status(), c::GMS_STOP);
+    assert!(r.dev()[0] <= -500 && r.dev()[0] > -520, "{:?}", r.dev());
+}
