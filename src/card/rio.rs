@@ -233,6 +233,16 @@ impl<const N: usize> Set<N> {
         if !self.control {
             return;
         }
+        // Nothing transmits and nothing changed since the last transfer: the transfer
+        // below would leave every field as it is and raise nothing (no slave moves data,
+        // the status stays, the digital inputs equal the ones last seen). This is every
+        // idle set on every tick (an ARIO set's control is always on).
+        if self.slave_on == 0
+            && self.was_ok != self.master_fail
+            && (self.master_fail || self.last_di == Some((self.inputs[0] & 0xFF) as u8))
+        {
+            return;
+        }
         if !self.master_fail {
             for s in (0..N).filter(|s| self.slave_on & (1 << s) != 0) {
                 let bit = 1u32 << s;
