@@ -16,7 +16,7 @@
 
 use once_cell::sync::OnceCell;
 use parking_lot::{Condvar, Mutex};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
@@ -73,22 +73,30 @@ pub enum Next {
 
 #[derive(Debug)]
 struct Inner {
-    /// Ticks may run (fast and stepped modes) until the tick count reaches this.
-    run_until: u64,
-    stop: bool,
     missed: u64,
-    /// The earliest tick count a waiter waits for: `tick_done` wakes waiters only then,
-    /// so a long `MCC_TimeDelay` costs no context switch per tick.
-    wake_at: u64,
 }
 
 /// The clock shared by the engine thread and the program's threads.
+///
+/// `run_until`, `stop` and `wake_at` are only written with `inner` locked, so a waiter
+/// that checks them under the lock and then waits on `cv` cannot miss a change; the
+/// engine thread reads them without the lock on every tick (a tick of a long run then
+/// takes no lock here). `tick_done` and a waiter pair up as in Dekker's algorithm: the
+/// waiter publishes `wake_at`, then reads `ticks`; the engine bumps `ticks`, then reads
+/// `wake_at` (all `SeqCst`), so at least one of them sees the other and the engine
+/// locks `inner` to wake the waiter.
 #[derive(Debug)]
 pub struct Clock {
     mode: ClockMode,
     period: Duration,
     start: Instant,
     ticks: AtomicU64,
+    /// Ticks may run (fast and stepped modes) until the tick count reaches this.
+    run_until: AtomicU64,
+    stop: AtomicBool,
+    /// The earliest tick count a waiter waits for: `tick_done` wakes waiters only then,
+    /// so a long `MCC_TimeDelay` costs no context switch per tick.
+    wake_at: AtomicU64,
     inner: Mutex<Inner>,
     cv: Condvar,
     engine_thread: OnceCell<ThreadId>,
@@ -102,12 +110,10 @@ impl Clock {
             period,
             start: Instant::now(),
             ticks: AtomicU64::new(0),
-            inner: Mutex::new(Inner {
-                run_until: 0,
-                stop: false,
-                missed: 0,
-                wake_at: u64::MAX,
-            }),
+            run_until: AtomicU64::new(0),
+            stop: AtomicBool::new(false),
+            wake_at: AtomicU64::new(u64::MAX),
+            inner: Mutex::new(Inner { missed: 0 }),
             cv: Condvar::new(),
             engine_thread: OnceCell::new(),
         }
@@ -160,12 +166,18 @@ impl Clock {
         if self.mode == ClockMode::Realtime {
             return self.wait_realtime();
         }
+        // A run in progress: no lock (see the type's documentation).
+        if !self.stop.load(Ordering::Acquire)
+            && self.ticks() < self.run_until.load(Ordering::Acquire)
+        {
+            return Next::Tick;
+        }
         let mut g = self.inner.lock();
         loop {
-            if g.stop {
+            if self.stop.load(Ordering::Acquire) {
                 return Next::Stop;
             }
-            if self.ticks() < g.run_until {
+            if self.ticks() < self.run_until.load(Ordering::Acquire) {
                 return Next::Tick;
             }
             self.cv.wait(&mut g);
@@ -176,7 +188,7 @@ impl Clock {
         let deadline = self.start + self.at_tick(self.ticks());
         let mut g = self.inner.lock();
         loop {
-            if g.stop {
+            if self.stop.load(Ordering::Acquire) {
                 return Next::Stop;
             }
             let now = Instant::now();
@@ -192,10 +204,10 @@ impl Clock {
 
     /// Called by the engine thread after a tick (and its callbacks) completed.
     pub fn tick_done(&self) {
-        let mut g = self.inner.lock();
-        let now = self.ticks.fetch_add(1, Ordering::AcqRel) + 1;
-        if now >= g.wake_at {
-            g.wake_at = u64::MAX;
+        let now = self.ticks.fetch_add(1, Ordering::SeqCst) + 1;
+        if now >= self.wake_at.load(Ordering::SeqCst) {
+            let _g = self.inner.lock();
+            self.wake_at.store(u64::MAX, Ordering::SeqCst);
             self.cv.notify_all();
         }
     }
@@ -203,12 +215,14 @@ impl Clock {
     /// Called by the engine thread during a tick: the ticks granted end with this one
     /// (a fast-clock poll saw the status it waited for change).
     pub fn end_run_now(&self) {
-        let mut g = self.inner.lock();
+        let _g = self.inner.lock();
         let next = self.ticks() + 1;
-        if g.run_until > next {
-            g.run_until = next;
+        if self.run_until.load(Ordering::Acquire) > next {
+            self.run_until.store(next, Ordering::Release);
         }
-        g.wake_at = g.wake_at.min(next);
+        if self.wake_at.load(Ordering::SeqCst) > next {
+            self.wake_at.store(next, Ordering::SeqCst);
+        }
     }
 
     /// Under a virtual clock: whether the tick now running is the last one granted (the
@@ -217,19 +231,19 @@ impl Clock {
         if !self.mode.virtual_time() {
             return true;
         }
-        self.ticks() + 1 >= self.inner.lock().run_until
+        self.ticks() + 1 >= self.run_until.load(Ordering::Acquire)
     }
 
     /// Asks the clock to stop; the engine thread and every waiter return.
     pub fn stop(&self) {
-        let mut g = self.inner.lock();
-        g.stop = true;
+        let _g = self.inner.lock();
+        self.stop.store(true, Ordering::Release);
         self.cv.notify_all();
     }
 
     /// Whether `stop` was called.
     pub fn stopped(&self) -> bool {
-        self.inner.lock().stop
+        self.stop.load(Ordering::Acquire)
     }
 
     /// Records the engine thread, so that a wait requested from it (a callback that calls
@@ -251,16 +265,26 @@ impl Clock {
         }
         let mut g = self.inner.lock();
         let target = self.ticks().saturating_add(ticks);
-        if g.run_until < target {
-            g.run_until = target;
+        if self.run_until.load(Ordering::Acquire) < target {
+            self.run_until.store(target, Ordering::Release);
         }
         self.cv.notify_all();
         loop {
             let now = self.ticks();
-            if g.stop || now >= target || now >= g.run_until {
+            let until = self.run_until.load(Ordering::Acquire);
+            if self.stop.load(Ordering::Acquire) || now >= target || now >= until {
                 return;
             }
-            g.wake_at = g.wake_at.min(target.min(g.run_until));
+            let w = target.min(until);
+            if self.wake_at.load(Ordering::SeqCst) > w {
+                self.wake_at.store(w, Ordering::SeqCst);
+            }
+            // Dekker with `tick_done`: the tick that reaches `w` may have run between
+            // the check above and the store; then it did not see `w`, but this sees it.
+            let now = self.ticks.load(Ordering::SeqCst);
+            if now >= target || now >= until {
+                return;
+            }
             self.cv.wait(&mut g);
         }
     }
