@@ -75,6 +75,33 @@ pub struct SensorLevels {
     pub minus: bool,
 }
 
+/// `x.floor() as i64` without a call to libm's `floor` (x86-64 without SSE4.1 has no
+/// rounding instruction): the same result for every `f64`, since `as` truncates toward
+/// zero and saturates (NaN gives 0).
+fn floor_i64(x: f64) -> i64 {
+    let t = x as i64;
+    if (t as f64) > x {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
+}
+
+/// Positions (whole pulses) below this in magnitude take the division-free path of
+/// [`Channel::index_interval`]: nothing there can overflow.
+const CELL_LIMIT: u64 = 1 << 52;
+
+/// Which index interval a whole-pulse position `m` is in: `(m - phase) = k x spacing + r`,
+/// `0 <= r < spacing`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct IndexCell {
+    m: i64,
+    spacing: i64,
+    phase: i64,
+    k: i64,
+    r: i64,
+}
+
 /// One channel of the card and the motor, encoder and sensors behind it.
 #[derive(Debug, Clone)]
 pub struct Channel {
@@ -100,7 +127,9 @@ pub struct Channel {
     enc_offset: i64,
     /// Compensation tables in effect.
     pub comp: Compensation,
-    comp_param: SYS_COMP_PARAM,
+    /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
+    /// the fields every step uses).
+    comp_param: Box<SYS_COMP_PARAM>,
     forced: [Option<bool>; 3],
     /// Physical sensor levels (before the program's wiring setting).
     raw: [bool; 3],
@@ -110,6 +139,8 @@ pub struct Channel {
     pub last_index_count: Option<i64>,
     /// Motor positions (pulses, machine frame) at the start and end of the last step.
     last_move: (f64, f64),
+    /// The index interval of the last position looked up (`index_interval`).
+    cell: Option<IndexCell>,
     /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
     pub latched: [bool; 2],
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`, 1..32767).
@@ -139,12 +170,13 @@ impl Channel {
             base: 0.0,
             enc_offset: 0,
             comp: Compensation::default(),
-            comp_param: compensation::off(),
+            comp_param: Box::new(compensation::off()),
             forced: [None; 3],
             raw: [false; 3],
             index_events: 0,
             last_index_count: None,
             last_move: (0.0, 0.0),
+            cell: None,
             latched: [false; 2],
             max_speed: MAX_PULSE_LIMIT,
             max_acc: MAX_PULSE_LIMIT,
@@ -291,7 +323,7 @@ impl Channel {
 
     /// New compensation tables (`MCC_UpdateCompParam`).
     pub fn set_compensation(&mut self, p: &SYS_COMP_PARAM) {
-        self.comp_param = *p;
+        *self.comp_param = *p;
         self.comp = Compensation::new(p);
     }
 
@@ -425,6 +457,31 @@ impl Channel {
         self.update_sensors();
     }
 
+    /// `(m - phase).div_euclid(spacing)`: the index interval of whole-pulse position `m`.
+    /// A motor that stays within the interval of the last lookup (nearly every step: index
+    /// pulses are a motor turn apart) gets it without a division.
+    fn index_interval(&mut self, m: i64, spacing: i64, phase: i64) -> i64 {
+        if let Some(c) = self.cell {
+            if c.spacing == spacing && c.phase == phase && m.unsigned_abs() < CELL_LIMIT {
+                // |m|, |c.m| < 2^52: no overflow, and (m - phase) = k x spacing + r.
+                let r = c.r + (m - c.m);
+                if (0..spacing).contains(&r) {
+                    self.cell = Some(IndexCell { m, r, ..c });
+                    return c.k;
+                }
+            }
+        }
+        let k = (m - phase).div_euclid(spacing);
+        self.cell = (m.unsigned_abs() < CELL_LIMIT).then(|| IndexCell {
+            m,
+            spacing,
+            phase,
+            k,
+            r: (m - phase) - k * spacing,
+        });
+        k
+    }
+
     fn count_index(&mut self, from: f64, to: f64) {
         self.index_events = 0;
         self.last_move = (from, to);
@@ -435,8 +492,10 @@ impl Channel {
         let (spacing, phase) = self.index_grid();
         // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
         // between pulses rounds down to the pulse it has passed.
-        let k = |x: f64| (x.floor() as i64 - phase).div_euclid(spacing);
-        let (a, b) = (k(from), k(to));
+        let (a, b) = (
+            self.index_interval(floor_i64(from), spacing, phase),
+            self.index_interval(floor_i64(to), spacing, phase),
+        );
         if a != b {
             self.index_events = u32::try_from((a - b).unsigned_abs()).unwrap_or(u32::MAX);
             // Moving up the last index passed is the highest, moving down the lowest.
@@ -585,6 +644,73 @@ mod tests {
         c.force(Sensor::LimitPlus, None);
         assert!(!c.levels().plus);
         assert!(c.home_level(c::SL_NORMAL_OPEN) && !c.home_level(c::SL_NORMAL_CLOSE));
+    }
+
+    #[test]
+    fn floor_i64_is_floor_as_i64() {
+        let xs = [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            -1.5,
+            2.5e-300,
+            -2.5e-300,
+            4503599627370495.5,
+            -4503599627370495.5,
+            9007199254740993.0,
+            -9007199254740993.0,
+            9.223372036854775e18,
+            -9.223372036854775e18,
+            9.3e18,
+            -9.3e18,
+            1e300,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+        ];
+        for x in xs {
+            assert_eq!(floor_i64(x), x.floor() as i64, "{x:e}");
+            assert_eq!(floor_i64(x + 0.25), (x + 0.25).floor() as i64, "{x:e}");
+            assert_eq!(floor_i64(x - 0.25), (x - 0.25).floor() as i64, "{x:e}");
+        }
+    }
+
+    #[test]
+    fn index_interval_matches_the_division() {
+        let mut c = ch(ChannelSpec::default());
+        // A pseudo-random walk with small and large steps, several grids.
+        let mut m: i64 = 0;
+        let mut seed: u64 = 12345;
+        for n in 0..20_000 {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let step = match n % 7 {
+                0 => (seed >> 40) as i64 - (1 << 23),
+                _ => (seed >> 58) as i64 - 32,
+            };
+            m += step;
+            let (spacing, phase) = match n / 5000 {
+                0 => (500, 0),
+                1 => (500, 100),
+                2 => (1, 0),
+                _ => (4096, 7),
+            };
+            assert_eq!(
+                c.index_interval(m, spacing, phase),
+                (m - phase).div_euclid(spacing),
+                "m {m}, spacing {spacing}, phase {phase}"
+            );
+        }
+        for m in [i64::MIN + 5, (1 << 52) + 3, -(1 << 52) - 3, i64::MAX, 7, 8] {
+            assert_eq!(c.index_interval(m, 500, 3), (m - 3).div_euclid(500));
+        }
     }
 
     #[test]
