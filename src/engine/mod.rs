@@ -49,6 +49,12 @@ pub struct Shared {
     slots: [Option<usize>; GROUPS],
     /// The running groups.
     groups: Vec<Mutex<GroupState>>,
+    /// Per position in `groups`: the axes whose pulses command their channel, one bit each.
+    /// Several groups may map the same channel; the tick sends it the pulses of the last
+    /// axis (in group order, then axis order) mapping it, so the others need none computed.
+    /// The mapping is fixed while the engine runs (a group's channels come from its
+    /// definition).
+    commanding: Vec<u32>,
     /// Published state per group slot.
     snaps: Vec<SnapshotCell>,
     /// Per group slot: the tick count at its last status poll and last position read
@@ -488,11 +494,12 @@ impl Shared {
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
-                for (i, ax) in g.axes.iter().enumerate() {
-                    if let Some((card, ch)) = ax.channel {
-                        if let Some(c) = cmds.get_mut(card) {
-                            c[ch] = Some(g.pulses(i));
-                        }
+                let mut axes = self.commanding[n];
+                while axes != 0 {
+                    let i = axes.trailing_zeros() as usize;
+                    axes &= axes - 1;
+                    if let Some((card, ch)) = g.axes[i].channel {
+                        cmds[card][ch] = Some(g.pulses(i));
                     }
                 }
             }
@@ -664,6 +671,26 @@ fn apply_homing(g: &mut GroupState, h: &homing::HomeTick) {
     }
 }
 
+/// [`Shared::commanding`] for `groups`: per group, the axes that are the last (in group
+/// order, then axis order) to map their channel.
+fn commanding_axes(groups: &[Mutex<GroupState>]) -> Vec<u32> {
+    let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
+    for (n, g) in groups.iter().enumerate() {
+        for (i, ax) in g.lock().axes.iter().enumerate() {
+            if let Some((card, ch)) = ax.channel {
+                if let Some(c) = last.get_mut(card) {
+                    c[ch] = Some((n, i));
+                }
+            }
+        }
+    }
+    let mut out = vec![0u32; groups.len()];
+    for (n, i) in last.iter().flatten().flatten() {
+        out[*n] |= 1 << i;
+    }
+    out
+}
+
 /// A running engine thread.
 #[derive(Debug)]
 pub struct Engine {
@@ -690,9 +717,11 @@ impl Engine {
             slots[*i] = Some(n);
             gs.push(Mutex::new(GroupState::new(*i, *d, axes_of(d, mac))));
         }
+        let commanding = commanding_axes(&gs);
         let shared = Arc::new(Shared {
             clock: Clock::new(mode, period),
             slots,
+            commanding,
             last_poll: (0..GROUPS)
                 .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
                 .collect(),
