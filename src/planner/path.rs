@@ -40,6 +40,11 @@ pub struct LineSeg {
     start: Axes,
     end: Axes,
     length: f64,
+    /// `end - start` per axis.
+    delta: Axes,
+    /// `direction(s)`, the same all along the line: `(end - start) / length`, or all
+    /// zeros for a zero-length line.
+    dir: Axes,
 }
 
 /// A circular arc or helix segment in X/Y/Z, with U..B interpolated linearly.
@@ -187,10 +192,18 @@ impl Path {
         } else {
             aux_travel(start, end)
         };
+        let delta: Axes = std::array::from_fn(|i| end[i] - start[i]);
+        let dir = if length <= 0.0 {
+            [0.0; NUM_AXES]
+        } else {
+            delta.map(|d| d / length)
+        };
         Path::Line(LineSeg {
             start: *start,
             end: *end,
             length,
+            delta,
+            dir,
         })
     }
 
@@ -456,12 +469,19 @@ impl Path {
         }
         let f = s / len;
         let mut p = [0.0; NUM_AXES];
-        for i in 0..NUM_AXES {
-            p[i] = start[i] + (end[i] - start[i]) * f;
-        }
-        if let Path::Arc(a) | Path::Helix(a) = self {
-            let xyz = a.xyz_at(a.theta0 + a.sweep * f, f);
-            p[..XYZ].copy_from_slice(&xyz);
+        match self {
+            Path::Line(l) => {
+                for i in 0..NUM_AXES {
+                    p[i] = start[i] + l.delta[i] * f;
+                }
+            }
+            Path::Arc(a) | Path::Helix(a) => {
+                for i in 0..NUM_AXES {
+                    p[i] = start[i] + (end[i] - start[i]) * f;
+                }
+                let xyz = a.xyz_at(a.theta0 + a.sweep * f, f);
+                p[..XYZ].copy_from_slice(&xyz);
+            }
         }
         p
     }
@@ -471,6 +491,9 @@ impl Path {
     /// aux axes get `Δaux/length`. Per-axis speed is `v·direction(s)`.
     /// All zeros for a zero-length path.
     pub fn direction(&self, s: f64) -> Axes {
+        if let Path::Line(l) = self {
+            return l.dir;
+        }
         let (start, end, len) = self.common();
         let mut d = [0.0; NUM_AXES];
         if len <= 0.0 {
@@ -560,6 +583,39 @@ fn theta_arc(
 mod tests {
     use super::*;
     use std::f64::consts::PI;
+
+    #[test]
+    fn line_point_and_direction_are_the_formulas_bit_for_bit() {
+        let lines = [
+            (
+                [0.1, -3.3, 7.0, 1.0, 2.0, 3.0, 4.0, 5.0],
+                [1000.0; NUM_AXES],
+            ),
+            ([0.0; NUM_AXES], [0.0, 0.0, 0.0, 1.0, -7.7, 0.3, 0.0, 2.0]),
+            ([1.0; NUM_AXES], [1.0; NUM_AXES]),
+        ];
+        for (a, b) in lines {
+            let p = Path::line(&a, &b);
+            let len = p.length();
+            for k in 0..=40 {
+                let s = len * f64::from(k) / 37.0;
+                let d = p.direction(s);
+                let q = p.point(s);
+                for i in 0..NUM_AXES {
+                    let want = if len <= 0.0 { 0.0 } else { (b[i] - a[i]) / len };
+                    assert_eq!(d[i].to_bits(), want.to_bits());
+                    let at = if s <= 0.0 || len <= 0.0 {
+                        a[i]
+                    } else if s >= len {
+                        b[i]
+                    } else {
+                        a[i] + (b[i] - a[i]) * (s / len)
+                    };
+                    assert_eq!(q[i].to_bits(), at.to_bits());
+                }
+            }
+        }
+    }
 
     fn ax(x: f64, y: f64, z: f64) -> Axes {
         [x, y, z, 0.0, 0.0, 0.0, 0.0, 0.0]
