@@ -112,6 +112,7 @@ impl Command {
     }
 
     /// Position and velocity (per unit of the command's own time) at time `t`.
+    #[inline]
     pub fn sample(&self, t: f64) -> (Axes, Axes) {
         match &self.plan {
             Plan::Path(m) => m.sample(t),
@@ -121,6 +122,7 @@ impl Command {
     }
 
     /// Where the plan starts.
+    #[inline]
     pub fn start(&self) -> Axes {
         match &self.plan {
             Plan::Path(m) => m.path.start(),

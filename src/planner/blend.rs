@@ -39,14 +39,10 @@ impl PathMove {
 
     /// Positions and per-axis velocities at time `t` (clamped to `[0, duration]`);
     /// exactly `path.end()` with zero velocity at `t >= duration`.
+    #[inline]
     pub fn sample(&self, t: f64) -> (Axes, Axes) {
         let (s, v, _) = self.profile.sample(t);
-        let d = self.path.direction(s);
-        let mut vel = [0.0; NUM_AXES];
-        for (vi, di) in vel.iter_mut().zip(d) {
-            *vi = v * di;
-        }
-        (self.path.point(s), vel)
+        self.path.point_velocity(s, v)
     }
 }
 

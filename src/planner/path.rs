@@ -138,6 +138,25 @@ fn with_aux(start: &Axes, aux_end: Option<[f64; 5]>) -> Result<Axes, PlanError> 
     Ok(end)
 }
 
+impl LineSeg {
+    /// `(point(s), v x direction(s))` of [`Path`] for this line, in one go (the engine
+    /// samples every running line on every tick).
+    #[inline]
+    fn sample(&self, s: f64, v: f64) -> (Axes, Axes) {
+        let vel = self.dir.map(|d| v * d);
+        let len = self.length;
+        let pos = if s.is_nan() || s <= 0.0 || len <= 0.0 {
+            self.start
+        } else if s >= len {
+            self.end
+        } else {
+            let f = s / len;
+            std::array::from_fn(|i| self.start[i] + self.delta[i] * f)
+        };
+        (pos, vel)
+    }
+}
+
 impl ArcSeg {
     /// Finish an arc: set length and validate. `end` must already hold the exact end.
     fn finish(mut self) -> ArcSeg {
@@ -426,6 +445,7 @@ impl Path {
         Ok(Path::Helix(seg))
     }
 
+    #[inline]
     fn common(&self) -> (&Axes, &Axes, f64) {
         match self {
             Path::Line(l) => (&l.start, &l.end, l.length),
@@ -439,6 +459,7 @@ impl Path {
     }
 
     /// Start position (all axes).
+    #[inline]
     pub fn start(&self) -> Axes {
         *self.common().0
     }
@@ -484,6 +505,17 @@ impl Path {
             }
         }
         p
+    }
+
+    /// `(point(s), v x direction(s))`: position at path length `s` and the per-axis
+    /// velocity at path speed `v`.
+    #[inline]
+    pub fn point_velocity(&self, s: f64, v: f64) -> (Axes, Axes) {
+        if let Path::Line(l) = self {
+            return l.sample(s, v);
+        }
+        let d = self.direction(s);
+        (self.point(s), d.map(|di| v * di))
     }
 
     /// Derivative of position with respect to path length at `s` (clamped):
