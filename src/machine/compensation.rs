@@ -44,6 +44,7 @@ impl Compensation {
     }
 
     /// Whether compensation is on.
+    #[inline]
     pub fn active(&self) -> bool {
         self.interval > 0
     }

@@ -87,19 +87,40 @@ fn floor_i64(x: f64) -> i64 {
     }
 }
 
-/// Positions (whole pulses) below this in magnitude take the division-free path of
-/// [`Channel::index_interval`]: nothing there can overflow.
-const CELL_LIMIT: u64 = 1 << 52;
+/// Interval bounds below this in magnitude are exact in an `f64` (and nothing computed
+/// from them overflows).
+const CELL_LIMIT: i64 = 1 << 52;
 
-/// Which index interval a whole-pulse position `m` is in: `(m - phase) = k x spacing + r`,
-/// `0 <= r < spacing`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The index interval `k` of the last position looked up on a grid (`spacing`, `phase`),
+/// and its bounds as motor positions: every `x` in `lo <= x < hi` has
+/// `(floor(x) - phase).div_euclid(spacing) == k`.
+#[derive(Debug, Clone, Copy, PartialEq)]
 struct IndexCell {
-    m: i64,
     spacing: i64,
     phase: i64,
     k: i64,
-    r: i64,
+    lo: f64,
+    hi: f64,
+}
+
+impl IndexCell {
+    /// The cell of interval `k`, when its bounds are exact.
+    fn new(spacing: i64, phase: i64, k: i64) -> Option<IndexCell> {
+        let lo = k.checked_mul(spacing)?.checked_add(phase)?;
+        let hi = lo.checked_add(spacing)?;
+        (lo > -CELL_LIMIT && hi < CELL_LIMIT).then_some(IndexCell {
+            spacing,
+            phase,
+            k,
+            lo: lo as f64,
+            hi: hi as f64,
+        })
+    }
+
+    /// Whether `x` is inside (false for NaN).
+    fn holds(&self, x: f64, spacing: i64, phase: i64) -> bool {
+        self.spacing == spacing && self.phase == phase && x >= self.lo && x < self.hi
+    }
 }
 
 /// One channel of the card and the motor, encoder and sensors behind it.
@@ -432,7 +453,11 @@ impl Channel {
         self.prev_out = self.out;
         self.prev_delta = d_prev;
         self.cmd = cmd;
-        self.out = cmd + self.comp.offset(cmd);
+        self.out = if self.comp.active() {
+            cmd + self.comp.offset(cmd)
+        } else {
+            cmd
+        };
         let before = self.actual;
         let target = self.out as f64;
         self.actual = match self.spec.lag_s {
@@ -457,28 +482,16 @@ impl Channel {
         self.update_sensors();
     }
 
-    /// `(m - phase).div_euclid(spacing)`: the index interval of whole-pulse position `m`.
+    /// `(floor(x) - phase).div_euclid(spacing)`: the index interval of motor position `x`.
     /// A motor that stays within the interval of the last lookup (nearly every step: index
-    /// pulses are a motor turn apart) gets it without a division.
-    fn index_interval(&mut self, m: i64, spacing: i64, phase: i64) -> i64 {
-        if let Some(c) = self.cell {
-            if c.spacing == spacing && c.phase == phase && m.unsigned_abs() < CELL_LIMIT {
-                // |m|, |c.m| < 2^52: no overflow, and (m - phase) = k x spacing + r.
-                let r = c.r + (m - c.m);
-                if (0..spacing).contains(&r) {
-                    self.cell = Some(IndexCell { m, r, ..c });
-                    return c.k;
-                }
-            }
+    /// pulses are a motor turn apart) gets it by two comparisons: with integer bounds
+    /// `lo <= x < hi` means `lo <= floor(x) <= hi - 1`.
+    fn index_interval(&mut self, x: f64, spacing: i64, phase: i64) -> i64 {
+        if let Some(c) = self.cell.filter(|c| c.holds(x, spacing, phase)) {
+            return c.k;
         }
-        let k = (m - phase).div_euclid(spacing);
-        self.cell = (m.unsigned_abs() < CELL_LIMIT).then(|| IndexCell {
-            m,
-            spacing,
-            phase,
-            k,
-            r: (m - phase) - k * spacing,
-        });
+        let k = (floor_i64(x) - phase).div_euclid(spacing);
+        self.cell = IndexCell::new(spacing, phase, k);
         k
     }
 
@@ -492,9 +505,16 @@ impl Channel {
         let (spacing, phase) = self.index_grid();
         // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
         // between pulses rounds down to the pulse it has passed.
+        if self
+            .cell
+            .is_some_and(|c| c.holds(from, spacing, phase) && c.holds(to, spacing, phase))
+        {
+            // Both ends in one interval: no index pulse passed.
+            return;
+        }
         let (a, b) = (
-            self.index_interval(floor_i64(from), spacing, phase),
-            self.index_interval(floor_i64(to), spacing, phase),
+            self.index_interval(from, spacing, phase),
+            self.index_interval(to, spacing, phase),
         );
         if a != b {
             self.index_events = u32::try_from((a - b).unsigned_abs()).unwrap_or(u32::MAX);
@@ -684,32 +704,51 @@ mod tests {
     #[test]
     fn index_interval_matches_the_division() {
         let mut c = ch(ChannelSpec::default());
-        // A pseudo-random walk with small and large steps, several grids.
-        let mut m: i64 = 0;
+        // A pseudo-random walk with small, fractional and large steps, several grids.
+        let mut x: f64 = 0.0;
         let mut seed: u64 = 12345;
-        for n in 0..20_000 {
+        for n in 0..40_000 {
             seed = seed
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407);
             let step = match n % 7 {
-                0 => (seed >> 40) as i64 - (1 << 23),
-                _ => (seed >> 58) as i64 - 32,
+                0 => ((seed >> 40) as i64 - (1 << 23)) as f64,
+                1 => ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 3.0,
+                _ => ((seed >> 58) as i64 - 32) as f64,
             };
-            m += step;
-            let (spacing, phase) = match n / 5000 {
+            x += step;
+            let (spacing, phase) = match n / 10_000 {
                 0 => (500, 0),
                 1 => (500, 100),
                 2 => (1, 0),
                 _ => (4096, 7),
             };
             assert_eq!(
-                c.index_interval(m, spacing, phase),
-                (m - phase).div_euclid(spacing),
-                "m {m}, spacing {spacing}, phase {phase}"
+                c.index_interval(x, spacing, phase),
+                (x.floor() as i64 - phase).div_euclid(spacing),
+                "x {x}, spacing {spacing}, phase {phase}"
             );
         }
-        for m in [i64::MIN + 5, (1 << 52) + 3, -(1 << 52) - 3, i64::MAX, 7, 8] {
-            assert_eq!(c.index_interval(m, 500, 3), (m - 3).div_euclid(500));
+        for x in [
+            -9.2e18,
+            4503599627370496.0,
+            -4503599627370497.0,
+            9.2e18,
+            f64::NAN,
+            7.5,
+            8.0,
+            -0.5,
+            f64::INFINITY,
+            499.999,
+            500.0,
+        ] {
+            for _ in 0..2 {
+                assert_eq!(
+                    c.index_interval(x, 500, 3),
+                    (x.floor() as i64 - 3).div_euclid(500),
+                    "{x}"
+                );
+            }
         }
     }
 
