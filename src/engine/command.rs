@@ -121,6 +121,15 @@ impl Command {
         }
     }
 
+    /// [`Command::sample`] written in place.
+    #[inline(always)]
+    pub fn sample_into(&self, t: f64, pos: &mut Axes, vel: &mut Axes) {
+        match &self.plan {
+            Plan::Path(m) => m.sample_into(t, pos, vel),
+            _ => (*pos, *vel) = self.sample(t),
+        }
+    }
+
     /// Where the plan starts.
     #[inline]
     pub fn start(&self) -> Axes {

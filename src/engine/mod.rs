@@ -488,8 +488,8 @@ impl Shared {
                 g.end_homing();
             }
             own_checks[n] = g.has_safety_checks();
-            let outputs = g.take_outputs();
-            if !outputs.is_empty() {
+            if g.has_outputs() {
+                let outputs = g.take_outputs();
                 self.make_outputs(g.def.card.0, &outputs);
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).

@@ -39,10 +39,18 @@ impl PathMove {
 
     /// Positions and per-axis velocities at time `t` (clamped to `[0, duration]`);
     /// exactly `path.end()` with zero velocity at `t >= duration`.
-    #[inline]
     pub fn sample(&self, t: f64) -> (Axes, Axes) {
+        let mut pos = [0.0; NUM_AXES];
+        let mut vel = [0.0; NUM_AXES];
+        self.sample_into(t, &mut pos, &mut vel);
+        (pos, vel)
+    }
+
+    /// [`PathMove::sample`] written in place.
+    #[inline(always)]
+    pub fn sample_into(&self, t: f64, pos: &mut Axes, vel: &mut Axes) {
         let (s, v, _) = self.profile.sample(t);
-        self.path.point_velocity(s, v)
+        self.path.point_velocity_into(s, v, pos, vel);
     }
 }
 

@@ -139,21 +139,24 @@ fn with_aux(start: &Axes, aux_end: Option<[f64; 5]>) -> Result<Axes, PlanError> 
 }
 
 impl LineSeg {
-    /// `(point(s), v x direction(s))` of [`Path`] for this line, in one go (the engine
-    /// samples every running line on every tick).
-    #[inline]
-    fn sample(&self, s: f64, v: f64) -> (Axes, Axes) {
-        let vel = self.dir.map(|d| v * d);
+    /// [`Path::point_velocity_into`] for this line.
+    #[inline(always)]
+    fn point_velocity_into(&self, s: f64, v: f64, pos: &mut Axes, vel: &mut Axes) {
+        for (vi, d) in vel.iter_mut().zip(&self.dir) {
+            *vi = v * d;
+        }
         let len = self.length;
-        let pos = if s.is_nan() || s <= 0.0 || len <= 0.0 {
-            self.start
+        if s.is_nan() || s <= 0.0 || len <= 0.0 {
+            *pos = self.start;
         } else if s >= len {
-            self.end
+            *pos = self.end;
         } else {
             let f = s / len;
-            std::array::from_fn(|i| self.start[i] + self.delta[i] * f)
-        };
-        (pos, vel)
+            #[allow(clippy::needless_range_loop)] // indexes three arrays
+            for i in 0..NUM_AXES {
+                pos[i] = self.start[i] + self.delta[i] * f;
+            }
+        }
     }
 }
 
@@ -507,15 +510,16 @@ impl Path {
         p
     }
 
-    /// `(point(s), v x direction(s))`: position at path length `s` and the per-axis
-    /// velocity at path speed `v`.
-    #[inline]
-    pub fn point_velocity(&self, s: f64, v: f64) -> (Axes, Axes) {
+    /// `pos = point(s)`, `vel = v x direction(s)`: position at path length `s` and the
+    /// per-axis velocity at path speed `v`, written in place (the engine samples every
+    /// running motion on every tick).
+    #[inline(always)]
+    pub fn point_velocity_into(&self, s: f64, v: f64, pos: &mut Axes, vel: &mut Axes) {
         if let Path::Line(l) = self {
-            return l.sample(s, v);
+            return l.point_velocity_into(s, v, pos, vel);
         }
-        let d = self.direction(s);
-        (self.point(s), d.map(|di| v * di))
+        *vel = self.direction(s).map(|d| v * d);
+        *pos = self.point(s);
     }
 
     /// Derivative of position with respect to path length at `s` (clamped):

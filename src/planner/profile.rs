@@ -242,7 +242,7 @@ impl Profile {
     /// Values are right-continuous: with `Ta = 0`, `v(0)` is already the peak.
     /// At `t >= duration` the move is over: `(len, 0, 0)` exactly. `s` is
     /// monotone non-decreasing in `t`.
-    #[inline]
+    #[inline(always)]
     pub fn sample(&self, t: f64) -> (f64, f64, f64) {
         // NaN compares false everywhere and lands in the `t >= duration` branch.
         if t.is_nan() || t >= self.duration {
