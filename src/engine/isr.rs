@@ -284,12 +284,13 @@ impl Shared {
             let (reset, pending) = {
                 let mut p = p.lock();
                 let reset = p.tick(dt_ns);
-                (reset, std::mem::take(&mut p.pending))
+                let pending = (!p.pending.is_empty()).then(|| std::mem::take(&mut p.pending));
+                (reset, pending)
             };
             if reset {
                 self.reset_card(card);
             }
-            if !pending.is_empty() {
+            if let Some(pending) = pending {
                 out.push((card, pending));
             }
         }

@@ -527,9 +527,12 @@ impl Shared {
                 let cmd = cmds[card][ch].unwrap_or_else(|| chan.command_pulses());
                 chan.step(cmd, dt);
             }
+            let thresholds = m.settings[card].error_threshold;
+            if m.triggers[card].tick_idle(chans, &thresholds) {
+                continue;
+            }
             let prev: [crate::machine::SensorLevels; AXES] =
                 std::array::from_fn(|i| chans[i].prev_levels());
-            let thresholds = m.settings[card].error_threshold;
             let fired = m.triggers[card].tick(chans, &prev, &thresholds, now_ns);
             if !fired.interrupts.is_empty() {
                 for &n in &fired.compares {

@@ -152,13 +152,29 @@ impl CardTriggers {
     /// latches, closed-loop thresholds or a trigger-out (output or LED) holding. A card
     /// with nothing armed skips its tick (re-arming a compare rebases the counts).
     fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
-        self.comp_enabled.iter().any(|&e| e)
-            || self.index_enabled.iter().any(|&e| e)
-            || self.lio_enabled.iter().any(|&e| e)
-            || self.latch_source.iter().any(|&s| s != 0)
-            || thresholds.iter().any(|&(p, m)| p > 0 || m > 0)
+        // Whole-array comparisons: a few wide compares instead of a loop per array.
+        self.comp_enabled != [false; AXES]
+            || self.index_enabled != [false; AXES]
+            || self.lio_enabled != [false; 24]
+            || self.latch_source != [0; AXES]
+            || *thresholds != [(0, 0); AXES]
             || self.trig_until.iter().any(Option::is_some)
             || self.led_trig_until.iter().any(Option::is_some)
+    }
+
+    /// [`CardTriggers::tick`] for a card with nothing armed: only the index status
+    /// follows the channels (the tick raises nothing then). Returns false, having done
+    /// nothing, when something is armed.
+    pub fn tick_idle(&mut self, chans: &[Channel; AXES], thresholds: &[(u16, u16); AXES]) -> bool {
+        if self.armed(thresholds) {
+            return false;
+        }
+        for (i, ch) in chans.iter().enumerate() {
+            if ch.index_events > 0 {
+                self.index_status[i] = true;
+            }
+        }
+        true
     }
 
     /// One tick: `chans` after their step, `thresholds` the closed-loop error bounds,
