@@ -933,7 +933,8 @@ impl GroupState {
         if self.running.len() == 1 {
             // The usual case, without the sums (the same operations as below).
             let r = &self.running[0];
-            r.cmd.sample_into(r.tau, &mut self.pos, &mut self.vel);
+            let (mut p, mut v) = ([0.0; AXES], [0.0; AXES]);
+            r.cmd.sample_into(r.tau, &mut p, &mut v);
             let s = r.cmd.start();
             let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
                 0.0
@@ -942,17 +943,13 @@ impl GroupState {
             };
             // Branch-free, so that both loops vectorize. `0.0 +` as in the sums below
             // (it turns -0.0 into 0.0).
-            #[allow(clippy::needless_range_loop)] // indexes three arrays; vectorizes
+            #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
             for i in 0..AXES {
-                let moved = self.base[i] + (self.pos[i] - s[i]);
-                self.pos[i] = if self.base[i] == s[i] {
-                    self.pos[i]
-                } else {
-                    moved
-                };
+                let moved = self.base[i] + (p[i] - s[i]);
+                self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
             }
-            for v in &mut self.vel {
-                *v = 0.0 + *v * scale;
+            for (out, v) in self.vel.iter_mut().zip(v) {
+                *out = 0.0 + v * scale;
             }
             return;
         }
