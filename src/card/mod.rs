@@ -16,7 +16,9 @@ use crate::config::AXES;
 use crate::engine::isr::{Interrupt, Pending};
 use adc::{Adc, AdcSource};
 use dac::Dac;
+use parking_lot::{Mutex, MutexGuard};
 use rio::Master;
+use std::sync::atomic::{AtomicU64, Ordering};
 use timer::{Timer, Watchdog};
 
 /// The peripherals of one card.
@@ -58,6 +60,22 @@ impl Peripherals {
         reset
     }
 
+    /// Whether a tick now would only move the ARIO cycle timing: timer, watchdog and ADC
+    /// stopped, no cause pending, the remote I/O [idle](Master::idle).
+    pub fn idle(&self) -> bool {
+        !self.timer.enabled()
+            && !self.watchdog.enabled()
+            && !self.adc.converting()
+            && self.pending.is_empty()
+            && self.rio.idle()
+    }
+
+    /// `n` ticks of `dt_ns` of [idle](Peripherals::idle) peripherals: exactly what `n`
+    /// calls of [`Peripherals::tick`] do then (they return false and raise nothing).
+    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+        self.rio.idle_ticks(n, dt_ns);
+    }
+
     /// The voltage at each ADC input now.
     pub fn adc_inputs(&self) -> [f32; AXES] {
         std::array::from_fn(|ch| match self.adc.source[ch] {
@@ -87,6 +105,96 @@ impl Peripherals {
     }
 }
 
+/// One card's [`Peripherals`] behind their mutex, and what lets the engine skip the tick
+/// of an idle card without taking the lock.
+///
+/// `state` holds [`IDLE`] when the peripherals were [idle](Peripherals::idle) as last
+/// unlocked, and in its other bits the ticks the engine counted instead of running since
+/// (an idle tick only moves the ARIO cycle timing). Whoever locks takes the count and runs
+/// those ticks first ([`Peripherals::idle_ticks`]), so every holder of the lock sees the
+/// state an engine ticking every card would have made. Both sides change `state` with one
+/// atomic operation: a tick counted before a lock is run by that lock before its holder
+/// changes anything; once the lock has taken the count (and cleared [`IDLE`]) the engine
+/// counts no more and ticks the card under the lock.
+#[derive(Debug)]
+pub struct PeriphCell {
+    periph: Mutex<Peripherals>,
+    state: AtomicU64,
+    /// The tick length the counted ticks have, ns.
+    dt_ns: u64,
+}
+
+/// [`PeriphCell::state`]: the peripherals are idle.
+const IDLE: u64 = 1 << 63;
+
+impl PeriphCell {
+    /// Default peripherals, for an engine whose ticks last `dt_ns`.
+    pub fn new(dt_ns: u64) -> PeriphCell {
+        PeriphCell {
+            periph: Mutex::new(Peripherals::default()),
+            state: AtomicU64::new(0),
+            dt_ns,
+        }
+    }
+
+    /// Locks the peripherals (after running the ticks counted while they were idle).
+    pub fn lock(&self) -> PeriphGuard<'_> {
+        let mut periph = self.periph.lock();
+        let n = self.state.swap(0, Ordering::AcqRel) & !IDLE;
+        if n > 0 {
+            periph.idle_ticks(n, self.dt_ns);
+        }
+        PeriphGuard { cell: self, periph }
+    }
+
+    /// The engine's tick of an idle card: counts it instead of running it and returns
+    /// true; false (nothing counted) when the card is not idle or is locked.
+    pub fn count_idle_tick(&self) -> bool {
+        let mut s = self.state.load(Ordering::Acquire);
+        loop {
+            // Not idle, or (never in practice) the count is full: tick under the lock.
+            if s & IDLE == 0 || s & !IDLE == !IDLE {
+                return false;
+            }
+            match self
+                .state
+                .compare_exchange_weak(s, s + 1, Ordering::AcqRel, Ordering::Acquire)
+            {
+                Ok(_) => return true,
+                Err(now) => s = now,
+            }
+        }
+    }
+}
+
+/// The locked peripherals of a [`PeriphCell`]; unlocking records whether they are idle.
+#[derive(Debug)]
+pub struct PeriphGuard<'a> {
+    cell: &'a PeriphCell,
+    periph: MutexGuard<'a, Peripherals>,
+}
+
+impl std::ops::Deref for PeriphGuard<'_> {
+    type Target = Peripherals;
+    fn deref(&self) -> &Peripherals {
+        &self.periph
+    }
+}
+
+impl std::ops::DerefMut for PeriphGuard<'_> {
+    fn deref_mut(&mut self) -> &mut Peripherals {
+        &mut self.periph
+    }
+}
+
+impl Drop for PeriphGuard<'_> {
+    fn drop(&mut self) {
+        // Still locked here (the mutex guard drops after this).
+        let idle = if self.periph.idle() { IDLE } else { 0 };
+        self.cell.state.store(idle, Ordering::Release);
+    }
+}
+
 /// Runs `f` on the peripherals of card `wCardIndex` of the running system:
 /// `INITIAL_MOTION_ERR` before init, `PARAMETER_ERR` for a card not passed to
 /// `MCC_InitSystem`. Takes no other lock.
@@ -103,6 +211,85 @@ pub fn with_card<R>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The same change made to both copies.
+    fn change(p: &mut Peripherals, k: u64) {
+        let set = (k / 16 % 2) as usize;
+        let slave = (k / 32 % 4) as u16;
+        match k % 16 {
+            0 => p.rio.ario_timing.set_update_rate(set, 300.0).unwrap(),
+            1 => p.rio.ario_timing.set_update_rate(set, 1700.0).unwrap(),
+            2 => p.rio.ario_timing.set_divider(set, 2000).unwrap(),
+            3 => p.rio.ario_timing.set_node_delay(3000),
+            4 | 5 => p.rio.ario[set].set_slave_control(slave, true).unwrap(),
+            6..=8 => p.rio.ario[set].set_slave_control(slave, false).unwrap(),
+            9 => p.rio.ario[set].set_output(slave, (k >> 8) as u16).unwrap(),
+            10 => p.rio.rio[set].control = !p.rio.rio[set].control,
+            11 => p.rio.rio[set]
+                .set_slave_control(slave, k & 64 != 0)
+                .unwrap(),
+            12 => p.rio.rio[set].set_output(0, (k >> 8) as u16).unwrap(),
+            13 => {
+                p.timer.set_period(70_000).unwrap();
+                p.timer.trigger = true;
+                p.timer.set_enabled(k & 128 != 0);
+            }
+            14 => p.rio.ario[set]
+                .set_input_trigger((k % 8) as u16, true)
+                .unwrap(),
+            _ => p
+                .rio
+                .set_slave_failed(true, set, usize::from(slave), k & 256 != 0),
+        }
+    }
+
+    #[test]
+    fn counted_idle_ticks_give_the_state_of_ticking_every_time() {
+        // `plain` ticks every time; `cell` as the engine does: an idle card's tick is
+        // counted and run when the card is next locked.
+        let dt = 1_000_000;
+        let cell = PeriphCell::new(dt);
+        let mut plain = Peripherals::default();
+        let mut seed: u64 = 99;
+        let mut counted = 0;
+        for n in 0..50_000 {
+            let fired = if cell.count_idle_tick() {
+                counted += 1;
+                Pending::default()
+            } else {
+                let mut p = cell.lock();
+                assert!(!p.tick(dt));
+                std::mem::take(&mut p.pending)
+            };
+            assert!(!plain.tick(dt));
+            assert_eq!(fired, std::mem::take(&mut plain.pending), "tick {n}");
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            // Changes now and then, long idle stretches in between.
+            if (seed >> 33) % 40 == 0 {
+                let k = seed >> 20;
+                change(&mut cell.lock(), k);
+                change(&mut plain, k);
+            } else if (seed >> 33) % 300 == 1 {
+                // Back to idle (the ARIO timing keeps its phase and settings).
+                for p in [&mut *cell.lock(), &mut plain] {
+                    p.timer.set_enabled(false);
+                    for set in 0..2 {
+                        p.rio.rio[set].control = false;
+                        for slave in 0..32 {
+                            p.rio.ario[set].set_slave_control(slave, false).unwrap();
+                        }
+                    }
+                }
+            }
+            if n % 101 == 0 {
+                assert_eq!(*cell.lock(), plain, "tick {n}");
+            }
+        }
+        assert_eq!(*cell.lock(), plain);
+        assert!(counted > 10_000, "idle stretches were counted ({counted})");
+    }
 
     #[test]
     fn adc_reads_the_dac_by_default_and_a_set_source() {

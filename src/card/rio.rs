@@ -229,18 +229,19 @@ impl<const N: usize> Set<N> {
 
     /// One transfer; counts failed slave transfers, raises input edges and the
     /// transmission failure (the status going from 1 to 0).
+    /// Whether a transfer now would change nothing and raise nothing: the set's control
+    /// is off, or nothing transmits and nothing changed since the last transfer (no slave
+    /// moves data, the status stays, the digital inputs equal the ones last seen). This
+    /// is every idle set on every tick (an ARIO set's control is always on).
+    fn transfer_idle(&self) -> bool {
+        !self.control
+            || (self.slave_on == 0
+                && self.was_ok != self.master_fail
+                && (self.master_fail || self.last_di == Some((self.inputs[0] & 0xFF) as u8)))
+    }
+
     fn transfer(&mut self, p: &mut Pending) {
-        if !self.control {
-            return;
-        }
-        // Nothing transmits and nothing changed since the last transfer: the transfer
-        // below would leave every field as it is and raise nothing (no slave moves data,
-        // the status stays, the digital inputs equal the ones last seen). This is every
-        // idle set on every tick (an ARIO set's control is always on).
-        if self.slave_on == 0
-            && self.was_ok != self.master_fail
-            && (self.master_fail || self.last_di == Some((self.inputs[0] & 0xFF) as u8))
-        {
+        if self.transfer_idle() {
             return;
         }
         if !self.master_fail {
@@ -368,6 +369,24 @@ impl ArioTiming {
         self.elapsed_ns[set] = e % period;
         e >= period
     }
+
+    /// `n` calls of [`ArioTiming::advance`] with the same arguments, the cycles that end
+    /// ignored: `(e + n x dt) mod period`, which is what the calls compute when nothing
+    /// saturates (each call's sum is at most this one); otherwise the calls themselves.
+    fn advance_n(&mut self, set: usize, n: u64, dt_ns: u64, transmitting: u32) {
+        let period = self.cycle_ns(set, transmitting).max(1);
+        match n
+            .checked_mul(dt_ns)
+            .and_then(|d| self.elapsed_ns[set].checked_add(d))
+        {
+            Some(e) => self.elapsed_ns[set] = e % period,
+            None => {
+                for _ in 0..n {
+                    self.advance(set, dt_ns, transmitting);
+                }
+            }
+        }
+    }
 }
 
 /// The remote I/O of one card: RIO and ARIO masters, two sets each.
@@ -410,6 +429,21 @@ impl Master {
             if self.ario_timing.advance(i, dt_ns, s.transmitting()) {
                 s.transfer(p);
             }
+        }
+    }
+
+    /// Whether a tick now would only move the ARIO cycle timing: every set's transfer
+    /// would change nothing ([`Set::transfer_idle`]).
+    pub fn idle(&self) -> bool {
+        self.rio.iter().all(Set::transfer_idle) && self.ario.iter().all(Set::transfer_idle)
+    }
+
+    /// `n` ticks of `dt_ns` of an [idle](Master::idle) master: exactly what `n` calls of
+    /// [`Master::tick`] do then (the ARIO cycle timing moves on; the transfers would
+    /// change nothing).
+    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+        for (i, s) in self.ario.iter().enumerate() {
+            self.ario_timing.advance_n(i, n, dt_ns, s.transmitting());
         }
     }
 

@@ -281,6 +281,10 @@ impl Shared {
     pub fn tick_peripherals(&self, dt_ns: u64) -> Collected {
         let mut out = Collected::new();
         for (card, p) in self.periph.iter().enumerate() {
+            if p.count_idle_tick() {
+                // Runs when the card is next locked (see `PeriphCell`).
+                continue;
+            }
             let (reset, pending) = {
                 let mut p = p.lock();
                 let reset = p.tick(dt_ns);

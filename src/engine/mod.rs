@@ -83,7 +83,7 @@ pub struct Shared {
     /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
     pub max_pulse_stock: AtomicU32,
     /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
-    pub periph: Vec<Mutex<crate::card::Peripherals>>,
+    pub periph: Vec<crate::card::PeriphCell>,
     /// The interrupt routines registered per card (`isr`).
     pub isr: isr::IsrTable,
     /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
@@ -546,8 +546,7 @@ impl Shared {
         self.safety(&machine, full, dt, &own_checks);
         drop(machine);
         drop(trace);
-        let dt_ns = u64::try_from(self.clock.period().as_nanos()).unwrap_or(u64::MAX);
-        (full, self.tick_peripherals(dt_ns))
+        (full, self.tick_peripherals(tick_ns(self.clock.period())))
     }
 
     /// Output changes of queued `MCC_Queue*OutputValue` commands.
@@ -641,6 +640,11 @@ impl Shared {
             self.for_each_group(|_| {});
         }
     }
+}
+
+/// The length of a tick in ns, as the peripherals count it.
+fn tick_ns(period: Duration) -> u64 {
+    u64::try_from(period.as_nanos()).unwrap_or(u64::MAX)
 }
 
 /// Applies a tick of homing to a group that drives homed channels: their positions and
@@ -740,7 +744,9 @@ impl Engine {
             servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
             pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
-            periph: (0..cards).map(|_| Mutex::default()).collect(),
+            periph: (0..cards)
+                .map(|_| crate::card::PeriphCell::new(tick_ns(period)))
+                .collect(),
             isr: isr::IsrTable::new(cards),
             homing: Mutex::new(None),
             home_status: AtomicI32::new(homing::HOME_NONE),
