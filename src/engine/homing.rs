@@ -205,6 +205,15 @@ enum State {
     Done,
 }
 
+/// The rate (UU/s²) that changes a speed by `speed` in `secs`; at once for no time.
+fn rate_over(speed: f64, secs: f64) -> f64 {
+    if secs > 0.0 {
+        speed / secs
+    } else {
+        f64::INFINITY
+    }
+}
+
 /// One channel being homed.
 #[derive(Debug, Clone)]
 struct HomeAxis {
@@ -258,13 +267,7 @@ impl HomeAxis {
     /// The deceleration: from the step's speed to 0 in `dfDecTime` (§2.8.1), so a slower
     /// axis stops sooner at the same rate.
     fn decel_rate(&self) -> f64 {
-        let dec = self.dec_s();
-        let speed = self.step_speed.max(self.kin.v().abs());
-        if dec > 0.0 {
-            speed / dec
-        } else {
-            f64::INFINITY
-        }
+        rate_over(self.step_speed.max(self.kin.v().abs()), self.dec_s())
     }
 
     fn step(&self) -> Option<Step> {
@@ -328,12 +331,7 @@ impl HomeAxis {
                 let target = dir * speed;
                 let faster = v * target < 0.0 || v.abs() < speed;
                 let rate = if faster {
-                    let acc = self.acc_s();
-                    if acc > 0.0 {
-                        speed / acc
-                    } else {
-                        f64::INFINITY
-                    }
+                    rate_over(speed, self.acc_s())
                 } else {
                     // Slowing from the last step's speed (mode 5: high to low).
                     self.decel_rate()

@@ -364,6 +364,10 @@ impl Shared {
 
     /// One tick of the homing in progress (with the machine locked).
     fn tick_homing(&self, machine: &mut Machine, dt: f64) -> Option<homing::HomeTick> {
+        // No lock on the tick's path while nothing is homed.
+        if self.home_status.load(Ordering::Acquire) != homing::HOME_BUSY {
+            return None;
+        }
         let mut slot = self.homing.lock();
         let h = slot.as_mut()?;
         let card = h.card();
