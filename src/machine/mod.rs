@@ -235,8 +235,15 @@ impl Channel {
     /// motor stands; the motor, its encoder count and the sensors do not move.
     pub fn rezero(&mut self) {
         let count = self.encoder();
-        self.base += self.actual;
-        self.actual = 0.0;
+        self.restart_counter(self.actual, count);
+    }
+
+    /// The command counter restarts from 0 `shift` pulses up the motor's frame (the
+    /// motor, its sensors and its machine position do not move); the encoder then reads
+    /// `count` and compensation starts again from its home point.
+    fn restart_counter(&mut self, shift: f64, count: i64) {
+        self.base += shift;
+        self.actual -= shift;
         self.cmd = 0;
         self.out = 0;
         self.prev_out = 0;
@@ -251,17 +258,7 @@ impl Channel {
     /// move (a lagging one keeps its following error); compensation restarts from its
     /// home point (`wHome_No`).
     pub fn home_here(&mut self) {
-        let here = self.out as f64;
-        self.base += here;
-        self.actual -= here;
-        self.cmd = 0;
-        self.out = 0;
-        self.prev_out = 0;
-        self.prev_delta = 0;
-        self.last_move = (self.base + self.actual, self.base + self.actual);
-        self.comp = Compensation::new(&self.comp_param);
-        self.set_encoder(0);
-        self.update_sensors();
+        self.restart_counter(self.out as f64, 0);
     }
 
     /// The motor's position in pulses.

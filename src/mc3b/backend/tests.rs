@@ -361,27 +361,20 @@ fn chord_endpoints_rounded_to_steps_stay_within_tolerance_plus_half_a_step() {
 #[test]
 fn a_single_move_is_a_plain_synchronous_move() {
     let (link, mut w) = worker();
+    let ramp = Ramp::Times {
+        acc_s: 0.05,
+        dec_s: 0.05,
+    };
+    let speeds = [
+        Some(speeds_for(2000.0, ramp)),
+        Some(speeds_for(1000.0, ramp)),
+        None,
+    ];
     link.post(
         7,
         Job::Sync {
             segs: vec![[1000, -500, 0]],
-            speeds: [
-                Some(speeds_for(
-                    2000.0,
-                    Ramp::Times {
-                        acc_s: 0.05,
-                        dec_s: 0.05,
-                    },
-                )),
-                Some(speeds_for(
-                    1000.0,
-                    Ramp::Times {
-                        acc_s: 0.05,
-                        dec_s: 0.05,
-                    },
-                )),
-                None,
-            ],
+            speeds,
         },
     );
     assert!(w.run_pending());
@@ -416,23 +409,7 @@ fn a_single_move_is_a_plain_synchronous_move() {
         8,
         Job::Sync {
             segs: vec![[-1000, 500, 0]],
-            speeds: [
-                Some(speeds_for(
-                    2000.0,
-                    Ramp::Times {
-                        acc_s: 0.05,
-                        dec_s: 0.05,
-                    },
-                )),
-                Some(speeds_for(
-                    1000.0,
-                    Ramp::Times {
-                        acc_s: 0.05,
-                        dec_s: 0.05,
-                    },
-                )),
-                None,
-            ],
+            speeds,
         },
     );
     assert!(w.run_pending());
