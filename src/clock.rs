@@ -20,6 +20,11 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
+thread_local! {
+    /// Set on every engine thread (see [`Clock::set_engine_thread`]).
+    static ON_AN_ENGINE_THREAD: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
 /// The most virtual time one status poll runs under the fast clock.
 pub const FAST_POLL_MAX: Duration = Duration::from_secs(60);
 
@@ -250,10 +255,15 @@ impl Clock {
     /// `MCC_TimeDelay`) returns at once instead of waiting for itself.
     pub fn set_engine_thread(&self) {
         let _ = self.engine_thread.set(std::thread::current().id());
+        ON_AN_ENGINE_THREAD.with(|e| e.set(true));
     }
 
+    /// Whether a wait asked for on this thread must return at once: on this clock's engine
+    /// thread, or on any engine thread — a routine of a system being replaced may reach
+    /// the new system's clock, whose ticks may wait for that routine's engine to end.
     fn on_engine_thread(&self) -> bool {
-        self.engine_thread.get() == Some(&std::thread::current().id())
+        ON_AN_ENGINE_THREAD.with(std::cell::Cell::get)
+            || self.engine_thread.get() == Some(&std::thread::current().id())
     }
 
     /// Grants `ticks` more ticks (fast and stepped modes) and waits until they ran, or

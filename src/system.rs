@@ -8,8 +8,9 @@ use crate::error::{McclError, McclResult};
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_CARD_CONFIG, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
 use once_cell::sync::Lazy;
-use parking_lot::{Mutex, RwLock};
+use parking_lot::{Condvar, Mutex, MutexGuard, RwLock};
 use std::sync::Arc;
+use std::thread::JoinHandle;
 use std::time::Duration;
 
 /// The running part of the system.
@@ -42,13 +43,106 @@ pub struct System {
     pub config: Config,
     /// `Some` between a successful init and `MCC_CloseSystem`.
     pub running: Option<Running>,
+    /// An init or close is under way (see [`Turn`]): no other may start meanwhile.
+    changing: bool,
+    /// Threads of engines stopped from their own thread (a routine that closed or
+    /// replaced its system), joined by the next init or close on another thread.
+    unjoined: Vec<JoinHandle<()>>,
 }
 
 static SYSTEM: Lazy<Mutex<System>> = Lazy::new(|| Mutex::new(System::default()));
 
+/// Signalled when an init or close ends its turn or stops an engine.
+static TURN_CHANGED: Condvar = Condvar::new();
+
 /// The running engine's shared state, for calls that must not wait for the system lock
 /// (status reads). `None` while the system is closed.
 static ACTIVE: RwLock<Option<Arc<Shared>>> = RwLock::new(None);
+
+/// The right to start or stop the system, held by one `MCC_InitSystem` or
+/// `MCC_CloseSystem` at a time from its first check to its end; the system lock itself
+/// is released while the call joins an engine thread (whose routine may be waiting for
+/// that lock). Dropping the turn, also while unwinding, hands it to the next caller.
+///
+/// The rule this gives (README, "Concurrency"): init and close take effect in the order
+/// they take their turn, so the last one wins; when `MCC_CloseSystem` returns `NO_ERR` no
+/// engine of the system it closed, nor one that a routine of it started, is left. A
+/// routine of an engine that has been stopped cannot take a turn
+/// (`COMMAND_NOTACCEPTED_ERR`): the program's init or close that stopped it came first.
+struct Turn {
+    sys: Option<MutexGuard<'static, System>>,
+}
+
+impl Turn {
+    /// Waits for the turn (the system lock is released while waiting).
+    fn take() -> McclResult<Turn> {
+        let mut sys = SYSTEM.lock();
+        loop {
+            if crate::engine::on_retired_engine_thread() {
+                return Err(McclError::NotAccepted);
+            }
+            if !sys.changing {
+                break;
+            }
+            TURN_CHANGED.wait(&mut sys);
+        }
+        sys.changing = true;
+        Ok(Turn { sys: Some(sys) })
+    }
+
+    /// The system, locked again if the turn had released the lock.
+    fn sys(&mut self) -> &mut System {
+        self.sys.get_or_insert_with(|| SYSTEM.lock())
+    }
+
+    /// Releases the system lock, keeping the turn.
+    fn unlock(&mut self) {
+        self.sys = None;
+    }
+
+    /// Takes the running system out and stops its engine; a routine of it that waits for
+    /// a turn gives up now. The old system is joined by [`Turn::retire`], without the lock.
+    fn stop_running(&mut self) -> (Option<Running>, Vec<JoinHandle<()>>) {
+        let sys = self.sys();
+        let old = sys.running.take();
+        let unjoined = std::mem::take(&mut sys.unjoined);
+        *ACTIVE.write() = None;
+        if let Some(r) = &old {
+            r.engine.stop();
+        }
+        TURN_CHANGED.notify_all();
+        (old, unjoined)
+    }
+
+    /// Joins the stopped engine and the threads left to join, with the system lock
+    /// released; a thread that cannot be joined here (this one) is kept for later.
+    fn retire(&mut self, old: Option<Running>, unjoined: Vec<JoinHandle<()>>) {
+        self.unlock();
+        let mut keep = Vec::new();
+        if let Some(r) = old {
+            let Running { engine, mc3b, .. } = r;
+            keep.extend(engine.finish());
+            // The MC3B ports close after the engine that used them stopped.
+            drop(mc3b);
+        }
+        let me = std::thread::current().id();
+        for t in unjoined {
+            if t.thread().id() == me {
+                keep.push(t);
+            } else {
+                let _ = t.join();
+            }
+        }
+        self.sys().unjoined.extend(keep);
+    }
+}
+
+impl Drop for Turn {
+    fn drop(&mut self) {
+        self.sys().changing = false;
+        TURN_CHANGED.notify_all();
+    }
+}
 
 /// Runs `f` with the system locked.
 pub fn with<R>(f: impl FnOnce(&mut System) -> R) -> R {
@@ -115,18 +209,13 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
             Ok(groups)
         }
     };
-    let old = {
-        let mut sys = SYSTEM.lock();
-        groups_for(&sys)?;
-        *ACTIVE.write() = None;
-        sys.running.take()
-    };
+    let mut turn = Turn::take()?;
+    groups_for(turn.sys())?;
+    let (old, unjoined) = turn.stop_running();
     // Stop a running card outside the lock (its callbacks may be calling in).
-    if let Some(r) = old {
-        r.engine.shutdown();
-    }
-    let mut sys = SYSTEM.lock();
-    let groups = groups_for(&sys)?;
+    turn.retire(old, unjoined);
+    let sys = turn.sys();
+    let groups = groups_for(sys)?;
     let trace = crate::engine::trace::Trace::from_env().map_err(|msg| {
         eprintln!("MCCL: MCC_InitSystem failed: {msg}");
         McclError::NotInitialized
@@ -174,6 +263,10 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     }
     crate::mc3b::backend::attach(engine.shared(), &mc3b);
     *ACTIVE.write() = Some(engine.shared().clone());
+    debug_assert!(
+        sys.running.is_none(),
+        "only the turn's holder installs a system"
+    );
     sys.running = Some(Running {
         engine,
         cards: cards.len(),
@@ -200,14 +293,15 @@ pub fn has_mc3b() -> bool {
 /// `MCC_CloseSystem`: stops the engine and joins its thread (`INITIAL_MOTION_ERR` when
 /// nothing runs). The configuration is kept for the next init.
 pub fn close() -> McclResult<()> {
-    let running = {
-        let mut sys = SYSTEM.lock();
-        let r = sys.running.take().ok_or(McclError::NotInitialized)?;
-        *ACTIVE.write() = None;
-        r
+    let mut turn = Turn::take()?;
+    let (old, unjoined) = turn.stop_running();
+    let closed = if old.is_some() {
+        Ok(())
+    } else {
+        Err(McclError::NotInitialized)
     };
-    running.engine.shutdown();
-    Ok(())
+    turn.retire(old, unjoined);
+    closed
 }
 
 /// `MCC_ResetMotion`: every group back to its state right after init.

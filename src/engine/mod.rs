@@ -23,8 +23,9 @@ use command::AxisMech;
 use group::GroupState;
 use parking_lot::{Mutex, MutexGuard};
 use snapshot::{GroupSnapshot, SnapshotCell};
+use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Weak};
 use std::thread::{JoinHandle, ThreadId};
 use std::time::Duration;
 
@@ -482,6 +483,7 @@ impl Shared {
         for (n, g) in self.groups.iter().enumerate() {
             let mut g = g.lock();
             g.tick(dt);
+            crate::fault::point("group tick");
             if let Some(h) = &homed {
                 apply_homing(&mut g, h);
             }
@@ -644,6 +646,42 @@ impl Shared {
             self.for_each_group(|_| {});
         }
     }
+
+    /// [`Shared::tick`], and after a panic inside it (a defect of the library) a defined
+    /// state instead of a dead engine thread: every group stops where it stands, drops
+    /// its queue and records [`safety::ERR_INTERNAL`]; the clock goes on. The locks the
+    /// tick held were released while unwinding (parking_lot locks do not poison).
+    fn tick_or_recover(&self) -> (bool, isr::Collected) {
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick())) {
+            Ok(done) => done,
+            Err(_) => {
+                self.stop_all_for_internal_error();
+                (true, isr::Collected::default())
+            }
+        }
+    }
+
+    /// Stops every group where it stands with the error record [`safety::ERR_INTERNAL`]
+    /// (the state after a caught panic that may have touched any group).
+    pub fn stop_all_for_internal_error(&self) {
+        self.for_each_group(|g| g.stop_for(Some(safety::ERR_INTERNAL)));
+    }
+}
+
+thread_local! {
+    /// On an engine thread: the engine it runs (see [`on_retired_engine_thread`]).
+    static THIS_ENGINE: RefCell<Option<Weak<Shared>>> = const { RefCell::new(None) };
+}
+
+/// Whether the calling thread is the thread of an engine that has been stopped (a
+/// routine still running for a system that is being closed or replaced). Such a routine
+/// may not start or close a system: the program's close or init has already taken over.
+pub fn on_retired_engine_thread() -> bool {
+    THIS_ENGINE.with(|e| {
+        e.borrow()
+            .as_ref()
+            .is_some_and(|w| w.upgrade().is_none_or(|s| s.clock.stopped()))
+    })
 }
 
 /// The length of a tick in ns, as the peripherals count it.
@@ -764,7 +802,10 @@ impl Engine {
         let s2 = shared.clone();
         let thread = std::thread::Builder::new()
             .name("mccl-engine".into())
-            .spawn(move || run(&s2))?;
+            .spawn(move || {
+                THIS_ENGINE.with(|e| *e.borrow_mut() = Some(Arc::downgrade(&s2)));
+                run(&s2)
+            })?;
         let thread_id = thread.thread().id();
         Ok(Engine {
             shared,
@@ -778,9 +819,22 @@ impl Engine {
         &self.shared
     }
 
-    /// Stops the clock and joins the thread (see [`Drop`]).
-    pub fn shutdown(self) {
-        drop(self);
+    /// Stops the clock: the engine runs no further tick and every waiter returns. The
+    /// thread ends once the tick or routine it is in returns ([`Engine::finish`]).
+    pub fn stop(&self) {
+        self.shared.clock.stop();
+    }
+
+    /// Stops the clock and joins the thread. Called from the engine's own thread (a
+    /// routine that closes or replaces its system) it cannot join itself: it returns the
+    /// thread's handle, for a later call on another thread to join.
+    pub fn finish(mut self) -> Option<JoinHandle<()>> {
+        // Drop stops the clock, joins a thread still in `self.thread`, flushes the trace.
+        if self.is_engine_thread() {
+            self.thread.take()
+        } else {
+            None
+        }
     }
 
     /// Whether the calling thread is this engine's thread.
@@ -790,7 +844,8 @@ impl Engine {
 }
 
 /// Stops the clock and joins the thread. From the engine thread itself (a callback that
-/// closes the system) it only stops: the thread ends when the callback returns.
+/// closes the system) it only stops: the thread ends when the callback returns (see
+/// [`Engine::finish`], which hands that thread on to be joined later).
 impl Drop for Engine {
     fn drop(&mut self) {
         self.shared.clock.stop();
@@ -811,7 +866,7 @@ fn run(shared: &Shared) {
         match shared.clock.wait_next() {
             Next::Stop => return,
             Next::Tick => {
-                let (published, interrupts) = shared.tick();
+                let (published, interrupts) = shared.tick_or_recover();
                 shared.check_watch();
                 if !published {
                     shared.end_of_run();

@@ -15,6 +15,10 @@ pub const ERR_PULSE_ACC: i32 = 0xF204;
 pub const ERR_LIMIT: i32 = 0xF701;
 /// Error record: tracking error, + axis.
 pub const ERR_TRACKING: i32 = 0xF801;
+/// Error record: the library caught a panic of its own (a defect) and stopped the group
+/// where it stood. Not in the vendor's table: its test programs report any unknown code
+/// as "Run Time Error", which is what happened.
+pub const ERR_INTERNAL: i32 = 0xF1FF;
 
 /// A check that tripped: the group stops; `record` is its error record, if any.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
