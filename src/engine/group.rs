@@ -394,6 +394,7 @@ impl GroupState {
             Plan::Blend(on) => self.blend_queued = on,
             _ => self.queue_end = cmd.target,
         }
+        crate::fault::point("enqueue");
         let idx = cmd.index;
         self.queue.push_back(cmd);
         self.update_status();

@@ -52,12 +52,34 @@ impl FfiReturn for () {
 
 /// Runs `f`, turning an error into the vendor code and a panic into `RUN_TIME_ERR`
 /// (no panic ever crosses the C boundary).
+///
+/// A panic is a defect of the library, and the state it interrupted may be half
+/// updated, so it leaves a defined state behind: a panic inside a call on one group
+/// ([`with_group`]) stops that group; any other stops every group of the running system.
+/// A stopped group stands where it is, its queue is dropped and it records
+/// [`ERR_INTERNAL`](crate::engine::safety::ERR_INTERNAL) (0xF1FF), so it runs nothing
+/// until the program calls `MCC_ClearError`.
 pub fn guard<R: FfiReturn>(f: impl FnOnce() -> McclResult<R>) -> R {
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(Ok(v)) => v,
         Ok(Err(e)) => R::from_error(e),
-        Err(_) => R::from_error(McclError::RunTime),
+        Err(_) => {
+            if !GROUP_STOPPED_AFTER_PANIC.with(|s| s.replace(false)) {
+                // Best effort: a second panic here must not cross the boundary either.
+                let _ = catch_unwind(|| {
+                    if let Ok(shared) = crate::system::active() {
+                        shared.stop_all_for_internal_error();
+                    }
+                });
+            }
+            R::from_error(McclError::RunTime)
+        }
     }
+}
+
+thread_local! {
+    /// Set by [`with_group`] when it already stopped the group a panic interrupted.
+    static GROUP_STOPPED_AFTER_PANIC: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// A card index from C.
@@ -120,6 +142,8 @@ mod tests_machine;
 #[cfg(test)]
 mod tests_motion;
 #[cfg(test)]
+mod tests_panic;
+#[cfg(test)]
 mod tests_periph;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
@@ -130,7 +154,17 @@ pub fn with_group<R>(
 ) -> McclResult<R> {
     let shared = crate::system::active()?;
     let mut grp = shared.group(g)?;
-    let r = f(&mut grp);
+    let r = match catch_unwind(AssertUnwindSafe(|| f(&mut grp))) {
+        Ok(r) => r,
+        Err(panic) => {
+            // The group may be half updated: stop it where it stands (see `guard`).
+            grp.stop_for(Some(crate::engine::safety::ERR_INTERNAL));
+            shared.publish(&mut grp);
+            GROUP_STOPPED_AFTER_PANIC.with(|s| s.set(true));
+            drop(grp);
+            std::panic::resume_unwind(panic);
+        }
+    };
     // Published on failure too: a refused arc still records its error (0xF104).
     shared.publish(&mut grp);
     r
