@@ -341,6 +341,7 @@ impl GroupState {
             settings: &self.settings,
             axes: &self.axes,
             from: self.queue_end,
+            offset: self.offset,
         }
     }
 
@@ -575,8 +576,10 @@ impl GroupState {
         self.blend_queued = on;
     }
 
-    /// `MCC_DefinePos`: the current position of `axis` becomes `value` (only when stopped).
+    /// `MCC_DefinePos`: the current position of `axis` becomes `value` (only when stopped;
+    /// `value` must be a position of the axis, `config::range::position`).
     pub fn define_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
+        crate::config::range::position(value, self.axes[axis].factor)?;
         if self.busy() {
             return Err(McclError::NotFinished);
         }

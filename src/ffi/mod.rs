@@ -121,6 +121,8 @@ mod tests_machine;
 mod tests_motion;
 #[cfg(test)]
 mod tests_periph;
+#[cfg(test)]
+mod tests_ranges;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
 /// that does not run.
