@@ -99,6 +99,103 @@ pub fn default_home_config() -> SYS_HOME_CONFIG {
     }
 }
 
+/// The documented ranges of the numbers a program passes (README "Ranges"), one check
+/// per kind of quantity. A value whose consequence the library cannot represent — a
+/// count beyond its counter, a time longer than it can count, a factor that overflows —
+/// is `PARAMETER_ERR`, and the call changes nothing.
+pub mod range {
+    use crate::error::{McclError, McclResult};
+
+    /// Longest time, ms: 2^32 − 1 (49.7 days). The vendor's own time arguments are
+    /// DWORD ms (`MCC_DelayMotion`, `MCC_TimeDelay`), and a command's own time, counted
+    /// in `f64` seconds, still resolves 1 ns at 2^32 ms (its step there is 2^-30 s).
+    pub const MAX_TIME_MS: f64 = 4_294_967_295.0;
+    /// [`MAX_TIME_MS`] in seconds: the longest a queued command may last.
+    pub const MAX_TIME_S: f64 = MAX_TIME_MS / 1000.0;
+    /// Largest pulse count of a channel (and |position| × pulses per UU of an axis):
+    /// 10^15. Pulses are computed in `f64`, which holds every integer only up to
+    /// 2^53 ≈ 9.007e15; 10^15 is the round number below (31 years at 1 MHz).
+    pub const MAX_PULSES: f64 = 1e15;
+    /// Slowest speed, UU/s: a unit takes 11.6 days, a quarter of the longest time.
+    pub const MIN_SPEED: f64 = 1e-6;
+    /// Fastest speed, UU/s: the planner squares speeds and divides them by times;
+    /// 10^9 keeps that far inside `f64` and far above any machine.
+    pub const MAX_SPEED: f64 = 1e9;
+    /// Fewest pulses per UU (dwPPR × dfGearRatio / dfPitch): one pulse per 10^6 UU.
+    pub const MIN_FACTOR: f64 = 1e-6;
+    /// Most pulses per UU: 10^9 (a work zone of ±10^6 UU still fits [`MAX_PULSES`]).
+    pub const MAX_FACTOR: f64 = 1e9;
+    /// Smallest `MCC_SetENCGearRate`: a thousand motor pulses per count.
+    pub const MIN_ENC_GEAR: f64 = 1e-3;
+    /// Largest `MCC_SetENCGearRate`: a thousand counts per motor pulse.
+    pub const MAX_ENC_GEAR: f64 = 1e3;
+    /// Largest |encoder count|: [`MAX_PULSES`] × [`MAX_ENC_GEAR`] = 10^18, every count
+    /// a motor in range can make; a count set plus one counted stays within `i64`
+    /// (9.2e18).
+    pub const MAX_ENC_COUNT: i64 = 1_000_000_000_000_000_000;
+    /// Smallest percentage (override, PtP and jog ratio): 0.01 %. At that rate a 1 ms
+    /// tick still advances a command's own time by 10^-7 s, a hundred times its
+    /// resolution at [`MAX_TIME_S`], so a slowed command always ends.
+    pub const MIN_PERCENT: f64 = 0.01;
+
+    fn within(x: f64, lo: f64, hi: f64) -> McclResult<f64> {
+        if x.is_finite() && lo <= x && x <= hi {
+            Ok(x)
+        } else {
+            Err(McclError::Parameter)
+        }
+    }
+
+    /// A time in ms: 0..=[`MAX_TIME_MS`].
+    pub fn time_ms(t: f64) -> McclResult<f64> {
+        within(t, 0.0, MAX_TIME_MS)
+    }
+
+    /// A planned duration in seconds: at most [`MAX_TIME_S`].
+    pub fn duration_s(t: f64) -> McclResult<f64> {
+        within(t, 0.0, MAX_TIME_S)
+    }
+
+    /// A speed in UU/s: [`MIN_SPEED`]..=[`MAX_SPEED`].
+    pub fn speed(v: f64) -> McclResult<f64> {
+        within(v, MIN_SPEED, MAX_SPEED)
+    }
+
+    /// A percentage: [`MIN_PERCENT`]..=`max`.
+    pub fn percent(p: f64, max: f64) -> McclResult<f64> {
+        within(p, MIN_PERCENT, max)
+    }
+
+    /// Pulses per UU (either sign): |f| in [`MIN_FACTOR`]..=[`MAX_FACTOR`].
+    pub fn factor(f: f64) -> McclResult<f64> {
+        within(f.abs(), MIN_FACTOR, MAX_FACTOR).map(|_| f)
+    }
+
+    /// An encoder gear rate: [`MIN_ENC_GEAR`]..=[`MAX_ENC_GEAR`].
+    pub fn enc_gear(r: f64) -> McclResult<f64> {
+        within(r, MIN_ENC_GEAR, MAX_ENC_GEAR)
+    }
+
+    /// A position (or distance) in UU of an axis with `factor` pulses per UU: finite,
+    /// and |x| × |factor| <= [`MAX_PULSES`].
+    pub fn position(x: f64, factor: f64) -> McclResult<f64> {
+        if x.is_finite() && x.abs() * factor.abs() <= MAX_PULSES {
+            Ok(x)
+        } else {
+            Err(McclError::Parameter)
+        }
+    }
+
+    /// An encoder count (set or compared): |n| <= [`MAX_ENC_COUNT`].
+    pub fn enc_count(n: i64) -> McclResult<i64> {
+        if n.unsigned_abs() <= MAX_ENC_COUNT.unsigned_abs() {
+            Ok(n)
+        } else {
+            Err(McclError::Parameter)
+        }
+    }
+}
+
 fn check(ok: bool) -> McclResult<()> {
     if ok {
         Ok(())
@@ -108,16 +205,26 @@ fn check(ok: bool) -> McclResult<()> {
 }
 
 /// Validates mechanism parameters (§2.4.1): direction 0/1, PPR > 0, pitch and gear ratio
-/// finite and > 0, limits finite with low <= high, pulse mode `DDA_FMT_*`, command mode
-/// `OCM_*`, sensor modes `SL_*`.
+/// finite and > 0 with pulses per UU in [`range::factor`], the maximum safe speed at most
+/// [`range::MAX_SPEED`], limits and limit offsets positions in [`range::position`] with
+/// low <= high, pulse mode `DDA_FMT_*`, command mode `OCM_*`, sensor modes `SL_*`.
 pub fn validate_mac_param(p: &SYS_MAC_PARAM) -> McclResult<()> {
     check(p.wPosToEncoderDir <= 1)?;
     check(p.dwPPR > 0)?;
     check(p.dfPitch.is_finite() && p.dfPitch > 0.0)?;
     check(p.dfGearRatio.is_finite() && p.dfGearRatio > 0.0)?;
-    check(p.dfHighLimit.is_finite() && p.dfLowLimit.is_finite())?;
+    let f = range::factor(conv_factor(p))?;
+    let safe = f64::from(p.wRPM) / 60.0 * p.dfPitch / p.dfGearRatio;
+    check(safe <= range::MAX_SPEED)?;
+    for x in [
+        p.dfHighLimit,
+        p.dfLowLimit,
+        p.dfHighLimitOffset,
+        p.dfLowLimitOffset,
+    ] {
+        range::position(x, f)?;
+    }
     check(p.dfLowLimit <= p.dfHighLimit)?;
-    check(p.dfHighLimitOffset.is_finite() && p.dfLowLimitOffset.is_finite())?;
     check(p.wPulseMode <= c::DDA_FMT_AB)?;
     check(p.wCommandMode <= c::OCM_SWCLOSELOOP)?;
     check(p.wOverTravelUpSensorMode <= c::SL_UNUSED)?;
@@ -143,18 +250,20 @@ pub fn encoder_multiplier(input_rate: u16) -> u32 {
     }
 }
 
-/// Validates go-home parameters (§2.4.3): mode 3..16, direction 0/1, sensor mode `SL_*`,
-/// index count >= 0, times finite and >= 0, speeds finite and > 0, offset finite.
-pub fn validate_home_config(h: &SYS_HOME_CONFIG) -> McclResult<()> {
+/// Validates go-home parameters (§2.4.3) for a channel with mechanism parameters `mac`:
+/// mode 3..16, direction 0/1, sensor mode `SL_*`, index count >= 0, times in
+/// [`range::time_ms`], speeds in [`range::speed`], the offset a position of the channel
+/// ([`range::position`]).
+pub fn validate_home_config(h: &SYS_HOME_CONFIG, mac: &SYS_MAC_PARAM) -> McclResult<()> {
     check((3..=16).contains(&h.wMode))?;
     check(h.wDirection <= 1)?;
     check(h.wSensorMode <= c::SL_UNUSED)?;
     check(h.nIndexCount >= 0)?;
-    check(h.dfAccTime.is_finite() && h.dfAccTime >= 0.0)?;
-    check(h.dfDecTime.is_finite() && h.dfDecTime >= 0.0)?;
-    check(h.dfHighSpeed.is_finite() && h.dfHighSpeed > 0.0)?;
-    check(h.dfLowSpeed.is_finite() && h.dfLowSpeed > 0.0)?;
-    check(h.dfOffset.is_finite())?;
+    range::time_ms(h.dfAccTime)?;
+    range::time_ms(h.dfDecTime)?;
+    range::speed(h.dfHighSpeed)?;
+    range::speed(h.dfLowSpeed)?;
+    range::position(h.dfOffset, conv_factor(mac))?;
     Ok(())
 }
 
@@ -401,15 +510,16 @@ mod tests {
             Err(McclError::Parameter)
         );
         let h = default_home_config();
-        assert!(validate_home_config(&h).is_ok());
-        for m in [0u16, 2, 17, 19] {
-            let b = SYS_HOME_CONFIG { wMode: m, ..h };
-            assert_eq!(validate_home_config(&b), Err(McclError::Parameter));
+        let m = default_mac_param();
+        assert!(validate_home_config(&h, &m).is_ok());
+        for mode in [0u16, 2, 17, 19] {
+            let b = SYS_HOME_CONFIG { wMode: mode, ..h };
+            assert_eq!(validate_home_config(&b, &m), Err(McclError::Parameter));
         }
         let b = SYS_HOME_CONFIG {
             dfLowSpeed: f64::NAN,
             ..h
         };
-        assert_eq!(validate_home_config(&b), Err(McclError::Parameter));
+        assert_eq!(validate_home_config(&b, &m), Err(McclError::Parameter));
     }
 }

@@ -3,7 +3,7 @@
 //! the previous queued command, so bad geometry is refused at call time and the engine
 //! only samples plans.
 
-use crate::config::AXES;
+use crate::config::{range, AXES};
 use crate::error::{McclError, McclResult};
 use crate::planner::{Axes, Path, PathMove, PlanError, Plane, Profile, PtpMove, Shape};
 use crate::vendor::SYS_MAC_PARAM;
@@ -246,6 +246,8 @@ pub struct Ctx<'a> {
     pub axes: &'a [AxisMech; AXES],
     /// End of the previous queued command (user coordinates).
     pub from: Axes,
+    /// Reference position − user position per axis (`MCC_DefinePos` moves it).
+    pub offset: Axes,
 }
 
 impl Ctx<'_> {
@@ -282,6 +284,33 @@ impl Ctx<'_> {
         }
     }
 
+    /// Checks resolved points `(axis, user coordinate)` a command names (targets, via
+    /// points, centers) against the position range of their axes, in user and reference
+    /// coordinates, before any geometry is built from them (an out-of-range point is a
+    /// bad parameter, not a bad arc).
+    pub fn check_points(&self, pts: &[(usize, f64)]) -> Result<(), PlanError> {
+        for &(i, x) in pts {
+            let f = self.axes[i].factor;
+            if range::position(x, f).is_err() || range::position(x + self.offset[i], f).is_err() {
+                return Err(PlanError::BadParameter("position out of range"));
+            }
+        }
+        Ok(())
+    }
+
+    /// The ranges every queued move must keep (`config::range`): each axis's interval of
+    /// positions over the move (`extent`), in user and in reference coordinates, within
+    /// the pulse range of the axis; the move's duration within the longest time.
+    fn check_reach(&self, extent: &[(f64, f64); AXES], duration_s: f64) -> McclResult<()> {
+        for ((&(lo, hi), off), a) in extent.iter().zip(&self.offset).zip(self.axes) {
+            for x in [lo, hi, lo + off, hi + off] {
+                range::position(x, a.factor)?;
+            }
+        }
+        range::duration_s(duration_s)?;
+        Ok(())
+    }
+
     fn general(&self, path: Path, ctype: i32) -> McclResult<Command> {
         let s = self.settings;
         let profile = Profile::new(
@@ -293,6 +322,7 @@ impl Ctx<'_> {
             s.dec,
         )
         .map_err(plan_err)?;
+        self.check_reach(&path.extent(), profile.duration())?;
         let target = path.end();
         Ok(Command {
             index: 0,
@@ -334,6 +364,9 @@ impl Ctx<'_> {
             &self.from, &target, &speed, &acc, &dec, &s.ptp_acc, &s.ptp_dec, sync,
         )
         .map_err(plan_err)?;
+        let extent: [(f64, f64); AXES] =
+            std::array::from_fn(|i| (self.from[i].min(target[i]), self.from[i].max(target[i])));
+        self.check_reach(&extent, mv.duration())?;
         Ok(Command {
             index: 0,
             ctype: ctype::PTP,

@@ -2,7 +2,7 @@
 //! encoder follows the motor: one count per pulse at x4, half at x2, a quarter at x1,
 //! reversed by A/B swap or a single inverted phase, scaled by `MCC_SetENCGearRate`.
 
-use super::{card, channel, finite, guard, out_ok, write_out};
+use super::{card, channel, guard, out_ok, write_out};
 use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
@@ -60,14 +60,16 @@ pub unsafe extern "C" fn MCC_GetENCValueEx(
     })
 }
 
-/// Sets the encoder count of a channel to `lValue` (the motor does not move).
+/// Sets the encoder count of a channel to `lValue` (|lValue| <= 1e18; the motor does not
+/// move).
 #[no_mangle]
 pub extern "C" fn MCC_SetENCValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
     guard(|| {
+        // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
+        #[allow(clippy::useless_conversion)]
+        let v = crate::config::range::enc_count(i64::from(lValue))?;
         with_channel(wChannel, wCardIndex, |ch| {
-            // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
-            #[allow(clippy::useless_conversion)]
-            ch.set_encoder(i64::from(lValue));
+            ch.set_encoder(v);
             Ok(c::NO_ERR)
         })
     })
@@ -96,14 +98,12 @@ pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardInd
     })
 }
 
-/// Scales the encoder's counting (finite, > 0). The count keeps its value at the change.
+/// Scales the encoder's counting (counts per motor pulse at x4, 1e-3..=1e3). The count
+/// keeps its value at the change.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex: WORD) -> c_int {
     guard(|| {
-        let r = finite(dfGearRate)?;
-        if r <= 0.0 {
-            return Err(McclError::Parameter);
-        }
+        let r = crate::config::range::enc_gear(dfGearRate)?;
         with_channel(wChannel, wCardIndex, |ch| {
             let v = ch.encoder();
             ch.gear_rate = r;
@@ -255,7 +255,7 @@ pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex
         let ch = channel(wChannel)?;
         // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
         #[allow(clippy::useless_conversion)]
-        let v = i64::from(lValue);
+        let v = crate::config::range::enc_count(i64::from(lValue))?;
         with_triggers(wCardIndex, |t, _| {
             push_compare(t, ch.0, v).map(|()| c::NO_ERR)
         })
@@ -275,9 +275,9 @@ pub extern "C" fn MCC_SetENCCompValueTab(
         let ch = channel(wChannel)?;
         #[allow(clippy::useless_conversion)]
         let (a, b, d) = (
-            i64::from(lStartValue),
-            i64::from(lEndValue),
-            i64::from(lDeltaValue),
+            crate::config::range::enc_count(i64::from(lStartValue))?,
+            crate::config::range::enc_count(i64::from(lEndValue))?,
+            crate::config::range::enc_count(i64::from(lDeltaValue))?,
         );
         if d == 0 || (b - a).signum() * d.signum() < 0 {
             return Err(McclError::Parameter);

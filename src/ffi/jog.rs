@@ -12,12 +12,7 @@ use std::os::raw::{c_char, c_int};
 pub const MAX_JOG_PULSES: c_int = 2048;
 
 fn ratio(r: f64) -> McclResult<f64> {
-    let r = finite(r)?;
-    if r <= 0.0 || r > 100.0 {
-        Err(McclError::Parameter)
-    } else {
-        Ok(r)
-    }
+    crate::config::range::percent(r, 100.0)
 }
 
 /// Queues a one-axis PtP move of axis `a` to `target(from, mech)` at `ratio` percent.

@@ -11,14 +11,7 @@ use crate::vendor::consts as c;
 use crate::vendor::{BYTE, DWORD, WORD};
 use std::os::raw::{c_char, c_int};
 
-fn time_ms(ms: f64) -> McclResult<f64> {
-    let v = finite(ms)?;
-    if v < 0.0 {
-        Err(McclError::Parameter)
-    } else {
-        Ok(v)
-    }
-}
+use crate::config::range::time_ms;
 
 fn mask(dwAxisMask: DWORD) -> McclResult<u32> {
     if dwAxisMask & !0xFF != 0 {
@@ -74,7 +67,7 @@ pub extern "C" fn MCC_GetDecType(wGroupIndex: WORD) -> c_int {
     })
 }
 
-/// Time to accelerate from 0 to the feed speed, ms (>= 0; default 300).
+/// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
 #[no_mangle]
 pub extern "C" fn MCC_SetAccTime(dfAccTime: f64, wGroupIndex: WORD) -> c_int {
     guard(|| {
@@ -89,7 +82,7 @@ pub extern "C" fn MCC_GetAccTime(wGroupIndex: WORD) -> f64 {
     guard(|| with_group(wGroupIndex, |g| Ok(g.settings.acc_ms)))
 }
 
-/// Time to decelerate from the feed speed to 0, ms (>= 0; default 300).
+/// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300).
 #[no_mangle]
 pub extern "C" fn MCC_SetDecTime(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
     guard(|| {
@@ -104,15 +97,12 @@ pub extern "C" fn MCC_GetDecTime(wGroupIndex: WORD) -> f64 {
     guard(|| with_group(wGroupIndex, |g| Ok(g.settings.dec_ms)))
 }
 
-/// Feed speed of following general motion, UU/s (> 0). A speed above
+/// Feed speed of following general motion, UU/s (1e-6..=1e9). A speed above
 /// `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed speed now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_SetFeedSpeed(dfFeedSpeed: f64, wGroupIndex: WORD) -> f64 {
     guard(|| {
-        let v = finite(dfFeedSpeed)?;
-        if v <= 0.0 {
-            return Err(McclError::Parameter);
-        }
+        let v = crate::config::range::speed(dfFeedSpeed)?;
         let v = v.min(system::with(|s| s.config.sys_max_speed));
         with_group(wGroupIndex, |g| {
             g.settings.feed = v;
@@ -161,15 +151,12 @@ pub unsafe extern "C" fn MCC_GetSpeed(
     })
 }
 
-/// Point-to-point speed ratio, percent of each axis's maximum safe speed (0 < r <= 100).
-/// Returns the ratio now in effect.
+/// Point-to-point speed ratio, percent of each axis's maximum safe speed
+/// (0.01 <= r <= 100). Returns the ratio now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_SetPtPSpeed(dfRatio: f64, wGroupIndex: WORD) -> f64 {
     guard(|| {
-        let r = finite(dfRatio)?;
-        if r <= 0.0 || r > 100.0 {
-            return Err(McclError::Parameter);
-        }
+        let r = crate::config::range::percent(dfRatio, 100.0)?;
         with_group(wGroupIndex, |g| {
             g.settings.ptp_ratio = r;
             Ok(r)
@@ -357,6 +344,22 @@ pub extern "C" fn MCC_LineB(dfB: f64, wGroupIndex: WORD) -> c_int {
     line(one(7, dfB), wGroupIndex, c::IMP_AXIS_B)
 }
 
+/// Checks plane points (on `plane`'s two axes) and aux ends (U..B) against the position
+/// range before any geometry is built from them.
+fn check_plane(
+    ctx: &crate::engine::command::Ctx<'_>,
+    plane: Plane,
+    pts: &[[f64; 2]],
+    aux: Option<[f64; 5]>,
+) -> Result<(), crate::planner::PlanError> {
+    let (a, b, _) = plane.axes();
+    let mut all: Vec<(usize, f64)> = pts.iter().flat_map(|p| [(a, p[0]), (b, p[1])]).collect();
+    if let Some(x) = aux {
+        all.extend(x.iter().enumerate().map(|(k, v)| (3 + k, *v)));
+    }
+    ctx.check_points(&all)
+}
+
 fn aux5(v: [f64; 5]) -> McclResult<[f64; 5]> {
     v.iter().try_for_each(|&x| finite(x).map(|_| ()))?;
     Ok(v)
@@ -373,13 +376,9 @@ fn arc(plane: Plane, r: [f64; 2], e: [f64; 2], aux: Option<[f64; 5]>, g: WORD) -
             g,
             |ctx| {
                 let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                Path::arc_3pt(
-                    plane,
-                    &ctx.from,
-                    ctx.resolve_plane(plane, r),
-                    ctx.resolve_plane(plane, e),
-                    aux,
-                )
+                let (r, e) = (ctx.resolve_plane(plane, r), ctx.resolve_plane(plane, e));
+                check_plane(ctx, plane, &[r, e], aux)?;
+                Path::arc_3pt(plane, &ctx.from, r, e, aux)
             },
             false,
         )
@@ -500,9 +499,13 @@ fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> c_int {
         queue_curve(
             g,
             |ctx| {
-                let rr = std::array::from_fn(|i| ctx.resolve_axis(i, r[i]));
-                let ee = std::array::from_fn(|i| ctx.resolve_axis(i, e[i]));
+                let rr: [f64; 3] = std::array::from_fn(|i| ctx.resolve_axis(i, r[i]));
+                let ee: [f64; 3] = std::array::from_fn(|i| ctx.resolve_axis(i, e[i]));
                 let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+                let pts: Vec<(usize, f64)> =
+                    (0..3).flat_map(|i| [(i, rr[i]), (i, ee[i])]).collect();
+                ctx.check_points(&pts)?;
+                check_plane(ctx, Plane::XY, &[], aux)?;
                 Path::arc_3pt_xyz(&ctx.from, rr, ee, aux)
             },
             false,
@@ -554,7 +557,11 @@ fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> c_int {
         let theta = finite(theta)?;
         queue_curve(
             g,
-            |ctx| Path::arc_theta(plane, &ctx.from, ctx.resolve_plane(plane, cxy), theta),
+            |ctx| {
+                let c = ctx.resolve_plane(plane, cxy);
+                check_plane(ctx, plane, &[c], None)?;
+                Path::arc_theta(plane, &ctx.from, c, theta)
+            },
             false,
         )
     })
@@ -588,7 +595,9 @@ fn circle(plane: Plane, cxy: [f64; 2], aux: Option<[f64; 5]>, dir: BYTE, g: WORD
             g,
             |ctx| {
                 let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                Path::circle(plane, &ctx.from, ctx.resolve_plane(plane, cxy), ccw, aux)
+                let c = ctx.resolve_plane(plane, cxy);
+                check_plane(ctx, plane, &[c], aux)?;
+                Path::circle(plane, &ctx.from, c, ccw, aux)
             },
             false,
         )
@@ -695,14 +704,9 @@ fn helical(
             g,
             |ctx| {
                 let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                Path::helix(
-                    plane,
-                    &ctx.from,
-                    ctx.resolve_plane(plane, cxy),
-                    pitch,
-                    theta,
-                    aux,
-                )
+                let c = ctx.resolve_plane(plane, cxy);
+                check_plane(ctx, plane, &[c], aux)?;
+                Path::helix(plane, &ctx.from, c, pitch, theta, aux)
             },
             true,
         )
@@ -827,15 +831,10 @@ fn helica(plane: Plane, cxy: [f64; 2], pos: f64, pitch: f64, dir: BYTE, g: WORD)
         queue_curve(
             g,
             |ctx| {
-                Path::helix_to(
-                    plane,
-                    &ctx.from,
-                    ctx.resolve_plane(plane, cxy),
-                    ctx.resolve_axis(n, pos),
-                    pitch,
-                    ccw,
-                    None,
-                )
+                let (c, to) = (ctx.resolve_plane(plane, cxy), ctx.resolve_axis(n, pos));
+                check_plane(ctx, plane, &[c], None)?;
+                ctx.check_points(&[(n, to)])?;
+                Path::helix_to(plane, &ctx.from, c, to, pitch, ccw, None)
             },
             true,
         )

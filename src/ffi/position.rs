@@ -483,7 +483,8 @@ pub extern "C" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
     guard(|| update_group(wGroupIndex, |g| g.track_mask = 0))
 }
 
-/// The tracking error limit of one axis, UU (finite, >= 0).
+/// The tracking error limit of one axis, UU (>= 0, a distance of the axis in the
+/// position range: |limit| x pulses per UU <= 1e15).
 #[no_mangle]
 pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupIndex: WORD) -> c_int {
     guard(|| {
@@ -492,7 +493,11 @@ pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupInde
             return Err(McclError::Parameter);
         }
         let a = axis(cAxis)?;
-        update_group(wGroupIndex, |g| g.track_limit[a] = v)
+        with_group(wGroupIndex, |g| {
+            crate::config::range::position(v, g.axes[a].factor)?;
+            g.track_limit[a] = v;
+            Ok(c::NO_ERR)
+        })
     })
 }
 
@@ -614,7 +619,7 @@ pub extern "C" fn MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_in
     inpos_marker(wGroupIndex, dwAxisMask, false)
 }
 
-/// In-position tolerance per axis, UU (finite, >= 0).
+/// In-position tolerance per axis, UU (>= 0, distances of the axes in the position range).
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosToleranceEx(
     dfTolerance0: f64,
@@ -641,7 +646,13 @@ pub extern "C" fn MCC_SetInPosToleranceEx(
         if v.iter().any(|&t| t < 0.0) {
             return Err(McclError::Parameter);
         }
-        update_group(wGroupIndex, |g| g.inpos.tolerance = v)
+        with_group(wGroupIndex, |g| {
+            for (t, a) in v.iter().zip(&g.axes) {
+                crate::config::range::position(*t, a.factor)?;
+            }
+            g.inpos.tolerance = v;
+            Ok(c::NO_ERR)
+        })
     })
 }
 

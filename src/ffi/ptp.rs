@@ -1,7 +1,7 @@
 //! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; INTERFACE.md
 //! "Point-to-Point Motion").
 
-use super::{finite8, guard, outs8, shape, shape_char, with_group, write8};
+use super::{guard, outs8, shape, shape_char, with_group, write8};
 use crate::error::McclError;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -16,10 +16,8 @@ fn shapes(v: [c_char; 8]) -> Result<[crate::planner::Shape; 8], McclError> {
 }
 
 fn times(v: [f64; 8]) -> Result<[f64; 8], McclError> {
-    let v = finite8(v)?;
-    if v.iter().any(|&t| t < 0.0) {
-        return Err(McclError::Parameter);
-    }
+    v.iter()
+        .try_for_each(|&t| crate::config::range::time_ms(t).map(|_| ()))?;
     Ok(v)
 }
 
@@ -123,7 +121,7 @@ pub unsafe extern "C" fn MCC_GetPtPDecType(
     })
 }
 
-/// PtP acceleration time per axis, ms (>= 0).
+/// PtP acceleration time per axis, ms (0..=2^32 − 1).
 #[no_mangle]
 pub extern "C" fn MCC_SetPtPAccTime(
     dfAccTime0: f64,
@@ -180,7 +178,7 @@ pub unsafe extern "C" fn MCC_GetPtPAccTime(
     })
 }
 
-/// PtP deceleration time per axis, ms (>= 0).
+/// PtP deceleration time per axis, ms (0..=2^32 − 1).
 #[no_mangle]
 pub extern "C" fn MCC_SetPtPDecTime(
     dfDecTime0: f64,

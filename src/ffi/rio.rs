@@ -285,7 +285,8 @@ fn ario_timing(
     done(with_card(wCardIndex, |p| f(&mut p.rio.ario_timing)))
 }
 
-/// At most `dfUpdateRate` transfer cycles per second (Hz; finite and > 0) for the ARIO
+/// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
+/// 2^32 − 1 ms long) for the ARIO
 /// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
 /// restarts at the call.
 #[no_mangle]
@@ -293,6 +294,11 @@ pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardInde
     guard(|| {
         crate::system::active()?;
         let r = finite(dfUpdateRate)?;
+        // The cycle lasts 1 / r: at most the longest time (r >= 2.33e-7 Hz).
+        if r <= 0.0 {
+            return Err(crate::error::McclError::Parameter);
+        }
+        crate::config::range::time_ms(1000.0 / r)?;
         let s = set_ix(wSet)?;
         ario_timing(wCardIndex, |t| t.set_update_rate(s, r))
     })

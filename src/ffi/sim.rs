@@ -73,7 +73,8 @@ pub extern "C" fn MCCL_SimSetSensor(
 }
 
 /// Places a sensor at machine position (UU): the home sensor's active region is
-/// [dfFrom, dfTo]; a limit switch is at dfFrom (dfTo ignored).
+/// [dfFrom, dfTo]; a limit switch is at dfFrom (dfTo ignored). Both must be positions of
+/// the channel (|x| x pulses per UU <= 1e15).
 #[no_mangle]
 pub extern "C" fn MCCL_SimPlaceSensor(
     wCardIndex: WORD,
@@ -88,7 +89,14 @@ pub extern "C" fn MCCL_SimPlaceSensor(
         if s == Sensor::Home && a > b {
             return Err(McclError::Parameter);
         }
-        with_channel(wCardIndex, wChannel, |ch| ch.place(s, a, b))?;
+        with_channel(wCardIndex, wChannel, |ch| {
+            // A sensor where the channel could never count to is refused.
+            let f = ch.factor();
+            crate::config::range::position(a, f)?;
+            crate::config::range::position(b, f)?;
+            ch.place(s, a, b);
+            Ok(())
+        })??;
         Ok(c::NO_ERR)
     })
 }

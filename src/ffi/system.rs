@@ -1,6 +1,6 @@
 //! System management (user manual §2.4–2.5; INTERFACE.md "System Management").
 
-use super::{card, channel, finite, guard, out_ok, read_in, write_out};
+use super::{card, channel, guard, out_ok, read_in, write_out};
 use crate::config::{self, GroupDef};
 use crate::error::McclError;
 use crate::system::{self, InitKind};
@@ -36,14 +36,12 @@ pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
     })
 }
 
-/// Sets the upper limit of the general-motion feed speed (UU/s, finite and > 0).
+/// Sets the upper limit of the general-motion feed speed (UU/s, in the speed range
+/// 1e-6..=1e9 of `config::range`).
 #[no_mangle]
 pub extern "C" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
     guard(|| {
-        let v = finite(dfMaxSpeed)?;
-        if v <= 0.0 {
-            return Err(McclError::Parameter);
-        }
+        let v = config::range::speed(dfMaxSpeed)?;
         system::with(|s| s.config.sys_max_speed = v);
         Ok(c::NO_ERR)
     })
@@ -72,8 +70,12 @@ pub unsafe extern "C" fn MCC_SetMacParam(
         // SAFETY: NULL is rejected; otherwise the caller passes a SYS_MAC_PARAM.
         let p = unsafe { read_in(pstMacParam) }?;
         config::validate_mac_param(&p)?;
-        system::with(|s| s.config.mac[cd.0][ch.0] = p);
-        Ok(c::NO_ERR)
+        system::with(|s| {
+            // The channel's go-home offset must stay a position it can count.
+            config::validate_home_config(&s.config.home[cd.0][ch.0], &p)?;
+            s.config.mac[cd.0][ch.0] = p;
+            Ok(c::NO_ERR)
+        })
     })
 }
 
@@ -155,9 +157,11 @@ pub unsafe extern "C" fn MCC_SetHomeConfig(
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         // SAFETY: NULL is rejected; otherwise the caller passes a SYS_HOME_CONFIG.
         let h = unsafe { read_in(pstHomeConfig) }?;
-        config::validate_home_config(&h)?;
-        system::with(|s| s.config.home[cd.0][ch.0] = h);
-        Ok(c::NO_ERR)
+        system::with(|s| {
+            config::validate_home_config(&h, &s.config.mac[cd.0][ch.0])?;
+            s.config.home[cd.0][ch.0] = h;
+            Ok(c::NO_ERR)
+        })
     })
 }
 

@@ -18,7 +18,7 @@ pub extern "C" fn MCC_TimeDelay(dwTime: DWORD) {
     })
 }
 
-use super::{finite, queue, with_group};
+use super::{queue, with_group};
 use crate::engine::command::Plan;
 use crate::error::McclError;
 use crate::vendor::consts as c;
@@ -47,15 +47,12 @@ pub extern "C" fn MCC_AbortMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
     guard(|| super::update_group(wGroupIndex, |g| g.abort(0.0, bBlockEnd != 0)))
 }
 
-/// Empties the queue and stops within `dfDecTime` ms (0: at once). While it decelerates,
-/// new motion commands are refused with `ABORT_NOT_FINISH_ERR`.
+/// Empties the queue and stops within `dfDecTime` ms (0: at once; at most 2^32 − 1).
+/// While it decelerates, new motion commands are refused with `ABORT_NOT_FINISH_ERR`.
 #[no_mangle]
 pub extern "C" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
     guard(|| {
-        let t = finite(dfDecTime)?;
-        if t < 0.0 {
-            return Err(McclError::Parameter);
-        }
+        let t = crate::config::range::time_ms(dfDecTime)?;
         super::update_group(wGroupIndex, |g| g.abort(t / 1000.0, false))
     })
 }
@@ -137,19 +134,14 @@ pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
 }
 
 fn override_rate(r: f64) -> Result<f64, McclError> {
-    let r = finite(r)?;
-    if r <= 0.0 || r > MAX_OVERRIDE {
-        Err(McclError::Parameter)
-    } else {
-        Ok(r)
-    }
+    crate::config::range::percent(r, MAX_OVERRIDE)
 }
 
 /// Largest override ratio accepted, percent.
 pub const MAX_OVERRIDE: f64 = 1000.0;
 
 /// Scales the running and all later motion to `dfRate` percent of the planned speed
-/// (0 < rate <= 1000), ramping with the acc (faster) or dec (slower) time. Returns the
+/// (0.01 <= rate <= 1000), ramping with the acc (faster) or dec (slower) time. Returns the
 /// rate now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
@@ -204,10 +196,7 @@ pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
 #[no_mangle]
 pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
     guard(|| {
-        let v = finite(dfSpeed)?;
-        if v <= 0.0 {
-            return Err(McclError::Parameter);
-        }
+        let v = crate::config::range::speed(dfSpeed)?;
         let v = v.min(system::with(|s| s.config.sys_max_speed));
         with_group(wGroupIndex, |g| {
             g.change_feed_speed(v);

@@ -472,6 +472,26 @@ impl Path {
         *self.common().1
     }
 
+    /// Per axis, an interval `(low, high)` holding the coordinate over the whole path:
+    /// from start to end for a line and for U..B; for X/Y/Z of an arc or helix the
+    /// center's travel (0, or rise along the normal) widened by radius · √(u_i² + v_i²),
+    /// the circle's reach along the axis (exact for a full circle). Used to refuse paths
+    /// that leave the counters' range.
+    pub fn extent(&self) -> [(f64, f64); NUM_AXES] {
+        let (start, end, _) = self.common();
+        let mut e: [(f64, f64); NUM_AXES] =
+            std::array::from_fn(|i| (start[i].min(end[i]), start[i].max(end[i])));
+        if let Path::Arc(a) | Path::Helix(a) = self {
+            for (i, ei) in e.iter_mut().enumerate().take(XYZ) {
+                let reach = a.radius * (a.u[i] * a.u[i] + a.v[i] * a.v[i]).sqrt();
+                let (c0, c1) = (a.center[i], a.center[i] + a.rise * a.axis[i]);
+                ei.0 = ei.0.min(c0.min(c1) - reach);
+                ei.1 = ei.1.max(c0.max(c1) + reach);
+            }
+        }
+        e
+    }
+
     /// For arcs and helices: `Some(true)` if counter-clockwise about the plane
     /// normal (for a 3-D arc: always true about its own normal). `None` for lines.
     pub fn is_ccw(&self) -> Option<bool> {
