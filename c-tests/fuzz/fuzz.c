@@ -72,6 +72,8 @@ static int opt_keep_going = 0;
 static int opt_mem_mb = 4096;
 static int opt_stats = 0;
 static int opt_gdb = 0;
+static int opt_strict = 0;
+static int opt_tolerate_nonfinite = 0;
 static const char *opt_scenario = NULL;
 
 /* ---- shared with the parent (MAP_SHARED before fork) ---- */
@@ -87,6 +89,7 @@ typedef struct {
     _Atomic unsigned long long slot_seq[FZ_SLOTS];
     _Atomic unsigned long long calls[FZ_MAXF];
     _Atomic unsigned long long deliveries[FZ_MAXCB];
+    _Atomic unsigned long long tolerated[FZ_MAXF];
     _Atomic unsigned long long prog_calls;
     _Atomic unsigned long long routine_calls;
     _Atomic int failed;
@@ -114,6 +117,7 @@ struct fz {
     int in_routine;
     int holds_init;
     int depth;
+    int nonfinite_arg;
 };
 
 static pthread_mutex_t init_lock = PTHREAD_MUTEX_INITIALIZER;
@@ -315,6 +319,7 @@ void fz_begin(fz_t *z, int f)
     z->len = 0;
     z->used = 0;
     z->f = f;
+    z->nonfinite_arg = 0;
     if (z->tid >= 100)
         appendf(z, "R%d ", z->tid - 100);
     else if (z->tid == 99)
@@ -337,6 +342,7 @@ void fz_log_c(fz_t *z, const char *n, int v)
 }
 void fz_log_r(fz_t *z, const char *n, double v) { sep(z); appendf(z, "%s=%.17g", n, v); }
 void fz_log_raw(fz_t *z, const char *s) { appendf(z, "%s", s); }
+void fz_arg_real(fz_t *z, double v) { z->nonfinite_arg |= !isfinite(v); }
 void fz_log_p(fz_t *z, const char *n, int slot)
 {
     sep(z);
@@ -410,6 +416,28 @@ static void finish(fz_t *z, int f)
         printf("%s\n", z->line);
 }
 
+/* Findings reported but not yet fixed, counted instead of failing (--strict fails on
+ * them): a non-finite double from these functions. */
+static const char *const tolerated_nonfinite[] = {
+    "MCC_GetTrackErrorLimit", /* writes +inf while no limit was set (group.rs default) */
+};
+
+static int tolerated(fz_t *z)
+{
+    if (opt_strict || z->f < 0)
+        return 0;
+    if (opt_tolerate_nonfinite) {
+        atomic_fetch_add(&sh->tolerated[z->f], 1);
+        return 1;
+    }
+    for (size_t i = 0; i < sizeof tolerated_nonfinite / sizeof tolerated_nonfinite[0]; i++)
+        if (strcmp(fz_funcs[z->f].name, tolerated_nonfinite[i]) == 0) {
+            atomic_fetch_add(&sh->tolerated[z->f], 1);
+            return 1;
+        }
+    return 0;
+}
+
 void fz_end_void(fz_t *z, int f)
 {
     finish(z, f);
@@ -424,6 +452,8 @@ void fz_end_int(fz_t *z, int f, long long r, int codes)
         fz_fail(z, "RUN_TIME_ERR (a panic caught at the C boundary): %s", z->line);
     if (codes == FZ_CODES_MCL && (r < 0 || r > 7))
         fz_fail(z, "return value outside the MCL_* codes: %s", z->line);
+    if (codes == FZ_CODES_VENDOR && z->nonfinite_arg && r >= 0 && !tolerated(z))
+        fz_fail(z, "a NaN or infinite argument was accepted: %s", z->line);
     z->idx += !z->in_routine;
 }
 
@@ -433,9 +463,28 @@ void fz_end_real(fz_t *z, int f, double r, int codes)
     finish(z, f);
     if (codes == FZ_CODES_VENDOR && r == (double)RUN_TIME_ERR)
         fz_fail(z, "RUN_TIME_ERR (a panic caught at the C boundary): %s", z->line);
-    if (!isfinite(r))
+    if (!isfinite(r) && !tolerated(z))
         fz_fail(z, "non-finite double returned: %s", z->line);
+    if (codes == FZ_CODES_VENDOR && z->nonfinite_arg && r >= 0 && !tolerated(z))
+        fz_fail(z, "a NaN or infinite argument was accepted: %s", z->line);
     z->idx += !z->in_routine;
+}
+
+void fz_check_finite(fz_t *z, int slot, const unsigned char *p, int count, int is_float)
+{
+    for (int i = 0; p && i < count; i++) {
+        double v;
+        if (is_float) {
+            float fv;
+            memcpy(&fv, p + (size_t)i * sizeof fv, sizeof fv);
+            v = fv;
+        } else {
+            memcpy(&v, p + (size_t)i * sizeof v, sizeof v);
+        }
+        if (!isfinite(v) && !tolerated(z))
+            fz_fail(z, "non-finite value %g written to pointer argument %d by a successful call: %s", v,
+                    slot, z->line);
+    }
 }
 
 /* ---- scripted calls (the arming step, routines, scenarios) ---- */
@@ -818,6 +867,9 @@ static void usage(void)
            "  --upto N            stop each program thread after its call N\n"
            "  --stats             print the call count of every function\n"
            "  --gdb               on a hang, print every thread's stack (gdb -p) first\n"
+           "  --strict            fail on the reported findings tolerated so far (see fuzz.c)\n"
+           "  --tolerate-nonfinite count non-finite doubles instead of failing (absurd\n"
+           "                      arguments such as DBL_MAX are still accepted: known defect)\n"
            "  --scenario init-tmr the known init/timer-routine deadlock's call pattern\n");
 }
 
@@ -852,6 +904,8 @@ int main(int argc, char **argv)
         else if (strcmp(a, "--keep-going") == 0) opt_keep_going = 1;
         else if (strcmp(a, "--stats") == 0) opt_stats = 1;
         else if (strcmp(a, "--gdb") == 0) opt_gdb = 1;
+        else if (strcmp(a, "--strict") == 0) opt_strict = 1;
+        else if (strcmp(a, "--tolerate-nonfinite") == 0) opt_tolerate_nonfinite = 1;
         else {
             usage();
             return strcmp(a, "--help") == 0 ? 0 : 2;
@@ -892,7 +946,7 @@ int main(int argc, char **argv)
         perror("mmap");
         return 2;
     }
-    static unsigned long long calls[FZ_MAXF], deliveries[FZ_MAXCB];
+    static unsigned long long calls[FZ_MAXF], deliveries[FZ_MAXCB], tolerated_n[FZ_MAXF];
     unsigned long long prog = 0, rout = 0;
     int failures = 0;
     long long t_all = now_ns();
@@ -931,9 +985,10 @@ int main(int argc, char **argv)
                 long long st = atomic_load(&sh->slot_start_ns[s]);
                 if (st && now - st > (long long)opt_hang_ms * 1000000LL) {
                     unsigned long long q = atomic_load(&sh->slot_seq[s]);
+                    fz_entry_t *e = &sh->ring[q % FZ_RING];
                     fprintf(stderr, "\nHANG: seed %llu clock %s: call [%llu] has run for %.1f s (> %d ms):\n  %s\n",
                             seed, clock, q, (double)(now - st) / 1e9, opt_hang_ms,
-                            sh->ring[q % FZ_RING].text);
+                            atomic_load(&e->seq) == q + 1 ? e->text : "(no longer in the log)");
                     hung = 1;
                 }
             }
@@ -942,7 +997,7 @@ int main(int argc, char **argv)
                     char cmd[512];
                     snprintf(cmd, sizeof cmd,
                              "gdb -q -p %d -batch -ex 'thread apply all bt' 2>/dev/null | "
-                             "grep -E '^Thread|MCCLPCI_IMP::[a-z_:]*[a-z_]+ \\(|join|fz_|MCC_' | "
+                             "grep -E '^Thread|MCCLPCI_IMP::[a-z_:]*[A-Za-z_]+ \\(|join|fz_|MCC_|deliver|mutex' | "
                              "grep -v 'core::panic\\|catch_unwind\\|lifecycle' | cut -c1-150 1>&2",
                              (int)pid);
                     if (system(cmd) != 0)
@@ -962,6 +1017,8 @@ int main(int argc, char **argv)
             calls[i] += atomic_load(&sh->calls[i]);
         for (int i = 0; i < fz_ncbs; i++)
             deliveries[i] += atomic_load(&sh->deliveries[i]);
+        for (int i = 0; i < fz_nfuncs; i++)
+            tolerated_n[i] += atomic_load(&sh->tolerated[i]);
         printf("worker %d: seed %llu clock %-8s %8llu program + %7llu routine calls in %6.2f s (%.0f calls/s)\n",
                w, seed, clock, p, rc, secs, (double)(p + rc) / (secs > 0 ? secs : 1));
         fflush(stdout);
@@ -973,8 +1030,7 @@ int main(int argc, char **argv)
                     clock, WTERMSIG(status), strsignal(WTERMSIG(status)));
             for (int s = 0; s < FZ_SLOTS; s++)
                 if (atomic_load(&sh->slot_start_ns[s]))
-                    fprintf(stderr, "  running: %s\n",
-                            sh->ring[atomic_load(&sh->slot_seq[s]) % FZ_RING].text);
+                    fprintf(stderr, "  running: call [%llu]\n", atomic_load(&sh->slot_seq[s]));
             failed = 1;
         } else if (WEXITSTATUS(status) == FZ_EXIT_FAIL) {
             fprintf(stderr, "\nFAILURE: seed %llu clock %s, %s: %s\n", seed, clock, sh->replay, sh->fail);
@@ -1010,6 +1066,10 @@ int main(int argc, char **argv)
             missing++;
     }
     printf("\n");
+    for (int i = 0; i < fz_nfuncs; i++)
+        if (tolerated_n[i])
+            printf("tolerated finding (--strict fails): %s gave a non-finite double %llu times\n",
+                   fz_funcs[i].name, tolerated_n[i]);
     int never = 0;
     for (int i = 0; i < fz_nfuncs; i++)
         never += calls[i] == 0;

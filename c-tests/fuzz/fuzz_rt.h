@@ -86,9 +86,13 @@ void fz_log_r(fz_t *z, const char *name, double v);
 void fz_log_p(fz_t *z, const char *name, int slot);
 void fz_log_cb(fz_t *z, const char *name, void (*fn)(void));
 void fz_log_raw(fz_t *z, const char *s);
+/* A floating-point argument passed by value (a NaN or infinity must be refused). */
+void fz_arg_real(fz_t *z, double v);
 void fz_call_start(fz_t *z, int f);
 void fz_end_void(fz_t *z, int f);
 void fz_end_int(fz_t *z, int f, long long r, int codes);
 void fz_end_real(fz_t *z, int f, double r, int codes);
+/* After a successful call: the count doubles (floats) at p, if any, must be finite. */
+void fz_check_finite(fz_t *z, int slot, const unsigned char *p, int count, int is_float);
 
 #endif

@@ -694,6 +694,7 @@ fn gen(m: &Model) -> Result<String, String> {
         let _ = writeln!(o, "\nstatic void fz_call_{}(fz_t *z)\n{{", f.name);
         let _ = writeln!(o, "    fz_begin(z, {fi});");
         let mut args = Vec::new();
+        let mut finite_checks = Vec::new();
         for (k, d) in f.params.iter().enumerate() {
             let a = format!("a{k}");
             args.push(a.clone());
@@ -707,6 +708,9 @@ fn gen(m: &Model) -> Result<String, String> {
                     let _ = writeln!(o, "    {} {a};", d.cty);
                     draw_prim(&mut o, &a, &d.cty, *p, hint(&f.name, &pname, *p));
                     let _ = writeln!(o, "    {};", log_prim(*p, &pname, &a));
+                    if matches!(p, Prim::F32 | Prim::F64) {
+                        let _ = writeln!(o, "    fz_arg_real(z, (double){a});");
+                    }
                 }
                 (Base::Callback(cb), 0) => {
                     let _ = writeln!(
@@ -741,7 +745,18 @@ fn gen(m: &Model) -> Result<String, String> {
                                 "    if ({a}_b) for (int i = 0; i < {n}; i++) {{\n        {} t;",
                                 d.cbase
                             );
-                            draw_prim(&mut o, "t", &d.cbase, *p, hint(&f.name, &pname, *p));
+                            let real_out = matches!(p, Prim::F32 | Prim::F64) && !d.is_const;
+                            if real_out {
+                                // An output: a finite sentinel, so that a non-finite
+                                // value found after a successful call was written by it.
+                                let _ = writeln!(o, "        t = ({})12345.5;", d.cbase);
+                                finite_checks.push(format!(
+                                    "fz_check_finite(z, {k}, {a}_b, {n}, {})",
+                                    (*p == Prim::F32) as i32
+                                ));
+                            } else {
+                                draw_prim(&mut o, "t", &d.cbase, *p, hint(&f.name, &pname, *p));
+                            }
                             let _ = writeln!(
                                 o,
                                 "        memcpy({a}_b + i * sizeof t, &t, sizeof t);\n    }}"
@@ -777,6 +792,10 @@ fn gen(m: &Model) -> Result<String, String> {
                     o,
                     "    long long r = (long long){call};\n    fz_end_int(z, {fi}, r, {codes});"
                 );
+                // Doubles a successful call wrote must be finite.
+                for c in &finite_checks {
+                    let _ = writeln!(o, "    if (r == 0) {c};");
+                }
             }
             _ => return Err(format!("{}: return type not supported", f.name)),
         }
