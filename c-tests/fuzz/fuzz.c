@@ -385,7 +385,10 @@ void fz_call_start(fz_t *z, int f)
 
 static void finish(fz_t *z, int f)
 {
+    long long took = now_ns() - atomic_load(&sh->slot_start_ns[z->slot]);
     atomic_store(&sh->slot_start_ns[z->slot], 0);
+    if (took > 100000000LL)
+        appendf(z, " [took %lld ms]", took / 1000000);
     if (z->holds_init == 1 && !z->in_routine) {
         /* a program thread's own init/close lock (routines release theirs) */
         z->holds_init = 0;
@@ -996,10 +999,12 @@ int main(int argc, char **argv)
                 if (opt_gdb) {
                     char cmd[512];
                     snprintf(cmd, sizeof cmd,
-                             "gdb -q -p %d -batch -ex 'thread apply all bt' 2>/dev/null | "
-                             "grep -E '^Thread|MCCLPCI_IMP::[a-z_:]*[A-Za-z_]+ \\(|join|fz_|MCC_|deliver|mutex' | "
-                             "grep -v 'core::panic\\|catch_unwind\\|lifecycle' | cut -c1-150 1>&2",
-                             (int)pid);
+                             "gdb -q -p %d -batch -ex 'thread apply all bt' > /tmp/mccl_fuzz-gdb-%d.txt 2>&1; "
+                             "grep -E '^Thread|MCCLPCI_IMP::[a-z_:]*[A-Za-z_]+ \\(|join|fz_|MCC_|deliver|mutex' "
+                             "/tmp/mccl_fuzz-gdb-%d.txt | "
+                             "grep -v 'core::panic\\|catch_unwind\\|lifecycle' | cut -c1-150 1>&2; "
+                             "echo '(all stacks: /tmp/mccl_fuzz-gdb-%d.txt)' 1>&2",
+                             (int)pid, (int)pid, (int)pid, (int)pid);
                     if (system(cmd) != 0)
                         fprintf(stderr, "(gdb failed)\n");
                 }
