@@ -7,7 +7,7 @@ EXAMPLE ?= GeneralMotion
 MCCL_CLOCK ?= fast
 export MCCL_CLOCK
 
-.PHONY: deps build example test bench headers clean
+.PHONY: deps build example test bench headers clean fuzz
 
 deps:
 	@scripts/install-deps.sh
@@ -33,3 +33,12 @@ headers:
 
 clean:
 	rm -rf $(BUILD)
+
+# The random-call fuzzer, long run (README "Fuzzing"): FUZZ_CALLS calls over FUZZ_WORKERS
+# seeds from FUZZ_SEED, calls/s printed; FUZZ_ARGS adds options (e.g. --routine-init safe).
+FUZZ_SEED ?= 1
+FUZZ_CALLS ?= 10000000
+FUZZ_WORKERS ?= 100
+FUZZ_ARGS ?=
+fuzz: build
+	$(BUILD)/c-tests/mccl_fuzz --seed $(FUZZ_SEED) --calls $(FUZZ_CALLS) --workers $(FUZZ_WORKERS) --require-routines --keep-going $(FUZZ_ARGS)
