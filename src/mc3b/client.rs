@@ -243,7 +243,7 @@ pub enum ClientError {
 
 impl ClientError {
     /// Whether the device may have acted on the command although no good reply came
-    /// (everything but a clean `<id>E<e>` and a refused send).
+    /// (everything but a clean `<id>E<e>`).
     pub fn fate_unknown(&self) -> bool {
         !matches!(self, ClientError::Device(_))
     }
