@@ -19,6 +19,34 @@ struct Emu {
     stdin: Option<ChildStdin>,
     stdout: BufReader<ChildStdout>,
     path: String,
+    /// Each test that talks to an emulator is bounded (60 s).
+    _watchdog: Watchdog,
+}
+
+/// Ends the process with a message when a test runs longer than it may: a realtime
+/// test that hangs must fail, not wait for the harness's timeout.
+struct Watchdog(Option<std::sync::mpsc::Sender<()>>);
+
+impl Watchdog {
+    fn new(limit: Duration) -> Watchdog {
+        let (tx, rx) = std::sync::mpsc::channel::<()>();
+        let name = std::thread::current().name().unwrap_or("?").to_string();
+        std::thread::spawn(move || {
+            if let Err(std::sync::mpsc::RecvTimeoutError::Timeout) = rx.recv_timeout(limit) {
+                eprintln!("{name}: still running after {limit:?} (hung?), giving up");
+                std::process::exit(3);
+            }
+        });
+        Watchdog(Some(tx))
+    }
+}
+
+impl Drop for Watchdog {
+    fn drop(&mut self) {
+        if let Some(tx) = self.0.take() {
+            let _ = tx.send(());
+        }
+    }
 }
 
 impl Emu {
@@ -39,6 +67,7 @@ impl Emu {
             stdin,
             stdout,
             path,
+            _watchdog: Watchdog::new(Duration::from_secs(60)),
         }
     }
 
@@ -508,25 +537,34 @@ fn chained_45_degree_square_from_the_guide() {
 }
 
 #[test]
-fn timeout_when_the_emulator_is_gone() {
+fn serial_port_error_when_the_emulator_is_gone() {
+    // The device side of the pty closes: the port itself fails (a hang-up), which is
+    // a SERIAL PORT ERROR at once, not a timeout (README "MC3B").
     let (_g, mut emu) = setup();
     assert_eq!(status(0), 0);
     emu.kill();
     std::thread::sleep(Duration::from_millis(50));
     let mut st = 0;
+    let t0 = Instant::now();
     // SAFETY: valid pointer to a local.
     assert_eq!(
         unsafe { mcl_get_motor_status(0, 0, &mut st) },
-        MCL_TIMEOUT_ERROR
+        MCL_SERIAL_PORT_ERROR
     );
-    assert_eq!(mcl_move_motor(0, 0, 0, 10), MCL_TIMEOUT_ERROR);
+    assert_eq!(mcl_move_motor(0, 0, 0, 10), MCL_SERIAL_PORT_ERROR);
+    // Neither waited for the 300 ms timeout.
+    assert!(
+        t0.elapsed() < Duration::from_millis(290),
+        "{:?}",
+        t0.elapsed()
+    );
     // Range errors are still caught locally.
     assert_eq!(
         mcl_move_motor(0, 0, 5, 10),
         MCL_PARAMETER_OUT_OF_RANGE_ERROR
     );
     // De-initialize releases the port even though the board is gone.
-    assert_eq!(mcl_deinitialize(), MCL_TIMEOUT_ERROR);
+    assert_eq!(mcl_deinitialize(), MCL_SERIAL_PORT_ERROR);
     assert_eq!(mcl_stop_motor(0, 0), MCL_NOT_INITIALIZED_ERROR);
 }
 
@@ -547,5 +585,72 @@ fn timeout_when_the_emulator_is_silent() {
     // Once it answers again the library recovers (stale replies dropped).
     std::thread::sleep(Duration::from_millis(50));
     assert_eq!(mcl_stop_motor(0, 0), 0);
+    assert_eq!(mcl_deinitialize(), 0);
+}
+
+#[test]
+fn a_chain_refused_while_a_motor_runs_leaves_nothing_to_run_later() {
+    // Issue 12, defect 5: a chain sent while motor 1 ran stored its first moves and
+    // then had its execute refused (E1); a later 5-step synchronous move of motor 2
+    // ran the stored moves too and moved motor 0 by +15 steps.
+    let (_g, mut emu) = setup();
+    for m in 0..3 {
+        fast(m);
+    }
+    // Motor 1: 3000 steps at 5000 steps/s with 100000 steps/s² ramps: 0.65 s.
+    assert_eq!(mcl_move_motor(0, 1, 0, 3000), 0);
+    let s0 = [5 as c_int; 4];
+    let z = [0 as c_int; 4];
+    // SAFETY: six arrays of 4 ints each.
+    let r = unsafe {
+        mcl_chained_synchronous_move_motor(
+            0,
+            4,
+            s0.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+        )
+    };
+    assert_eq!(
+        r, MCL_MOTOR_RUNNING_ERROR,
+        "§4.16: all three motors must be idle"
+    );
+    wait_idle(1, Duration::from_secs(5));
+    let before = emu.pos();
+    assert_eq!(before, (0, 3000, 0));
+    assert_eq!(mcl_synchronous_move_motor(0, 0, 0, 0, 0, 5, 0, true), 0);
+    wait_idle(2, Duration::from_secs(2));
+    // Only motor 2 moves, by 5 steps.
+    assert_eq!(emu.pos(), (0, 3000, 5));
+    assert_eq!(mcl_deinitialize(), 0);
+}
+
+#[test]
+fn a_full_chain_of_100_moves_runs() {
+    // §2.2(i), §4.17: 100 moves in one chain (99 stored, the last executes).
+    let (_g, mut emu) = setup();
+    fast(0);
+    let s = [1 as c_int; 100];
+    let z = [0 as c_int; 100];
+    // SAFETY: six arrays of 100 ints each.
+    let r = unsafe {
+        mcl_chained_synchronous_move_motor(
+            0,
+            100,
+            s.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+            z.as_ptr(),
+        )
+    };
+    assert_eq!(r, 0);
+    // 100 one-step moves (each a triangle of about 6 ms at 100000 steps/s²).
+    wait_idle(0, Duration::from_secs(5));
+    assert_eq!(emu.pos(), (100, 0, 0));
     assert_eq!(mcl_deinitialize(), 0);
 }

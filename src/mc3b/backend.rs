@@ -388,7 +388,9 @@ impl Fault {
     fn of(e: &ClientError) -> Fault {
         match e {
             ClientError::Timeout | ClientError::Io(_) => Fault::Link,
-            ClientError::Device(_) | ClientError::Unexpected(_) => Fault::Device,
+            ClientError::Device(_) | ClientError::Unexpected(_) | ClientError::Garbled(_) => {
+                Fault::Device
+            }
         }
     }
 }
@@ -523,6 +525,9 @@ pub struct Worker<T: Transport> {
     steps: [i64; MOTORS],
     /// The chained-move buffer may hold moves (an upload was cut short).
     chain_dirty: bool,
+    /// The last job failed: the device may not be as the model says (a motor may
+    /// still run). The next job first queries every motor.
+    suspect: bool,
 }
 
 /// Controller ID of the MC3B (no daisy chaining, §4.2).
@@ -598,6 +603,7 @@ pub fn connect_with<T: Transport>(
         sent: [Speeds::DEFAULT; MOTORS],
         steps: [0; MOTORS],
         chain_dirty: false,
+        suspect: false,
     };
     Ok((link, worker))
 }
@@ -652,11 +658,50 @@ impl<T: Transport> Worker<T> {
         }
     }
 
-    /// Sends `cmd`, waits for its acknowledgement, and applies it to the model.
+    /// Sends `cmd`, waits for its acknowledgement, and applies it to the model at the
+    /// time the device got it. When no good reply came but the line still works, the
+    /// line is resynchronized first: a reply that was only late (a loaded host) is
+    /// found there and the command counts as acknowledged, so the model never misses
+    /// a command the device carried out.
     fn send(&mut self, cmd: Command) -> Result<(), ClientError> {
-        self.client.command(&cmd)?;
-        self.catch_up();
+        match self.client.command(&cmd) {
+            Ok(()) => {}
+            Err(e @ ClientError::Io(_)) => return Err(e),
+            Err(e) => self.client.settle(&cmd, e)?,
+        }
+        let at = self.client.sent_at();
+        if at > self.model_at {
+            self.model.advance(at - self.model_at);
+            self.model_at = at;
+        }
         let _ = self.model.handle(&cmd);
+        Ok(())
+    }
+
+    /// `Q` of motor `m`; a lost or unreadable answer is asked for once more (the
+    /// query changes nothing), after the line is back in step.
+    fn status(&mut self, m: usize) -> Result<super::client::MotorStatus, ClientError> {
+        match self.client.query_status(ID, m as u32) {
+            Err(e) if e.fate_unknown() && !matches!(e, ClientError::Io(_)) => {
+                self.client.query_status(ID, m as u32)
+            }
+            r => r,
+        }
+    }
+
+    /// Before a job that needs the device at rest: every motor must be idle. One that
+    /// runs (a stop after an earlier failure did not get through) is stopped, and the
+    /// job fails: nothing of it is sent.
+    fn ensure_idle(&mut self) -> Result<(), ClientError> {
+        let mut running = [false; MOTORS];
+        for (m, r) in running.iter_mut().enumerate() {
+            *r = self.status(m)?.running;
+        }
+        if running.iter().any(|&r| r) {
+            self.stop_motors(&running)?;
+            return Err(ClientError::Device(super::codec::ErrorCode::MotorRunning));
+        }
+        self.suspect = false;
         Ok(())
     }
 
@@ -676,6 +721,9 @@ impl<T: Transport> Worker<T> {
                 Outcome::Failed(fault)
             }
         };
+        if matches!(outcome, Outcome::Failed(Fault::Link | Fault::Device)) {
+            self.suspect = true;
+        }
         if let Job::Home { dirs, .. } = job {
             // The model has no limit inputs: it would seek for ever. Where the homing
             // ended is the group's new origin; the model goes on from there, standing.
@@ -754,15 +802,21 @@ impl<T: Transport> Worker<T> {
     }
 
     fn run_job(&mut self, id: u64, job: &Job) -> Result<Outcome, ClientError> {
+        let moving = job.moving();
+        if !moving.iter().any(|&b| b) {
+            return Ok(Outcome::Done);
+        }
+        // A chain needs all three motors idle (§4.16) and takes a while to upload: ask
+        // first rather than have its execute refused after the moves are stored.
+        // After a failure the device may differ from the model: ask before any job.
+        if self.suspect || matches!(job, Job::Sync { segs, .. } if segs.len() > 1) {
+            self.ensure_idle()?;
+        }
         let speeds = *job.speeds();
         for (m, sp) in speeds.iter().enumerate() {
             if let Some(sp) = sp {
                 self.set_speeds(m, *sp)?;
             }
-        }
-        let moving = job.moving();
-        if !moving.iter().any(|&b| b) {
-            return Ok(Outcome::Done);
         }
         if self.link.stop_wanted(id) {
             return Ok(Outcome::Stopped);
@@ -838,7 +892,7 @@ impl<T: Transport> Worker<T> {
                 if !mv {
                     continue;
                 }
-                let st = self.client.query_status(ID, m as u32)?;
+                let st = self.status(m)?;
                 if st.running {
                     running = true;
                     break;

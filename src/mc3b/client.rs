@@ -7,14 +7,25 @@
 //! and such failures cannot occur on its path.
 //!
 //! Decisions:
-//! * Before each command, stale input (a late reply to a command that timed
-//!   out, line noise) is discarded.
-//! * Frames that cannot be decoded, and frames from other controller IDs,
-//!   are skipped while waiting; if no matching reply arrives within the
-//!   timeout the result is [`ClientError::Timeout`].
-//! * A hang-up of the line (the device side of a pty closed: `EPIPE`/`EIO`)
-//!   is an I/O error; the C library reports it as a TIMEOUT, like a pulled
-//!   cable on a real port.
+//! * The reply to a command is the first complete frame after it. A frame that
+//!   cannot be decoded (garbage, a line longer than any reply, reported as soon
+//!   as it passes [`MAX_LINE`](super::codec::MAX_LINE) bytes), a frame from
+//!   another controller ID, or a frame that does not answer the command fails
+//!   the command at once ([`ClientError::Garbled`], [`ClientError::Unexpected`]):
+//!   the line is corrupt, and waiting for the timeout would only delay saying so.
+//! * The reply timeout counts only time in which the reply could have been read:
+//!   the wait runs in slices of at most [`WAIT_SLICE`], and a slice that overran
+//!   (the reading thread was not scheduled on a loaded host) counts as its
+//!   planned length. A late reply on a busy host is not a dead device.
+//! * After any failure but a clean device error (`<id>E<e>`), the line is *out of
+//!   step*: a late reply may still arrive and would be taken for the next
+//!   command's. Before the next command the client resynchronizes: it sends
+//!   `<id>P` (a query with no effect) and reads everything up to its answer,
+//!   dropping the frames before it ([`Client::resync`]); a line that does not
+//!   answer fails the next command with that error, before it is sent.
+//!   Otherwise stale input (line noise) is discarded before each command.
+//! * A hang-up of the line (the device side of a pty closed: `EPIPE`/`EIO`, end of
+//!   file) is an I/O error ([`ClientError::Io`]).
 
 use std::collections::VecDeque;
 use std::fmt;
@@ -23,13 +34,15 @@ use std::time::{Duration, Instant};
 
 use serialport::{ClearBuffer, DataBits, FlowControl, Parity, SerialPort, StopBits, TTYPort};
 
-use super::codec::{encode, Command, ErrorCode, Response, ResponseParser};
+use super::codec::{encode, Command, ErrorCode, ProtocolError, Response, ResponseParser};
 use super::emulator::Emulator;
 
 /// Baud rate of the MC3B (fixed, §2.2).
 pub const BAUD_RATE: u32 = 19_200;
 /// Default time to wait for a reply.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(500);
+/// Longest single read while waiting for a reply; see the module docs.
+pub const WAIT_SLICE: Duration = Duration::from_millis(20);
 
 /// A byte link to a device.
 pub trait Transport {
@@ -215,14 +228,25 @@ impl Transport for EmulatorLink {
 /// Why a command failed.
 #[derive(Debug)]
 pub enum ClientError {
-    /// No matching reply within the timeout.
+    /// No reply within the timeout.
     Timeout,
     /// The transport failed (including a hang-up).
     Io(io::Error),
     /// The device answered `<id>E<e>`.
     Device(ErrorCode),
-    /// The device answered something that does not fit the command.
+    /// A frame that does not fit the command: another command's answer, or another
+    /// controller's.
     Unexpected(Response),
+    /// A frame that cannot be decoded (garbage, too long).
+    Garbled(ProtocolError),
+}
+
+impl ClientError {
+    /// Whether the device may have acted on the command although no good reply came
+    /// (everything but a clean `<id>E<e>`).
+    pub fn fate_unknown(&self) -> bool {
+        !matches!(self, ClientError::Device(_))
+    }
 }
 
 impl fmt::Display for ClientError {
@@ -232,6 +256,7 @@ impl fmt::Display for ClientError {
             ClientError::Io(e) => write!(f, "serial I/O error: {e}"),
             ClientError::Device(c) => write!(f, "MC3B error {}", c.number()),
             ClientError::Unexpected(r) => write!(f, "unexpected reply {r:?}"),
+            ClientError::Garbled(e) => write!(f, "unreadable reply ({e})"),
         }
     }
 }
@@ -267,6 +292,14 @@ pub struct Client<T: Transport> {
     port: T,
     parser: ResponseParser,
     timeout: Duration,
+    /// Every reply so far came in turn (see the module docs).
+    in_sync: bool,
+    /// The last failure was a timeout: the reply may still come, so the resync keeps
+    /// the input. After any other failure the frame in turn came (and was bad), and
+    /// the resync drops what is there (the rest of an overlong line, say).
+    keep_input: bool,
+    /// When the last command had been handed to the line (transport time).
+    sent_at: Duration,
 }
 
 impl<T: Transport> Client<T> {
@@ -276,6 +309,9 @@ impl<T: Transport> Client<T> {
             port,
             parser: ResponseParser::new(),
             timeout,
+            in_sync: true,
+            keep_input: false,
+            sent_at: Duration::ZERO,
         }
     }
 
@@ -289,42 +325,145 @@ impl<T: Transport> Client<T> {
         self.port
     }
 
+    /// The reply timeout.
+    pub fn timeout(&self) -> Duration {
+        self.timeout
+    }
+
+    /// Transport time at which the last command had been written (and, on a real
+    /// port, drained onto the line): when the device got it.
+    pub fn sent_at(&self) -> Duration {
+        self.sent_at
+    }
+
+    /// Whether the line is in step (no reply may be outstanding).
+    pub fn in_sync(&self) -> bool {
+        self.in_sync
+    }
+
+    /// The next frame, waiting while `waited` (what was waited for so far, counted as
+    /// the module docs say) is below the timeout.
+    fn read_frame(
+        &mut self,
+        waited: &mut Duration,
+    ) -> Result<Result<Response, ProtocolError>, ClientError> {
+        let mut buf = [0u8; 256];
+        loop {
+            if let Some(item) = self.parser.next_response() {
+                return Ok(item);
+            }
+            if *waited >= self.timeout {
+                return Err(ClientError::Timeout);
+            }
+            let slice = (self.timeout - *waited).min(WAIT_SLICE);
+            let t0 = self.port.now();
+            let n = self.port.recv(&mut buf, slice)?;
+            if n == 0 {
+                // Nothing arrived in the slice (however long it really took).
+                *waited += slice;
+            } else {
+                *waited += self.port.now().saturating_sub(t0).min(slice);
+                self.parser.feed(buf.get(..n).unwrap_or(&[]));
+            }
+        }
+    }
+
+    /// Brings the line back in step: sends `<id>P` and reads up to its answer.
+    /// Returns the well-formed frames of controller `id` that came before it: late
+    /// replies to earlier commands, oldest first. Garbage and other controllers'
+    /// frames are dropped. Fails when the device does not answer in time.
+    pub fn resync(&mut self, id: u8) -> Result<Vec<Response>, ClientError> {
+        self.in_sync = false;
+        if !std::mem::take(&mut self.keep_input) {
+            self.parser.clear();
+            let _ = self.port.discard_input();
+        }
+        // After a timeout, input that is already here is kept: it may be the late reply.
+        self.port.send(&encode(&Command::QueryProductId { id }))?;
+        let mut stale = Vec::new();
+        // One timeout for the whole resync, however many frames come before the answer.
+        let mut waited = Duration::ZERO;
+        loop {
+            let frame = self.read_frame(&mut waited).inspect_err(|e| {
+                self.keep_input = matches!(e, ClientError::Timeout);
+            })?;
+            match frame {
+                Ok(Response::ProductId { id: rid, .. }) if rid == id => {
+                    // Whatever follows the answer was not asked for.
+                    self.parser.clear();
+                    self.in_sync = true;
+                    return Ok(stale);
+                }
+                // (Only the first matters to `settle`; a few more are kept.)
+                Ok(r) if r.id() == id && stale.len() < 64 => stale.push(r),
+                _ => {}
+            }
+        }
+    }
+
+    /// After `cmd` failed with an error whose fate is unknown
+    /// ([`ClientError::fate_unknown`]): resynchronizes, and if the device's late
+    /// reply to `cmd` was among the frames before the resync answer, returns what it
+    /// said (`Ok` for its acknowledgement). `Err(original)` when no reply to it came
+    /// (the command was lost or its reply was unreadable); the resync's error when
+    /// the device does not answer at all.
+    pub fn settle(&mut self, cmd: &Command, original: ClientError) -> Result<(), ClientError> {
+        if !original.fate_unknown() {
+            return Err(original);
+        }
+        // Only a timeout can leave the reply still to come; after a garbled,
+        // foreign or wrong reply the frame in turn was that one.
+        let timed_out = matches!(original, ClientError::Timeout);
+        let stale = self.resync(cmd.id())?;
+        match (timed_out, stale.first()) {
+            (true, Some(Response::Ack { code, .. })) if *code == cmd.code() => Ok(()),
+            (true, Some(Response::Error { code, .. })) => Err(ClientError::Device(*code)),
+            _ => Err(original),
+        }
+    }
+
     /// Send `cmd` and wait for the reply addressed from its controller ID.
     /// `<id>E<e>` becomes [`ClientError::Device`].
     pub fn transact(&mut self, cmd: &Command) -> Result<Response, ClientError> {
-        self.parser.clear();
-        let _ = self.port.discard_input();
-        self.port.send(&encode(cmd))?;
-        let id = cmd.id();
-        // The transport's clock: real time on a serial line, the emulator's own time on
-        // an in-process link (so a timeout there costs no real time).
-        let deadline = self.port.now() + self.timeout;
-        let mut buf = [0u8; 256];
-        loop {
-            while let Some(item) = self.parser.next_response() {
-                match item {
-                    Ok(Response::Error { id: rid, code }) if rid == id => {
-                        return Err(ClientError::Device(code))
-                    }
-                    Ok(r) if r.id() == id => return Ok(r),
-                    // Noise or another controller's reply: keep waiting.
-                    _ => {}
-                }
-            }
-            let now = self.port.now();
-            if now >= deadline {
-                return Err(ClientError::Timeout);
-            }
-            let n = self.port.recv(&mut buf, deadline - now)?;
-            self.parser.feed(buf.get(..n).unwrap_or(&[]));
+        if self.in_sync {
+            self.parser.clear();
+            let _ = self.port.discard_input();
+        } else {
+            self.resync(cmd.id())?;
         }
+        self.in_sync = false;
+        self.port.send(&encode(cmd))?;
+        self.sent_at = self.port.now();
+        let id = cmd.id();
+        let mut waited = Duration::ZERO;
+        let frame = self.read_frame(&mut waited).inspect_err(|e| {
+            self.keep_input = matches!(e, ClientError::Timeout);
+        })?;
+        match frame {
+            Ok(Response::Error { id: rid, code }) if rid == id => {
+                self.in_sync = true;
+                Err(ClientError::Device(code))
+            }
+            Ok(r) if r.id() == id => {
+                self.in_sync = true;
+                Ok(r)
+            }
+            Ok(r) => Err(ClientError::Unexpected(r)),
+            Err(e) => Err(ClientError::Garbled(e)),
+        }
+    }
+
+    /// A reply of the wrong kind: the line is out of step.
+    fn unexpected(&mut self, r: Response) -> ClientError {
+        self.in_sync = false;
+        ClientError::Unexpected(r)
     }
 
     /// Send a command that is answered by a bare acknowledgement.
     pub fn command(&mut self, cmd: &Command) -> Result<(), ClientError> {
         match self.transact(cmd)? {
             Response::Ack { code, .. } if code == cmd.code() => Ok(()),
-            other => Err(ClientError::Unexpected(other)),
+            other => Err(self.unexpected(other)),
         }
     }
 
@@ -346,7 +485,7 @@ impl<T: Transport> Client<T> {
                 home0,
                 home1,
             }),
-            other => Err(ClientError::Unexpected(other)),
+            other => Err(self.unexpected(other)),
         }
     }
 
@@ -354,7 +493,7 @@ impl<T: Transport> Client<T> {
     pub fn query_limits(&mut self, id: u8) -> Result<u8, ClientError> {
         match self.transact(&Command::QueryLimits { id })? {
             Response::Limits { bits, .. } => Ok(bits),
-            other => Err(ClientError::Unexpected(other)),
+            other => Err(self.unexpected(other)),
         }
     }
 
@@ -364,7 +503,7 @@ impl<T: Transport> Client<T> {
             Response::ProductId {
                 product, version, ..
             } => Ok((product, version)),
-            other => Err(ClientError::Unexpected(other)),
+            other => Err(self.unexpected(other)),
         }
     }
 }
@@ -439,22 +578,128 @@ mod tests {
     }
 
     #[test]
-    fn noise_and_foreign_ids_are_skipped_and_chunks_reassembled() {
+    fn garbage_and_foreign_replies_fail_at_once_then_the_line_resyncs() {
         let t = Scripted {
-            replies: VecDeque::from(vec![
-                b"garbage\r\n1B4\r".to_vec(),
-                b"\n0".to_vec(),
-                b"B3".to_vec(),
-                b"7\r".to_vec(),
-            ]),
+            replies: VecDeque::from(vec![b"garbage\r".to_vec()]),
             sent: vec![],
         };
         let mut c = Client::new(t, Duration::from_millis(50));
+        let r = c.query_limits(0);
+        assert!(matches!(r, Err(ClientError::Garbled(_))), "{r:?}");
+        assert!(!c.in_sync());
+        // The next command first resyncs with 0P: the stale 0B5 before its answer is
+        // dropped, then 0B is sent and its reply, in chunks, reassembled.
+        c.transport().sent.clear();
+        c.transport().replies = VecDeque::from(vec![
+            b"0B5\r0P1,100\r".to_vec(),
+            b"0".to_vec(),
+            b"B3".to_vec(),
+            b"7\r".to_vec(),
+        ]);
         assert_eq!(c.query_limits(0).ok(), Some(37));
-        assert_eq!(c.transport().sent, b"0B\r");
+        assert_eq!(c.transport().sent, b"0P\r0B\r");
+        assert!(c.in_sync());
+        // Another controller's reply: no waiting for ours.
+        c.transport().replies.push_back(b"1B4\r".to_vec());
+        let r = c.query_limits(0);
+        assert!(matches!(r, Err(ClientError::Unexpected(_))), "{r:?}");
         // A mismatched ack is reported, not taken as success.
-        c.transport().replies.push_back(b"0A\r".to_vec());
+        c.transport().replies = VecDeque::from(vec![b"0P1,100\r".to_vec(), b"0A\r".to_vec()]);
         let r = c.command(&Command::Stop { id: 0, motor: 0 });
-        assert!(matches!(r, Err(ClientError::Unexpected(_))));
+        assert!(matches!(r, Err(ClientError::Unexpected(_))), "{r:?}");
+        // A line longer than any reply fails before its CR arrives.
+        c.transport().replies = VecDeque::from(vec![b"0P1,100\r".to_vec(), vec![b'7'; 200]]);
+        let r = c.query_limits(0);
+        assert!(
+            matches!(r, Err(ClientError::Garbled(ProtocolError::LineTooLong))),
+            "{r:?}"
+        );
+    }
+
+    /// A transport whose reads overrun: each takes `stall` times what it was asked
+    /// to wait (the reading thread not scheduled on a loaded host); the reply is
+    /// there from the `ready_at`th read on.
+    struct Stalling {
+        reads: usize,
+        ready_at: usize,
+        stall: u32,
+        reply: Vec<u8>,
+        clock: Duration,
+    }
+    impl Transport for Stalling {
+        fn send(&mut self, _: &[u8]) -> io::Result<()> {
+            Ok(())
+        }
+        fn recv(&mut self, buf: &mut [u8], t: Duration) -> io::Result<usize> {
+            self.reads += 1;
+            if self.reads < self.ready_at {
+                self.clock += t * self.stall;
+                return Ok(0);
+            }
+            // Data was waiting: the read returns as soon as it is scheduled.
+            self.clock += Duration::from_millis(1) * self.stall;
+            let n = self.reply.len().min(buf.len());
+            buf[..n].copy_from_slice(&self.reply[..n]);
+            self.reply.clear();
+            Ok(n)
+        }
+        fn now(&self) -> Duration {
+            self.clock
+        }
+    }
+
+    #[test]
+    fn the_timeout_counts_only_time_the_reply_could_have_been_read() {
+        // Timeout 100 ms, slices of 20 ms, each read taking 10x as long: the reply
+        // waiting at the 4th read comes after 3 x 200 + 10 = 610 ms of the host's
+        // time but after 3 x 20 + 1 = 61 ms of watching: in time.
+        let t = Stalling {
+            reads: 0,
+            ready_at: 4,
+            stall: 10,
+            reply: b"0B9\r".to_vec(),
+            clock: Duration::ZERO,
+        };
+        let mut c = Client::new(t, Duration::from_millis(100));
+        assert_eq!(c.query_limits(0).ok(), Some(9));
+        assert_eq!(c.transport().clock, Duration::from_millis(610));
+        // With nothing coming, the timeout is 5 slices of watching (1 s of stalls).
+        c.transport().ready_at = usize::MAX;
+        c.transport().reads = 0;
+        let r = c.query_limits(0);
+        assert!(matches!(r, Err(ClientError::Timeout)), "{r:?}");
+        assert_eq!(c.transport().reads, 5);
+    }
+
+    #[test]
+    fn settle_finds_a_late_acknowledgement() {
+        // The ack of 0S1 comes only after the timeout: settle's resync reads it before
+        // the 0P answer and reports the command done.
+        let t = Scripted {
+            replies: VecDeque::new(),
+            sent: vec![],
+        };
+        let mut c = Client::new(t, Duration::from_millis(20));
+        let stop = Command::Stop { id: 0, motor: 1 };
+        let e = c.command(&stop).err();
+        assert!(matches!(e, Some(ClientError::Timeout)), "{e:?}");
+        c.transport().replies = VecDeque::from(vec![b"0S\r0P1,100\r".to_vec()]);
+        let r = c.settle(&stop, ClientError::Timeout);
+        assert!(r.is_ok(), "{r:?}");
+        assert_eq!(c.transport().sent, b"0S1\r0P\r");
+        // No late reply: the original error stands (the command's fate is unknown).
+        let e = c.command(&stop).err();
+        assert!(matches!(e, Some(ClientError::Timeout)), "{e:?}");
+        c.transport().replies = VecDeque::from(vec![b"0P1,100\r".to_vec()]);
+        let r = c.settle(&stop, ClientError::Timeout);
+        assert!(matches!(r, Err(ClientError::Timeout)), "{r:?}");
+        // A late refusal is the device's error.
+        let _ = c.command(&stop);
+        c.transport().replies = VecDeque::from(vec![b"0E1\r0P1,100\r".to_vec()]);
+        let r = c.settle(&stop, ClientError::Timeout);
+        assert!(
+            matches!(r, Err(ClientError::Device(ErrorCode::MotorRunning))),
+            "{r:?}"
+        );
     }
 }

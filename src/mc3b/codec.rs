@@ -1030,6 +1030,11 @@ impl LineSplitter {
         self.buf.clear();
         self.overflow = false;
     }
+
+    /// Whether the current (unfinished) line has passed [`MAX_LINE`] bytes.
+    pub fn overflowing(&self) -> bool {
+        self.overflow
+    }
 }
 
 /// Streaming response parser: feed arbitrary chunks, take parsed frames.
@@ -1045,13 +1050,25 @@ impl ResponseParser {
         Self::default()
     }
 
-    /// Feed a chunk of bytes (any length, any split).
+    /// Feed a chunk of bytes (any length, any split). A line is reported
+    /// [`ProtocolError::LineTooLong`] as soon as it passes [`MAX_LINE`] bytes (no
+    /// reply is that long, so a reader need not wait for its CR, which may never
+    /// come); the rest of it, up to its CR, is dropped without a second report.
     pub fn feed(&mut self, data: &[u8]) {
         for &b in data {
+            let was_over = self.lines.overflowing();
             match self.lines.push(b) {
                 Some(Line::Complete(l)) => self.ready.push_back(parse_response(&l)),
-                Some(Line::TooLong(_)) => self.ready.push_back(Err(ProtocolError::LineTooLong)),
-                None => {}
+                Some(Line::TooLong(_)) => {
+                    if !was_over {
+                        self.ready.push_back(Err(ProtocolError::LineTooLong));
+                    }
+                }
+                None => {
+                    if !was_over && self.lines.overflowing() {
+                        self.ready.push_back(Err(ProtocolError::LineTooLong));
+                    }
+                }
             }
         }
     }
@@ -1368,9 +1385,17 @@ mod tests {
             Err(ProtocolError::WrongFieldCount { code: b'A', got: 1 })
         );
         let mut p = ResponseParser::new();
+        p.feed(&[b'0'; MAX_LINE]);
+        assert_eq!(
+            p.next_response(),
+            None,
+            "a line of MAX_LINE bytes may still end"
+        );
+        p.feed(b"0");
+        // Reported at its (MAX_LINE + 1)th byte, before any CR: a reader need not wait.
+        assert_eq!(p.next_response(), Some(Err(ProtocolError::LineTooLong)));
         p.feed(&[b'0'; 500]);
         p.feed(b"\r0I\r");
-        assert_eq!(p.next_response(), Some(Err(ProtocolError::LineTooLong)));
         assert_eq!(
             p.next_response(),
             Some(Ok(Response::Ack {

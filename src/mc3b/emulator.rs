@@ -46,9 +46,11 @@
 //!   ends. All three motors count as running while a synchronous move runs.
 //!   `S` on any motor, or a home reached by any moving motor, stops all three
 //!   motors and discards the rest of the chain.
-//! * **Chained-move buffer.** Holds at most 100 moves, counting the one sent
-//!   with execute 1; one more answers `E3`. Execute 1 appends its own move,
-//!   then runs the buffer in order and empties it.
+//! * **Chained-move buffer.** A chain is at most 100 moves (§2.2(i), §4.17),
+//!   counting the one sent with execute 1: the buffer stores at most
+//!   [`CHAIN_CAPACITY`] − 1 = 99, a 100th store answers `E3`, and an execute
+//!   always fits. Execute 1 appends its own move, then runs the buffer in order
+//!   and empties it.
 //! * Limit masks are bytes (0..255). The limit inputs power up at 0 (0 V).
 
 use std::collections::VecDeque;
@@ -64,7 +66,8 @@ pub const PRODUCT_ID: u32 = 1;
 pub const FIRMWARE_VERSION: u32 = 100;
 /// Speed of the homing back-off and approach, steps/s (§4.14).
 pub const HOMING_SPEED: f64 = 10.0;
-/// Capacity of the chained-move buffer (§2.2, §4.17).
+/// Most moves in one chain (§2.2(i), §4.17): [`CHAIN_CAPACITY`] − 1 stored with
+/// execute 0 and the one sent with execute 1.
 pub const CHAIN_CAPACITY: usize = 100;
 /// Limit sampling period (§6.17: 1 kHz).
 pub const TICK: Duration = Duration::from_millis(1);
@@ -712,7 +715,8 @@ impl Emulator {
                 };
                 match execute {
                     Some(0) => {
-                        if self.chain.len() >= CHAIN_CAPACITY {
+                        // Room is kept for the move that executes the chain.
+                        if self.chain.len() + 1 >= CHAIN_CAPACITY {
                             return Err(ErrorCode::OutOfRange);
                         }
                         self.chain.push(seg);
@@ -1478,16 +1482,30 @@ mod tests {
 
     #[test]
     fn plain_sync_discards_the_buffer_and_capacity_is_100() {
+        // §2.2(i), §4.17: a chain is at most 100 moves: 99 stored with execute 0, the
+        // 100th sent with execute 1. The 100th store is refused (E3); the execute still
+        // fits and runs all 100.
         let mut e = Emulator::new();
-        for _ in 0..100 {
-            assert_eq!(send(&mut e, "0Y1,0,0,0,0,0,0"), "0Y|");
+        for k in 0..99 {
+            assert_eq!(send(&mut e, "0Y1,0,0,0,0,0,0"), "0Y|", "store {k}");
         }
         assert_eq!(send(&mut e, "0Y1,0,0,0,0,0,0"), "0E3|");
-        assert_eq!(send(&mut e, "0Y1,0,0,0,0,0,1"), "0E3|");
+        assert_eq!(e.chain_len(), 99);
+        assert_eq!(send(&mut e, "0Y1,0,0,0,0,0,1"), "0Y|");
+        assert_eq!(e.chain_len(), 0);
+        // 100 moves of one step: each a short triangle (1 step at 5000 steps/s²: about
+        // 28 ms), well within 10 s.
+        e.advance(ms(10_000));
+        assert!(!e.is_running(0));
+        assert_eq!(e.position(0), 100);
+        // A plain Y (execute omitted) discards what is stored and runs only itself.
+        for _ in 0..3 {
+            assert_eq!(send(&mut e, "0Y1,0,0,0,0,0,0"), "0Y|");
+        }
         assert_eq!(send(&mut e, "0Y5,0,0,0,0,0"), "0Y|");
         assert_eq!(e.chain_len(), 0);
         e.advance(ms(1000));
-        assert_eq!(e.position(0), 5);
+        assert_eq!(e.position(0), 105);
     }
 
     #[test]

@@ -22,10 +22,39 @@
 //!   included, returns NOT INITIALIZED before it.
 //! * `controller_id` must be below the number of controllers found (always
 //!   1 for the MC3B: no daisy chaining, §4.2), else PARAMETER OUT-OF-RANGE.
-//! * A timeout, or a hang-up of the line (the device side went away), is a
-//!   TIMEOUT ERROR; failing to open or configure the port is a SERIAL PORT
-//!   ERROR. A reply that does not fit the command is an INVALID COMMAND
-//!   ERROR (data corruption). Device errors `E0`..`E3` map to 4..7.
+//! * No reply within the timeout (counted as [`super::client`] says: only time
+//!   in which the reply could have been read) is a TIMEOUT ERROR: the board did
+//!   not answer (§4: "a problem with the connection").
+//! * A reply that cannot be read (garbage, a line longer than any reply), one
+//!   from another controller ID, or one that does not fit the command returns
+//!   at once, without waiting for the timeout, as INVALID COMMAND ERROR: §4
+//!   names that code for "data corruption in the serial communications", and
+//!   the guide has no code of its own for a corrupt reply. Device errors
+//!   `E0`..`E3` map to 4..7.
+//! * The port itself failing — a hang-up (the device side of a pty closed, a
+//!   USB adapter unplugged: end of file, `EIO`, `EPIPE`) or failing to open or
+//!   configure it — is a SERIAL PORT ERROR, returned at once: §4 names that
+//!   code for low-level serial port errors, and waiting cannot help; every
+//!   later call returns it too until `mcl_deinitialize` releases the port.
+//!   (A pulled cable on a real RS-232 port gives no such error, only
+//!   silence: TIMEOUT.)
+//! * After a failure that may have left a reply outstanding, the next call
+//!   first brings the line back in step (`<id>P`, see [`super::client`]); if
+//!   the board does not answer that, the call fails with that status before
+//!   its own command is sent.
+//! * Chained-move buffer (§6.12: stored moves run at the next execute). A
+//!   chain needs all three motors idle (§4.16): `mcl_chained_synchronous_move_motor`
+//!   first queries them (`Q`) and returns MOTOR RUNNING, storing nothing, if
+//!   one runs. When a chain or a synchronous move (either `execute`) fails once
+//!   it has reached the line (not a parameter refused here, which sends
+//!   nothing), the buffer may hold moves nobody will ask for (§6.12:
+//!   they would run at the next execute): before the next chain or
+//!   synchronous move the library discards it with a plain `<id>Y0,0,0,0,0,0`
+//!   (§6.12: a `Y` without `<execute>` discards the buffer and runs itself, here
+//!   no steps). That also discards moves the program stored before the failure
+//!   with `execute` = false. If the discard fails (a motor runs: MOTOR RUNNING),
+//!   the call fails with its status and sends nothing else; the discard is
+//!   tried again at the next such call.
 //! * `mcl_initialize` sends `0I` and needs its acknowledgement; if that
 //!   fails the port is released and the library stays uninitialized.
 //! * `mcl_deinitialize` sends `0I` (motors off, §4.3), then releases the port
@@ -37,6 +66,7 @@
 //! * `mcl_chained_synchronous_move_motor` sends moves 1..n-1 with execute 0
 //!   and move n with execute 1 (moves stored earlier with execute=false run
 //!   first, as on the device). All parameters are checked before sending.
+//!   A chain of 100 moves is 99 stored and the executing one (§2.2(i), §4.17).
 //! * The reply timeout is 500 ms, or `MCL_TIMEOUT_MS` milliseconds if that
 //!   environment variable holds a positive integer when `mcl_initialize` runs.
 
@@ -76,6 +106,8 @@ pub const MCL_MAX_CHAINED_MOVES: c_int = 100;
 struct State {
     client: Client<Box<dyn Transport + Send>>,
     controllers: c_int,
+    /// The chained-move buffer may hold moves of a failed call (module docs).
+    chain_dirty: bool,
 }
 
 static STATE: Lazy<Mutex<Option<State>>> = Lazy::new(|| Mutex::new(None));
@@ -98,8 +130,9 @@ fn reply_timeout() -> Duration {
 
 fn status_of(e: &ClientError) -> c_int {
     match e {
-        ClientError::Timeout | ClientError::Io(_) => MCL_TIMEOUT_ERROR,
-        ClientError::Unexpected(_) => MCL_INVALID_COMMAND_ERROR,
+        ClientError::Timeout => MCL_TIMEOUT_ERROR,
+        ClientError::Io(_) => MCL_SERIAL_PORT_ERROR,
+        ClientError::Unexpected(_) | ClientError::Garbled(_) => MCL_INVALID_COMMAND_ERROR,
         ClientError::Device(code) => match code {
             ErrorCode::InvalidCommand => MCL_INVALID_COMMAND_ERROR,
             ErrorCode::MotorRunning => MCL_MOTOR_RUNNING_ERROR,
@@ -143,6 +176,15 @@ fn with_client(
     check: impl FnOnce() -> Check,
     f: impl FnOnce(&mut Client<Box<dyn Transport + Send>>, u8) -> Result<(), ClientError>,
 ) -> c_int {
+    with_state(controller_id, check, |state, id| f(&mut state.client, id))
+}
+
+/// [`with_client`] with the whole state (the chained-move buffer's flag).
+fn with_state(
+    controller_id: c_int,
+    check: impl FnOnce() -> Check,
+    f: impl FnOnce(&mut State, u8) -> Result<(), ClientError>,
+) -> c_int {
     guard(|| {
         let mut guard = STATE.lock();
         let Some(state) = guard.as_mut() else {
@@ -154,7 +196,7 @@ fn with_client(
         let Ok(id) = u8::try_from(controller_id) else {
             return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
         };
-        match f(&mut state.client, id) {
+        match f(state, id) {
             Ok(()) => MCL_NO_ERROR,
             Err(e) => status_of(&e),
         }
@@ -192,6 +234,7 @@ pub fn initialize_with(transport: Box<dyn Transport + Send>, timeout: Duration) 
                 *guard = Some(State {
                     client,
                     controllers: 1,
+                    chain_dirty: false,
                 });
                 MCL_NO_ERROR
             }
@@ -584,11 +627,43 @@ pub extern "C" fn mcl_synchronous_move_motor(
 ) -> c_int {
     let s = [motor_0_steps, motor_1_steps, motor_2_steps];
     let d = [motor_0_direction, motor_1_direction, motor_2_direction];
-    send(
+    let mut built = None;
+    let code = with_state(
         controller_id,
         || sync_check(s, d),
-        |id| sync_cmd(id, s, d, execute),
-    )
+        |state, id| match sync_cmd(id, s, d, execute) {
+            Ok(cmd) => with_clean_buffer(state, id, |client| client.command(&cmd)),
+            Err(code) => {
+                built = Some(code);
+                Ok(())
+            }
+        },
+    );
+    built.unwrap_or(code)
+}
+
+/// Runs `f` (which sends `Y` commands) after discarding a chained-move buffer left
+/// by a failed call; if `f` fails, the buffer is marked for discarding (module
+/// docs).
+fn with_clean_buffer(
+    state: &mut State,
+    id: u8,
+    f: impl FnOnce(&mut Client<Box<dyn Transport + Send>>) -> Result<(), ClientError>,
+) -> Result<(), ClientError> {
+    if state.chain_dirty {
+        state.client.command(&Command::SyncMove {
+            id,
+            steps: [0; 3],
+            directions: [0; 3],
+            execute: None,
+        })?;
+        state.chain_dirty = false;
+    }
+    let r = f(&mut state.client);
+    if r.is_err() {
+        state.chain_dirty = true;
+    }
+    r
 }
 
 /// §4.17: chained synchronous move of `number_of_moves` (1..100) moves given
@@ -625,21 +700,43 @@ pub unsafe extern "C" fn mcl_chained_synchronous_move_motor(
             Err(code) => return code,
         };
         let mut build_err = None;
-        let code = with_client(
+        let code = with_state(
             controller_id,
             || Ok(()),
-            |client, id| {
-                let last = moves.len().saturating_sub(1);
-                for (k, (s, d)) in moves.iter().enumerate() {
-                    match sync_cmd(id, *s, *d, k == last) {
-                        Ok(cmd) => client.command(&cmd)?,
-                        Err(c) => {
-                            build_err = Some(c);
-                            return Ok(());
+            |state, id| {
+                let cmds: Result<Vec<Command>, c_int> = moves
+                    .iter()
+                    .enumerate()
+                    .map(|(k, (s, d))| sync_cmd(id, *s, *d, k + 1 == moves.len()))
+                    .collect();
+                let cmds = match cmds {
+                    Ok(c) => c,
+                    Err(c) => {
+                        build_err = Some(c);
+                        return Ok(());
+                    }
+                };
+                // §4.16: all three motors idle, or nothing is stored.
+                for m in 0..3 {
+                    let idle = state.client.query_status(id, m).map(|st| !st.running);
+                    match idle {
+                        Ok(true) => {}
+                        Ok(false) => {
+                            state.chain_dirty = true;
+                            return Err(ClientError::Device(ErrorCode::MotorRunning));
+                        }
+                        Err(e) => {
+                            state.chain_dirty = true;
+                            return Err(e);
                         }
                     }
                 }
-                Ok(())
+                with_clean_buffer(state, id, |client| {
+                    for cmd in &cmds {
+                        client.command(cmd)?;
+                    }
+                    Ok(())
+                })
             },
         );
         build_err.unwrap_or(code)

@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::mc3b::client::EmulatorLink;
+use std::collections::VecDeque;
 use std::io;
 
 /// An in-process MC3B that records every frame sent, can go silent after a number of
@@ -20,6 +21,12 @@ pub(crate) struct Rec {
     /// (active) while the motor's step counter is at or below `at` (`at` < 0) or at or
     /// above it (`at` > 0). Updated whenever the emulator's time moves.
     pub switches: Vec<(usize, u8, i64)>,
+    /// `(prefix, delay)`: the reply to the next frame that starts with `prefix` comes
+    /// `delay` late; later replies queue behind it (a slow host or device: replies
+    /// stay in order).
+    pub late: Option<(&'static str, Duration)>,
+    held: VecDeque<u8>,
+    held_due: Option<Duration>,
     queries: usize,
 }
 
@@ -31,6 +38,9 @@ impl Rec {
             mute_after: None,
             stop_at_query: None,
             switches: Vec::new(),
+            late: None,
+            held: VecDeque::new(),
+            held_due: None,
             queries: 0,
         }
     }
@@ -66,13 +76,37 @@ impl Transport for Rec {
                 }
             }
         }
+        let late = self.late.filter(|(p, _)| line.starts_with(p));
         self.sent.push(line);
         if muted {
+            return Ok(());
+        }
+        if let Some((_, delay)) = late {
+            self.late = None;
+            self.held_due = Some(self.link.now() + delay);
+        }
+        if self.held_due.is_some() {
+            let reply = self.link.emulator.receive(data);
+            self.held.extend(reply);
             return Ok(());
         }
         self.link.send(data)
     }
     fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
+        if let Some(due) = self.held_due {
+            let now = self.link.now();
+            if now < due {
+                self.link.idle(timeout.min(due - now));
+                self.follow_switches();
+                return Ok(0);
+            }
+            self.held_due = None;
+            let n = self.held.len().min(buf.len());
+            for (slot, b) in buf.iter_mut().zip(self.held.drain(..n)) {
+                *slot = b;
+            }
+            return Ok(n);
+        }
         let n = self.link.recv(buf, timeout);
         self.follow_switches();
         n
@@ -629,4 +663,117 @@ fn a_device_thread_runs_jobs_and_stops_at_drop() {
     assert_eq!((r.outcome, r.position), (Outcome::Done, [50, 0, 0]));
     assert_eq!(dev.card(), 0);
     drop(dev);
+}
+
+#[test]
+fn a_late_reply_is_not_a_dead_device() {
+    // Issue 12, defect 8: on a loaded host a reply came after the timeout; the job
+    // failed with 0xF901 and the estimate missed the command the device had carried
+    // out. The acknowledgement of the single Y comes 150 ms late against a 100 ms
+    // timeout: the line is resynced, the late "0Y" is found before the "0P" answer,
+    // and the job ends Done at its target.
+    let (link, mut w) = worker();
+    w.transport().late = Some(("0Y", Duration::from_millis(150)));
+    link.post(
+        1,
+        Job::Sync {
+            segs: vec![[500, 0, 0]],
+            speeds: [Some(speeds_for(5000.0, Ramp::Fastest)), None, None],
+        },
+    );
+    assert!(w.run_pending());
+    let r = link.take_report(1);
+    assert_eq!(r.map(|r| r.outcome), Some(Outcome::Done), "{r:?}");
+    assert_eq!(r.map(|r| r.position), Some([500, 0, 0]));
+    let t = w.transport();
+    assert_eq!(t.count("0Y"), 1, "sent once: {:?}", t.sent);
+    assert_eq!(t.count("0P"), 2, "the greeting and the resync");
+    assert_eq!(t.pos(), [500, 0, 0]);
+    // The model took the Y at the time it was sent: it agrees with the device.
+    w.catch_up();
+    assert_eq!(w.model_pos(), [500, 0, 0]);
+}
+
+#[test]
+fn a_late_reply_to_a_stop_keeps_the_estimate_with_the_device() {
+    // A jog-like move stopped on request; the S's acknowledgement comes 150 ms late
+    // (timeout 100 ms). The model must get the S at the time it was sent, so the
+    // estimate is where the device stopped, not where a model that missed the S would
+    // have run on to.
+    let (link, mut w) = worker();
+    link.post(
+        2,
+        Job::Independent {
+            steps: [100_000, 0, 0],
+            speeds: [
+                Some(speeds_for(
+                    1000.0,
+                    Ramp::Times {
+                        acc_s: 0.0,
+                        dec_s: 0.0,
+                    },
+                )),
+                None,
+                None,
+            ],
+        },
+    );
+    // Stop at the 20th status query (after about 20 x 10 ms of polling).
+    w.transport().stop_at_query = Some((20, link.clone(), 2));
+    w.transport().late = Some(("0S", Duration::from_millis(150)));
+    assert!(w.run_pending());
+    let r = link.take_report(2);
+    assert_eq!(r.map(|r| r.outcome), Some(Outcome::Stopped), "{r:?}");
+    let t = w.transport();
+    assert_eq!(t.count("0S"), 1, "{:?}", t.sent);
+    let dev = t.pos();
+    let est = r.map(|r| r.position).unwrap_or_default();
+    assert!(dev[0] > 100, "{dev:?}");
+    // Same model, same command times: no difference at all.
+    assert_eq!(est, dev);
+}
+
+#[test]
+fn no_chain_is_uploaded_while_a_motor_runs() {
+    // Issue 12, defect 5, on the card backend: something keeps motor 1 busy (a stop
+    // that did not get through). A chain job must not store moves that a later
+    // execute would run: every motor is asked first, the runner is stopped, the job
+    // fails (0xF902), and the next job moves exactly its own steps.
+    let (link, mut w) = worker();
+    let _ = w.transport().link.emulator.handle(&Command::Move {
+        id: 0,
+        motor: 1,
+        steps: 100_000,
+        direction: 0,
+    });
+    let sp = [Some(speeds_for(5000.0, Ramp::Fastest)); MOTORS];
+    link.post(
+        3,
+        Job::Sync {
+            segs: vec![[5, 0, 0]; 4],
+            speeds: sp,
+        },
+    );
+    assert!(w.run_pending());
+    let r = link.take_report(3);
+    assert_eq!(
+        r.map(|r| r.outcome),
+        Some(Outcome::Failed(Fault::Device)),
+        "{r:?}"
+    );
+    let t = w.transport();
+    assert_eq!(t.count("0Y"), 0, "nothing stored: {:?}", t.sent);
+    assert!(!t.link.emulator.is_running(1), "the runner was stopped");
+    assert_eq!(t.link.emulator.chain_len(), 0);
+    let p1 = t.pos()[1];
+    link.post(
+        4,
+        Job::Sync {
+            segs: vec![[0, 0, 5]],
+            speeds: sp,
+        },
+    );
+    assert!(w.run_pending());
+    assert_eq!(link.take_report(4).map(|r| r.outcome), Some(Outcome::Done));
+    assert_eq!(w.transport().pos(), [0, p1, 5]);
 }
