@@ -107,21 +107,25 @@ impl Reader {
         if n != 13 {
             return Err(err(format!("expected 13 fields, found {n}")));
         }
+        let col = |i: usize| HEADER.split(',').nth(i).unwrap_or("?");
         let num = |i: usize| -> Result<f64, String> {
-            let name = HEADER.split(',').nth(i).unwrap_or("?");
             match fields[i].parse::<f64>() {
                 Ok(v) if v.is_finite() => Ok(v),
                 _ => Err(err(format!(
-                    "field {name}: not a finite number: \"{}\"",
+                    "field {}: not a finite number: \"{}\"",
+                    col(i),
                     fields[i]
                 ))),
             }
         };
         let int = |i: usize| -> Result<i64, String> {
-            let name = HEADER.split(',').nth(i).unwrap_or("?");
-            fields[i]
-                .parse::<i64>()
-                .map_err(|_| err(format!("field {name}: not an integer: \"{}\"", fields[i])))
+            fields[i].parse::<i64>().map_err(|_| {
+                err(format!(
+                    "field {}: not an integer: \"{}\"",
+                    col(i),
+                    fields[i]
+                ))
+            })
         };
         let group = u32::try_from(int(1)?).map_err(|_| err("field group: negative".into()))?;
         let cmd = i32::try_from(int(2)?).map_err(|_| err("field command: out of range".into()))?;

@@ -239,11 +239,22 @@ pub fn prepare(path: &str, opts: &Options) -> Result<(Vec<Event>, Scan, Vec<u32>
 /// Renders `path` as SVG; returns the document and where things went.
 pub fn svg(path: &str, opts: &Options) -> Result<(String, PlotInfo), String> {
     let (events, s, groups) = prepare(path, opts)?;
+    svg_prepared(path, opts, &events, &s, &groups)
+}
+
+/// [`svg`] with the first pass already made ([`prepare`]).
+pub fn svg_prepared(
+    path: &str,
+    opts: &Options,
+    events: &[Event],
+    s: &Scan,
+    groups: &[u32],
+) -> Result<(String, PlotInfo), String> {
     let sz = size(opts, groups.len());
     let mut out = String::new();
     let info = {
         let root = SVGBackend::with_string(&mut out, sz).into_drawing_area();
-        let info = draw(&root, path, opts, &events, &s, &groups)?;
+        let info = draw(&root, path, opts, events, s, groups)?;
         root.present().map_err(e)?;
         info
     };
@@ -319,14 +330,14 @@ struct Block {
 /// Largest distance, px, of a trace point from the drawn path (plus [`MERGE_PX`]).
 pub const PATH_TOL_PX: f64 = 0.75;
 /// Points closer than this to the last one kept for the check are not kept for it.
-const MERGE_PX: f64 = 0.05;
+const MERGE_PX: f64 = 0.2;
 /// Most points between two vertices that are kept for the check.
 const BUF_MAX: usize = 512;
 
 /// Streaming simplification of the path: a vertex is kept only when the segment from the
 /// last vertex would pass further than [`PATH_TOL_PX`] from a point since it. Vertices
 /// are rounded to whole pixels and the check is made against the rounded segment, so
-/// every trace point lies within `PATH_TOL_PX + MERGE_PX` < 1 px of what is drawn.
+/// every trace point lies within `PATH_TOL_PX + MERGE_PX` = 0.95 px of what is drawn.
 #[derive(Default)]
 struct PathSimplifier {
     kept: Vec<(i32, i32, i32)>,

@@ -14,8 +14,8 @@ fn esc(s: &str) -> String {
 
 /// The HTML report of trace `path`.
 pub fn html(path: &str, opts: &Options) -> Result<String, String> {
-    let (svg, info) = plot::svg(path, opts)?;
     let (events, s, groups) = plot::prepare(path, opts)?;
+    let (svg, info) = plot::svg_prepared(path, opts, &events, &s, &groups)?;
     let svg = match svg.find("<svg") {
         Some(i) => &svg[i..],
         None => &svg[..],
