@@ -624,8 +624,13 @@ fn draw<DB: DrawingBackend>(
         let t = row.t_ms;
         for (k, &i) in b.axes.iter().enumerate() {
             b.cols[0].push(t, k, row.pos[i]);
-            b.cols[2].push(t, k, d.vel[i]);
-            b.cols[3].push(t, k, d.acc[i]);
+            // A group's first row has no speed, its first two no acceleration.
+            if d.has_prev {
+                b.cols[2].push(t, k, d.vel[i]);
+            }
+            if d.has_acc {
+                b.cols[3].push(t, k, d.acc[i]);
+            }
         }
         b.cols[1].push(t, 0, row.speed);
     }
@@ -662,37 +667,55 @@ fn pad_time(t0: f64, t1: f64) -> (f64, f64) {
     }
 }
 
-/// Spans of a group from its events: (start, end, kind) with kind `hold`, `delay`, `error`.
-pub fn spans(events: &[Event], gs: &GroupScan) -> Vec<(f64, f64, &'static str)> {
+/// Spans of a group from its events: (start, end, kind, label) with kind `hold`, `delay`,
+/// `abort` (from the call to the stop) or `error` (labelled with the error code).
+pub fn spans(events: &[Event], gs: &GroupScan) -> Vec<(f64, f64, &'static str, String)> {
     let g = i64::from(gs.group);
     let mut out = Vec::new();
     let mut hold: Option<f64> = None;
-    let mut err: Option<f64> = None;
+    let mut err: Option<(f64, String)> = None;
+    let mut abort: Option<f64> = None;
     for ev in events.iter().filter(|ev| ev.group == g) {
         match ev.kind.as_str() {
-            "hold" => hold = hold.or(Some(ev.t_ms)),
-            "continue" | "abort" => {
+            "abort" => {
+                abort = Some(ev.t_ms);
                 if let Some(h) = hold.take() {
-                    out.push((h, ev.t_ms, "hold"));
+                    out.push((h, ev.t_ms, "hold", "hold".to_string()));
                 }
             }
-            "error_set" => err = err.or(Some(ev.t_ms)),
+            "cmd_end" if ev.get("end") == Some("stopped") => {
+                if let Some(a) = abort.take() {
+                    out.push((a, ev.t_ms, "abort", "abort".to_string()));
+                }
+            }
+            // An abort with nothing running stops nothing.
+            "cmd_start" => abort = None,
+            "hold" => hold = hold.or(Some(ev.t_ms)),
+            "continue" => {
+                if let Some(h) = hold.take() {
+                    out.push((h, ev.t_ms, "hold", "hold".to_string()));
+                }
+            }
+            "error_set" if err.is_none() => {
+                let code = ev.get("code").unwrap_or("?");
+                err = Some((ev.t_ms, format!("error {code}")));
+            }
             "error_cleared" => {
-                if let Some(s) = err.take() {
-                    out.push((s, ev.t_ms, "error"));
+                if let Some((s, l)) = err.take() {
+                    out.push((s, ev.t_ms, "error", l));
                 }
             }
             _ => {}
         }
     }
     if let Some(h) = hold {
-        out.push((h, gs.t1, "hold"));
+        out.push((h, gs.t1, "hold", "hold".to_string()));
     }
-    if let Some(s) = err {
-        out.push((s, gs.t1, "error"));
+    if let Some((s, l)) = err {
+        out.push((s, gs.t1, "error", l));
     }
     for c in gs.cmds.iter().filter(|c| c.ctype == "DELAY") {
-        out.push((c.start, c.end, "delay"));
+        out.push((c.start, c.end, "delay", "delay".to_string()));
     }
     out
 }
@@ -715,7 +738,6 @@ fn draw_block<DB: DrawingBackend>(
     gs: &GroupScan,
 ) -> Result<(), String> {
     // Path, one polyline per command run, each starting where the last ended.
-    let pp = &b.panels[0];
     let path = &b.path.kept;
     let mut start = 0;
     let mut labelled = 0;
@@ -763,14 +785,15 @@ fn draw_block<DB: DrawingBackend>(
         root.draw(&Text::new("end", (l.0 + 8, l.1 + 4), font(12.0)))
             .map_err(e)?;
     }
-    let _ = pp;
     let sp = spans(events, gs);
     let bounds = boundaries(gs);
     for (k, p) in b.panels[1..].iter().enumerate() {
-        for &(s, t, kind) in &sp {
+        for (s, t, kind, label) in &sp {
+            let (s, t, kind) = (*s, *t, *kind);
             let c = match kind {
                 "hold" => RGBColor(255, 165, 0).mix(0.25),
                 "delay" => RGBColor(100, 149, 237).mix(0.2),
+                "abort" => RGBColor(128, 0, 128).mix(0.25),
                 _ => RGBColor(220, 0, 0).mix(0.2),
             };
             let (x0, x1) = (p.map_x(s.max(p.x.0)), p.map_x(t.min(p.x.1)));
@@ -779,6 +802,11 @@ fn draw_block<DB: DrawingBackend>(
                 c.filled(),
             ))
             .map_err(e)?;
+            if k == 1 && s >= p.x.0 && s <= p.x.1 && kind != "delay" {
+                // Where it stopped and why: the label at the span's start.
+                root.draw(&Text::new(label.clone(), (x0 + 2, p.py.1 - 16), font(11.0)))
+                    .map_err(e)?;
+            }
         }
         for &t in &bounds {
             let x = p.map_x(t);

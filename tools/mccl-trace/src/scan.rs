@@ -85,8 +85,10 @@ pub struct Derived {
     pub acc: [f64; 8],
     /// X/Y/Z distance from the previous row, UU.
     pub step: f64,
-    /// Whether there was a previous row.
+    /// Whether there was a previous row (`vel` is known).
     pub has_prev: bool,
+    /// Whether there were two previous rows (`acc` is known).
+    pub has_acc: bool,
 }
 
 impl GroupScan {
@@ -144,6 +146,7 @@ impl GroupScan {
                     d.vel[i] = (r.pos[i] - pp[i]) / dt;
                     if self.rows >= 2 {
                         d.acc[i] = (d.vel[i] - pv[i]) / dt;
+                        d.has_acc = true;
                     }
                 }
                 d.step = ((r.pos[0] - pp[0]).powi(2)
@@ -221,13 +224,6 @@ impl GroupScan {
             if c.end.is_infinite() {
                 c.end = t1;
                 c.how = "open".into();
-            }
-        }
-        if !self.from_events {
-            if let Some(c) = self.cmds.last_mut() {
-                if c.how == "open" && self.prev.is_some() {
-                    c.how = "open".into();
-                }
             }
         }
     }
