@@ -7,7 +7,7 @@ EXAMPLE ?= GeneralMotion
 MCCL_CLOCK ?= fast
 export MCCL_CLOCK
 
-.PHONY: deps build example test bench headers clean fuzz
+.PHONY: deps build example test bench headers docs-image clean fuzz
 
 deps:
 	@scripts/install-deps.sh
@@ -16,9 +16,15 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j2
 
+TRACE_TOOL = $(BUILD)/cargo/release/mccl-trace
+
 example: build
 	MCCL_TRACE=$(BUILD)/$(EXAMPLE).csv $(BUILD)/c-tests/$(EXAMPLE)
-	@echo "every tick of every group: $(BUILD)/$(EXAMPLE).csv"
+	$(TRACE_TOOL) plot $(BUILD)/$(EXAMPLE).csv -o $(BUILD)/$(EXAMPLE).svg
+	$(TRACE_TOOL) report $(BUILD)/$(EXAMPLE).csv -o $(BUILD)/$(EXAMPLE).html
+	@echo "every tick of every group: $(BUILD)/$(EXAMPLE).csv (events: $(BUILD)/$(EXAMPLE).events.csv)"
+	@echo "plots: $(BUILD)/$(EXAMPLE).svg"
+	@echo "report: $(BUILD)/$(EXAMPLE).html"
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure
@@ -30,6 +36,12 @@ bench:
 # Regenerate include/*.h from the Rust sources (commit the result).
 headers:
 	cargo run -q -p mccl-headers
+
+# Regenerate the README's picture docs/GeneralMotion.svg (commit the result; the
+# trace_tool test checks it).
+docs-image: build
+	MCCL_CLOCK=fast MCCL_TRACE=$(BUILD)/docs-GeneralMotion.csv $(BUILD)/c-tests/GeneralMotion >/dev/null
+	$(TRACE_TOOL) plot $(BUILD)/docs-GeneralMotion.csv -o docs/GeneralMotion.svg
 
 clean:
 	rm -rf $(BUILD)

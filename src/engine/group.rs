@@ -164,6 +164,8 @@ pub struct GroupState {
     /// Axes whose channels are being homed (`MCC_Home`), one bit each: the homing drives
     /// their positions and the group takes no command meanwhile.
     homing: u32,
+    /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
+    pub trace_notes: Option<Vec<super::trace::Note>>,
 }
 
 /// In-position settings of a group (user manual §2.7.2).
@@ -265,6 +267,7 @@ impl GroupState {
             outputs: Vec::new(),
             external: None,
             homing: 0,
+            trace_notes: None,
         }
     }
 
@@ -331,7 +334,9 @@ impl GroupState {
     /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).
     pub fn reset(&mut self, axes: [AxisMech; AXES]) {
         let external = self.external.take();
+        let notes = self.trace_notes.take();
         *self = GroupState::new(self.index, self.def, axes);
+        self.trace_notes = notes;
         self.keep_external(external);
     }
 
@@ -348,6 +353,27 @@ impl GroupState {
     /// Motion status (`GMS_*`).
     pub fn status(&self) -> i32 {
         self.status
+    }
+
+    /// Records an event for the trace (nothing but this check when not tracing).
+    #[inline]
+    fn note(&mut self, n: super::trace::Note) {
+        if let Some(v) = self.trace_notes.as_mut() {
+            v.push(n);
+        }
+    }
+
+    /// Notes the running commands as cut short (they are about to be dropped).
+    fn note_stopped(&mut self) {
+        if let Some(v) = self.trace_notes.as_mut() {
+            for r in &self.running {
+                v.push(super::trace::Note::End {
+                    index: r.cmd.index,
+                    ctype: r.cmd.ctype,
+                    stopped: true,
+                });
+            }
+        }
     }
 
     /// Commands waiting in the queue (not counting those running).
@@ -368,12 +394,16 @@ impl GroupState {
     /// Records an error: the group stops executing commands until `MCC_ClearError`.
     pub fn set_error(&mut self, code: i32) {
         if self.error == 0 {
+            self.note(super::trace::Note::ErrorSet(code));
             self.error = code;
         }
     }
 
     /// `MCC_ClearError`.
     pub fn clear_error(&mut self) {
+        if self.error != 0 {
+            self.note(super::trace::Note::ErrorCleared(self.error));
+        }
         self.error = 0;
         self.update_status();
     }
@@ -440,6 +470,9 @@ impl GroupState {
         if self.external.is_some() && !at_block_end {
             return Err(McclError::NotAccepted);
         }
+        self.note(super::trace::Note::Hold {
+            block_end: at_block_end,
+        });
         if at_block_end {
             self.mode = Mode::HoldAtBlockEnd;
         } else {
@@ -455,6 +488,7 @@ impl GroupState {
     pub fn conti(&mut self) -> McclResult<()> {
         match self.mode {
             Mode::Held | Mode::HoldAtBlockEnd => {
+                self.note(super::trace::Note::Continue);
                 self.mode = Mode::Normal;
                 let target = self.target_rate();
                 let t = self.current_acc_s();
@@ -472,6 +506,10 @@ impl GroupState {
     pub fn abort(&mut self, dec_s: f64, at_block_end: bool) {
         // The MC3B stops at once (`S`); it has no controlled stop.
         let dec_s = if self.external.is_some() { 0.0 } else { dec_s };
+        self.note(super::trace::Note::Abort {
+            dec_s,
+            block_end: at_block_end,
+        });
         self.queue.clear();
         self.pending_override = None;
         if at_block_end {
@@ -492,6 +530,7 @@ impl GroupState {
     fn stop_here(&mut self) {
         self.stop_external();
         self.inpos_wait = None;
+        self.note_stopped();
         self.running.clear();
         self.queue.clear();
         self.base = self.pos;
@@ -731,8 +770,13 @@ impl GroupState {
                     self.inpos_status[i] = 0xFF;
                 }
             }
+            self.note(super::trace::Note::InPosDone(w.mask));
             self.inpos_wait = None;
         } else if w.elapsed >= w.settings.max_check_s - TIME_EPS {
+            self.note(super::trace::Note::InPosFail {
+                mask: w.mask,
+                error: w.fails_with_error(),
+            });
             self.inpos_wait = None;
             if w.fails_with_error() {
                 self.stop_here();
@@ -782,6 +826,10 @@ impl GroupState {
         }
         self.ld_index = self.ld_index.wrapping_add(1);
         self.last_started = Some((cmd.index, self.ld_index));
+        self.note(super::trace::Note::Start {
+            index: cmd.index,
+            ctype: cmd.ctype,
+        });
         if self.single_block {
             self.single_block_credit = false;
         }
@@ -865,9 +913,15 @@ impl GroupState {
             let Some(done) = self.running.pop_front() else {
                 return;
             };
+            self.note(super::trace::Note::End {
+                index: done.cmd.index,
+                ctype: done.cmd.ctype,
+                stopped: false,
+            });
             if self.running.is_empty() {
                 self.base = done.cmd.target;
                 if done.cmd.is_motion() && self.inpos_mask != 0 {
+                    self.note(super::trace::Note::InPosBegin(self.inpos_mask));
                     self.inpos_wait = Some(InPosWait {
                         mask: self.inpos_mask,
                         elapsed: 0.0,

@@ -499,6 +499,8 @@ pub struct HomeTick {
     pub axes: [AxisOut; AXES],
     /// The homing ended in this tick with this status ([`HOME_DONE`] or [`HOME_NONE`]).
     pub finished: Option<i32>,
+    /// The order (-1 after the last) and phase (1..3) running, for the trace.
+    pub phase: (i32, u8),
 }
 
 /// A go home of one card in progress.
@@ -666,6 +668,10 @@ impl Homing {
         } else if self.current >= self.orders.len() {
             out.finished = Some(HOME_DONE);
         }
+        out.phase = (
+            self.orders.get(self.current).copied().unwrap_or(-1),
+            self.phase,
+        );
         out
     }
 

@@ -102,6 +102,8 @@ pub struct Shared {
     /// The card whose MC3B runs a go home, or -1.
     mc3b_home_card: AtomicI32,
     trace: Mutex<Option<trace::Trace>>,
+    /// Whether `trace` is `Some` (read without its lock on every tick).
+    tracing: bool,
 }
 
 /// Under a virtual clock, a long run of ticks publishes snapshots this often (and at its
@@ -516,6 +518,7 @@ impl Shared {
             }
             if let Some(t) = trace.as_mut() {
                 t.row(t_ns, &g);
+                t.group_events(t_ns, &mut g);
             }
         }
         if let Some(h) = &homed {
@@ -550,9 +553,23 @@ impl Shared {
             }
         }
         self.safety(&machine, full, dt, &own_checks);
+        if let Some(t) = trace.as_mut() {
+            t.machine_events(t_ns, &machine);
+            if let Some(h) = &homed {
+                t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
+            }
+        }
         drop(machine);
         drop(trace);
         (full, self.tick_peripherals(tick_ns(self.clock.period())))
+    }
+
+    /// Writes the interrupts a tick collected to the trace's events file.
+    fn trace_interrupts(&self, collected: &isr::Collected) {
+        let t_ns = u128::from(self.clock.ticks() + 1) * self.clock.period().as_nanos();
+        if let Some(t) = self.trace.lock().as_mut() {
+            t.interrupt_events(t_ns, collected, &self.isr);
+        }
     }
 
     /// Output changes of queued `MCC_Queue*OutputValue` commands.
@@ -766,6 +783,12 @@ impl Engine {
             slots[*i] = Some(n);
             gs.push(Mutex::new(GroupState::new(*i, *d, axes_of(d, mac))));
         }
+        let mut trace = trace;
+        if let Some(t) = trace.as_mut() {
+            for g in &gs {
+                t.start_group(&mut g.lock(), mac, &machine);
+            }
+        }
         let commanding = commanding_axes(&gs);
         let shared = Arc::new(Shared {
             clock: Clock::new(mode, period),
@@ -796,6 +819,7 @@ impl Engine {
             home_watch: AtomicI32::new(i32::MIN),
             mc3b_cards: AtomicU32::new(0),
             mc3b_home_card: AtomicI32::new(-1),
+            tracing: trace.is_some(),
             trace: Mutex::new(trace),
         });
         shared.for_each_group(|_| {});
@@ -870,6 +894,9 @@ fn run(shared: &Shared) {
                 shared.check_watch();
                 if !published {
                     shared.end_of_run();
+                }
+                if shared.tracing && !interrupts.is_empty() {
+                    shared.trace_interrupts(&interrupts);
                 }
                 // Interrupt callbacks collected in the tick run here, without any lock.
                 shared.isr.deliver(&interrupts, &shared.clock);
