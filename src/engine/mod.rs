@@ -12,6 +12,7 @@ pub mod homing;
 pub mod isr;
 pub mod safety;
 pub mod snapshot;
+pub mod thread;
 pub mod trace;
 
 use crate::clock::{Clock, ClockMode, Next};
@@ -807,6 +808,13 @@ impl Drop for Engine {
 
 fn run(shared: &Shared) {
     shared.clock.set_engine_thread();
+    if shared.clock.mode() == ClockMode::Realtime {
+        // Timer slack and the optional MCCL_RT_* settings (never fatal).
+        thread::setup_current_thread(false);
+    }
+    // Realtime deadlines count from here: a thread that was slow to start (a loaded
+    // host) does not begin with a burst of late ticks.
+    shared.clock.start_now();
     loop {
         match shared.clock.wait_next() {
             Next::Stop => return,
