@@ -521,6 +521,36 @@ mod tests {
     }
 
     #[test]
+    fn realtime_deadlines_count_from_when_the_engine_is_ready() {
+        // The clock is made at 1 s; the engine thread is ready 30 ms later (a slow thread
+        // start on a loaded host). Counted from the clock's creation, tick n would start
+        // at 30 ms + n x 100 us (back to back, each taking 100 us), 30 - 0.9 n ms late:
+        // ticks 0..=32 missed (33; seen failing so without `start_now`). Counted from
+        // `start_now`, every tick starts on time.
+        let fake = Arc::new(FakeTime::new(1_000_000_000, 0));
+        let clock = Clock::with_source(
+            ClockMode::Realtime,
+            Duration::from_millis(1),
+            Source::Fake(fake.clone()),
+        );
+        fake.advance(30_000_000);
+        clock.start_now();
+        for _ in 0..100 {
+            assert_eq!(clock.wait_next(), Next::Tick);
+            fake.advance(100_000);
+            clock.tick_done();
+        }
+        assert_eq!(clock.missed(), 0);
+        assert_eq!(clock.lateness().max_us(), 0.0);
+        // Tick 99 was due at 1.030 s + 99 ms and took 100 us.
+        assert_eq!(fake.now(), 1_129_100_000);
+        // Once ticks ran, start_now changes nothing.
+        fake.advance(5_000_000);
+        clock.start_now();
+        assert_eq!(clock.deadline_ns(100), 1_130_000_000);
+    }
+
+    #[test]
     fn realtime_sleeps_in_slices_so_stop_is_seen_promptly() {
         // A 10 s period: after tick 0 (due at the start) the engine sleeps towards 10 s
         // in slices of STOP_SLICE (5 ms), so a stop is seen within one slice, not 10 s.

@@ -359,6 +359,26 @@ mod tests {
     use super::*;
 
     #[test]
+    fn collected_holds_one_entry_per_card_in_order() {
+        let mut c = Collected::new();
+        assert!(c.is_empty());
+        let mut p = Pending::default();
+        p.raise(Interrupt::Timer(1));
+        for card in [3, 0, 11] {
+            c.push(card, p);
+        }
+        let cards: Vec<usize> = c.as_slice().iter().map(|(k, _)| *k).collect();
+        assert_eq!(cards, [3, 0, 11], "in the order pushed");
+        assert_eq!(c.as_slice()[1].1.tmr, [1]);
+        // 12 cards at most (MAX_CARD_NUM): a 13th entry is dropped, nothing panics.
+        for card in 0..20 {
+            c.push(card, p);
+        }
+        assert_eq!(c.as_slice().len(), crate::config::CARDS);
+        assert_eq!(c.as_slice()[11].0, 8);
+    }
+
+    #[test]
     fn pending_fields_land_on_the_struct_bytes() {
         let mut p = Pending::default();
         assert!(p.is_empty());
