@@ -10,7 +10,10 @@
 //!   minus the deadline. Like the engine it never skips a deadline: after a stall the
 //!   deadlines already past are each counted with their own lateness.
 //! * engine tick: the lateness of every realtime tick, as the clock counts it
-//!   (`Clock::lateness`, what `MCCL_SimGetClockStats` reports).
+//!   (`Clock::lateness`, what `MCCL_SimGetClockStats` reports), over the reference's
+//!   time span (the ticks while the program configures the card and starts the
+//!   reference are left out of the comparison; `MCCL_SimGetClockStats`, printed once per
+//!   case, counts them).
 //! * interrupt delivery: a TMR routine whose timer expires every tick; its lateness is the
 //!   time the routine runs minus the deadline of the tick that raised it.
 //!
@@ -98,6 +101,7 @@ fn reference(
 static SHARED: AtomicPtr<Shared> = AtomicPtr::new(std::ptr::null_mut());
 static ENGINE_ALLOCS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 static ENGINE_TICKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+static ISR_ON: AtomicBool = AtomicBool::new(false);
 static ISR_HIST: AtomicPtr<LatencyHistogram> = AtomicPtr::new(std::ptr::null_mut());
 
 unsafe extern "C" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
@@ -106,7 +110,7 @@ unsafe extern "C" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
         SHARED.load(Ordering::Acquire),
         ISR_HIST.load(Ordering::Acquire),
     );
-    if s.is_null() || h.is_null() {
+    if s.is_null() || h.is_null() || !ISR_ON.load(Ordering::Acquire) {
         return;
     }
     // SAFETY: both point at values the bench keeps alive while the engine runs.
@@ -153,15 +157,21 @@ fn engine(
     let period_ns = u64::from(period_ms) * 1_000_000;
     let next = shared.clock.deadline_ns(shared.clock.ticks() + 10) + period_ns / 2;
     let reference = reference(period_ns, next, ticks, reference_h);
-    // Only the engine thread allocates meanwhile (this thread sleeps, the load threads
-    // and the reference loop do not), so the allocations counted are the engine's.
-    std::thread::sleep(Duration::from_millis(5));
+    // The engine is measured over the reference's time span (so not while this thread
+    // configures it or spawns the reference). Only the engine thread allocates meanwhile
+    // (this thread sleeps, the load threads and the reference loop do not), so the
+    // allocations counted are the engine's.
+    MCCLPCI_IMP::clock::sleep_until_ns(next);
+    let then = shared.clock.lateness().snapshot();
+    ISR_ON.store(true, Ordering::Release);
     let (first, a0) = (shared.clock.ticks(), ALLOCS.load(Ordering::Relaxed));
     while shared.clock.ticks() < first + ticks {
         std::thread::sleep(Duration::from_millis(20));
     }
     let (last, a1) = (shared.clock.ticks(), ALLOCS.load(Ordering::Relaxed));
     reference.join().unwrap();
+    ISR_ON.store(false, Ordering::Release);
+    tick_h.merge_since(shared.clock.lateness(), &then);
     ENGINE_ALLOCS.fetch_add(a1 - a0, Ordering::Relaxed);
     ENGINE_TICKS.fetch_add(last - first, Ordering::Relaxed);
     if print_stats {
@@ -170,7 +180,6 @@ fn engine(
     MCC_CloseSystem();
     SHARED.store(std::ptr::null_mut(), Ordering::Release);
     ISR_HIST.store(std::ptr::null_mut(), Ordering::Release);
-    tick_h.merge(shared.clock.lateness());
     shared.clock.missed()
 }
 
