@@ -39,8 +39,10 @@ static int cmp(const void *a, const void *b)
 int main(int argc, char **argv)
 {
     int n = argc > 1 ? atoi(argv[1]) : 10000;
-    /* "--no-rss": under valgrind the RSS says nothing about the program's memory. */
-    int check_rss = !(argc > 2 && strcmp(argv[2], "--no-rss") == 0);
+    /* "--no-rss": under valgrind the RSS says nothing about the program's memory, and the
+     * cycle times say nothing about the library's (valgrind starts each engine thread
+     * slowly, more so on a loaded host): only the thread count is checked then. */
+    int native = !(argc > 2 && strcmp(argv[2], "--no-rss") == 0);
     int i, warm = n / 10;
     long rss_warm = 0, threads0;
     double *t = (double *)malloc(sizeof(double) * (size_t)n);
@@ -67,9 +69,10 @@ int main(int argc, char **argv)
         printf("threads before %ld after %ld; RSS after %d cycles %ld kB, at the end %ld kB\n",
                threads0, threads1, warm, rss_warm, rss1);
         CHECK_EQ(threads1, threads0);                 /* no engine thread left behind */
-        if (check_rss)
+        if (native) {
             CHECK(rss1 - rss_warm < 1024);            /* flat: < 1 MB growth after warm-up */
-        CHECK(t[n / 2] < 10.0);                       /* generous: typical cycles are far below */
+            CHECK(t[n / 2] < 10.0);                   /* generous: typical cycles are far below */
+        }
     }
     free(t);
     return check_done("init_close_cycles");
