@@ -14,6 +14,7 @@ pub mod engine;
 pub mod error;
 pub mod fault;
 pub mod ffi;
+pub mod interrupt;
 pub mod machine;
 pub mod mc3b;
 pub mod planner;

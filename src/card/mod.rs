@@ -13,7 +13,7 @@ pub mod rio;
 pub mod timer;
 
 use crate::config::AXES;
-use crate::engine::isr::{Interrupt, Pending};
+use crate::interrupt::{Interrupt, Pending};
 use adc::{Adc, AdcSource};
 use dac::Dac;
 use parking_lot::{Mutex, MutexGuard};

@@ -1045,7 +1045,7 @@ pub fn open_devices(
     sim: &crate::sim::config::SimConfig,
     cards: usize,
     groups: &[(usize, crate::config::GroupDef)],
-    mac: &crate::engine::MacTable,
+    mac: &crate::config::MacTable,
 ) -> crate::error::McclResult<Vec<Device>> {
     use crate::error::McclError;
     let mut devices = Vec::new();
