@@ -195,19 +195,6 @@ impl Drop for PeriphGuard<'_> {
     }
 }
 
-/// Runs `f` on the peripherals of card `wCardIndex` of the running system:
-/// `INITIAL_MOTION_ERR` before init, `PARAMETER_ERR` for a card not passed to
-/// `MCC_InitSystem`. Takes no other lock.
-pub fn with_card<R>(
-    wCardIndex: u16,
-    f: impl FnOnce(&mut Peripherals) -> crate::error::McclResult<R>,
-) -> crate::error::McclResult<R> {
-    let shared = crate::system::active()?;
-    let cd = shared.card(crate::config::CardIx::new(wCardIndex)?)?;
-    let mut p = shared.periph[cd].lock();
-    f(&mut p)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

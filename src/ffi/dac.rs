@@ -3,7 +3,7 @@
 //! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
 
 use super::{channel, guard};
-use crate::card::with_card;
+use super::with_card;
 use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;

@@ -82,6 +82,19 @@ thread_local! {
     static GROUP_STOPPED_AFTER_PANIC: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
+/// Runs `f` on the peripherals of card `wCardIndex` of the running system:
+/// `INITIAL_MOTION_ERR` before init, `PARAMETER_ERR` for a card not passed to
+/// `MCC_InitSystem`. Takes no other lock.
+pub fn with_card<R>(
+    wCardIndex: u16,
+    f: impl FnOnce(&mut crate::card::Peripherals) -> crate::error::McclResult<R>,
+) -> crate::error::McclResult<R> {
+    let shared = crate::system::active()?;
+    let cd = shared.card(crate::config::CardIx::new(wCardIndex)?)?;
+    let mut p = shared.periph[cd].lock();
+    f(&mut p)
+}
+
 /// A card index from C.
 pub fn card(w: u16) -> McclResult<CardIx> {
     CardIx::new(w)

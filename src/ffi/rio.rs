@@ -10,7 +10,7 @@
 
 use super::{finite, guard, out_ok, write_out};
 use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
-use crate::card::with_card;
+use super::with_card;
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
