@@ -1108,19 +1108,5 @@ pub fn motor_limits(
     }
 }
 
-/// Makes every group on the card of a device run on it.
-pub fn attach(shared: &crate::engine::Shared, devices: &[Device]) {
-    for d in devices {
-        shared.mark_mc3b(d.card());
-        let limits = d.limits();
-        shared.for_each_group(|g| {
-            if g.def.card.0 == d.card() {
-                g.attach_mc3b(d.link());
-                g.set_mc3b_limits(limits.map(|l| [l[0] != 0, l[2] != 0]));
-            }
-        });
-    }
-}
-
 #[cfg(test)]
 pub(crate) mod tests;
