@@ -32,6 +32,7 @@ test: build
 # Performance numbers of the engine (not a test).
 bench:
 	cargo bench --bench engine
+	cargo bench --bench realtime
 
 # Regenerate include/*.h from the Rust sources (commit the result).
 headers:

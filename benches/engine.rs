@@ -5,6 +5,8 @@
 //! * engine cost per tick with 48 groups x 8 axes all moving, and how many times faster
 //!   than real time the fast clock runs them at a 1 ms period.
 //!
+//! Interrupt delivery and tick lateness under the realtime clock: `benches/realtime.rs`.
+//!
 //! Latencies are measured over batches of 100 calls (the clock's own cost is ~20 ns, too
 //! close to one call); the median and p99 are over 2000 batches, per call.
 
@@ -155,51 +157,4 @@ fn main() {
     });
     println!("MCC_Line enqueue: median {med:.0} ns, p99 {p99:.0} ns (target < 1 us)");
     MCC_CloseSystem();
-    isr_latency();
-}
-
-static ISR_TIMES: parking_lot::Mutex<Vec<Instant>> = parking_lot::Mutex::new(Vec::new());
-
-unsafe extern "C" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
-    ISR_TIMES.lock().push(Instant::now());
-}
-
-/// Interrupt delivery under the realtime clock: a 1 ms timer at a 1 ms period, 2000
-/// calls; the lateness of call k is its time minus (time of call 0 + k ms).
-fn isr_latency() {
-    use MCCLPCI_IMP::ffi::timer::*;
-    std::env::set_var("MCCL_CLOCK", "realtime");
-    MCC_CloseAllGroups();
-    let mut one = [SYS_CARD_CONFIG {
-        wCardType: IMP_III_8_AXIS_PCI_CARD,
-        ..Default::default()
-    }; 1];
-    // SAFETY: one valid card description.
-    assert_eq!(unsafe { MCC_InitSystem(1, one.as_mut_ptr(), 1) }, NO_ERR);
-    ISR_TIMES.lock().clear();
-    assert_eq!(
-        MCCLPCI_IMP::ffi::isr::MCC_SetTMRRoutine(Some(on_timer), 0),
-        NO_ERR
-    );
-    assert_eq!(MCC_SetTimer(100_000, 0), NO_ERR); // 100000 x 10 ns = 1 ms
-    assert_eq!(MCC_EnableTimerTrigger(0), NO_ERR);
-    assert_eq!(MCC_EnableTimer(0), NO_ERR);
-    while ISR_TIMES.lock().len() < 2001 {
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-    MCC_CloseSystem();
-    let t = ISR_TIMES.lock().clone();
-    let mut late: Vec<f64> = (1..t.len())
-        .map(|k| (t[k] - t[0]).as_secs_f64() * 1e6 - k as f64 * 1000.0)
-        .collect();
-    let base = late.iter().cloned().fold(f64::MAX, f64::min);
-    for l in &mut late {
-        *l -= base;
-    }
-    println!(
-        "interrupt delivery, realtime clock, 1 ms timer: lateness median {:.0} us, p99 {:.0} us, max {:.0} us (over 2000 calls)",
-        percentile(&mut late.clone(), 0.5),
-        percentile(&mut late.clone(), 0.99),
-        percentile(&mut late, 1.0)
-    );
 }

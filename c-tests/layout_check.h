@@ -1,5 +1,6 @@
-/* layout_check.h: sizes and field offsets of the vendor structs (INTERFACE.md §3.2-3.3),
- * checked from C and C++ against the values the vendor's (Windows) layout gives. */
+/* layout_check.h: sizes and field offsets of the vendor structs (docs/vendor-interface.md,
+ * "Struct layouts"), checked from C and C++ against the values the vendor's (Windows)
+ * layout gives. */
 #include <stddef.h>
 #include "MCCL.h"
 #include "check.h"
@@ -65,7 +66,7 @@ static int check_layouts(void)
     SIZE(RIOINT, 8);
     SIZE(HSKINT, 1);
 
-    /* Typedef widths of DECISIONS.md. */
+    /* Typedef widths (docs/decisions.md, "The C ABI and the headers"). */
     SIZE(WORD, 2); SIZE(DWORD, 4); SIZE(BYTE, 1); SIZE(BOOL, 4);
     return 0;
 }

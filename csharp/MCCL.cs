@@ -1379,6 +1379,8 @@ public static class MCCL
     public static extern double MCC_GetOverSpeed(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ChangeFeedSpeed")]
     public static extern double MCC_ChangeFeedSpeed(double dfSpeed, ushort wGroupIndex = 0);
+
+    // ---- Names the IMP manuals use that the headers lack ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutineEx")]
     public static extern int MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, ushort wCardIndex = 0);
 }

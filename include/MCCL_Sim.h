@@ -15,6 +15,18 @@
 #define MCCL_SIM_OUT_SERVO 0
 #define MCCL_SIM_OUT_POS_READY 1
 #define MCCL_SIM_OUT_LED 2
+#define MCCL_SIM_CLOCK_BUCKETS 16
+
+typedef struct {
+  uint64_t ullTicks;
+  uint64_t ullMissed;
+  double dfP50Us;
+  double dfP99Us;
+  double dfP999Us;
+  double dfMaxUs;
+  double dfMeanUs;
+  uint64_t ullBucket[MCCL_SIM_CLOCK_BUCKETS];
+} MCCL_CLOCK_STATS;
 
 #ifdef __cplusplus
 extern "C" {
@@ -26,6 +38,7 @@ int MCCL_SimSetEmergencyStop(WORD wCardIndex, int nLevel);
 int MCCL_SimGetOutput(WORD wCardIndex, WORD wChannel, int nOutput, int *pnValue);
 int MCCL_SimGetMotor(WORD wCardIndex, WORD wChannel, double *pdfPosition, long long *pllPulses);
 int MCCL_SimGetTime(double *pdfMs);
+int MCCL_SimGetClockStats(MCCL_CLOCK_STATS *pstStats);
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -4,7 +4,11 @@
 //! * `realtime` (default): tick n starts at `start + n x period` on the monotonic clock
 //!   (absolute deadlines, never a relative sleep). A tick that starts a whole period or
 //!   more after its deadline is counted as missed; the engine then catches up back to
-//!   back, so virtual time never silently drifts from real time.
+//!   back, so virtual time never silently drifts from real time. The engine thread
+//!   sleeps with `clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME)` straight to the
+//!   deadline (in slices of at most [`STOP_SLICE`], so that `stop` is seen promptly),
+//!   takes no lock and makes no other system call on the way to a tick, and counts how
+//!   late each tick started ([`Clock::lateness`]).
 //! * `fast` and `stepped`: virtual time runs only while the program waits, back to back
 //!   as fast as the CPU allows, so a program always sees the same sequence of states
 //!   whatever the machine's load. `MCC_TimeDelay(ms)` runs exactly the ticks covering
@@ -14,11 +18,17 @@
 //!
 //! Virtual time is `ticks x period` in every mode.
 
+pub mod latency;
+
 use once_cell::sync::OnceCell;
 use parking_lot::{Condvar, Mutex};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::thread::ThreadId;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+/// The longest single sleep of the realtime engine thread: `stop` waits at most this
+/// long for a sleeping engine to notice it.
+pub const STOP_SLICE: Duration = Duration::from_millis(5);
 
 thread_local! {
     /// Set on every engine thread (see [`Clock::set_engine_thread`]).
@@ -76,9 +86,74 @@ pub enum Next {
     Stop,
 }
 
+/// Where the realtime clock reads the time and how it sleeps: the monotonic clock, or
+/// (tests) a scripted time.
 #[derive(Debug)]
-struct Inner {
-    missed: u64,
+enum Source {
+    Monotonic,
+    #[cfg(test)]
+    Fake(std::sync::Arc<tests::FakeTime>),
+}
+
+/// Now on the monotonic clock, ns (the clock `Instant` reads on Linux).
+pub fn monotonic_ns() -> u64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec; CLOCK_MONOTONIC always exists (the
+    // call is answered by the vDSO, no system call).
+    unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) };
+    let s = u64::try_from(ts.tv_sec).unwrap_or(0);
+    let ns = u64::try_from(ts.tv_nsec).unwrap_or(0);
+    s.saturating_mul(1_000_000_000).saturating_add(ns)
+}
+
+/// Sleeps until `ns` on the monotonic clock (absolute: a late wake-up does not push the
+/// next deadline). Returns early on a signal; the caller checks the time again.
+pub fn sleep_until_ns(ns: u64) {
+    #[cfg(any(target_os = "linux", target_os = "android", target_os = "freebsd"))]
+    {
+        let ts = libc::timespec {
+            tv_sec: libc::time_t::try_from(ns / 1_000_000_000).unwrap_or(libc::time_t::MAX),
+            tv_nsec: libc::c_long::try_from(ns % 1_000_000_000).unwrap_or(0),
+        };
+        // SAFETY: `ts` is a valid timespec; with TIMER_ABSTIME the remainder pointer is
+        // not used, so NULL is allowed. An interrupted sleep (EINTR) just returns.
+        unsafe {
+            libc::clock_nanosleep(
+                libc::CLOCK_MONOTONIC,
+                libc::TIMER_ABSTIME,
+                &ts,
+                std::ptr::null_mut(),
+            )
+        };
+    }
+    #[cfg(not(any(target_os = "linux", target_os = "android", target_os = "freebsd")))]
+    {
+        let now = monotonic_ns();
+        if ns > now {
+            std::thread::sleep(Duration::from_nanos(ns - now));
+        }
+    }
+}
+
+impl Source {
+    fn now_ns(&self) -> u64 {
+        match self {
+            Source::Monotonic => monotonic_ns(),
+            #[cfg(test)]
+            Source::Fake(f) => f.now(),
+        }
+    }
+
+    fn sleep_until(&self, ns: u64) {
+        match self {
+            Source::Monotonic => sleep_until_ns(ns),
+            #[cfg(test)]
+            Source::Fake(f) => f.sleep_until(ns),
+        }
+    }
 }
 
 /// The clock shared by the engine thread and the program's threads.
@@ -94,7 +169,14 @@ struct Inner {
 pub struct Clock {
     mode: ClockMode,
     period: Duration,
-    start: Instant,
+    /// When tick 0 was due, ns of the monotonic clock (of `source`): the creation of
+    /// the clock, moved to when the engine thread is ready by [`Clock::start_now`].
+    start_ns: AtomicU64,
+    /// `period` in ns.
+    period_ns: u64,
+    source: Source,
+    /// Realtime ticks that started a period or more after their deadline.
+    missed: AtomicU64,
     ticks: AtomicU64,
     /// Ticks may run (fast and stepped modes) until the tick count reaches this.
     run_until: AtomicU64,
@@ -102,25 +184,36 @@ pub struct Clock {
     /// The earliest tick count a waiter waits for: `tick_done` wakes waiters only then,
     /// so a long `MCC_TimeDelay` costs no context switch per tick.
     wake_at: AtomicU64,
-    inner: Mutex<Inner>,
+    inner: Mutex<()>,
     cv: Condvar,
     engine_thread: OnceCell<ThreadId>,
+    /// Realtime: how late each tick started after its deadline.
+    lateness: latency::LatencyHistogram,
 }
 
 impl Clock {
     /// A clock with the given mode and interpolation period.
     pub fn new(mode: ClockMode, period: Duration) -> Clock {
+        Clock::with_source(mode, period, Source::Monotonic)
+    }
+
+    fn with_source(mode: ClockMode, period: Duration, source: Source) -> Clock {
+        let start_ns = AtomicU64::new(source.now_ns());
         Clock {
             mode,
             period,
-            start: Instant::now(),
+            start_ns,
+            period_ns: u64::try_from(period.as_nanos()).unwrap_or(u64::MAX).max(1),
+            source,
+            missed: AtomicU64::new(0),
             ticks: AtomicU64::new(0),
             run_until: AtomicU64::new(0),
             stop: AtomicBool::new(false),
             wake_at: AtomicU64::new(u64::MAX),
-            inner: Mutex::new(Inner { missed: 0 }),
+            inner: Mutex::new(()),
             cv: Condvar::new(),
             engine_thread: OnceCell::new(),
+            lateness: latency::LatencyHistogram::new(),
         }
     }
 
@@ -150,6 +243,23 @@ impl Clock {
         Duration::from_nanos(u64::try_from(ns).unwrap_or(u64::MAX))
     }
 
+    /// When tick `n` is due under the realtime clock: start + n x period, in ns of the
+    /// monotonic clock ([`monotonic_ns`]).
+    pub fn deadline_ns(&self, n: u64) -> u64 {
+        self.start_ns
+            .load(Ordering::Relaxed)
+            .saturating_add(n.saturating_mul(self.period_ns))
+    }
+
+    /// Called by the engine thread once it is ready to tick (its real-time settings
+    /// made): the realtime deadlines count from now, so the thread's start-up is not
+    /// counted as lateness of the first ticks. No effect once a tick ran.
+    pub fn start_now(&self) {
+        if self.ticks() == 0 {
+            self.start_ns.store(self.source.now_ns(), Ordering::Relaxed);
+        }
+    }
+
     /// Virtual time in nanoseconds (exact).
     pub fn now_ns(&self) -> u128 {
         u128::from(self.ticks()) * self.period.as_nanos()
@@ -163,7 +273,12 @@ impl Clock {
 
     /// Realtime ticks that started a period or more after their deadline.
     pub fn missed(&self) -> u64 {
-        self.inner.lock().missed
+        self.missed.load(Ordering::Relaxed)
+    }
+
+    /// Realtime: how late each tick started after its deadline.
+    pub fn lateness(&self) -> &latency::LatencyHistogram {
+        &self.lateness
     }
 
     /// Called by the engine thread before each tick; blocks until the tick may run.
@@ -189,21 +304,27 @@ impl Clock {
         }
     }
 
+    /// Realtime: sleeps to the absolute deadline of the next tick on the monotonic clock,
+    /// then counts how late it woke. No lock and no system call but the sleep; the
+    /// sleep is cut into slices of at most [`STOP_SLICE`] so that `stop` is seen.
     fn wait_realtime(&self) -> Next {
-        let deadline = self.start + self.at_tick(self.ticks());
-        let mut g = self.inner.lock();
+        let deadline = self.deadline_ns(self.ticks());
+        let slice = u64::try_from(STOP_SLICE.as_nanos()).unwrap_or(u64::MAX);
         loop {
             if self.stop.load(Ordering::Acquire) {
                 return Next::Stop;
             }
-            let now = Instant::now();
+            let now = self.source.now_ns();
             if now >= deadline {
-                if now >= deadline + self.period {
-                    g.missed += 1;
+                let late = now - deadline;
+                self.lateness.record_ns(late);
+                if late >= self.period_ns {
+                    self.missed.fetch_add(1, Ordering::Relaxed);
                 }
                 return Next::Tick;
             }
-            let _ = self.cv.wait_until(&mut g, deadline);
+            self.source
+                .sleep_until(deadline.min(now.saturating_add(slice)));
         }
     }
 
@@ -315,6 +436,7 @@ impl Clock {
 mod tests {
     use super::*;
     use std::sync::Arc;
+    use std::time::Instant;
 
     fn spawn_engine(clock: Arc<Clock>) -> std::thread::JoinHandle<u64> {
         std::thread::spawn(move || {
@@ -329,6 +451,150 @@ mod tests {
                 }
             }
         })
+    }
+
+    /// A scripted monotonic clock: time moves only when the test advances it or the
+    /// engine sleeps; a sleep wakes `overshoot` ns after the time asked (a kernel's
+    /// wake-up latency).
+    #[derive(Debug)]
+    pub(super) struct FakeTime {
+        now: AtomicU64,
+        overshoot: u64,
+        sleeps: AtomicU64,
+    }
+
+    impl FakeTime {
+        fn new(start: u64, overshoot: u64) -> FakeTime {
+            FakeTime {
+                now: AtomicU64::new(start),
+                overshoot,
+                sleeps: AtomicU64::new(0),
+            }
+        }
+
+        pub(super) fn now(&self) -> u64 {
+            self.now.load(Ordering::SeqCst)
+        }
+
+        pub(super) fn sleep_until(&self, ns: u64) {
+            self.sleeps.fetch_add(1, Ordering::SeqCst);
+            self.now.fetch_max(ns + self.overshoot, Ordering::SeqCst);
+        }
+
+        fn advance(&self, ns: u64) {
+            self.now.fetch_add(ns, Ordering::SeqCst);
+        }
+    }
+
+    #[test]
+    fn realtime_never_drifts_over_ten_minutes_and_catches_up_missed_ticks() {
+        // 10 minutes at 1 ms: 600,000 ticks. Every wake-up is 50 us late; a tick's work
+        // takes 100 us, except at n % 10,000 == 5,000 (60 times) where it stalls 5.5 ms.
+        // After a stall in tick k (deadline D): it ends at D + 50 + 5500 us; ticks k+1..
+        // k+4 (deadlines D + 1, 2, 3, 4 ms) start back to back 4550, 3650, 2750, 1850 us
+        // late: missed (a period or more); k+5 starts 950 us late, k+6 at D + 6050 us
+        // (50 late, no sleep), k+7 sleeps again. So 60 x 4 = 240 missed ticks, 60 x 5 =
+        // 300 ticks later than 50 us, the largest 4550 us.
+        const START: u64 = 1_000_000_000;
+        let fake = Arc::new(FakeTime::new(START, 50_000));
+        let clock = Clock::with_source(
+            ClockMode::Realtime,
+            Duration::from_millis(1),
+            Source::Fake(fake.clone()),
+        );
+        for n in 0..600_000u64 {
+            assert_eq!(clock.wait_next(), Next::Tick);
+            assert_eq!(clock.ticks(), n);
+            fake.advance(if n % 10_000 == 5_000 {
+                5_500_000
+            } else {
+                100_000
+            });
+            clock.tick_done();
+        }
+        // The last tick (599,999, deadline 599.999 s) started 50 us late and took 100 us:
+        // real time 599.999150 s, virtual time 600 s; a relative sleep would be
+        // 600,000 x 150 us = 90 s behind by now.
+        assert_eq!(fake.now() - START, 599_999_150_000);
+        assert_eq!(clock.now(), Duration::from_secs(600));
+        assert_eq!(clock.missed(), 240);
+        let h = clock.lateness();
+        assert_eq!(h.count(), 600_000);
+        assert_eq!(h.count_between(0, 64), 600_000 - 300);
+        assert_eq!(h.quantile_us(0.5), 50.0);
+        assert_eq!(h.quantile_us(0.999), 50.0);
+        assert_eq!(h.max_us(), 4550.0);
+        assert_eq!(h.count_between(4096, 8192), 60, "the 4550 us ticks");
+        // One sleep per tick that did not start late: 600,000 - 60 x 6, and tick 0 (due
+        // at the start: 0 us late, no sleep).
+        assert_eq!(fake.sleeps.load(Ordering::SeqCst), 600_000 - 361);
+    }
+
+    #[test]
+    fn realtime_deadlines_count_from_when_the_engine_is_ready() {
+        // The clock is made at 1 s; the engine thread is ready 30 ms later (a slow thread
+        // start on a loaded host). Counted from the clock's creation, tick n would start
+        // at 30 ms + n x 100 us (back to back, each taking 100 us), 30 - 0.9 n ms late:
+        // ticks 0..=32 missed (33; seen failing so without `start_now`). Counted from
+        // `start_now`, every tick starts on time.
+        let fake = Arc::new(FakeTime::new(1_000_000_000, 0));
+        let clock = Clock::with_source(
+            ClockMode::Realtime,
+            Duration::from_millis(1),
+            Source::Fake(fake.clone()),
+        );
+        fake.advance(30_000_000);
+        clock.start_now();
+        for _ in 0..100 {
+            assert_eq!(clock.wait_next(), Next::Tick);
+            fake.advance(100_000);
+            clock.tick_done();
+        }
+        assert_eq!(clock.missed(), 0);
+        assert_eq!(clock.lateness().max_us(), 0.0);
+        // Tick 99 was due at 1.030 s + 99 ms and took 100 us.
+        assert_eq!(fake.now(), 1_129_100_000);
+        // Once ticks ran, start_now changes nothing.
+        fake.advance(5_000_000);
+        clock.start_now();
+        assert_eq!(clock.deadline_ns(100), 1_130_000_000);
+    }
+
+    #[test]
+    fn realtime_sleeps_in_slices_so_stop_is_seen_promptly() {
+        // A 10 s period: after tick 0 (due at the start) the engine sleeps towards 10 s
+        // in slices of STOP_SLICE (5 ms), so a stop is seen within one slice, not 10 s.
+        let fake = Arc::new(FakeTime::new(0, 0));
+        let clock = Clock::with_source(
+            ClockMode::Realtime,
+            Duration::from_secs(10),
+            Source::Fake(fake.clone()),
+        );
+        assert_eq!(clock.wait_next(), Next::Tick);
+        clock.tick_done();
+        // Scripted: 10 s / 5 ms = 2000 slices reach the deadline of tick 1.
+        assert_eq!(clock.wait_next(), Next::Tick);
+        assert_eq!(fake.sleeps.load(Ordering::SeqCst), 2000);
+        assert_eq!(fake.now(), 10_000_000_000);
+        clock.tick_done();
+        // Real time: the engine thread must return Stop within a few slices.
+        let clock = Arc::new(Clock::new(ClockMode::Realtime, Duration::from_secs(10)));
+        let h = spawn_engine(clock.clone());
+        let t = Instant::now();
+        while clock.ticks() < 1 {
+            assert!(t.elapsed() < Duration::from_secs(10), "tick 0 never ran");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        let t = Instant::now();
+        clock.stop();
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || tx.send(h.join().unwrap()).unwrap());
+        let n = rx
+            .recv_timeout(Duration::from_secs(5))
+            .expect("the realtime engine did not see stop within 5 s (it sleeps in 5 ms slices)");
+        assert_eq!(n, 1);
+        // Generous for a loaded 2-core host; without slices it would take ~10 s.
+        assert!(t.elapsed() < Duration::from_secs(2), "{:?}", t.elapsed());
     }
 
     #[test]

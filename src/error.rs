@@ -1,4 +1,4 @@
-//! Errors of the core and their vendor return codes (INTERFACE.md §2.3).
+//! Errors of the core and their vendor return codes (docs/vendor-interface.md, "Return codes").
 
 use crate::vendor::consts as c;
 

@@ -151,10 +151,6 @@ impl Pending {
     }
 }
 
-/// The interrupts one tick collected: `(card, causes)` for each card with a cause, in
-/// card order.
-pub type Collected = Vec<(usize, Pending)>;
-
 /// The delivery order of the kinds.
 pub const ORDER: [Kind; KINDS] = [
     Kind::Lio,

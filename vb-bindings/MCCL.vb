@@ -1632,6 +1632,8 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ChangeFeedSpeed")>
     Public Function MCC_ChangeFeedSpeed(ByVal dfSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
     End Function
+
+    ' ---- Names the IMP manuals use that the headers lack ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIORoutineEx")>
     Public Function MCC_SetLIORoutineEx(ByVal pfnLIORoutine As LIOISR, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function

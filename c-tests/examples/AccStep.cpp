@@ -3,7 +3,8 @@
 // MCC_SetPtPAccTime/MCC_SetPtPDecTime change them; "acc time = required speed / required
 // acceleration".
 //
-// Expected durations (DECISIONS.md: a move of length L reaching F lasts L/F + (Ta+Td)/2):
+// Expected durations (docs/decisions.md, "Motion conventions": a move of length L
+// reaching F lasts L/F + (Ta+Td)/2):
 //   line 10 UU at 20 UU/s, defaults 300/300 ms:            0.5 + 0.3  = 800 ms
 //   same with acceleration 200 UU/s^2 -> Ta = 20/200 = 100 ms, Td = 300 ms:
 //                                                           0.5 + 0.2  = 700 ms

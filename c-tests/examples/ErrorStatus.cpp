@@ -4,7 +4,8 @@
 #include "MotionSys.h"
 #include "MCCL_Sim.h"
 
-// The messages of the vendor's test program for the error codes (INTERFACE.md §2.4).
+// The messages of the vendor's test program for the error codes (docs/vendor-interface.md,
+// "Error records").
 static const char *ErrorText(int nCode)
 {
     if (nCode == 0) return "No error";

@@ -1,8 +1,9 @@
 // Helical.cpp: examples manual §11 (helical motion with the circle in the X-Y plane):
 // MCC_HelicalXY_Z(5, 5, 2, 360) from the current position.
 //
-// Conventions (DECISIONS.md): the third argument is the pitch (Z travel per full turn),
-// Z moves pitch x theta / 360 in total, theta > 0 is counter-clockwise seen from +Z.
+// Conventions (docs/decisions.md, "Motion conventions"): the third argument is the
+// pitch (Z travel per full turn), Z moves pitch x theta / 360 in total, theta > 0 is
+// counter-clockwise seen from +Z.
 //   Start (10, 5, 0): radius 5 about (5, 5), angle 0.
 //   MCC_HelicalXY_Z(5, 5, 2, 360): one CCW turn, Z + 2 -> ends at (10, 5, 2).
 //     Path length counts X, Y and Z: sqrt((2 pi 5)^2 + 2^2) = 31.4795 UU;

@@ -67,7 +67,7 @@ int main()
     int nRet;
     WORD wCardType = IMP_III_8_AXIS_PCI_CARD;
 
-    // Before MCC_InitSystem nothing that needs the card works (DECISIONS.md).
+    // Before MCC_InitSystem nothing that needs the card works (docs/decisions.md, "Return values").
     CHECK_EQ(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR);
     CHECK_EQ(MCC_CloseSystem(), INITIAL_MOTION_ERR);
 

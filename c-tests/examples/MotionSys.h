@@ -8,7 +8,7 @@
 //   interpolation time 1 ms, so MCC_TimeDelay(1) is exactly one tick of virtual time
 //   acc/dec time 300 ms, type 'T' (the library defaults, user manual §2.6.2)
 //
-// Expected times come from DECISIONS.md ("Motion conventions the manuals leave open"):
+// Expected times come from docs/decisions.md ("Motion conventions the manuals leave open"):
 // an unblended move of length L that reaches the feed speed F lasts L/F + (Ta+Td)/2.
 //
 // Virtual-time assertions. With MCCL_CLOCK=fast the engine runs ahead on its own while

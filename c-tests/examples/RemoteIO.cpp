@@ -7,7 +7,8 @@
 // default shorter than a tick). Then the calls the manuals do not document: the vendor
 // test's MCC_SetRIOTransError(5, 0, 0) and the ARIO update rate, clock divider and
 // node-to-node delay (README "Remote I/O" for the cycle formula).
-// Signatures are the B/C ones with wSet (DECISIONS.md); the manual's A-form calls
+// Signatures are the B/C ones with wSet (docs/decisions.md, "Vendor interface"); the
+// manual's A-form calls
 // MCC_EnableARIOSlaveControl(RIO_SLAVE0, CARD_INDEX) and
 // MCC_GetARIOTransStatus(&w, CARD_INDEX) compile to the same calls here for slave 0 of
 // card 0 (wSet = 0 and the C++ defaults). The slave status is a WORD in B/C (the manual's

@@ -2,8 +2,9 @@
 // command goes from its cruise speed straight into the next command's cruise speed
 // without stopping; MCC_CheckBlend returns 0 when blending is on, 1 when it is off.
 //
-// Convention (DECISIONS.md): the next command starts when the previous one starts to
-// decelerate, and the two velocity profiles add. Expected numbers (Ta = Td = 300 ms):
+// Convention (docs/decisions.md, "Motion conventions"): the next command starts when
+// the previous one starts to decelerate, and the two velocity profiles add. Expected
+// numbers (Ta = Td = 300 ms):
 //   off: Line (10,0) then (10,10) at 10 UU/s: 1.3 + 1.3 s = 2600 ms; the path passes
 //        exactly through the corner (10, 0), reached at 1300 ms
 //   on:  Line (0,10) then (0,0) from (10,10) at 10 UU/s: the second starts at 1.0 s:

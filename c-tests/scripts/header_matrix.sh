@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The header contract (DECISIONS.md): the generated headers compile as C99/C11 and
-# C++98/11/17/20 with gcc and clang, -Wall -Wextra -Werror.
+# The header contract (docs/decisions.md, "The C ABI and the headers"): the generated
+# headers compile as C99/C11 and C++98/11/17/20 with gcc and clang, -Wall -Wextra -Werror.
 set -u
 src=$(cd "$(dirname "$0")/.." && pwd)
 inc="$src/../include"

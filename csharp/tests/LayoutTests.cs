@@ -1,5 +1,6 @@
 // Struct layouts as the .NET marshaller sees them, against the C sizes of the vendor
-// (Windows) layout, which libMCCLPCI_IMP keeps on Linux (INTERFACE.md sections 3.2-3.3).
+// (Windows) layout, which libMCCLPCI_IMP keeps on Linux (docs/vendor-interface.md,
+// "Struct layouts").
 using System;
 using System.Collections.Generic;
 using System.Linq;
@@ -7,7 +8,7 @@ using System.Runtime.InteropServices;
 
 public static class LayoutTests
 {
-    // Written from INTERFACE.md, not from the generator.
+    // Written from docs/vendor-interface.md, not from the generator.
     static readonly Dictionary<Type, int> Sizes = new Dictionary<Type, int>
     {
         { typeof(SYS_MAC_PARAM), 72 },

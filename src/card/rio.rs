@@ -1,4 +1,4 @@
-//! Remote I/O (user manual §2.14; examples manual §33–34; INTERFACE.md §2.7).
+//! Remote I/O (user manual §2.14; examples manual §33–34; docs/vendor-interface.md).
 //!
 //! Each card has two sets (`RIO_SET0`, `RIO_SET1`) of each master:
 //!
@@ -293,7 +293,7 @@ impl<const N: usize> Set<N> {
     }
 }
 
-/// When the ARIO sets of a card transfer (INTERFACE.md: `MCC_SetARIOUpdateRate`,
+/// When the ARIO sets of a card transfer (the vendor headers: `MCC_SetARIOUpdateRate`,
 /// `MCC_SetARIOClockDivider` per set, `MCC_SetARIONode2NodeDelay` per card; the manuals
 /// say nothing more). A cycle with `n` transmitting slaves (at least 1) takes
 /// `n × (32 × divider + delay) × 10 ns`; a set with an update rate waits at least

@@ -252,7 +252,7 @@ pub struct Ctx<'a> {
 
 impl Ctx<'_> {
     /// Resolves a target: absolute, or relative to the end of the queue; axes outside
-    /// `mask` keep their position (DECISIONS.md).
+    /// `mask` keep their position (docs/decisions.md, "Axis masks").
     pub fn resolve(&self, args: &Axes, mask: u32) -> Axes {
         std::array::from_fn(|i| {
             if mask & (1 << i) == 0 {

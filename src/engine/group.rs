@@ -7,7 +7,7 @@
 //! changes smoothly and position never jumps. The command position is
 //! `base + Σ (command.sample(τ) − command.start)` over the running commands; with
 //! blending on, the next general motion starts when the running one begins to
-//! decelerate, so two commands run at once and their displacements add (DECISIONS.md).
+//! decelerate, so two commands run at once and their displacements add (docs/decisions.md).
 //! A command that ends inside a tick hands the rest of the tick to the next one, so
 //! consecutive commands keep exact timing. Whenever the last running command ends, the
 //! position becomes its exact planned end: nothing accumulates over millions of moves.
@@ -27,7 +27,7 @@ pub use external::External;
 /// Commands a queue grows by at least when it is full (doubling from there on).
 const QUEUE_MIN_GROWTH: usize = 16;
 
-/// Error record of software over-travel, + axis (DECISIONS.md).
+/// Error record of software over-travel, + axis (docs/vendor-interface.md).
 pub const ERR_OVER_TRAVEL: i32 = 0xF301;
 
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
@@ -219,7 +219,7 @@ impl InPosWait {
     }
 }
 
-/// Error record of a failed in-position check (DECISIONS.md).
+/// Error record of a failed in-position check (docs/vendor-interface.md).
 pub const ERR_IN_POSITION: i32 = 0xF501;
 
 impl GroupState {
@@ -957,7 +957,7 @@ impl GroupState {
     }
 
     /// Blending: when the newest general motion has reached its deceleration and the next
-    /// queued motion is general too, starts it (DECISIONS.md). Returns whether it did.
+    /// queued motion is general too, starts it (docs/decisions.md). Returns whether it did.
     fn try_blend(&mut self) -> bool {
         if !self.blend_on || !self.may_start() {
             return false;

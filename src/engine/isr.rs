@@ -27,8 +27,52 @@
 //! A routine unregistered by another thread while a tick delivers may run once more.
 
 use super::Shared;
-pub use crate::interrupt::{Collected, Interrupt, Kind, Pending, KINDS, ORDER};
+pub use crate::interrupt::{Interrupt, Kind, Pending, KINDS, ORDER};
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The interrupts one tick collected: `(card, causes)` for each card with a cause, in
+/// card order. Fixed capacity (one entry per card), so collecting them allocates nothing
+/// on the tick's path.
+#[derive(Debug, Clone)]
+pub struct Collected {
+    len: usize,
+    items: [(usize, Pending); crate::config::CARDS],
+}
+
+impl Default for Collected {
+    fn default() -> Self {
+        Collected::new()
+    }
+}
+
+impl Collected {
+    /// Nothing collected.
+    pub fn new() -> Collected {
+        Collected {
+            len: 0,
+            items: [(0, Pending::default()); crate::config::CARDS],
+        }
+    }
+
+    /// Adds the causes of `card` (one entry per card: beyond [`crate::config::CARDS`]
+    /// entries the rest is dropped, which cannot happen as cards are at most that many).
+    pub fn push(&mut self, card: usize, p: Pending) {
+        if let Some(slot) = self.items.get_mut(self.len) {
+            *slot = (card, p);
+            self.len += 1;
+        }
+    }
+
+    /// The entries, in the order pushed.
+    pub fn as_slice(&self) -> &[(usize, Pending)] {
+        &self.items[..self.len]
+    }
+
+    /// Whether nothing was collected.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
 
 /// The registered routines: per card, one C function pointer per [`Kind`] (0 = none).
 #[derive(Debug)]
@@ -73,7 +117,7 @@ impl IsrTable {
     /// documentation. Call with no lock held. Stops when the clock is stopped (a routine
     /// closed the system).
     pub fn deliver(&self, collected: &Collected, clock: &crate::clock::Clock) {
-        for (card, pending) in collected {
+        for (card, pending) in collected.as_slice() {
             for kind in ORDER {
                 let bytes = pending.bytes(kind);
                 if bytes.iter().all(|&b| b == 0) {
@@ -135,7 +179,7 @@ impl Shared {
                 self.reset_card(card);
             }
             if let Some(pending) = pending {
-                out.push((card, pending));
+                out.push(card, pending);
             }
         }
         out
@@ -157,6 +201,26 @@ impl Shared {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn collected_holds_one_entry_per_card_in_order() {
+        let mut c = Collected::new();
+        assert!(c.is_empty());
+        let mut p = Pending::default();
+        p.raise(Interrupt::Timer(1));
+        for card in [3, 0, 11] {
+            c.push(card, p);
+        }
+        let cards: Vec<usize> = c.as_slice().iter().map(|(k, _)| *k).collect();
+        assert_eq!(cards, [3, 0, 11], "in the order pushed");
+        assert_eq!(c.as_slice()[1].1.tmr, [1]);
+        // 12 cards at most (MAX_CARD_NUM): a 13th entry is dropped, nothing panics.
+        for card in 0..20 {
+            c.push(card, p);
+        }
+        assert_eq!(c.as_slice().len(), crate::config::CARDS);
+        assert_eq!(c.as_slice()[11].0, 8);
+    }
 
     #[test]
     fn pending_fields_land_on_the_struct_bytes() {

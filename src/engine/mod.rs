@@ -12,6 +12,7 @@ pub mod homing;
 pub mod isr;
 pub mod safety;
 pub mod snapshot;
+pub mod thread;
 pub mod trace;
 
 use crate::clock::{Clock, ClockMode, Next};
@@ -822,12 +823,20 @@ impl Engine {
         });
         shared.for_each_group(|_| {});
         let s2 = shared.clone();
+        // The thread says when it is ready to tick (its real-time settings made, the
+        // clock's deadlines counting from then); under the realtime clock this waits for
+        // it, so tick 0 is due about when MCC_InitSystem returns.
+        let (ready_tx, ready_rx) = std::sync::mpsc::sync_channel::<()>(1);
         let thread = std::thread::Builder::new()
             .name("mccl-engine".into())
             .spawn(move || {
                 THIS_ENGINE.with(|e| *e.borrow_mut() = Some(Arc::downgrade(&s2)));
-                run(&s2)
+                run(&s2, ready_tx)
             })?;
+        if mode == ClockMode::Realtime {
+            // Err only if the thread ended without a word (it cannot before its loop).
+            let _ = ready_rx.recv();
+        }
         let thread_id = thread.thread().id();
         Ok(Engine {
             shared,
@@ -882,8 +891,17 @@ impl Drop for Engine {
     }
 }
 
-fn run(shared: &Shared) {
+fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
     shared.clock.set_engine_thread();
+    if shared.clock.mode() == ClockMode::Realtime {
+        // Timer slack and the optional MCCL_RT_* settings (never fatal).
+        thread::setup_current_thread(false);
+    }
+    // Realtime deadlines count from here: a thread that was slow to start (a loaded
+    // host, mlockall) does not begin with a burst of late ticks.
+    shared.clock.start_now();
+    let _ = ready.send(());
+    drop(ready);
     loop {
         match shared.clock.wait_next() {
             Next::Stop => return,

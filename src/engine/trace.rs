@@ -229,7 +229,7 @@ impl Trace {
         collected: &isr::Collected,
         table: &isr::IsrTable,
     ) {
-        for (card, pending) in collected {
+        for (card, pending) in collected.as_slice() {
             for kind in isr::ORDER {
                 let bytes = pending.bytes(kind);
                 if bytes.iter().all(|&b| b == 0) {

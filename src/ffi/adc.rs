@@ -1,4 +1,4 @@
-//! A/D converter (user manual §2.12; examples manual §37–38; INTERFACE.md "A/D
+//! A/D converter (user manual §2.12; examples manual §37–38; vendor header "A/D
 //! Converter Control"). Behaviour in `crate::card::adc`; inputs come from the DAC
 //! channel of the same number unless set otherwise from Rust
 //! (`Peripherals::set_adc_source`). The routine is registered with `MCC_SetADCRoutine`.

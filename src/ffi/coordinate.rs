@@ -1,4 +1,4 @@
-//! Coordinate management (user manual §2.6.1, §2.6.5; INTERFACE.md "Coordinate
+//! Coordinate management (user manual §2.6.1, §2.6.5; vendor header "Coordinate
 //! Management").
 
 use super::{guard, outs8, with_group, write8};

@@ -1,4 +1,4 @@
-//! D/A converter (user manual §2.11; examples manual §35–36; INTERFACE.md "D/A Converter
+//! D/A converter (user manual §2.11; examples manual §35–36; vendor header "D/A Converter
 //! Control"). A channel whose mechanism parameters in effect say `OCM_VOLTAGE` belongs
 //! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
 

@@ -1,4 +1,4 @@
-//! Encoder counters (user manual §2.10.1; INTERFACE.md "Encoder Control"). The simulated
+//! Encoder counters (user manual §2.10.1; vendor header "Encoder Control"). The simulated
 //! encoder follows the motor: one count per pulse at x4, half at x2, a quarter at x1,
 //! reversed by A/B swap or a single inverted phase, scaled by `MCC_SetENCGearRate`.
 

@@ -1,4 +1,4 @@
-//! Go home (user manual §2.8; INTERFACE.md "Go Home"): `MCC_Home`, `MCC_GetGoHomeStatus`,
+//! Go home (user manual §2.8; vendor header "Go Home"): `MCC_Home`, `MCC_GetGoHomeStatus`,
 //! `MCC_AbortGoHome`. The parameters come from `MCC_SetHomeConfig` (src/ffi/system.rs);
 //! the homing itself runs on the engine (src/engine/homing.rs).
 

@@ -1,5 +1,5 @@
 //! Interrupt routine registration (`MCC_Set*Routine`; user manual §2.9.3, §2.10.3,
-//! §2.12.4, §2.13.1; INTERFACE.md §3.3–3.4). One routine per kind and card; NULL
+//! §2.12.4, §2.13.1; docs/vendor-interface.md). One routine per kind and card; NULL
 //! unregisters. Routines are called after each tick on the engine thread with no lock
 //! held, in the order documented in `crate::engine::isr`; they may call any `MCC_*`
 //! function. The registrations live as long as the running system (`MCC_CloseSystem`

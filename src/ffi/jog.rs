@@ -1,4 +1,4 @@
-//! Jog motion (user manual ZH §2.6.2 III; INTERFACE.md "Jog Motion"). Every jog is a
+//! Jog motion (user manual ZH §2.6.2 III; vendor header "Jog Motion"). Every jog is a
 //! queued point-to-point move of one axis and requires the group to be stopped
 //! (`COMMAND_NOTACCEPTED_ERR` otherwise).
 

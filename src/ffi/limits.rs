@@ -1,5 +1,5 @@
 //! Software over-travel check and hardware limit switch check (user manual §2.4.1, §2.6.1;
-//! examples manual §19; INTERFACE.md "Software Over Travel Check & Hardware Limit Switch
+//! examples manual §19; vendor header "Software Over Travel Check & Hardware Limit Switch
 //! Check").
 
 use super::{card, channel, guard, out_ok, outs8, update_group, with_group, write8, write_out};

@@ -1,4 +1,4 @@
-//! Local I/O outputs (user manual §2.9.2; INTERFACE.md "Local I/O Control"): the servo-on
+//! Local I/O outputs (user manual §2.9.2; vendor header "Local I/O Control"): the servo-on
 //! signal of each channel, the card's position-ready signal and the 8 LEDs, and their
 //! trigger-out by encoder compares. The virtual card keeps the state of each output; the
 //! simulated machine reads it.

@@ -230,7 +230,7 @@ pub fn queue_curve(
     })
 }
 
-/// Error record of a bad arc or circle command (DECISIONS.md).
+/// Error record of a bad arc or circle command (docs/vendor-interface.md).
 pub const ERR_BAD_ARC: i32 = 0xF104;
 
 /// An axis named by the vendor's `char cAxis`: 0..7, or the letters X Y Z U V W A B.

@@ -1,5 +1,5 @@
 //! General motion: line, arc, circle and helix commands and their settings (user manual
-//! §2.6.2; INTERFACE.md "General Motions"), plus the obsolete forms whose meaning is clear.
+//! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
 use super::{
     finite, finite8, guard, outs8, queue, queue_curve, shape, shape_char, with_group, write8,

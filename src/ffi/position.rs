@@ -1,4 +1,4 @@
-//! Position control (user manual §2.6.4, §2.7; INTERFACE.md "Position Control"): loop
+//! Position control (user manual §2.6.4, §2.7; vendor header "Position Control"): loop
 //! gains (kept and reported: the simulated plant is set by the configuration), error
 //! counters, pulse speed and acceleration limits, tracking error, compensation.
 

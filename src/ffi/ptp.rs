@@ -1,4 +1,4 @@
-//! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; INTERFACE.md
+//! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; vendor header
 //! "Point-to-Point Motion").
 
 use super::{guard, outs8, shape, shape_char, with_group, write8};

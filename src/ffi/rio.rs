@@ -1,4 +1,4 @@
-//! Remote I/O (user manual §2.14; examples manual §33–34; INTERFACE.md "Remote
+//! Remote I/O (user manual §2.14; examples manual §33–34; vendor header "Remote
 //! Input/Output Control", the B/C signatures with `wSet`). Behaviour in
 //! `crate::card::rio`: 2 sets; RIO has 4 ports (one slave each), ARIO 32 slaves (the
 //! `wPort` argument names the slave); RIO data moves once per tick, ARIO data once per

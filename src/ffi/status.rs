@@ -1,4 +1,4 @@
-//! Motion status (user manual §2.6.5; INTERFACE.md "Motion Status").
+//! Motion status (user manual §2.6.5; vendor header "Motion Status").
 
 use super::guard;
 use crate::system;
@@ -158,7 +158,7 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
     })
 }
 
-/// The group's error record (0 when none; codes of DECISIONS.md).
+/// The group's error record (0 when none; codes in docs/vendor-interface.md).
 #[no_mangle]
 pub extern "C" fn MCC_GetErrorCode(wGroupIndex: WORD) -> c_int {
     guard(|| Ok(system::active()?.snapshot(wGroupIndex)?.error))

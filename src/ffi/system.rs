@@ -1,4 +1,4 @@
-//! System management (user manual §2.4–2.5; INTERFACE.md "System Management").
+//! System management (user manual §2.4–2.5; vendor header "System Management").
 
 use super::{card, channel, guard, out_ok, read_in, write_out};
 use crate::config::{self, GroupDef};

@@ -1,5 +1,5 @@
 //! Tests of the C entry points called as C would call them: every bad index, NULL pointer
-//! and NaN gets the vendor code of DECISIONS.md and changes nothing.
+//! and NaN gets the vendor code (docs/decisions.md, "Return values") and changes nothing.
 
 use super::status::*;
 use super::system::*;

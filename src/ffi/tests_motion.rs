@@ -1,5 +1,5 @@
 //! Motion through the C entry points on the stepped clock, against closed-form values
-//! (DECISIONS.md: an unblended move of length L reaching feed F lasts L/F + (Ta+Td)/2).
+//! (docs/decisions.md: an unblended move of length L reaching feed F lasts L/F + (Ta+Td)/2).
 
 use super::coordinate::*;
 use super::motion::*;

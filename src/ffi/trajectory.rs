@@ -1,4 +1,4 @@
-//! Trajectory planning controls (user manual §2.6.3; INTERFACE.md "Trajectory Planning").
+//! Trajectory planning controls (user manual §2.6.3; vendor header "Trajectory Planning").
 
 use super::guard;
 use crate::system;

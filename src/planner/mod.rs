@@ -5,7 +5,7 @@
 //! globals, no FFI. Units are user units (UU) for positions, seconds for times
 //! and UU/s for speeds (the FFI layer converts the vendor's milliseconds).
 //!
-//! Conventions (see `DECISIONS.md`, "Motion conventions the manuals leave open"):
+//! Conventions (see `docs/decisions.md`, "Motion conventions the manuals leave open"):
 //! * Acc/dec by time: the set time `Ta` is the time from 0 to the feed `F`.
 //!   [`Shape::T`] has constant acceleration `F/Ta`; [`Shape::S`] is jerk-limited
 //!   with no constant-acceleration phase (peak `2F/Ta` at `Ta/2`). Both cover

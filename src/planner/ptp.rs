@@ -2,7 +2,7 @@
 
 use super::{check_all_finite, Axes, PlanError, Profile, Shape, NUM_AXES};
 
-/// Point-to-point speed of one axis (DECISIONS.md / user manual §2.6.2 II):
+/// Point-to-point speed of one axis (docs/decisions.md / user manual §2.6.2 II):
 /// maximum safe speed `(rpm/60)·pitch/gear_ratio` times `ratio_percent/100`.
 ///
 /// Pure formula: the caller validates its inputs (a zero gear ratio gives inf).

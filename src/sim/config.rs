@@ -128,7 +128,7 @@ impl ChannelSim {
     }
 
     /// The index pulse spacing in motor pulses (= encoder counts at x4): the configured
-    /// one, else one pulse per motor turn, `ppr` (DECISIONS.md: dwPPR counts per motor
+    /// one, else one pulse per motor turn, `ppr` (docs/decisions.md: dwPPR counts per motor
     /// turn at x4; at least 1).
     pub fn index_spacing_or(&self, ppr: u32) -> u32 {
         self.index_spacing.unwrap_or(ppr).max(1)

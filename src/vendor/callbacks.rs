@@ -1,4 +1,4 @@
-//! ISR callback types of MCCL.h (INTERFACE.md §3.4). `NULL` is `None`.
+//! ISR callback types of MCCL.h (docs/vendor-interface.md, "Callback types"). `NULL` is `None`.
 
 use super::structs::{ADCINT, ENCINT, HSKINT, LIOINT, PCLINT, RIOINT, TMRINT};
 

@@ -1,4 +1,4 @@
-//! Constants of MCCL.h with the IMP-3 values (INTERFACE.md §2, DECISIONS.md).
+//! Constants of MCCL.h with the IMP-3 values (docs/vendor-interface.md, docs/decisions.md).
 #![allow(missing_docs)]
 
 use super::{DWORD, WORD};
@@ -212,7 +212,8 @@ pub const LIO_SOURCE_COMP5: WORD = 0x20;
 pub const LIO_SOURCE_COMP6: WORD = 0x40;
 pub const LIO_SOURCE_COMP7: WORD = 0x80;
 
-/// `ENC_COMP_CH0..7`: used by the examples manual, defined nowhere public (DECISIONS.md: 0..7).
+/// `ENC_COMP_CH0..7`: used by the examples manual, defined nowhere public; 0..7
+/// (docs/decisions.md, "Vendor interface").
 pub const ENC_COMP_CH0: WORD = 0;
 pub const ENC_COMP_CH1: WORD = 1;
 pub const ENC_COMP_CH2: WORD = 2;

@@ -1,5 +1,5 @@
 //! The vendor interface as data: typedefs, constants, struct layouts and callback types of
-//! `MCCL.h` (INTERFACE.md §2–3, IMP values per DECISIONS.md). cbindgen reads these to
+//! `MCCL.h` (docs/vendor-interface.md; IMP values per docs/decisions.md). cbindgen reads these to
 //! generate `include/MCCL.h`.
 
 pub mod callbacks;

@@ -1,4 +1,4 @@
-//! Struct layouts of MCCL.h (INTERFACE.md §3.2–3.3), field order and sizes exactly as the
+//! Struct layouts of MCCL.h (docs/vendor-interface.md), field order and sizes exactly as the
 //! vendor's (DWORD is 32-bit, default alignment, no packing).
 #![allow(missing_docs)]
 

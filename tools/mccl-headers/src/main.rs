@@ -228,7 +228,7 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
     // constant must be there.
     let mut seen = HashSet::new();
     let mut kept = String::new();
-    for line in raw.decls.lines() {
+    for line in without_sim_structs(&raw.decls).lines() {
         if let Some(rest) = line.strip_prefix("#define ") {
             let name = rest.split_whitespace().next().unwrap_or_default();
             if !vendor_consts.contains(name) {
@@ -268,6 +268,38 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
         "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
+}
+
+/// The `typedef struct { ... } MCCL_*;` blocks of cbindgen's output (the simulation
+/// extension's structs, which go into MCCL_Sim.h), each as its lines.
+fn sim_structs(decls: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut block: Option<String> = None;
+    for line in decls.lines() {
+        if line.starts_with("typedef struct") && line.ends_with('{') {
+            block = Some(String::new());
+        }
+        if let Some(b) = block.as_mut() {
+            b.push_str(line);
+            b.push('\n');
+            if line.starts_with('}') {
+                if line.starts_with("} MCCL_") {
+                    out.push(b.clone());
+                }
+                block = None;
+            }
+        }
+    }
+    out
+}
+
+/// `decls` without the blocks of [`sim_structs`].
+fn without_sim_structs(decls: &str) -> String {
+    let mut text = decls.to_string();
+    for b in sim_structs(decls) {
+        text = text.replace(&b, "");
+    }
+    text
 }
 
 /// `typedef struct X X;`
@@ -393,6 +425,10 @@ fn mccl_sim_h(raw: &Raw) -> String {
             out.push_str(&negative_define(line).unwrap_or_else(|| line.to_string()));
             out.push('\n');
         }
+    }
+    for b in sim_structs(&raw.decls) {
+        out.push('\n');
+        out.push_str(&b);
     }
     out.push_str("\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
     for p in raw.protos.iter().filter(|p| p.name.starts_with("MCCL_Sim")) {

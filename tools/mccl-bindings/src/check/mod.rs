@@ -15,7 +15,7 @@
 use crate::model::{CType, Header, WIN};
 use std::collections::BTreeMap;
 
-/// The sizes of the vendor structs (INTERFACE.md §3.2-3.3, Windows layout).
+/// The sizes of the vendor structs (docs/vendor-interface.md, Windows layout).
 pub const KNOWN_SIZES: &[(&str, usize)] = &[
     ("SYS_MAC_PARAM", 72),
     ("SYS_MAC_PARAM_EX", 72),
