@@ -82,6 +82,8 @@ struct Model {
     callbacks: BTreeMap<String, (String, String)>,
     funcs: Vec<Func>,
     headers: Vec<String>,
+    /// Integer macros (`#define NAME 16`), for array lengths given by name.
+    defines: BTreeMap<String, usize>,
 }
 
 fn strip_comments(s: &str) -> String {
@@ -184,11 +186,13 @@ impl Model {
         let text = text.trim();
         let (text, array) = match text.find('[') {
             Some(p) => {
-                let n = text[p + 1..]
-                    .trim_end_matches(']')
-                    .trim()
-                    .parse::<usize>()
-                    .map_err(|e| format!("array length in `{text}`: {e}"))?;
+                let len = text[p + 1..].trim_end_matches(']').trim();
+                let n = match self.defines.get(len) {
+                    Some(&n) => n,
+                    None => len
+                        .parse::<usize>()
+                        .map_err(|e| format!("array length in `{text}`: {e}"))?,
+                };
                 (&text[..p], Some(n))
             }
             None => (text, None),
@@ -288,6 +292,12 @@ impl Model {
         let mut body = String::new();
         for line in text.lines() {
             if line.trim_start().starts_with('#') {
+                let words: Vec<&str> = line.split_whitespace().collect();
+                if let ["#define", name, value] = words[..] {
+                    if let Ok(n) = value.parse::<usize>() {
+                        self.defines.insert(name.to_string(), n);
+                    }
+                }
                 continue;
             }
             body.push_str(line);
