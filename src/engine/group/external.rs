@@ -1,8 +1,8 @@
 //! A group whose channels are an MC3B (`mc3b_port` in `MCCL_SIM`): its queued commands
 //! run on the device instead of the virtual card's interpolator.
 //!
-//! Each tick, while the device is idle, the group takes the next commands off its queue
-//! and hands them to the device as one job ([`crate::mc3b::backend`]):
+//! Each tick, while the device is idle, the executor takes the next commands off the
+//! group's queue and hands them to the device as one job ([`crate::mc3b::backend`]):
 //!
 //! * lines and the chords of arcs, circles and helices become synchronous moves; the
 //!   consecutive ones that share feed speed and acc/dec times go into one chained batch
