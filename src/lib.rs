@@ -12,6 +12,7 @@ pub mod clock;
 pub mod config;
 pub mod engine;
 pub mod error;
+pub mod error_record;
 pub mod fault;
 pub mod ffi;
 pub mod interrupt;

@@ -31,7 +31,7 @@ use external::Host;
 const QUEUE_MIN_GROWTH: usize = 16;
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
-pub const ERR_OVER_TRAVEL: i32 = 0xF301;
+pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();
 
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
 /// far above the rounding of summing millions of ticks).
@@ -223,7 +223,7 @@ impl InPosWait {
 }
 
 /// Error record of a failed in-position check (docs/vendor-interface.md).
-pub const ERR_IN_POSITION: i32 = 0xF501;
+pub const ERR_IN_POSITION: i32 = crate::error_record::ErrorRecord::InPosition.code();
 
 impl GroupState {
     /// A stopped group at position 0.

@@ -148,7 +148,7 @@ impl IsrTable {
 
 /// Error record of a card reset by its watchdog, set on every group of that card
 /// (no vendor code exists; 0xF103 is unused by the vendor's table, see README).
-pub const ERR_WATCHDOG_RESET: i32 = 0xF103;
+pub const ERR_WATCHDOG_RESET: i32 = crate::error_record::ErrorRecord::WatchdogReset.code();
 
 impl Shared {
     /// Raises an interrupt cause on `card`; it is delivered at the end of the current

@@ -231,7 +231,7 @@ pub fn queue_curve(
 }
 
 /// Error record of a bad arc or circle command (docs/vendor-interface.md).
-pub const ERR_BAD_ARC: i32 = 0xF104;
+pub const ERR_BAD_ARC: i32 = crate::error_record::ErrorRecord::BadArc.code();
 
 /// An axis named by the vendor's `char cAxis`: 0..7, or the letters X Y Z U V W A B.
 pub fn axis(c: std::os::raw::c_char) -> McclResult<usize> {

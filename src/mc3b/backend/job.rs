@@ -125,7 +125,7 @@ impl Fault {
         match self {
             Fault::Link => ERR_MC3B_LINK,
             Fault::Device => ERR_MC3B_DEVICE,
-            Fault::Limit(_) => crate::engine::safety::ERR_LIMIT,
+            Fault::Limit(_) => crate::error_record::ErrorRecord::Limit(0).code(),
         }
     }
 

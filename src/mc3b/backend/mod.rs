@@ -49,10 +49,10 @@ pub use worker::{connect, connect_with, Worker};
 /// Error record of a group whose MC3B did not answer (timeout) or whose serial line
 /// failed. Not in the vendor's table; the group stops and runs no command until
 /// `MCC_ClearError`.
-pub const ERR_MC3B_LINK: i32 = 0xF901;
+pub const ERR_MC3B_LINK: i32 = crate::error_record::ErrorRecord::Mc3bLink.code();
 /// Error record of a group whose MC3B refused a command (`E0`..`E3`) or answered
 /// something that does not fit it.
-pub const ERR_MC3B_DEVICE: i32 = 0xF902;
+pub const ERR_MC3B_DEVICE: i32 = crate::error_record::ErrorRecord::Mc3bDevice.code();
 
 /// Largest deviation of a chord from its arc (sagitta), in steps of the finest X/Y/Z
 /// axis of the group.
