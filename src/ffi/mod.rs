@@ -136,8 +136,6 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
-mod tests_motion;
-#[cfg(test)]
 mod tests_panic;
 #[cfg(test)]
 mod tests_periph;
