@@ -138,8 +138,6 @@ mod tests;
 #[cfg(test)]
 mod tests_panic;
 #[cfg(test)]
-mod tests_periph;
-#[cfg(test)]
 mod tests_ranges;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
