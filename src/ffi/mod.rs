@@ -137,8 +137,6 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 mod tests;
 #[cfg(test)]
 mod tests_panic;
-#[cfg(test)]
-mod tests_ranges;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
 /// that does not run.
