@@ -149,17 +149,7 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
-mod tests_home;
-#[cfg(test)]
-mod tests_machine;
-#[cfg(test)]
-mod tests_motion;
-#[cfg(test)]
 mod tests_panic;
-#[cfg(test)]
-mod tests_periph;
-#[cfg(test)]
-mod tests_ranges;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
 /// that does not run.
