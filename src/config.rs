@@ -15,6 +15,9 @@ pub(crate) const GROUPS: usize = c::MAX_GROUP_NUM as usize;
 /// Largest command queue a group may ask for (memory guard; the vendor default is 10000).
 pub(crate) const MAX_QUEUE_SIZE: usize = 1_000_000;
 
+/// Mechanism parameters per card and channel.
+pub type MacTable = [[SYS_MAC_PARAM; AXES]; CARDS];
+
 /// A validated card index.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct CardIx(pub usize);

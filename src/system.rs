@@ -261,7 +261,7 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
             }
         }
     }
-    crate::mc3b::backend::attach(engine.shared(), &mc3b);
+    attach_mc3b(engine.shared(), &mc3b);
     *ACTIVE.write() = Some(engine.shared().clone());
     debug_assert!(
         sys.running.is_none(),
@@ -279,6 +279,20 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         mc3b,
     });
     Ok(())
+}
+
+/// Makes every group on the card of an MC3B device run its commands on the device.
+fn attach_mc3b(shared: &Shared, devices: &[crate::mc3b::backend::Device]) {
+    for d in devices {
+        shared.mark_mc3b(d.card());
+        let limits = d.limits();
+        shared.for_each_group(|g| {
+            if g.def.card.0 == d.card() {
+                g.attach_mc3b(d.link());
+                g.set_mc3b_limits(limits.map(|l| [l[0] != 0, l[2] != 0]));
+            }
+        });
+    }
 }
 
 /// Whether the running system drives an MC3B (a card with `mc3b_port`).

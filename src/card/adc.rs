@@ -18,8 +18,8 @@
 //!   completed, if the conversion trigger is on), `TAG` (the tagged channel converted).
 
 use crate::config::AXES;
-use crate::engine::isr::{Interrupt, Pending};
 use crate::error::{McclError, McclResult};
+use crate::interrupt::{Interrupt, Pending};
 use crate::vendor::consts as c;
 
 /// Where an ADC channel's input comes from (set from Rust: configuration, tests).

@@ -13,7 +13,7 @@ pub mod rio;
 pub mod timer;
 
 use crate::config::AXES;
-use crate::engine::isr::{Interrupt, Pending};
+use crate::interrupt::{Interrupt, Pending};
 use adc::{Adc, AdcSource};
 use dac::Dac;
 use parking_lot::{Mutex, MutexGuard};
@@ -193,19 +193,6 @@ impl Drop for PeriphGuard<'_> {
         let idle = if self.periph.idle() { IDLE } else { 0 };
         self.cell.state.store(idle, Ordering::Release);
     }
-}
-
-/// Runs `f` on the peripherals of card `wCardIndex` of the running system:
-/// `INITIAL_MOTION_ERR` before init, `PARAMETER_ERR` for a card not passed to
-/// `MCC_InitSystem`. Takes no other lock.
-pub fn with_card<R>(
-    wCardIndex: u16,
-    f: impl FnOnce(&mut Peripherals) -> crate::error::McclResult<R>,
-) -> crate::error::McclResult<R> {
-    let shared = crate::system::active()?;
-    let cd = shared.card(crate::config::CardIx::new(wCardIndex)?)?;
-    let mut p = shared.periph[cd].lock();
-    f(&mut p)
 }
 
 #[cfg(test)]

@@ -28,8 +28,8 @@
 //! slave and transfer statuses read 0, and the transfer trigger fires. Its first good
 //! transfer clears the report. A failed master is reported at once.
 
-use crate::engine::isr::{Interrupt, Pending};
 use crate::error::{McclError, McclResult};
+use crate::interrupt::{Interrupt, Pending};
 use crate::vendor::consts as c;
 
 /// Sets per master.

@@ -16,19 +16,22 @@ use super::command::{AxisMech, Command, Ctx, Output, Plan, Settings};
 use super::snapshot::{round_pulses, GroupSnapshot, Info, Motion};
 use crate::config::{GroupDef, AXES};
 use crate::error::{McclError, McclResult};
+use crate::mc3b::backend::{Job, Link, MOTORS};
 use crate::planner::{Axes, RateRamp};
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
+use std::sync::Arc;
 
 mod external;
 pub use external::External;
+use external::Host;
 
 /// Commands a queue grows by at least when it is full (doubling from there on).
 const QUEUE_MIN_GROWTH: usize = 16;
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
-pub const ERR_OVER_TRAVEL: i32 = 0xF301;
+pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();
 
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
 /// far above the rounding of summing millions of ticks).
@@ -220,7 +223,7 @@ impl InPosWait {
 }
 
 /// Error record of a failed in-position check (docs/vendor-interface.md).
-pub const ERR_IN_POSITION: i32 = 0xF501;
+pub const ERR_IN_POSITION: i32 = crate::error_record::ErrorRecord::InPosition.code();
 
 impl GroupState {
     /// A stopped group at position 0.
@@ -337,7 +340,11 @@ impl GroupState {
         let notes = self.trace_notes.take();
         *self = GroupState::new(self.index, self.def, axes);
         self.trace_notes = notes;
-        self.keep_external(external);
+        // An MC3B group stays on its device, rezeroed.
+        if let Some(x) = external {
+            self.external = Some(x.rezeroed());
+            self.mc3b_positions();
+        }
     }
 
     /// The planning context: settings, axes and the end of the queue.
@@ -415,7 +422,9 @@ impl GroupState {
         if self.homing != 0 {
             return Err(McclError::NotAccepted);
         }
-        self.check_external(&cmd)?;
+        if let Some(x) = &self.external {
+            x.check(&cmd, &self.axes)?;
+        }
         if self.mode == Mode::Aborting {
             return Err(McclError::AbortNotFinished);
         }
@@ -528,7 +537,9 @@ impl GroupState {
     }
 
     fn stop_here(&mut self) {
-        self.stop_external();
+        if let Some(x) = self.external.as_mut() {
+            x.stop();
+        }
         self.inpos_wait = None;
         self.note_stopped();
         self.running.clear();
@@ -836,6 +847,103 @@ impl GroupState {
         self.running.push_back(Running { cmd, tau });
     }
 
+    /// Runs this group's motion on the MC3B behind `link` from now on. Axes on channels
+    /// 0..2 are its motors 0..2; motion of axes on channels 3..7 is refused.
+    pub fn attach_mc3b(&mut self, link: Arc<Link>) {
+        self.external = Some(External::new(link, &self.axes));
+        self.mc3b_positions();
+    }
+
+    /// Whether this group runs on an MC3B.
+    pub fn is_external(&self) -> bool {
+        self.external.is_some()
+    }
+
+    /// Whether the MC3B is running (or stopping) a job of this group.
+    pub fn external_busy(&self) -> bool {
+        self.external.as_ref().is_some_and(External::busy)
+    }
+
+    /// The MC3B's limit switches as the device was set up: per motor, direction 0 and 1.
+    pub fn set_mc3b_limits(&mut self, limits: [[bool; 2]; MOTORS]) {
+        if let Some(x) = self.external.as_mut() {
+            x.set_limits(limits);
+        }
+    }
+
+    /// The jobs of `MCC_Home` with `orders` (per channel, 255 skips) and the go-home
+    /// parameters `cfgs` on this MC3B group, with the axes mask and the motors homed
+    /// (see [`External`]); `COMMAND_NOTACCEPTED_ERR` for a group not on an MC3B and
+    /// what the MC3B cannot home.
+    #[allow(clippy::type_complexity)]
+    pub fn plan_mc3b_home(
+        &self,
+        orders: &[i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<(u32, Vec<Job>, [bool; MOTORS])> {
+        let x = self.external.as_ref().ok_or(McclError::NotAccepted)?;
+        x.plan_home(orders, cfgs, &self.axes)
+    }
+
+    /// `MCC_Home` on the MC3B: runs `stages` (homings, then the moves to the working
+    /// homes) on the device; axes `mask` are homed (motors `motors`). The group must be
+    /// idle; it takes no motion command until the homing ends.
+    pub fn begin_mc3b_home(
+        &mut self,
+        mask: u32,
+        stages: Vec<Job>,
+        motors: [bool; MOTORS],
+    ) -> McclResult<()> {
+        if self.external.is_none() {
+            return Err(McclError::NotAccepted);
+        }
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        if let Some(x) = self.external.as_mut() {
+            x.begin_home(stages, motors);
+        }
+        self.homing = mask;
+        self.update_status();
+        Ok(())
+    }
+
+    /// `MCC_AbortGoHome` on the MC3B: the job running stops (`S`, at once: the MC3B has
+    /// no controlled stop) and the homing ends without completing.
+    pub fn abort_mc3b_home(&mut self) {
+        if let Some(x) = self.external.as_mut() {
+            x.abort_home();
+        }
+    }
+
+    /// The end of an MC3B go home, once: `HOME_DONE` or `HOME_NONE`.
+    pub fn take_home_result(&mut self) -> Option<i32> {
+        self.external.as_mut()?.take_home_result()
+    }
+
+    /// Positions from the MC3B's steps (axes on its motors), else from what has finished.
+    fn mc3b_positions(&mut self) {
+        if let Some(x) = &self.external {
+            self.pos = x.positions(self.base, &self.offset, &self.axes);
+            self.vel = [0.0; AXES];
+        }
+    }
+
+    /// One tick of an MC3B group: its executor runs with the group as its [`Host`]. It is
+    /// out of `self.external` meanwhile and back before the status is updated, also when
+    /// the tick panics (the engine's recovery then stops the device's job).
+    fn tick_mc3b(&mut self, dt: f64) {
+        let Some(mut x) = self.external.take() else {
+            return;
+        };
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| x.tick(self, dt)));
+        self.external = Some(x);
+        if let Err(p) = r {
+            std::panic::resume_unwind(p);
+        }
+        self.update_status();
+    }
+
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
         if self.homing != 0 && self.external.is_none() {
@@ -844,7 +952,7 @@ impl GroupState {
             return;
         }
         if self.external.is_some() {
-            return self.tick_external(dt);
+            return self.tick_mc3b(dt);
         }
         // Software over-travel compares with the position before the tick (only needed,
         // and so only copied, when a check is on).
@@ -1057,7 +1165,7 @@ impl GroupState {
         let active = !self.running.is_empty()
             || !self.queue.is_empty()
             || self.inpos_wait.is_some_and(|w| w.blocks())
-            || self.external_active();
+            || self.external.as_ref().is_some_and(External::active);
         self.status = if !active && self.mode != Mode::Aborting {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
                 self.mode = Mode::Normal;
@@ -1158,5 +1266,129 @@ impl GroupState {
     /// The info part last published, so an unchanged one is not stored again.
     pub fn published_info(&mut self) -> &mut Option<Info> {
         &mut self.published_info
+    }
+}
+
+/// What the MC3B executor may do with its group (see [`Host`]).
+impl Host for GroupState {
+    fn axes(&self) -> &[AxisMech; AXES] {
+        &self.axes
+    }
+
+    fn offset(&self) -> &Axes {
+        &self.offset
+    }
+
+    fn ot_check(&self) -> &[bool; AXES] {
+        &self.ot_check
+    }
+
+    fn base(&self) -> Axes {
+        self.base
+    }
+
+    fn speed_scale(&self) -> f64 {
+        if self.fixed_speed {
+            1.0
+        } else {
+            self.override_pct / 100.0
+        }
+    }
+
+    fn single_block(&self) -> bool {
+        self.single_block
+    }
+
+    fn may_start(&self) -> bool {
+        GroupState::may_start(self)
+    }
+
+    fn may_go_on(&self) -> bool {
+        self.error == 0 && self.mode == Mode::Normal
+    }
+
+    fn held(&self) -> bool {
+        self.mode == Mode::Held
+    }
+
+    fn queued(&self) -> usize {
+        self.queue.len()
+    }
+
+    fn front(&self) -> Option<&Command> {
+        self.queue.front()
+    }
+
+    fn pop_front(&mut self) -> Option<Command> {
+        self.queue.pop_front()
+    }
+
+    fn apply_switch(&mut self) {
+        let Some(cmd) = self.queue.front() else {
+            return;
+        };
+        match cmd.plan {
+            Plan::Blend(on) => self.blend_on = on,
+            Plan::InPos(on, mask) => {
+                if on {
+                    self.inpos_mask |= mask;
+                } else {
+                    self.inpos_mask &= !mask;
+                }
+            }
+            Plan::Output(o) => self.outputs.push(o),
+            _ => return,
+        }
+        self.queue.pop_front();
+    }
+
+    fn start(&mut self, cmd: Command) {
+        GroupState::start(self, cmd, 0.0);
+    }
+
+    fn retire(&mut self, n: usize) {
+        for _ in 0..n {
+            if let Some(done) = self.running.pop_front() {
+                self.base = done.cmd.target;
+            }
+        }
+    }
+
+    fn drop_first(&mut self) {
+        self.running.pop_front();
+    }
+
+    fn job_ended(&mut self) {
+        if self.mode == Mode::HoldAtBlockEnd {
+            self.mode = Mode::Held;
+        }
+    }
+
+    fn stop_here(&mut self) {
+        GroupState::stop_here(self);
+    }
+
+    fn set_error(&mut self, code: i32) {
+        GroupState::set_error(self, code);
+    }
+
+    fn clear_running(&mut self) {
+        self.running.clear();
+    }
+
+    fn zero_offset(&mut self, i: usize) {
+        self.offset[i] = 0.0;
+    }
+
+    fn set_pos(&mut self, pos: Axes) {
+        self.pos = pos;
+        self.vel = [0.0; AXES];
+    }
+
+    fn rebase(&mut self, mask: u32) {
+        for i in (0..AXES).filter(|&i| mask & (1 << i) != 0) {
+            self.base[i] = self.pos[i];
+            self.queue_end[i] = self.pos[i];
+        }
     }
 }

@@ -19,7 +19,6 @@ use crate::clock::{Clock, ClockMode, Next};
 use crate::config::{GroupDef, AXES, CARDS, GROUPS};
 use crate::error::{McclError, McclResult};
 use crate::machine::Machine;
-use crate::vendor::SYS_MAC_PARAM;
 use command::AxisMech;
 use group::GroupState;
 use parking_lot::{Mutex, MutexGuard};
@@ -30,8 +29,7 @@ use std::sync::{Arc, Weak};
 use std::thread::{JoinHandle, ThreadId};
 use std::time::Duration;
 
-/// Mechanism parameters per card and channel.
-pub type MacTable = [[SYS_MAC_PARAM; AXES]; CARDS];
+use crate::config::MacTable;
 
 /// The mechanism facts of a group's axes: mapped axes from their channel's parameters,
 /// unmapped ones from the defaults (their planning result is ignored, §2.4.4).

@@ -3,22 +3,23 @@
 //! limit switches, tracking error, and pulse speed and acceleration limits.
 
 use super::group::GroupState;
+use crate::error_record::ErrorRecord;
 use crate::machine::Machine;
 
 /// Error record: emergency stop.
-pub const ERR_EMERGENCY: i32 = 0xF102;
+pub const ERR_EMERGENCY: i32 = ErrorRecord::EmergencyStop.code();
 /// Error record: pulse speed over the limit.
-pub const ERR_PULSE_SPEED: i32 = 0xF203;
+pub const ERR_PULSE_SPEED: i32 = ErrorRecord::PulseSpeed.code();
 /// Error record: pulse acceleration over the limit.
-pub const ERR_PULSE_ACC: i32 = 0xF204;
+pub const ERR_PULSE_ACC: i32 = ErrorRecord::PulseAcc.code();
 /// Error record: hardware limit switch, + axis.
-pub const ERR_LIMIT: i32 = 0xF701;
+pub const ERR_LIMIT: i32 = ErrorRecord::Limit(0).code();
 /// Error record: tracking error, + axis.
-pub const ERR_TRACKING: i32 = 0xF801;
+pub const ERR_TRACKING: i32 = ErrorRecord::Tracking(0).code();
 /// Error record: the library caught a panic of its own (a defect) and stopped the group
 /// where it stood. Not in the vendor's table: its test programs report any unknown code
 /// as "Run Time Error", which is what happened.
-pub const ERR_INTERNAL: i32 = 0xF1FF;
+pub const ERR_INTERNAL: i32 = ErrorRecord::Internal.code();
 
 /// A check that tripped: the group stops; `record` is its error record, if any.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

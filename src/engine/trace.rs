@@ -15,7 +15,7 @@
 
 use super::group::GroupState;
 use super::isr;
-use super::MacTable;
+use crate::config::MacTable;
 use crate::config::AXES;
 use crate::machine::{Machine, SensorLevels};
 use std::fs::File;

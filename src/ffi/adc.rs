@@ -3,8 +3,9 @@
 //! channel of the same number unless set otherwise from Rust
 //! (`Peripherals::set_adc_source`). The routine is registered with `MCC_SetADCRoutine`.
 
+use super::with_card;
 use super::{channel, guard, out_ok, write_out};
-use crate::card::{adc::Adc, with_card};
+use crate::card::adc::Adc;
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;

@@ -2,8 +2,8 @@
 //! Control"). A channel whose mechanism parameters in effect say `OCM_VOLTAGE` belongs
 //! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
 
+use super::with_card;
 use super::{channel, guard};
-use crate::card::with_card;
 use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;

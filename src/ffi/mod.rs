@@ -82,6 +82,19 @@ thread_local! {
     static GROUP_STOPPED_AFTER_PANIC: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
+/// Runs `f` on the peripherals of card `wCardIndex` of the running system:
+/// `INITIAL_MOTION_ERR` before init, `PARAMETER_ERR` for a card not passed to
+/// `MCC_InitSystem`. Takes no other lock.
+pub fn with_card<R>(
+    wCardIndex: u16,
+    f: impl FnOnce(&mut crate::card::Peripherals) -> crate::error::McclResult<R>,
+) -> crate::error::McclResult<R> {
+    let shared = crate::system::active()?;
+    let cd = shared.card(crate::config::CardIx::new(wCardIndex)?)?;
+    let mut p = shared.periph[cd].lock();
+    f(&mut p)
+}
+
 /// A card index from C.
 pub fn card(w: u16) -> McclResult<CardIx> {
     CardIx::new(w)
@@ -136,17 +149,7 @@ pub unsafe fn write_out<T>(p: *mut T, v: T) {
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
-mod tests_home;
-#[cfg(test)]
-mod tests_machine;
-#[cfg(test)]
-mod tests_motion;
-#[cfg(test)]
 mod tests_panic;
-#[cfg(test)]
-mod tests_periph;
-#[cfg(test)]
-mod tests_ranges;
 
 /// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
 /// that does not run.
@@ -218,7 +221,7 @@ pub fn queue_curve(
 }
 
 /// Error record of a bad arc or circle command (docs/vendor-interface.md).
-pub const ERR_BAD_ARC: i32 = 0xF104;
+pub const ERR_BAD_ARC: i32 = crate::error_record::ErrorRecord::BadArc.code();
 
 /// An axis named by the vendor's `char cAxis`: 0..7, or the letters X Y Z U V W A B.
 pub fn axis(c: std::os::raw::c_char) -> McclResult<usize> {

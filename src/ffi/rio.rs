@@ -8,9 +8,9 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
+use super::with_card;
 use super::{finite, guard, out_ok, write_out};
 use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
-use crate::card::with_card;
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};

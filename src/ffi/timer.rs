@@ -3,7 +3,7 @@
 //! counts timer periods (see `crate::card::timer` and the README).
 
 use super::guard;
-use crate::card::with_card;
+use super::with_card;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;

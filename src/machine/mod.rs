@@ -556,7 +556,7 @@ pub struct Machine {
 impl Machine {
     /// A machine for `n` cards from the parameters in effect and the specs.
     pub fn new(
-        mac: &crate::engine::MacTable,
+        mac: &crate::config::MacTable,
         enc: &[[SYS_ENCODER_CONFIG; AXES]; crate::config::CARDS],
         specs: impl Fn(usize, usize) -> ChannelSpec,
         emergency: impl Fn(usize) -> bool,

@@ -6,7 +6,7 @@
 
 use super::{Channel, SensorLevels};
 use crate::config::AXES;
-use crate::engine::isr::Interrupt;
+use crate::interrupt::Interrupt;
 use crate::vendor::consts as c;
 use std::collections::VecDeque;
 

@@ -1,11 +1,55 @@
 //! Helpers shared by the integration tests that drive the C ABI: one process per test
 //! file, so each file owns the library's one process-wide system.
+//!
+//! The `#[test]`s of one file still share that process and run on several threads:
+//! a file whose tests start the system takes [`fresh`] first in every test. Its lock is
+//! this file's own (every test binary compiles its own copy of this module), so files
+//! never wait for each other, and within a file the environment (`MCCL_CLOCK`,
+//! `MCCL_SIM`, `MCCL_TRACE`) is changed only by the test holding the lock; the library
+//! reads it only in `MCC_InitSystem` (and `…Ex`, `MCC_InitSimulation`), which only that
+//! test calls: no other thread reads it meanwhile. A file with a single `#[test]`
+//! (`lifecycle_*.rs`) sets `MCCL_CLOCK` once, before it starts a system.
 #![allow(dead_code)]
 
+use parking_lot::{Mutex, MutexGuard};
 use std::sync::mpsc;
 use std::time::Duration;
 use MCCLPCI_IMP::vendor::consts::IMP_III_8_AXIS_PCI_CARD;
 use MCCLPCI_IMP::vendor::SYS_CARD_CONFIG;
+
+/// The library has one process-wide system: the tests of a file that use it run one at a
+/// time.
+static SERIAL: Mutex<()> = Mutex::new(());
+
+/// Locks the system for one test and starts from a closed system with the default
+/// configuration and `MCCL_CLOCK=stepped`, set while the lock is held and the system is
+/// closed (a test that wants another clock sets it after this, under the same lock).
+/// `parking_lot`'s lock is not poisoned by a failed test, so the next test still runs.
+pub fn fresh() -> MutexGuard<'static, ()> {
+    let g = SERIAL.lock();
+    let _ = MCCLPCI_IMP::ffi::system::MCC_CloseSystem();
+    MCCLPCI_IMP::system::with(|s| s.config = MCCLPCI_IMP::config::Config::default());
+    std::env::set_var("MCCL_CLOCK", "stepped");
+    g
+}
+
+/// `n` IMP-III cards, as a program's `SYS_CARD_CONFIG[n]`.
+pub fn cards(n: usize) -> Vec<SYS_CARD_CONFIG> {
+    vec![
+        SYS_CARD_CONFIG {
+            wCardType: IMP_III_8_AXIS_PCI_CARD,
+            ..Default::default()
+        };
+        n
+    ]
+}
+
+/// Starts the system with `n` cards and an interpolation period of `ms`.
+pub fn init_ms(n: usize, ms: i32) -> i32 {
+    let mut c = cards(n);
+    // SAFETY: c holds n valid SYS_CARD_CONFIG.
+    unsafe { MCCLPCI_IMP::ffi::system::MCC_InitSystem(ms, c.as_mut_ptr(), n as u16) }
+}
 
 /// One IMP-III card, as a program's `SYS_CARD_CONFIG[1]`.
 pub fn one_card() -> [SYS_CARD_CONFIG; 1] {

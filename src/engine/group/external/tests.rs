@@ -2,6 +2,7 @@
 //! runs the device's worker itself ([`Worker::run_pending`]), so what the group sees
 //! between ticks is exactly determined.
 
+use super::super::GroupState;
 use super::*;
 use crate::config::{default_mac_param, GroupDef};
 use crate::engine::command::AxisMech;

@@ -12,16 +12,18 @@
 //! emergency stop stands at the first position sampled past the edge; a deceleration
 //! starts there.
 
-use super::coordinate::*;
-use super::home::*;
-use super::sim::*;
-use super::status::*;
-use super::system::*;
-use super::tests::{fresh, init_ms};
-use super::trajectory::*;
-use crate::vendor::consts::*;
-use crate::vendor::*;
+mod common;
+
+use common::{fresh, init_ms};
 use std::os::raw::{c_long, c_longlong};
+use MCCLPCI_IMP::ffi::coordinate::*;
+use MCCLPCI_IMP::ffi::home::*;
+use MCCLPCI_IMP::ffi::sim::*;
+use MCCLPCI_IMP::ffi::status::*;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::trajectory::*;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::*;
 
 const MACHINE: &str = r#"
 [[card]]
@@ -57,7 +59,7 @@ fn start(sim: &str, chans: &[(u16, SYS_HOME_CONFIG)], trace: Option<&str>) {
     let path = std::env::temp_dir().join(format!("mccl-home-{}.toml", std::process::id()));
     std::fs::write(&path, sim).unwrap();
     for &(ch, mut h) in chans {
-        let mut m = crate::config::default_mac_param();
+        let mut m = MCCLPCI_IMP::config::default_mac_param();
         m.wOverTravelUpSensorMode = SL_NORMAL_OPEN;
         m.wOverTravelDownSensorMode = SL_NORMAL_OPEN;
         // SAFETY: valid pointers.
@@ -79,7 +81,7 @@ fn start(sim: &str, chans: &[(u16, SYS_HOME_CONFIG)], trace: Option<&str>) {
 
 /// Runs until the homing ends; returns the status and the ticks it took.
 fn wait_home() -> (i32, u64) {
-    let shared = crate::system::active().unwrap();
+    let shared = MCCLPCI_IMP::system::active().unwrap();
     let t0 = shared.clock.ticks();
     for _ in 0..200_000 {
         let s = MCC_GetGoHomeStatus();
@@ -113,7 +115,10 @@ fn counters(ch: u16) -> (i64, i64) {
     let [a, b, c, d, e2, f, g, h] = &mut p;
     // SAFETY: valid pointers.
     unsafe {
-        assert_eq!(super::encoder::MCC_GetENCValue(&mut e, ch, 0), NO_ERR);
+        assert_eq!(
+            MCCLPCI_IMP::ffi::encoder::MCC_GetENCValue(&mut e, ch, 0),
+            NO_ERR
+        );
         assert_eq!(MCC_GetPulsePos(a, b, c, d, e2, f, g, h, 0), NO_ERR);
     }
     #[allow(clippy::useless_conversion)] // `long` is 32-bit on Windows
@@ -553,7 +558,7 @@ fn wiring_of_the_home_sensor() {
     let mut st: WORD = 9;
     // SAFETY: valid pointer.
     assert_eq!(
-        unsafe { super::local_io::MCC_GetHomeSensorStatus(&mut st, 0, 0) },
+        unsafe { MCCLPCI_IMP::ffi::local_io::MCC_GetHomeSensorStatus(&mut st, 0, 0) },
         NO_ERR
     );
     assert_eq!(st, 1, "wrong wiring setting: reads active at 0 UU");
@@ -596,7 +601,7 @@ fn arguments_and_states() {
     );
     // A group with motion to do: not now, and nothing changes.
     assert_eq!(
-        super::motion::MCC_Line(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
+        MCCLPCI_IMP::ffi::motion::MCC_Line(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
         0
     );
     assert_eq!(
@@ -625,7 +630,7 @@ fn arguments_and_states() {
         COMMAND_NOTFINISHED_ERR
     );
     assert_eq!(
-        super::motion::MCC_Line(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
+        MCCLPCI_IMP::ffi::motion::MCC_Line(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
         COMMAND_NOTACCEPTED_ERR
     );
     let mut n = -1;

@@ -2,20 +2,22 @@
 //! over-travel, limit switches in every mode, emergency stop, tracking error, pulse
 //! limits, compensation and dry run, with expected values worked out by hand.
 
-use super::coordinate::*;
-use super::encoder::*;
-use super::limits::*;
-use super::local_io::*;
-use super::motion::*;
-use super::position::*;
-use super::sim::*;
-use super::status::*;
-use super::system::*;
-use super::tests::{fresh, init_ms};
-use super::trajectory::*;
-use crate::vendor::consts::*;
-use crate::vendor::*;
+mod common;
+
+use common::{fresh, init_ms};
 use std::os::raw::c_long;
+use MCCLPCI_IMP::ffi::coordinate::*;
+use MCCLPCI_IMP::ffi::encoder::*;
+use MCCLPCI_IMP::ffi::limits::*;
+use MCCLPCI_IMP::ffi::local_io::*;
+use MCCLPCI_IMP::ffi::motion::*;
+use MCCLPCI_IMP::ffi::position::*;
+use MCCLPCI_IMP::ffi::sim::*;
+use MCCLPCI_IMP::ffi::status::*;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::trajectory::*;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::*;
 
 fn line_x(x: f64) -> i32 {
     MCC_Line(x, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL)
@@ -38,7 +40,11 @@ fn enc(ch: u16) -> i64 {
 }
 
 fn status() -> i32 {
-    crate::system::active().unwrap().snapshot(0).unwrap().status
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(0)
+        .unwrap()
+        .status
 }
 
 fn run(ms: u32) {
@@ -48,7 +54,7 @@ fn run(ms: u32) {
 /// Channel 0 with both limit switches read normally open, then init at 1 ms.
 fn setup() -> parking_lot::MutexGuard<'static, ()> {
     let g = fresh();
-    let mut m = crate::config::default_mac_param();
+    let mut m = MCCLPCI_IMP::config::default_mac_param();
     m.wOverTravelUpSensorMode = SL_NORMAL_OPEN;
     m.wOverTravelDownSensorMode = SL_NORMAL_OPEN;
     // SAFETY: valid pointer.
@@ -97,7 +103,7 @@ fn encoder_follows_the_motor() {
 #[test]
 fn over_travel_never_passes_the_high_limit() {
     let _g = fresh();
-    let mut m = crate::config::default_mac_param();
+    let mut m = MCCLPCI_IMP::config::default_mac_param();
     m.dfHighLimit = 5.0;
     m.dfLowLimit = -5.0;
     // SAFETY: valid pointer.
@@ -238,7 +244,7 @@ fn emergency_stop_stops_every_group_of_the_card() {
 fn tracking_error_with_a_lagging_motor() {
     let _g = setup();
     // A 50 ms lag: at 10 UU/s the motor trails by about 10 x 0.05 = 0.5 UU (250 pulses).
-    crate::system::active().unwrap().machine.lock().cards[0][0]
+    MCCLPCI_IMP::system::active().unwrap().machine.lock().cards[0][0]
         .spec
         .lag_s = Some(0.05);
     assert_eq!(MCC_SetTrackErrorLimit(0.3, 0, 0), NO_ERR);
@@ -333,7 +339,7 @@ fn in_position_waits_for_the_motor() {
     let _g = setup();
     // A 50 ms lag: after a move at 10 UU/s the motor trails by 0.5 UU and closes in as
     // e^(-t / 50 ms): within 0.01 UU after 50 ms x ln(50) = 196 ms.
-    crate::system::active().unwrap().machine.lock().cards[0][0]
+    MCCLPCI_IMP::system::active().unwrap().machine.lock().cards[0][0]
         .spec
         .lag_s = Some(0.05);
     assert_eq!(MCC_SetInPosMode(IPM_ONETIME_BLOCK, 0), NO_ERR);
@@ -397,19 +403,19 @@ fn in_position_waits_for_the_motor() {
 #[test]
 fn queued_outputs_change_when_the_queue_reaches_them() {
     let _g = setup();
-    use super::local_io::MCC_SetServoOn;
-    use super::rio::*;
+    use MCCLPCI_IMP::ffi::local_io::MCC_SetServoOn;
+    use MCCLPCI_IMP::ffi::rio::*;
     assert_eq!(MCC_SetServoOn(0, 0), NO_ERR);
     assert!(line_x(1.0) >= 0); // 100 ms
                                // Servo 0 off, servo 2 on, after the line; remote port 1 of RIO set 0 bits 0..3 = 0x5.
-    assert!(super::trajectory::MCC_QueueLIOOutputValue(0x05, 0x04, 0) >= 0);
-    assert!(super::trajectory::MCC_QueueRIOOutputValue(0x000F, 0x0005, 0, 1, 0) >= 0);
+    assert!(MCCLPCI_IMP::ffi::trajectory::MCC_QueueLIOOutputValue(0x05, 0x04, 0) >= 0);
+    assert!(MCCLPCI_IMP::ffi::trajectory::MCC_QueueRIOOutputValue(0x000F, 0x0005, 0, 1, 0) >= 0);
     assert_eq!(
-        super::trajectory::MCC_QueueRIOOutputValue(0xF, 5, 2, 1, 0),
+        MCCLPCI_IMP::ffi::trajectory::MCC_QueueRIOOutputValue(0xF, 5, 2, 1, 0),
         PARAMETER_ERR
     );
     assert_eq!(
-        super::trajectory::MCC_QueueARIOOutputValue(0xF, 5, 0, 32, 0),
+        MCCLPCI_IMP::ffi::trajectory::MCC_QueueARIOOutputValue(0xF, 5, 0, 32, 0),
         PARAMETER_ERR
     );
     let servo = |ch: u16| {
@@ -444,7 +450,12 @@ fn led(ch: u16) -> WORD {
 }
 
 fn led_settings() -> [(bool, bool, u16); 8] {
-    crate::system::active().unwrap().machine.lock().triggers[0].led_trig_out
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .machine
+        .lock()
+        .triggers[0]
+        .led_trig_out
 }
 
 #[test]
@@ -541,7 +552,14 @@ fn enc_filter_clock_is_kept_per_card_like_the_other_filter_clocks() {
     let _g = fresh();
     assert_eq!(MCC_SetENCFilterClock(3, 0), INITIAL_MOTION_ERR);
     assert_eq!(init_ms(2, 1), NO_ERR);
-    let filters = |cd: usize| crate::system::active().unwrap().machine.lock().settings[cd].filters;
+    let filters = |cd: usize| {
+        MCCLPCI_IMP::system::active()
+            .unwrap()
+            .machine
+            .lock()
+            .settings[cd]
+            .filters
+    };
     assert_eq!(
         MCC_SetENCFilterClock(3, 2),
         PARAMETER_ERR,

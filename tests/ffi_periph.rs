@@ -1,37 +1,45 @@
 //! The interrupt framework and the card peripherals through the C entry points, on the
 //! stepped clock (1 ms ticks: `MCC_TimeDelay(n)` runs exactly n ticks).
 
-use super::adc::*;
-use super::coordinate::*;
-use super::dac::*;
-use super::isr::*;
-use super::local_io::*;
-use super::motion::*;
-use super::rio::*;
-use super::status::*;
-use super::system::*;
-use super::tests::{fresh, init_ms};
-use super::timer::*;
-use super::trajectory::*;
-use crate::card::adc::AdcSource;
-use crate::card::Peripherals;
-use crate::engine::isr::{Interrupt, ERR_WATCHDOG_RESET};
-use crate::vendor::consts::*;
-use crate::vendor::*;
+mod common;
+
+use common::{fresh, init_ms};
 use parking_lot::Mutex;
 use std::ptr::null_mut;
 use std::sync::atomic::{AtomicBool, AtomicU32, AtomicU64, Ordering::SeqCst};
+use MCCLPCI_IMP::card::adc::AdcSource;
+use MCCLPCI_IMP::card::Peripherals;
+use MCCLPCI_IMP::engine::isr::{Interrupt, ERR_WATCHDOG_RESET};
+use MCCLPCI_IMP::ffi::adc::*;
+use MCCLPCI_IMP::ffi::coordinate::*;
+use MCCLPCI_IMP::ffi::dac::*;
+use MCCLPCI_IMP::ffi::isr::*;
+use MCCLPCI_IMP::ffi::local_io::*;
+use MCCLPCI_IMP::ffi::motion::*;
+use MCCLPCI_IMP::ffi::rio::*;
+use MCCLPCI_IMP::ffi::status::*;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::timer::*;
+use MCCLPCI_IMP::ffi::trajectory::*;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::*;
 
 fn periph(card: usize) -> Peripherals {
-    crate::system::active().unwrap().periph[card].lock().clone()
+    MCCLPCI_IMP::system::active().unwrap().periph[card]
+        .lock()
+        .clone()
 }
 
 fn with_periph<R>(card: usize, f: impl FnOnce(&mut Peripherals) -> R) -> R {
-    f(&mut crate::system::active().unwrap().periph[card].lock())
+    f(&mut MCCLPCI_IMP::system::active().unwrap().periph[card].lock())
 }
 
 fn status(g: u16) -> i32 {
-    crate::system::active().unwrap().snapshot(g).unwrap().status
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(g)
+        .unwrap()
+        .status
 }
 
 fn x_pos(g: u16) -> f64 {
@@ -520,14 +528,14 @@ fn every_entry_point_checks_its_arguments_and_changes_nothing() {
     assert_eq!(init_ms(2, 1), NO_ERR);
     let before = (periph(0), periph(1));
     let isr_before: Vec<usize> = (0..7)
-        .map(|k| crate::system::active().unwrap().isr.get(0, ORDER[k]))
+        .map(|k| MCCLPCI_IMP::system::active().unwrap().isr.get(0, ORDER[k]))
         .collect();
     for (name, call) in bad_calls() {
         assert_eq!(call(), PARAMETER_ERR, "{name}");
         assert_eq!((periph(0), periph(1)), before, "{name} changed something");
     }
     let isr_after: Vec<usize> = (0..7)
-        .map(|k| crate::system::active().unwrap().isr.get(0, ORDER[k]))
+        .map(|k| MCCLPCI_IMP::system::active().unwrap().isr.get(0, ORDER[k]))
         .collect();
     assert_eq!(isr_before, isr_after);
     assert!(out_bufs_untouched(), "nothing written");
@@ -541,7 +549,7 @@ fn every_entry_point_checks_its_arguments_and_changes_nothing() {
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
-use crate::engine::isr::ORDER;
+use MCCLPCI_IMP::engine::isr::ORDER;
 
 // ---- delivery order ----
 
@@ -620,7 +628,7 @@ fn delivery_order_is_card_then_lio_enc_pcl_adc_tmr_rio_hsk() {
         assert_eq!(MCC_SetRIORoutine(Some(r), card), NO_ERR);
         assert_eq!(MCC_SetHSKRoutine(Some(h), card), NO_ERR);
     }
-    let shared = crate::system::active().unwrap();
+    let shared = MCCLPCI_IMP::system::active().unwrap();
     // Raised in reverse order, card 1 first, between ticks: delivered after the next one.
     for card in [1, 0] {
         shared.raise(card, Interrupt::Handshake);
@@ -765,7 +773,7 @@ fn watchdog_expiry_resets_the_card() {
     // Expired: the card was reset.
     assert_eq!(status(0), GMS_STOP);
     assert_eq!(MCC_GetErrorCode(0), ERR_WATCHDOG_RESET);
-    let shared = crate::system::active().unwrap();
+    let shared = MCCLPCI_IMP::system::active().unwrap();
     assert_eq!(shared.servo_on[0].load(SeqCst), 0);
     assert!(!shared.pos_ready[0].load(SeqCst));
     let p = periph(0);
@@ -1267,7 +1275,7 @@ fn callbacks_read_positions_abort_and_close_the_system() {
     );
     // The handshake raised now is delivered in the same tick as the closing timer call,
     // after it (TMR before HSK): it must not run once the system is closed.
-    let shared = crate::system::active().unwrap();
+    let shared = MCCLPCI_IMP::system::active().unwrap();
     MCC_TimeDelay(4);
     shared.raise(0, Interrupt::Handshake);
     MCC_TimeDelay(100); // returns when the clock stops
@@ -1281,16 +1289,16 @@ fn callbacks_read_positions_abort_and_close_the_system() {
     assert_eq!(CB_CLOSE_RET.load(SeqCst), NO_ERR as u32);
     assert_eq!(CB_TICKS.load(SeqCst), 60);
     assert_eq!(HSK_AFTER_CLOSE.load(SeqCst), 0);
-    assert!(crate::system::active().is_err(), "closed");
+    assert!(MCCLPCI_IMP::system::active().is_err(), "closed");
     assert_eq!(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR);
     drop(shared);
     // A new system starts cleanly, with no routine registered.
     assert_eq!(init_ms(1, 1), NO_ERR);
     assert_eq!(
-        crate::system::active()
+        MCCLPCI_IMP::system::active()
             .unwrap()
             .isr
-            .get(0, crate::engine::isr::Kind::Tmr),
+            .get(0, MCCLPCI_IMP::engine::isr::Kind::Tmr),
         0
     );
     assert_eq!(MCC_CloseSystem(), NO_ERR);

@@ -1,15 +1,17 @@
 //! Motion through the C entry points on the stepped clock, against closed-form values
 //! (docs/decisions.md: an unblended move of length L reaching feed F lasts L/F + (Ta+Td)/2).
 
-use super::coordinate::*;
-use super::motion::*;
-use super::ptp::*;
-use super::status::*;
-use super::system::*;
-use super::tests::{fresh, init_ms};
-use super::trajectory::*;
-use crate::vendor::consts::*;
-use crate::vendor::COMMAND_INFO;
+mod common;
+
+use common::{fresh, init_ms};
+use MCCLPCI_IMP::ffi::coordinate::*;
+use MCCLPCI_IMP::ffi::motion::*;
+use MCCLPCI_IMP::ffi::ptp::*;
+use MCCLPCI_IMP::ffi::status::*;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::trajectory::*;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::COMMAND_INFO;
 
 fn pos(g: u16) -> [f64; 8] {
     let mut p = [0.0; 8];
@@ -31,7 +33,7 @@ fn pulses(g: u16) -> [i64; 8] {
 
 /// Runs ticks one by one until the group stops; returns the number of ticks it took.
 fn ticks_until_stop(g: u16, limit: u64) -> u64 {
-    let clock = &crate::system::active().unwrap().clock;
+    let clock = &MCCLPCI_IMP::system::active().unwrap().clock;
     let t0 = clock.ticks();
     while MCC_GetMotionStatus(g) != GMS_STOP {
         assert!(
@@ -53,7 +55,11 @@ fn line_lasts_l_over_f_plus_half_ramps_and_ends_exactly() {
         MCC_Line(10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
         0
     );
-    let st = crate::system::active().unwrap().snapshot(0).unwrap().status;
+    let st = MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(0)
+        .unwrap()
+        .status;
     assert_ne!(st, GMS_STOP, "queued: no longer stopped");
     // 10 UU at 10 UU/s with 100 ms ramps: 1.0 s + (0.1 + 0.1)/2 = 1.1 s = 1100 ticks of 1 ms.
     // The first poll ran the first tick.
@@ -75,11 +81,15 @@ fn ramps(ms: f64, g: u16) {
 
 /// The published status, without the stepped clock's tick-on-poll.
 fn status(g: u16) -> i32 {
-    crate::system::active().unwrap().snapshot(g).unwrap().status
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(g)
+        .unwrap()
+        .status
 }
 
 fn tick(n: u64) {
-    crate::system::active().unwrap().clock.wait_ticks(n);
+    MCCLPCI_IMP::system::active().unwrap().clock.wait_ticks(n);
 }
 
 fn path_speed(g: u16) -> f64 {

@@ -7,21 +7,23 @@
 //! pulses per UU 1e-6..=1e9; encoder gear rate 1e-3..=1e3; encoder counts |n| <= 1e18;
 //! percentages (override, PtP and jog ratios) from 0.01 %.
 
-use super::coordinate::*;
-use super::encoder::*;
-use super::jog::*;
-use super::motion::*;
-use super::position::*;
-use super::ptp::*;
-use super::rio::*;
-use super::sim::*;
-use super::status::*;
-use super::system::*;
-use super::tests::{fresh, init_ms};
-use super::trajectory::*;
-use crate::vendor::consts::*;
-use crate::vendor::*;
+mod common;
+
+use common::{fresh, init_ms};
 use std::os::raw::{c_int, c_long, c_longlong};
+use MCCLPCI_IMP::ffi::coordinate::*;
+use MCCLPCI_IMP::ffi::encoder::*;
+use MCCLPCI_IMP::ffi::jog::*;
+use MCCLPCI_IMP::ffi::motion::*;
+use MCCLPCI_IMP::ffi::position::*;
+use MCCLPCI_IMP::ffi::ptp::*;
+use MCCLPCI_IMP::ffi::rio::*;
+use MCCLPCI_IMP::ffi::sim::*;
+use MCCLPCI_IMP::ffi::status::*;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::trajectory::*;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::*;
 
 /// 2^32 − 1 ms, the longest time.
 const MAX_MS: f64 = 4_294_967_295.0;
@@ -53,7 +55,11 @@ fn queued() -> c_int {
 }
 
 fn status() -> i32 {
-    crate::system::active().unwrap().snapshot(0).unwrap().status
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(0)
+        .unwrap()
+        .status
 }
 
 fn line_x(x: f64) -> c_int {
@@ -189,7 +195,7 @@ fn feed_and_ratios_outside_their_ranges_are_refused() {
 #[test]
 fn mac_param_whose_counts_overflow_is_refused() {
     let _g = fresh();
-    let mut m = crate::config::default_mac_param();
+    let mut m = MCCLPCI_IMP::config::default_mac_param();
     m.dwPPR = 4_294_967_295;
     m.dfPitch = 1e-12;
     // SAFETY: valid pointer.
@@ -197,10 +203,10 @@ fn mac_param_whose_counts_overflow_is_refused() {
     let mut got = SYS_MAC_PARAM::default();
     // SAFETY: valid pointer.
     assert_eq!(unsafe { MCC_GetMacParam(&mut got, 0, 0) }, NO_ERR);
-    assert_eq!(got, crate::config::default_mac_param(), "unchanged");
+    assert_eq!(got, MCCLPCI_IMP::config::default_mac_param(), "unchanged");
     // 500,000,000 × 1 / 0.5 = 1e9 pulses per UU, the most: taken with a work zone of
     // ±1e6 UU (1e15 pulses), refused with 1.5e6 UU (1.5e15 pulses) or a factor above.
-    let mut m = crate::config::default_mac_param();
+    let mut m = MCCLPCI_IMP::config::default_mac_param();
     m.dwPPR = 500_000_000;
     m.dfPitch = 0.5;
     m.dfHighLimit = 1.5e6;
@@ -215,7 +221,7 @@ fn mac_param_whose_counts_overflow_is_refused() {
     // SAFETY: valid pointer.
     assert_eq!(unsafe { MCC_SetMacParam(&mut m, 0, 0) }, NO_ERR);
     // The fewest: 1 pulse per 1e6 UU.
-    let mut f = crate::config::default_mac_param();
+    let mut f = MCCLPCI_IMP::config::default_mac_param();
     f.dwPPR = 1;
     f.dfPitch = 1e6;
     // SAFETY: valid pointer.
@@ -354,7 +360,7 @@ fn encoder_values_outside_their_ranges_are_refused() {
 #[test]
 fn configuration_values_outside_their_ranges_are_refused() {
     let _g = fresh();
-    let good = crate::config::default_home_config();
+    let good = MCCLPCI_IMP::config::default_home_config();
     for bad in [
         SYS_HOME_CONFIG {
             dfHighSpeed: 1e300,

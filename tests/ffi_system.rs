@@ -1,0 +1,341 @@
+//! Tests of the C entry points called as C would call them: every bad index, NULL pointer
+//! and NaN gets the vendor code (docs/decisions.md, "Return values") and changes nothing.
+
+mod common;
+
+use common::{cards, fresh};
+use std::ptr::null_mut;
+use MCCLPCI_IMP::ffi::status::*;
+use MCCLPCI_IMP::ffi::system::*;
+use MCCLPCI_IMP::ffi::trajectory::*;
+use MCCLPCI_IMP::vendor::consts::*;
+use MCCLPCI_IMP::vendor::*;
+
+fn init(n: usize) -> i32 {
+    let mut c = cards(n);
+    // SAFETY: c holds n valid SYS_CARD_CONFIG.
+    unsafe { MCC_InitSystem(2, c.as_mut_ptr(), n as u16) }
+}
+
+fn get_mac(ch: u16, card: u16) -> SYS_MAC_PARAM {
+    let mut m = SYS_MAC_PARAM::default();
+    // SAFETY: m is a valid SYS_MAC_PARAM.
+    assert_eq!(unsafe { MCC_GetMacParam(&mut m, ch, card) }, NO_ERR);
+    m
+}
+
+#[test]
+fn version_string() {
+    let _g = fresh();
+    let mut buf = [0x55 as std::os::raw::c_char; 8];
+    // SAFETY: 8-byte buffer.
+    unsafe { MCC_GetVersion(buf.as_mut_ptr()) };
+    // SAFETY: MCC_GetVersion wrote a NUL-terminated string.
+    let s = unsafe { std::ffi::CStr::from_ptr(buf.as_ptr()) };
+    assert_eq!(s.to_str().unwrap(), "6.00");
+    assert_eq!(buf[5], 0x55, "writes 5 bytes only");
+    // SAFETY: NULL is allowed and ignored.
+    unsafe { MCC_GetVersion(null_mut()) };
+}
+
+#[test]
+fn sys_max_speed_checks() {
+    let _g = fresh();
+    assert_eq!(MCC_SetSysMaxSpeed(250.0), NO_ERR);
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 0.0, -1.0] {
+        assert_eq!(MCC_SetSysMaxSpeed(bad), PARAMETER_ERR);
+    }
+    assert_eq!(MCC_GetSysMaxSpeed(), 250.0);
+}
+
+#[test]
+fn mac_param_checks_and_round_trip() {
+    let _g = fresh();
+    let mut m = get_mac(0, 0);
+    m.dwPPR = 1000;
+    m.dfPitch = 5.0;
+    m.dfGearRatio = 2.0;
+    // SAFETY: valid pointers or NULL throughout.
+    unsafe {
+        assert_eq!(MCC_SetMacParam(&mut m, 7, 11), NO_ERR);
+        assert_eq!(get_mac(7, 11), m);
+        let before = get_mac(1, 0);
+        assert_eq!(MCC_SetMacParam(null_mut(), 1, 0), PARAMETER_ERR);
+        assert_eq!(MCC_SetMacParam(&mut m, 8, 0), PARAMETER_ERR);
+        assert_eq!(MCC_SetMacParam(&mut m, 1, 12), PARAMETER_ERR);
+        let mut nan = SYS_MAC_PARAM {
+            dfPitch: f64::NAN,
+            ..m
+        };
+        assert_eq!(MCC_SetMacParam(&mut nan, 1, 0), PARAMETER_ERR);
+        let mut inf = SYS_MAC_PARAM {
+            dfHighLimit: f64::INFINITY,
+            ..m
+        };
+        assert_eq!(MCC_SetMacParam(&mut inf, 1, 0), PARAMETER_ERR);
+        assert_eq!(get_mac(1, 0), before, "a failed call changes nothing");
+        assert_eq!(MCC_GetMacParam(null_mut(), 0, 0), PARAMETER_ERR);
+        let mut out = SYS_MAC_PARAM::default();
+        assert_eq!(MCC_GetMacParam(&mut out, 8, 0), PARAMETER_ERR);
+        assert_eq!(MCC_GetMacParam(&mut out, 0, 12), PARAMETER_ERR);
+        assert_eq!(out, SYS_MAC_PARAM::default(), "nothing written on error");
+    }
+    // 1000 x 2 / 5 = 400 pulses per UU
+    assert_eq!(MCC_GetConvFactor(7, 11), 400.0);
+    assert_eq!(MCC_GetConvFactor(8, 0), f64::from(PARAMETER_ERR));
+    assert_eq!(MCC_GetConvFactor(0, 12), f64::from(PARAMETER_ERR));
+}
+
+#[test]
+fn encoder_and_home_config_checks() {
+    let _g = fresh();
+    // SAFETY: valid pointers or NULL throughout.
+    unsafe {
+        let mut e = SYS_ENCODER_CONFIG::default();
+        assert_eq!(MCC_GetEncoderConfig(&mut e, 2, 0), NO_ERR);
+        assert_eq!((e.wType, e.wInputRate), (ENC_TYPE_AB, 4));
+        e.wInputRate = 2;
+        assert_eq!(MCC_SetEncoderConfig(&mut e, 2, 0), NO_ERR);
+        let mut bad = SYS_ENCODER_CONFIG { wInputRate: 5, ..e };
+        assert_eq!(MCC_SetEncoderConfig(&mut bad, 2, 0), PARAMETER_ERR);
+        assert_eq!(MCC_SetEncoderConfig(null_mut(), 2, 0), PARAMETER_ERR);
+        assert_eq!(MCC_SetEncoderConfig(&mut e, 8, 0), PARAMETER_ERR);
+        assert_eq!(MCC_GetEncoderConfig(null_mut(), 2, 0), PARAMETER_ERR);
+        let mut r = SYS_ENCODER_CONFIG::default();
+        assert_eq!(MCC_GetEncoderConfig(&mut r, 2, 0), NO_ERR);
+        assert_eq!(r.wInputRate, 2);
+
+        let mut h = SYS_HOME_CONFIG::default();
+        assert_eq!(MCC_GetHomeConfig(&mut h, 0, 0), NO_ERR);
+        assert_eq!(h.wMode, 3);
+        h.wMode = 16;
+        h.dfOffset = 12.5;
+        assert_eq!(MCC_SetHomeConfig(&mut h, 0, 0), NO_ERR);
+        for m in [0u16, 2, 17] {
+            let mut b = SYS_HOME_CONFIG { wMode: m, ..h };
+            assert_eq!(MCC_SetHomeConfig(&mut b, 0, 0), PARAMETER_ERR, "mode {m}");
+        }
+        let mut b = SYS_HOME_CONFIG {
+            dfHighSpeed: f64::NAN,
+            ..h
+        };
+        assert_eq!(MCC_SetHomeConfig(&mut b, 0, 0), PARAMETER_ERR);
+        assert_eq!(MCC_SetHomeConfig(null_mut(), 0, 0), PARAMETER_ERR);
+        assert_eq!(MCC_SetHomeConfig(&mut h, 0, 12), PARAMETER_ERR);
+        assert_eq!(MCC_GetHomeConfig(null_mut(), 0, 0), PARAMETER_ERR);
+        let mut r = SYS_HOME_CONFIG::default();
+        assert_eq!(MCC_GetHomeConfig(&mut r, 0, 0), NO_ERR);
+        assert_eq!((r.wMode, r.dfOffset), (16, 12.5));
+    }
+}
+
+#[test]
+fn group_table_rules() {
+    let _g = fresh();
+    assert_eq!(MCC_CloseAllGroups(), NO_ERR);
+    // Before any group is created the default group 0 exists (queue 10000).
+    assert_eq!(MCC_GetCmdQueueSize(0), MOTION_QUEUE_SIZE);
+    assert_eq!(MCC_GetCmdQueueSize(1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CreateGroup(0, 1, 2, -1, -1, -1, -1, -1, 0), 0);
+    assert_eq!(MCC_CreateGroupEx(3, 4, 5, -1, -1, -1, -1, -1, 0, 50), 1);
+    assert_eq!(MCC_GetCmdQueueSize(1), 50);
+    // Bad mappings: nothing is created.
+    assert_eq!(
+        MCC_CreateGroup(-1, -1, -1, -1, -1, -1, -1, -1, 0),
+        GROUP_PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(0, 0, -1, -1, -1, -1, -1, -1, 0),
+        GROUP_PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(8, -1, -1, -1, -1, -1, -1, -1, 0),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(-7, 0, -1, -1, -1, -1, -1, -1, 0),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 12),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, -1),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroupEx(0, -1, -1, -1, -1, -1, -1, -1, 0, 0),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroupEx(0, -1, -1, -1, -1, -1, -1, -1, 0, -5),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(6, -1, -1, -1, -1, -1, -1, -1, 0),
+        2,
+        "next free slot"
+    );
+    // Closing.
+    assert_eq!(MCC_CloseGroup(-1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CloseGroup(96), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CloseGroup(5), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CloseGroup(1), NO_ERR);
+    assert_eq!(MCC_CloseGroup(1), GROUP_PARAMETER_ERR);
+    assert_eq!(
+        MCC_CreateGroup(7, -1, -1, -1, -1, -1, -1, -1, 0),
+        1,
+        "reuses slot 1"
+    );
+    // Queue size.
+    assert_eq!(MCC_SetCmdQueueSize(0, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetCmdQueueSize(-1, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetCmdQueueSize(100, 9), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_GetCmdQueueSize(0), MOTION_QUEUE_SIZE, "unchanged");
+    assert_eq!(MCC_SetCmdQueueSize(100, 0), NO_ERR);
+    assert_eq!(MCC_GetCmdQueueSize(0), 100);
+    // The 96-group table fills up.
+    assert_eq!(MCC_CloseAllGroups(), NO_ERR);
+    for i in 0..96 {
+        assert_eq!(MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, i % 12), i);
+    }
+    assert_eq!(
+        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 0),
+        GROUP_PARAMETER_ERR
+    );
+}
+
+#[test]
+fn init_argument_checks_leave_the_system_closed() {
+    let _g = fresh();
+    let mut c = cards(2);
+    // SAFETY: c holds 2 valid entries; NULL is refused.
+    unsafe {
+        for ms in [0, 51, -1] {
+            assert_eq!(
+                MCC_InitSystem(ms, c.as_mut_ptr(), 1),
+                PARAMETER_ERR,
+                "{ms} ms"
+            );
+        }
+        for ms in [f64::NAN, f64::INFINITY, 0.5, 50.5] {
+            assert_eq!(MCC_InitSystemEx(ms, c.as_mut_ptr(), 1), PARAMETER_ERR);
+        }
+        assert_eq!(MCC_InitSystem(2, null_mut(), 1), PARAMETER_ERR);
+        assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 0), PARAMETER_ERR);
+        assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 13), PARAMETER_ERR);
+        c[1].wCardType = EPCIO_6_AXIS_PCI_CARD;
+        assert_eq!(
+            MCC_InitSystem(2, c.as_mut_ptr(), 2),
+            PARAMETER_ERR,
+            "EPCIO card"
+        );
+        assert_eq!(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR, "still closed");
+        c[1].wCardType = IMP_II_8_AXIS_PCI_CARD;
+        assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 2), NO_ERR);
+        assert_eq!(MCC_InitSystemEx(1.5, c.as_mut_ptr(), 2), NO_ERR, "re-init");
+        assert_eq!(MCC_InitSimulation(50, c.as_mut_ptr(), 1), NO_ERR);
+        // A failed re-init leaves the running system running.
+        assert_eq!(MCC_InitSystem(99, c.as_mut_ptr(), 1), PARAMETER_ERR);
+        assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    }
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+    assert_eq!(MCC_CloseSystem(), INITIAL_MOTION_ERR);
+}
+
+#[test]
+fn unknown_clock_mode_refuses_to_start() {
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", "warp");
+    assert_eq!(init(1), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR);
+    std::env::set_var("MCCL_CLOCK", "stepped");
+    assert_eq!(init(1), NO_ERR);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn calls_that_need_a_running_system() {
+    let _g = fresh();
+    assert_eq!(MCC_ResetMotion(), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_UpdateParam(), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_EnableDryRun(), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_DisableDryRun(), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_CheckDryRun(), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR);
+    assert_eq!(init(1), NO_ERR);
+    assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    assert_eq!(MCC_GetMotionStatus(1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_GetMotionStatus(96), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_GetMotionStatus(u16::MAX), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CheckDryRun(), 1, "off: 1, as MCC_CheckBlend");
+    assert_eq!(MCC_EnableDryRun(), NO_ERR);
+    assert_eq!(MCC_CheckDryRun(), 0);
+    assert_eq!(MCC_DisableDryRun(), NO_ERR);
+    assert_eq!(MCC_CheckDryRun(), 1);
+    assert_eq!(MCC_ResetMotion(), NO_ERR);
+    // Groups are fixed while the card runs.
+    assert_eq!(MCC_CloseAllGroups(), COMMAND_NOTACCEPTED_ERR);
+    assert_eq!(MCC_CloseGroup(0), COMMAND_NOTACCEPTED_ERR);
+    assert_eq!(
+        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 0),
+        COMMAND_NOTACCEPTED_ERR
+    );
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn update_param_applies_mechanism_changes() {
+    let _g = fresh();
+    assert_eq!(init(1), NO_ERR);
+    assert_eq!(
+        MCC_GetConvFactor(0, 0),
+        500.0,
+        "default PPR 500, gear 1, pitch 1"
+    );
+    let mut m = get_mac(0, 0);
+    m.dwPPR = 2000;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_SetMacParam(&mut m, 0, 0) }, NO_ERR);
+    assert_eq!(MCC_GetConvFactor(0, 0), 500.0, "not before MCC_UpdateParam");
+    assert_eq!(MCC_UpdateParam(), NO_ERR);
+    assert_eq!(MCC_GetConvFactor(0, 0), 2000.0);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+    assert_eq!(
+        MCC_GetConvFactor(0, 0),
+        2000.0,
+        "closed: the parameters set"
+    );
+}
+
+#[test]
+fn time_delay_runs_virtual_time_in_stepped_mode() {
+    let _g = fresh();
+    assert_eq!(init(1), NO_ERR); // 2 ms period
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    assert_eq!(
+        shared.clock.ticks(),
+        0,
+        "stepped: nothing runs until the program waits"
+    );
+    MCC_TimeDelay(7); // ceil(7 / 2) = 4 ticks
+    assert_eq!(shared.clock.ticks(), 4);
+    MCC_TimeDelay(0);
+    assert_eq!(shared.clock.ticks(), 4);
+    MCC_TimeDelay(1000);
+    assert_eq!(shared.clock.ticks(), 504);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn fast_clock_idles_without_work() {
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", "fast");
+    assert_eq!(init(1), NO_ERR);
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    MCC_TimeDelay(100); // 50 ticks of 2 ms
+    assert_eq!(shared.clock.ticks(), 50);
+    assert_eq!(shared.clock.now(), std::time::Duration::from_millis(100));
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
