@@ -1,6 +1,17 @@
 //! The extern "C" layer: argument checks, pointer checks, panic boundary, and Rust errors
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
-//! plain `#[no_mangle] pub extern "C" fn` whose body calls [`guard`] and the core.
+//! plain `#[no_mangle] pub extern "C" fn` whose body is one `ffi_boundary! { ... }`
+//! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
+//! `ffi_boundary` integration test rejects an exported body that does not enter it.
+
+/// The panic boundary of an exported function: the block runs as a closure returning
+/// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
+/// to `RUN_TIME_ERR`. Every `extern "C"` body in this module is exactly one of these.
+macro_rules! ffi_boundary {
+    ($($body:tt)*) => {
+        $crate::ffi::guard(|| { $($body)* })
+    };
+}
 
 pub mod adc;
 pub mod coordinate;

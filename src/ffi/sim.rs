@@ -3,7 +3,7 @@
 //! move a sensor, read what the card outputs and where the motor is. Every call checks
 //! its arguments like the vendor functions.
 
-use super::{card, channel, finite, guard, out_ok, write_out};
+use super::{card, channel, finite, out_ok, write_out};
 use crate::error::McclError;
 use crate::machine::Sensor;
 use crate::system;
@@ -59,7 +59,7 @@ pub extern "C" fn MCCL_SimSetSensor(
     nSensor: c_int,
     nLevel: c_int,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = sensor(nSensor)?;
         let level = match nLevel {
             MCCL_SIM_FOLLOW => None,
@@ -69,7 +69,7 @@ pub extern "C" fn MCCL_SimSetSensor(
         };
         with_channel(wCardIndex, wChannel, |ch| ch.force(s, level))?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Places a sensor at machine position (UU): the home sensor's active region is
@@ -83,7 +83,7 @@ pub extern "C" fn MCCL_SimPlaceSensor(
     dfFrom: f64,
     dfTo: f64,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = sensor(nSensor)?;
         let (a, b) = (finite(dfFrom)?, finite(dfTo)?);
         if s == Sensor::Home && a > b {
@@ -98,13 +98,13 @@ pub extern "C" fn MCCL_SimPlaceSensor(
             Ok(())
         })??;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Presses (1) or releases (0) the card's emergency-stop input.
 #[no_mangle]
 pub extern "C" fn MCCL_SimSetEmergencyStop(wCardIndex: WORD, nLevel: c_int) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if nLevel != 0 && nLevel != 1 {
             return Err(McclError::Parameter);
         }
@@ -112,7 +112,7 @@ pub extern "C" fn MCCL_SimSetEmergencyStop(wCardIndex: WORD, nLevel: c_int) -> c
         let cd = shared.card(card(wCardIndex)?)?;
         shared.machine.lock().emergency[cd] = nLevel == 1;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Reads an output of the card: `MCCL_SIM_OUT_SERVO` (of the channel),
@@ -127,7 +127,7 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
     nOutput: c_int,
     pnValue: *mut c_int,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         out_ok(pnValue)?;
         let shared = system::active()?;
@@ -148,7 +148,7 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
         // SAFETY: checked non-null; the caller passes a writable int.
         unsafe { write_out(pnValue, c_int::from(v)) };
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Where the motor of a channel is: machine position in UU, and pulses output so far.
@@ -162,7 +162,7 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
     pdfPosition: *mut f64,
     pllPulses: *mut std::os::raw::c_longlong,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         out_ok(pdfPosition)?;
         out_ok(pllPulses)?;
         let (p, n) = with_channel(wCardIndex, wChannel, |ch| {
@@ -174,7 +174,7 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
             write_out(pllPulses, n);
         }
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Virtual time since `MCC_InitSystem`, ms (ticks x interpolation period).
@@ -183,12 +183,12 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
 /// `pdfMs` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn MCCL_SimGetTime(pdfMs: *mut f64) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         out_ok(pdfMs)?;
         let shared = system::active()?;
         let ms = shared.clock.now_ns() as f64 / 1e6;
         // SAFETY: checked non-null; the caller passes a writable double.
         unsafe { write_out(pdfMs, ms) };
         Ok(c::NO_ERR)
-    })
+    }
 }
