@@ -3,7 +3,7 @@
 //! channel of the same number unless set otherwise from Rust
 //! (`Peripherals::set_adc_source`). The routine is registered with `MCC_SetADCRoutine`.
 
-use super::{channel, out_ok, write_out};
+use super::{channel, Out};
 use crate::card::{adc::Adc, with_card};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
@@ -30,7 +30,10 @@ fn ch_op(
 }
 
 /// Reads one value through `p` after all checks (NULL is `PARAMETER_ERR`).
-fn ch_read<T>(
+///
+/// # Safety
+/// `p` must be NULL or point to a writable `T`.
+unsafe fn ch_read<T>(
     p: *mut T,
     wChannel: WORD,
     wCardIndex: WORD,
@@ -38,10 +41,10 @@ fn ch_read<T>(
 ) -> McclResult<c_int> {
     crate::system::active()?;
     let ch = channel(wChannel)?.0;
-    out_ok(p)?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let p = unsafe { Out::new(p) }?;
     let v = with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))?;
-    // SAFETY: checked non-null; the caller passes a writable T (the function's contract).
-    unsafe { write_out(p, v) };
+    p.write(v);
     Ok(c::NO_ERR)
 }
 
@@ -62,7 +65,10 @@ pub unsafe extern "C" fn MCC_GetADCConvType(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch)) }
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch)) }
+    }
 }
 
 /// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
@@ -82,7 +88,10 @@ pub unsafe extern "C" fn MCC_GetADCInput(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch)) }
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch)) }
+    }
 }
 
 /// Chooses the channel `ADC_MODE_SINGLE` converts.
@@ -103,10 +112,10 @@ pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c
 pub unsafe extern "C" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         crate::system::active()?;
-        out_ok(pwSTatus)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwSTatus = unsafe { Out::new(pwSTatus) }?;
         let s = with_card(wCardIndex, |p| Ok(p.adc.work_status()))?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { write_out(pwSTatus, s) };
+        pwSTatus.write(s);
         Ok(c::NO_ERR)
     }
 }
@@ -186,7 +195,10 @@ pub unsafe extern "C" fn MCC_GetADCCompValue(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch)) }
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch)) }
+    }
 }
 
 /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.

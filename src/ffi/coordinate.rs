@@ -1,7 +1,7 @@
 //! Coordinate management (user manual §2.6.1, §2.6.5; INTERFACE.md "Coordinate
 //! Management").
 
-use super::{outs8, with_group, write8};
+use super::{with_group, Out};
 use crate::error::McclError;
 use crate::system;
 use crate::vendor::consts as c;
@@ -46,12 +46,12 @@ pub unsafe extern "C" fn MCC_GetCurPos(
 ) -> c_int {
     ffi_boundary! {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let shared = system::active()?;
         shared.poll_position(wGroupIndex);
         let s = shared.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, s.pos) };
+        super::write_each(p, s.pos);
         Ok(c::NO_ERR)
     }
 }
@@ -75,10 +75,10 @@ pub unsafe extern "C" fn MCC_GetCurRefPos(
 ) -> c_int {
     ffi_boundary! {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, s.ref_pos) };
+        super::write_each(p, s.ref_pos);
         Ok(c::NO_ERR)
     }
 }
@@ -102,10 +102,10 @@ pub unsafe extern "C" fn MCC_GetPulsePos(
 ) -> c_int {
     ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable longs.
-        unsafe { write8(&p, s.pulses.map(|v| v as c_long)) };
+        super::write_each(p, s.pulses.map(|v| v as c_long));
         Ok(c::NO_ERR)
     }
 }
@@ -128,10 +128,10 @@ pub unsafe extern "C" fn MCC_GetPulsePosEx(
 ) -> c_int {
     ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable long longs.
-        unsafe { write8(&p, s.pulses) };
+        super::write_each(p, s.pulses);
         Ok(c::NO_ERR)
     }
 }

@@ -2,7 +2,7 @@
 //! encoder follows the motor: one count per pulse at x4, half at x2, a quarter at x1,
 //! reversed by A/B swap or a single inverted phase, scaled by `MCC_SetENCGearRate`.
 
-use super::{card, channel, out_ok, write_out};
+use super::{card, channel, Out};
 use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
@@ -33,10 +33,10 @@ pub unsafe extern "C" fn MCC_GetENCValue(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        out_ok(plValue)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let plValue = unsafe { Out::new(plValue) }?;
         let v = with_channel(wChannel, wCardIndex, |ch| Ok(ch.encoder()))?;
-        // SAFETY: checked non-null; the caller passes a writable long.
-        unsafe { write_out(plValue, v as c_long) };
+        plValue.write(v as c_long);
         Ok(c::NO_ERR)
     }
 }
@@ -52,10 +52,10 @@ pub unsafe extern "C" fn MCC_GetENCValueEx(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        out_ok(pllValue)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pllValue = unsafe { Out::new(pllValue) }?;
         let v = with_channel(wChannel, wCardIndex, |ch| Ok(ch.encoder()))?;
-        // SAFETY: checked non-null; the caller passes a writable long long.
-        unsafe { write_out(pllValue, v) };
+        pllValue.write(v);
         Ok(c::NO_ERR)
     }
 }
@@ -185,10 +185,10 @@ pub unsafe extern "C" fn MCC_GetENCLatchValue(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(plLatchValue)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let plLatchValue = unsafe { Out::new(plLatchValue) }?;
         let v = with_triggers(wCardIndex, |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
-        // SAFETY: checked non-null; the caller passes a writable long.
-        unsafe { write_out(plLatchValue, v as c_long) };
+        plLatchValue.write(v as c_long);
         Ok(c::NO_ERR)
     }
 }
@@ -226,12 +226,12 @@ pub unsafe extern "C" fn MCC_GetENCIndexStatus(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(pwStatus)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStatus = unsafe { Out::new(pwStatus) }?;
         let v = with_triggers(wCardIndex, |t, _| {
             Ok(std::mem::take(&mut t.index_status[ch.0]))
         })?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { write_out(pwStatus, WORD::from(v)) };
+        pwStatus.write(WORD::from(v));
         Ok(c::NO_ERR)
     }
 }
@@ -309,12 +309,12 @@ pub unsafe extern "C" fn MCC_GetENCCompValue(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(lValue)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let lValue = unsafe { Out::new(lValue) }?;
         let v = with_triggers(wCardIndex, |t, _| {
             Ok(t.stock[ch.0].front().copied().unwrap_or(0))
         })?;
-        // SAFETY: checked non-null; the caller passes a writable long.
-        unsafe { write_out(lValue, v as c_long) };
+        lValue.write(v as c_long);
         Ok(c::NO_ERR)
     }
 }
@@ -331,10 +331,10 @@ pub unsafe extern "C" fn MCC_GetENCCompStockCount(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(wCount)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let wCount = unsafe { Out::new(wCount) }?;
         let n = with_triggers(wCardIndex, |t, _| Ok(t.stock_count(ch.0)))?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { write_out(wCount, n.min(usize::from(WORD::MAX)) as WORD) };
+        wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
     }
 }

@@ -2,7 +2,7 @@
 //! examples manual §19; INTERFACE.md "Software Over Travel Check & Hardware Limit Switch
 //! Check").
 
-use super::{card, channel, out_ok, outs8, update_group, with_group, write8, write_out};
+use super::{card, channel, update_group, with_group, Out};
 use crate::error::McclError;
 use crate::system;
 use crate::vendor::consts as c;
@@ -89,10 +89,10 @@ pub unsafe extern "C" fn MCC_GetOverTravelCheck(
             pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3, pnOTCheck4, pnOTCheck5, pnOTCheck6,
             pnOTCheck7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -108,7 +108,8 @@ fn limit_status(
     if wUpDown > 1 {
         return Err(McclError::Parameter);
     }
-    out_ok(pwStatus)?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let pwStatus = unsafe { Out::new(pwStatus) }?;
     let shared = system::active()?;
     let cd = shared.card(cd)?;
     let m = shared.machine.lock();
@@ -120,8 +121,7 @@ fn limit_status(
     } else {
         chan.levels().minus
     };
-    // SAFETY: checked non-null by out_ok; the caller passes a writable WORD.
-    unsafe { write_out(pwStatus, WORD::from(v)) };
+    pwStatus.write(WORD::from(v));
     Ok(c::NO_ERR)
 }
 

@@ -3,7 +3,7 @@
 //! trigger-out by encoder compares. The virtual card keeps the state of each output; the
 //! simulated machine reads it.
 
-use super::{card, channel};
+use super::{card, channel, Out};
 use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
@@ -62,12 +62,12 @@ pub extern "C" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetEmgcStopStatus(pwStatus: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        super::out_ok(pwStatus)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStatus = unsafe { Out::new(pwStatus) }?;
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
         let v = shared.machine.lock().emergency[cd];
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(pwStatus, WORD::from(v)) };
+        pwStatus.write(WORD::from(v));
         Ok(c::NO_ERR)
     }
 }
@@ -121,12 +121,12 @@ pub unsafe extern "C" fn MCC_GetLedLightStatus(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(Channel)?;
-        super::out_ok(Status)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let Status = unsafe { Out::new(Status) }?;
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
         let v = led_lit(&shared.machine.lock(), cd, ch.0);
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(Status, WORD::from(v)) };
+        Status.write(WORD::from(v));
         Ok(c::NO_ERR)
     }
 }
@@ -178,14 +178,14 @@ pub unsafe extern "C" fn MCC_GetHomeSensorStatus(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        super::out_ok(pwStatus)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStatus = unsafe { Out::new(pwStatus) }?;
         let mode = system::with(|s| s.config.home[cd.0][ch.0].wSensorMode);
         let shared = system::active()?;
         let cd = shared.card(cd)?;
         let m = shared.machine.lock();
         let v = m.cards[cd][ch.0].home_level(mode);
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(pwStatus, WORD::from(v)) };
+        pwStatus.write(WORD::from(v));
         Ok(c::NO_ERR)
     }
 }
@@ -401,7 +401,8 @@ fn lio_sources(t: &crate::machine::triggers::CardTriggers) -> u16 {
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        super::out_ok(wCount)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let wCount = unsafe { Out::new(wCount) }?;
         let n = with_triggers(wCardIndex, |t| {
             let src = lio_sources(t);
             Ok((0..8)
@@ -409,8 +410,7 @@ pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex:
                 .map(|ch| t.stock_count(ch))
                 .sum::<usize>())
         })?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(wCount, n.min(usize::from(WORD::MAX)) as WORD) };
+        wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
     }
 }

@@ -1,7 +1,7 @@
 //! General motion: line, arc, circle and helix commands and their settings (user manual
 //! §2.6.2; INTERFACE.md "General Motions"), plus the obsolete forms whose meaning is clear.
 
-use super::{finite, finite8, outs8, queue, queue_curve, shape, shape_char, with_group, write8};
+use super::{finite, finite8, queue, queue_curve, shape, shape_char, with_group, Out};
 use crate::error::{McclError, McclResult};
 use crate::planner::{Path, Plane};
 use crate::system;
@@ -141,10 +141,10 @@ pub unsafe extern "C" fn MCC_GetSpeed(
         let p = [
             pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, s.vel) };
+        super::write_each(p, s.vel);
         Ok(c::NO_ERR)
     }
 }

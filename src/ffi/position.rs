@@ -2,7 +2,7 @@
 //! gains (kept and reported: the simulated plant is set by the configuration), error
 //! counters, pulse speed and acceleration limits, tracking error, compensation.
 
-use super::{axis, card, channel, finite, outs8, update_group, with_group, write8};
+use super::{axis, card, channel, finite, update_group, with_group, Out};
 use crate::error::{McclError, McclResult};
 use crate::machine::MAX_PULSE_LIMIT;
 use crate::system;
@@ -33,10 +33,10 @@ fn set_gains(k: usize, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
 /// # Safety
 /// Every pointer must be NULL or writable.
 unsafe fn get_gains(k: usize, p: [*mut WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
-    outs8(&p)?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let p = unsafe { Out::each(p) }?;
     let v = with_card(wCardIndex, |m, cd| Ok(m.settings[cd].gains[k]))?;
-    // SAFETY: checked non-null; the caller passes writable WORDs.
-    unsafe { write8(&p, v) };
+    super::write_each(p, v);
     Ok(c::NO_ERR)
 }
 
@@ -297,7 +297,8 @@ pub unsafe extern "C" fn MCC_GetErrorCount(
             pnErrCount6,
             pnErrCount7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_card(wCardIndex, |m, cd| {
             Ok(std::array::from_fn(|ch| {
                 m.cards[cd][ch]
@@ -305,8 +306,7 @@ pub unsafe extern "C" fn MCC_GetErrorCount(
                     .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
             }))
         })?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -391,12 +391,12 @@ pub unsafe extern "C" fn MCC_GetMaxPulseSpeed(
         let p = [
             pnSpeed0, pnSpeed1, pnSpeed2, pnSpeed3, pnSpeed4, pnSpeed5, pnSpeed6, pnSpeed7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_card(wCardIndex, |m, cd| {
             Ok(std::array::from_fn(|ch| m.cards[cd][ch].max_speed))
         })?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -457,12 +457,12 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
             pnPulseAcc6,
             pnPulseAcc7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_card(wCardIndex, |m, cd| {
             Ok(std::array::from_fn(|ch| m.cards[cd][ch].max_acc))
         })?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -514,11 +514,11 @@ pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        super::out_ok(pdfLimit)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pdfLimit = unsafe { Out::new(pdfLimit) }?;
         let a = axis(cAxis)?;
         let v = with_group(wGroupIndex, |g| Ok(g.track_limit[a]))?;
-        // SAFETY: checked non-null; the caller passes a writable double.
-        unsafe { super::write_out(pdfLimit, v) };
+        pdfLimit.write(v);
         Ok(c::NO_ERR)
     }
 }
@@ -683,10 +683,10 @@ pub unsafe extern "C" fn MCC_GetInPosToleranceEx(
             pdfTolerance6,
             pdfTolerance7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -712,10 +712,10 @@ pub unsafe extern "C" fn MCC_GetInPosStatus(
         let p = [
             pbyInPos0, pbyInPos1, pbyInPos2, pbyInPos3, pbyInPos4, pbyInPos5, pbyInPos6, pbyInPos7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.inpos_status()))?;
-        // SAFETY: checked non-null; the caller passes writable bytes.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -799,7 +799,8 @@ pub unsafe extern "C" fn MCC_GetInPosTolerance(
             pwTolerance6,
             pwTolerance7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| {
             Ok(std::array::from_fn(|i| {
                 (g.inpos.tolerance[i] * g.axes[i].factor.abs())
@@ -807,8 +808,7 @@ pub unsafe extern "C" fn MCC_GetInPosTolerance(
                     .min(f64::from(WORD::MAX)) as WORD
             }))
         })?;
-        // SAFETY: checked non-null; the caller passes writable WORDs.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }

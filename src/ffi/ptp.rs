@@ -1,7 +1,7 @@
 //! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; INTERFACE.md
 //! "Point-to-Point Motion").
 
-use super::{outs8, shape, shape_char, with_group, write8};
+use super::{shape, shape_char, with_group, Out};
 use crate::error::McclError;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -63,10 +63,10 @@ pub unsafe extern "C" fn MCC_GetPtPAccType(
             pcAccType0, pcAccType1, pcAccType2, pcAccType3, pcAccType4, pcAccType5, pcAccType6,
             pcAccType7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)))?;
-        // SAFETY: checked non-null; the caller passes writable chars.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -113,10 +113,10 @@ pub unsafe extern "C" fn MCC_GetPtPDecType(
             pcDecType0, pcDecType1, pcDecType2, pcDecType3, pcDecType4, pcDecType5, pcDecType6,
             pcDecType7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)))?;
-        // SAFETY: checked non-null; the caller passes writable chars.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -170,10 +170,10 @@ pub unsafe extern "C" fn MCC_GetPtPAccTime(
             pdfAccTime6,
             pdfAccTime7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms))?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }
@@ -227,10 +227,10 @@ pub unsafe extern "C" fn MCC_GetPtPDecTime(
             pdfDecTime6,
             pdfDecTime7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms))?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
     }
 }

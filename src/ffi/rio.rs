@@ -8,7 +8,7 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::{finite, out_ok, write_out};
+use super::{finite, Out};
 use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
 use crate::card::with_card;
 use crate::error::McclResult;
@@ -47,10 +47,10 @@ fn done(r: McclResult<()>) -> McclResult<c_int> {
 /// `p` must be NULL or point to a writable T.
 unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<c_int> {
     crate::system::active()?;
-    out_ok(p)?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let p = unsafe { Out::new(p) }?;
     let v = get()?;
-    // SAFETY: checked non-null; writable by the caller's contract.
-    unsafe { write_out(p, v) };
+    p.write(v);
     Ok(c::NO_ERR)
 }
 

@@ -3,7 +3,7 @@
 //! move a sensor, read what the card outputs and where the motor is. Every call checks
 //! its arguments like the vendor functions.
 
-use super::{card, channel, finite, out_ok, write_out};
+use super::{card, channel, finite, Out};
 use crate::error::McclError;
 use crate::machine::Sensor;
 use crate::system;
@@ -129,7 +129,8 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pnValue)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pnValue = unsafe { Out::new(pnValue) }?;
         let shared = system::active()?;
         let cd = shared.card(cd)?;
         let v = match nOutput {
@@ -145,8 +146,7 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
             MCCL_SIM_OUT_LED => super::local_io::led_lit(&shared.machine.lock(), cd, ch.0),
             _ => return Err(McclError::Parameter),
         };
-        // SAFETY: checked non-null; the caller passes a writable int.
-        unsafe { write_out(pnValue, c_int::from(v)) };
+        pnValue.write(c_int::from(v));
         Ok(c::NO_ERR)
     }
 }
@@ -163,16 +163,15 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
     pllPulses: *mut std::os::raw::c_longlong,
 ) -> c_int {
     ffi_boundary! {
-        out_ok(pdfPosition)?;
-        out_ok(pllPulses)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pdfPosition = unsafe { Out::new(pdfPosition) }?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pllPulses = unsafe { Out::new(pllPulses) }?;
         let (p, n) = with_channel(wCardIndex, wChannel, |ch| {
             (ch.position(), ch.output_pulses())
         })?;
-        // SAFETY: checked non-null; the caller passes writable memory.
-        unsafe {
-            write_out(pdfPosition, p);
-            write_out(pllPulses, n);
-        }
+        pdfPosition.write(p);
+        pllPulses.write(n);
         Ok(c::NO_ERR)
     }
 }
@@ -184,11 +183,11 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
 #[no_mangle]
 pub unsafe extern "C" fn MCCL_SimGetTime(pdfMs: *mut f64) -> c_int {
     ffi_boundary! {
-        out_ok(pdfMs)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pdfMs = unsafe { Out::new(pdfMs) }?;
         let shared = system::active()?;
         let ms = shared.clock.now_ns() as f64 / 1e6;
-        // SAFETY: checked non-null; the caller passes a writable double.
-        unsafe { write_out(pdfMs, ms) };
+        pdfMs.write(ms);
         Ok(c::NO_ERR)
     }
 }

@@ -1,5 +1,6 @@
 //! Motion status (user manual §2.6.5; INTERFACE.md "Motion Status").
 
+use super::Out;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -34,10 +35,10 @@ pub unsafe extern "C" fn MCC_GetCurCommand(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        super::out_ok(pstCurCommand)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstCurCommand = unsafe { Out::new(pstCurCommand) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes a writable COMMAND_INFO.
-        unsafe { super::write_out(pstCurCommand, s.cmd) };
+        pstCurCommand.write(s.cmd);
         Ok(c::NO_ERR)
     }
 }
@@ -49,10 +50,10 @@ pub unsafe extern "C" fn MCC_GetCurCommand(
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetCommandCount(pnCmdCount: *mut c_int, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        super::out_ok(pnCmdCount)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pnCmdCount = unsafe { Out::new(pnCmdCount) }?;
         let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
-        // SAFETY: checked non-null; the caller passes a writable int.
-        unsafe { super::write_out(pnCmdCount, c_int::try_from(n).unwrap_or(c_int::MAX)) };
+        pnCmdCount.write(c_int::try_from(n).unwrap_or(c_int::MAX));
         Ok(c::NO_ERR)
     }
 }
@@ -92,10 +93,10 @@ pub extern "C" fn MCC_SetCommandIndex(
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetCommandIndex(wIndex: *mut WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        super::out_ok(wIndex)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let wIndex = unsafe { Out::new(wIndex) }?;
         let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(wIndex, n as WORD) };
+        wIndex.write(n as WORD);
         Ok(c::NO_ERR)
     }
 }
@@ -139,7 +140,8 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (super::card(wCardIndex)?, super::channel(wChannel)?);
-        super::out_ok(pwStockCount)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStockCount = unsafe { Out::new(pwStockCount) }?;
         let shared = system::active()?;
         shared.card(cd)?;
         let moving = shared.channel_moving(cd.0, ch.0);
@@ -151,8 +153,7 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
         } else {
             0
         };
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(pwStockCount, n) };
+        pwStockCount.write(n);
         Ok(c::NO_ERR)
     }
 }

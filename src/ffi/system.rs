@@ -1,6 +1,6 @@
 //! System management (user manual §2.4–2.5; INTERFACE.md "System Management").
 
-use super::{card, channel, out_ok, read_in, write_out};
+use super::{card, channel, read_in, Out};
 use crate::config::{self, GroupDef};
 use crate::error::McclError;
 use crate::error::McclResult;
@@ -23,7 +23,9 @@ pub const VERSION_STRING: &[u8] = b"6.00\0";
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
     ffi_boundary! {
-        out_ok(strVersion)?;
+        if strVersion.is_null() {
+            return Err(McclError::Parameter);
+        }
         // SAFETY: non-null; the caller provides a buffer for the version string (the
         // vendor's is 5 bytes, the same as ours).
         unsafe {
@@ -93,10 +95,10 @@ pub unsafe extern "C" fn MCC_GetMacParam(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pstMacParam)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstMacParam = unsafe { Out::new(pstMacParam) }?;
         let p = system::with(|s| s.config.mac[cd.0][ch.0]);
-        // SAFETY: checked non-null; the caller passes a writable SYS_MAC_PARAM.
-        unsafe { write_out(pstMacParam, p) };
+        pstMacParam.write(p);
         Ok(c::NO_ERR)
     }
 }
@@ -135,10 +137,10 @@ pub unsafe extern "C" fn MCC_GetEncoderConfig(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pstEncoderConfig)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstEncoderConfig = unsafe { Out::new(pstEncoderConfig) }?;
         let e = system::with(|s| s.config.encoder[cd.0][ch.0]);
-        // SAFETY: checked non-null; the caller passes a writable SYS_ENCODER_CONFIG.
-        unsafe { write_out(pstEncoderConfig, e) };
+        pstEncoderConfig.write(e);
         Ok(c::NO_ERR)
     }
 }
@@ -179,10 +181,10 @@ pub unsafe extern "C" fn MCC_GetHomeConfig(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pstHomeConfig)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstHomeConfig = unsafe { Out::new(pstHomeConfig) }?;
         let h = system::with(|s| s.config.home[cd.0][ch.0]);
-        // SAFETY: checked non-null; the caller passes a writable SYS_HOME_CONFIG.
-        unsafe { write_out(pstHomeConfig, h) };
+        pstHomeConfig.write(h);
         Ok(c::NO_ERR)
     }
 }
