@@ -120,7 +120,7 @@ pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex
 #[no_mangle]
 pub extern "C" fn MCC_SetENCFilterClock(wDivider: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-    super::local_io::filter(super::local_io::FILTER_ENC, wDivider, wCardIndex)
+    super::local_io::filter(crate::machine::FilterClock::Encoder, wDivider, wCardIndex)
         }
 }
 

@@ -5,6 +5,8 @@
 
 use super::{card, channel, Out};
 use crate::error::McclResult;
+use crate::machine::triggers::TrigOutKind;
+use crate::machine::FilterClock;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
@@ -76,13 +78,7 @@ fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let ch = channel(Channel)?;
     let shared = system::active()?;
     let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    let bit = 1u8 << ch.0;
-    if on {
-        m.settings[cd].leds |= bit;
-    } else {
-        m.settings[cd].leds &= !bit;
-    }
+    shared.machine.lock().settings[cd].set_led(ch.0, on);
     Ok(c::NO_ERR)
 }
 
@@ -96,16 +92,6 @@ pub extern "C" fn MCC_SetLedLightOn(Channel: WORD, wCardIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! { led(Channel, wCardIndex, false) }
-}
-
-/// What LED `ch` of card `cd` shows: its trigger-out value while a trigger holds it,
-/// else what `MCC_SetLedLightOn`/`Off` set.
-pub(super) fn led_lit(m: &crate::machine::Machine, cd: usize, ch: usize) -> bool {
-    let own = m.settings.get(cd).is_some_and(|s| s.leds >> ch & 1 == 1);
-    m.triggers
-        .get(cd)
-        .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
-        .unwrap_or(own)
 }
 
 /// A channel's LED output: 1 on, 0 off (while an LED trigger-out holds it: its trigger
@@ -125,45 +111,36 @@ pub unsafe extern "C" fn MCC_GetLedLightStatus(
         let Status = unsafe { Out::new(Status) }?;
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
-        let v = led_lit(&shared.machine.lock(), cd, ch.0);
+        let v = shared.machine.lock().led_lit(cd, ch.0);
         Status.write(WORD::from(v));
         Ok(c::NO_ERR)
     }
 }
 
-/// Index in `CardSettings::filters` of the limit switch inputs' filter clock.
-pub(super) const FILTER_LIMIT: usize = 0;
-/// The home sensor inputs' filter clock.
-pub(super) const FILTER_HOME: usize = 1;
-/// The general-purpose inputs' filter clock.
-pub(super) const FILTER_GPIO: usize = 2;
-/// The encoder inputs' filter clock (`MCC_SetENCFilterClock`).
-pub(super) const FILTER_ENC: usize = 3;
-
 /// Keeps filter clock `k` of the card (any WORD: the manuals give no range).
-pub(super) fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> McclResult<c_int> {
+pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResult<c_int> {
     let shared = system::active()?;
     let cd = shared.card(card(wCardIndex)?)?;
-    shared.machine.lock().settings[cd].filters[k] = Value;
+    shared.machine.lock().settings[cd].set_filter_clock(k, Value);
     Ok(c::NO_ERR)
 }
 
 /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FILTER_LIMIT, Value, wCardIndex) }
+    ffi_boundary! { filter(FilterClock::Limit, Value, wCardIndex) }
 }
 
 /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FILTER_HOME, Value, wCardIndex) }
+    ffi_boundary! { filter(FilterClock::Home, Value, wCardIndex) }
 }
 
 /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FILTER_GPIO, Value, wCardIndex) }
+    ffi_boundary! { filter(FilterClock::Gpio, Value, wCardIndex) }
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.
@@ -270,7 +247,7 @@ pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            t.trig_out[p].0 = wEnable == 1;
+            t.trig_outs(TrigOutKind::Local)[p].enabled = wEnable == 1;
             Ok(c::NO_ERR)
         })
     }
@@ -286,7 +263,7 @@ pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex:
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            t.trig_out[p].1 = wValue == 1;
+            t.trig_outs(TrigOutKind::Local)[p].value = wValue == 1;
             Ok(c::NO_ERR)
         })
     }
@@ -304,9 +281,7 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            for p in (0..8).filter(|p| dwBitMask & (1 << p) != 0) {
-                t.trig_out[p].1 = dwBitValue & (1 << p) != 0;
-            }
+            t.set_trig_out_values(dwBitMask, dwBitValue);
             Ok(c::NO_ERR)
         })
     }
@@ -321,7 +296,7 @@ pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            t.trig_out[p].2 = wSource;
+            t.trig_outs(TrigOutKind::Local)[p].source = wSource;
             Ok(c::NO_ERR)
         })
     }
@@ -352,7 +327,7 @@ pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            t.led_trig_out[p].0 = wEnable == 1;
+            t.trig_outs(TrigOutKind::Led)[p].enabled = wEnable == 1;
             Ok(c::NO_ERR)
         })
     }
@@ -368,7 +343,7 @@ pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            t.led_trig_out[p].1 = wOutput == 1;
+            t.trig_outs(TrigOutKind::Led)[p].value = wOutput == 1;
             Ok(c::NO_ERR)
         })
     }
@@ -384,14 +359,10 @@ pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
             return Err(crate::error::McclError::Parameter);
         }
         with_triggers(wCardIndex, |t| {
-            t.led_trig_out[p].2 = wSource;
+            t.trig_outs(TrigOutKind::Led)[p].source = wSource;
             Ok(c::NO_ERR)
         })
     }
-}
-
-fn lio_sources(t: &crate::machine::triggers::CardTriggers) -> u16 {
-    t.trig_out.iter().filter(|o| o.0).fold(0, |m, o| m | o.2)
 }
 
 /// Compare values waiting on the channels that trigger local outputs.
@@ -403,13 +374,7 @@ pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex:
     ffi_boundary! {
         // SAFETY: NULL or writable, as this function's contract requires.
         let wCount = unsafe { Out::new(wCount) }?;
-        let n = with_triggers(wCardIndex, |t| {
-            let src = lio_sources(t);
-            Ok((0..8)
-                .filter(|ch| src & (1 << ch) != 0)
-                .map(|ch| t.stock_count(ch))
-                .sum::<usize>())
-        })?;
+        let n = with_triggers(wCardIndex, |t| Ok(t.lio_comp_stock_count()))?;
         wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
     }
@@ -420,10 +385,7 @@ pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex:
 pub extern "C" fn MCC_EraseLIOCompValue(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_triggers(wCardIndex, |t| {
-            let src = lio_sources(t);
-            for ch in (0..8).filter(|ch| src & (1 << ch) != 0) {
-                t.stock[ch].clear();
-            }
+            t.erase_lio_comp_values();
             Ok(c::NO_ERR)
         })
     }

@@ -143,7 +143,7 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
                 }
             }
             MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
-            MCCL_SIM_OUT_LED => super::local_io::led_lit(&shared.machine.lock(), cd, ch.0),
+            MCCL_SIM_OUT_LED => shared.machine.lock().led_lit(cd, ch.0),
             _ => return Err(McclError::Parameter),
         };
         pnValue.write(c_int::from(v));

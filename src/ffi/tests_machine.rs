@@ -444,7 +444,9 @@ fn led(ch: u16) -> WORD {
 }
 
 fn led_settings() -> [(bool, bool, u16); 8] {
-    crate::system::active().unwrap().machine.lock().triggers[0].led_trig_out
+    crate::system::active().unwrap().machine.lock().triggers[0]
+        .led_trig_out
+        .map(|o| (o.enabled, o.value, o.source))
 }
 
 #[test]

@@ -538,6 +538,36 @@ pub struct CardSettings {
     pub error_threshold: [(u16, u16); AXES],
 }
 
+/// An input filter clock of a card (index in [`CardSettings::filters`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FilterClock {
+    /// The limit switch inputs (`MCC_SetLimitFilterClk`).
+    Limit = 0,
+    /// The home sensor inputs (`MCC_SetHomeFilterClk`).
+    Home = 1,
+    /// The general-purpose inputs (`MCC_SetGpioFilterClk`).
+    Gpio = 2,
+    /// The encoder inputs (`MCC_SetENCFilterClock`).
+    Encoder = 3,
+}
+
+impl CardSettings {
+    /// Keeps filter clock `k` (any value: the manuals give no range).
+    pub fn set_filter_clock(&mut self, k: FilterClock, value: u16) {
+        self.filters[k as usize] = value;
+    }
+
+    /// Sets the LED output of channel `ch` (0..7) on or off.
+    pub fn set_led(&mut self, ch: usize, on: bool) {
+        let bit = 1u8 << ch;
+        if on {
+            self.leds |= bit;
+        } else {
+            self.leds &= !bit;
+        }
+    }
+}
+
 /// Every card's channels and emergency-stop input.
 #[derive(Debug, Clone)]
 pub struct Machine {
@@ -554,6 +584,16 @@ pub struct Machine {
 }
 
 impl Machine {
+    /// What LED `ch` of card `cd` shows: its trigger-out value while a trigger holds it,
+    /// else what `MCC_SetLedLightOn`/`Off` set.
+    pub fn led_lit(&self, cd: usize, ch: usize) -> bool {
+        let own = self.settings.get(cd).is_some_and(|s| s.leds >> ch & 1 == 1);
+        self.triggers
+            .get(cd)
+            .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
+            .unwrap_or(own)
+    }
+
     /// A machine for `n` cards from the parameters in effect and the specs.
     pub fn new(
         mac: &crate::engine::MacTable,
