@@ -4,7 +4,7 @@
 
 use super::channel;
 use crate::card::with_card;
-use crate::error::{McclError, McclResult};
+use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
@@ -14,12 +14,8 @@ use std::os::raw::c_int;
 fn dac_channel(wChannel: WORD, wCardIndex: WORD) -> McclResult<usize> {
     let ch = channel(wChannel)?.0;
     let cd = system::active()?.card(super::card(wCardIndex)?)?;
-    let mode = system::with(|s| s.running.as_ref().map(|r| r.mac[cd][ch].wCommandMode));
-    match mode {
-        None => Err(McclError::NotInitialized),
-        Some(c::OCM_VOLTAGE) => Err(McclError::VoltageChannel),
-        Some(_) => Ok(ch),
-    }
+    system::with(|s| s.dac_channel_free(cd, ch))?;
+    Ok(ch)
 }
 
 fn on_channel(

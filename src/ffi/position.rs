@@ -4,7 +4,7 @@
 
 use super::{axis, card, channel, finite, update_group, with_group, Out};
 use crate::error::{McclError, McclResult};
-use crate::machine::MAX_PULSE_LIMIT;
+use crate::machine::{PulseLimit, MAX_PULSE_LIMIT};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, SYS_COMP_PARAM, WORD};
@@ -329,13 +329,6 @@ pub extern "C" fn MCC_SetErrorCountThreshold(
     }
 }
 
-fn pulse_limits_lowered(m: &crate::machine::Machine) -> bool {
-    m.cards
-        .iter()
-        .flatten()
-        .any(|c| c.max_speed < MAX_PULSE_LIMIT || c.max_acc < MAX_PULSE_LIMIT)
-}
-
 fn pulse_limits(v: [c_int; 8]) -> McclResult<[i32; 8]> {
     if v.iter().any(|&x| !(1..=MAX_PULSE_LIMIT).contains(&x)) {
         return Err(McclError::Parameter);
@@ -362,10 +355,7 @@ pub extern "C" fn MCC_SetMaxPulseSpeed(
             nPulse0, nPulse1, nPulse2, nPulse3, nPulse4, nPulse5, nPulse6, nPulse7,
         ])?;
         with_card(wCardIndex, |m, cd| {
-            for (ch, x) in m.cards[cd].iter_mut().zip(v) {
-                ch.max_speed = x;
-            }
-            m.pulse_limits_set = pulse_limits_lowered(m);
+            m.set_pulse_limits(cd, PulseLimit::Speed, v);
             Ok(c::NO_ERR)
         })
     }
@@ -394,7 +384,7 @@ pub unsafe extern "C" fn MCC_GetMaxPulseSpeed(
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
         let v = with_card(wCardIndex, |m, cd| {
-            Ok(std::array::from_fn(|ch| m.cards[cd][ch].max_speed))
+            Ok(m.pulse_limits(cd, PulseLimit::Speed))
         })?;
         super::write_each(p, v);
         Ok(c::NO_ERR)
@@ -421,10 +411,7 @@ pub extern "C" fn MCC_SetMaxPulseAcc(
             nPulseAcc7,
         ])?;
         with_card(wCardIndex, |m, cd| {
-            for (ch, x) in m.cards[cd].iter_mut().zip(v) {
-                ch.max_acc = x;
-            }
-            m.pulse_limits_set = pulse_limits_lowered(m);
+            m.set_pulse_limits(cd, PulseLimit::Acc, v);
             Ok(c::NO_ERR)
         })
     }
@@ -460,7 +447,7 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
         let v = with_card(wCardIndex, |m, cd| {
-            Ok(std::array::from_fn(|ch| m.cards[cd][ch].max_acc))
+            Ok(m.pulse_limits(cd, PulseLimit::Acc))
         })?;
         super::write_each(p, v);
         Ok(c::NO_ERR)

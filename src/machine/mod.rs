@@ -583,7 +583,41 @@ pub struct Machine {
     pub pulse_limits_set: bool,
 }
 
+/// Which pulse limit of the channels (user manual §2.7.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PulseLimit {
+    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
+    Speed,
+    /// Most change of pulses from one period to the next (`MCC_SetMaxPulseAcc`).
+    Acc,
+}
+
 impl Machine {
+    /// Sets limit `kind` of every channel of card `cd` (each 1..=[`MAX_PULSE_LIMIT`],
+    /// checked by the caller) and notes whether any channel's limit is now below the
+    /// default, so that the engine checks them.
+    pub fn set_pulse_limits(&mut self, cd: usize, kind: PulseLimit, v: [i32; AXES]) {
+        for (ch, x) in self.cards[cd].iter_mut().zip(v) {
+            match kind {
+                PulseLimit::Speed => ch.max_speed = x,
+                PulseLimit::Acc => ch.max_acc = x,
+            }
+        }
+        self.pulse_limits_set = self
+            .cards
+            .iter()
+            .flatten()
+            .any(|c| c.max_speed < MAX_PULSE_LIMIT || c.max_acc < MAX_PULSE_LIMIT);
+    }
+
+    /// Limit `kind` of every channel of card `cd`.
+    pub fn pulse_limits(&self, cd: usize, kind: PulseLimit) -> [i32; AXES] {
+        std::array::from_fn(|ch| match kind {
+            PulseLimit::Speed => self.cards[cd][ch].max_speed,
+            PulseLimit::Acc => self.cards[cd][ch].max_acc,
+        })
+    }
+
     /// What LED `ch` of card `cd` shows: its trigger-out value while a trigger holds it,
     /// else what `MCC_SetLedLightOn`/`Off` set.
     pub fn led_lit(&self, cd: usize, ch: usize) -> bool {
