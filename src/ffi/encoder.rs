@@ -2,25 +2,12 @@
 //! encoder follows the motor: one count per pulse at x4, half at x2, a quarter at x1,
 //! reversed by A/B swap or a single inverted phase, scaled by `MCC_SetENCGearRate`.
 
-use super::{card, channel, Out};
+use super::{channel, with_machine, with_machine_channel, Card, Channel, Out};
 use crate::error::{McclError, McclResult};
-use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::DWORD;
 use crate::vendor::WORD;
 use std::os::raw::{c_int, c_long, c_longlong};
-
-fn with_channel<R>(
-    wChannel: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::machine::Channel) -> McclResult<R>,
-) -> McclResult<R> {
-    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-    let shared = system::active()?;
-    let cd = shared.card(cd)?;
-    let mut m = shared.machine.lock();
-    f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?)
-}
 
 /// The encoder count of a channel.
 ///
@@ -35,7 +22,7 @@ pub unsafe extern "C" fn MCC_GetENCValue(
     ffi_boundary! {
         // SAFETY: NULL or writable, as this function's contract requires.
         let plValue = unsafe { Out::new(plValue) }?;
-        let v = with_channel(wChannel, wCardIndex, |ch| Ok(ch.encoder()))?;
+        let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))?;
         plValue.write(v as c_long);
         Ok(c::NO_ERR)
     }
@@ -54,7 +41,7 @@ pub unsafe extern "C" fn MCC_GetENCValueEx(
     ffi_boundary! {
         // SAFETY: NULL or writable, as this function's contract requires.
         let pllValue = unsafe { Out::new(pllValue) }?;
-        let v = with_channel(wChannel, wCardIndex, |ch| Ok(ch.encoder()))?;
+        let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))?;
         pllValue.write(v);
         Ok(c::NO_ERR)
     }
@@ -68,7 +55,7 @@ pub extern "C" fn MCC_SetENCValue(lValue: c_long, wChannel: WORD, wCardIndex: WO
         // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
         #[allow(clippy::useless_conversion)]
         let v = crate::config::range::enc_count(i64::from(lValue))?;
-        with_channel(wChannel, wCardIndex, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             ch.set_encoder(v);
             Ok(c::NO_ERR)
         })
@@ -91,7 +78,7 @@ pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardInd
         if !(1..=4).contains(&wInputRate) {
             return Err(McclError::Parameter);
         }
-        with_channel(wChannel, wCardIndex, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             let v = ch.encoder();
             ch.input_rate = Some(wInputRate);
             ch.set_encoder(v);
@@ -106,7 +93,7 @@ pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardInd
 pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         let r = crate::config::range::enc_gear(dfGearRate)?;
-        with_channel(wChannel, wCardIndex, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             let v = ch.encoder();
             ch.gear_rate = r;
             ch.set_encoder(v);
@@ -125,17 +112,13 @@ pub extern "C" fn MCC_SetENCFilterClock(wDivider: WORD, wCardIndex: WORD) -> c_i
 }
 
 fn with_triggers<R>(
-    wCardIndex: WORD,
+    cd: Card,
     f: impl FnOnce(
         &mut crate::machine::triggers::CardTriggers,
         &[crate::machine::Channel; 8],
     ) -> McclResult<R>,
 ) -> McclResult<R> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    let m = &mut *m;
-    f(&mut m.triggers[cd], &m.cards[cd])
+    with_machine(cd, |m, cd| f(&mut m.triggers[cd], &m.cards[cd]))
 }
 
 /// Latch type of a channel: `ENC_TRIG_FIRST` (keep the first event) or `ENC_TRIG_LAST`
@@ -147,7 +130,7 @@ pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: W
         if wType > c::ENC_TRIG_LAST {
             return Err(McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.latch_type[ch.0] = wType;
             t.latch[ch.0] = None;
             Ok(c::NO_ERR)
@@ -165,7 +148,7 @@ pub extern "C" fn MCC_SetENCLatchSource(wSource: DWORD, wChannel: WORD, wCardInd
         if wSource & !0x00FF_FFFF != 0 {
             return Err(McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.latch_source[ch.0] = wSource;
             t.latch[ch.0] = None;
             Ok(c::NO_ERR)
@@ -187,7 +170,7 @@ pub unsafe extern "C" fn MCC_GetENCLatchValue(
         let ch = channel(wChannel)?;
         // SAFETY: NULL or writable, as this function's contract requires.
         let plLatchValue = unsafe { Out::new(plLatchValue) }?;
-        let v = with_triggers(wCardIndex, |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
+        let v = with_triggers(Card(wCardIndex), |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
         plLatchValue.write(v as c_long);
         Ok(c::NO_ERR)
     }
@@ -195,7 +178,7 @@ pub unsafe extern "C" fn MCC_GetENCLatchValue(
 
 fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let ch = channel(wChannel)?;
-    with_triggers(wCardIndex, |t, _| {
+    with_triggers(Card(wCardIndex), |t, _| {
         t.index_enabled[ch.0] = on;
         Ok(c::NO_ERR)
     })
@@ -228,7 +211,7 @@ pub unsafe extern "C" fn MCC_GetENCIndexStatus(
         let ch = channel(wChannel)?;
         // SAFETY: NULL or writable, as this function's contract requires.
         let pwStatus = unsafe { Out::new(pwStatus) }?;
-        let v = with_triggers(wCardIndex, |t, _| {
+        let v = with_triggers(Card(wCardIndex), |t, _| {
             Ok(std::mem::take(&mut t.index_status[ch.0]))
         })?;
         pwStatus.write(WORD::from(v));
@@ -258,7 +241,7 @@ pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex
         // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
         #[allow(clippy::useless_conversion)]
         let v = crate::config::range::enc_count(i64::from(lValue))?;
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             push_compare(t, ch.0, v).map(|()| c::NO_ERR)
         })
     }
@@ -285,7 +268,7 @@ pub extern "C" fn MCC_SetENCCompValueTab(
             return Err(McclError::Parameter);
         }
         let n = (b - a) / d + 1;
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             if t.stock[ch.0].len() as i64 + n > crate::machine::triggers::MAX_COMPARE_STOCK as i64 {
                 return Err(McclError::BufferFull);
             }
@@ -311,7 +294,7 @@ pub unsafe extern "C" fn MCC_GetENCCompValue(
         let ch = channel(wChannel)?;
         // SAFETY: NULL or writable, as this function's contract requires.
         let lValue = unsafe { Out::new(lValue) }?;
-        let v = with_triggers(wCardIndex, |t, _| {
+        let v = with_triggers(Card(wCardIndex), |t, _| {
             Ok(t.stock[ch.0].front().copied().unwrap_or(0))
         })?;
         lValue.write(v as c_long);
@@ -333,7 +316,7 @@ pub unsafe extern "C" fn MCC_GetENCCompStockCount(
         let ch = channel(wChannel)?;
         // SAFETY: NULL or writable, as this function's contract requires.
         let wCount = unsafe { Out::new(wCount) }?;
-        let n = with_triggers(wCardIndex, |t, _| Ok(t.stock_count(ch.0)))?;
+        let n = with_triggers(Card(wCardIndex), |t, _| Ok(t.stock_count(ch.0)))?;
         wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
     }
@@ -341,7 +324,7 @@ pub unsafe extern "C" fn MCC_GetENCCompStockCount(
 
 fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let ch = channel(wChannel)?;
-    with_triggers(wCardIndex, |t, chans| {
+    with_triggers(Card(wCardIndex), |t, chans| {
         if on && !t.comp_enabled[ch.0] {
             t.rebase(chans);
         }
@@ -367,7 +350,7 @@ pub extern "C" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) ->
 pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.stock[ch.0].clear();
             Ok(c::NO_ERR)
         })
@@ -382,7 +365,7 @@ pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex:
         if wCompareAxisMask > 0xFF {
             return Err(McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.compare_mask = wCompareAxisMask;
             Ok(c::NO_ERR)
         })
@@ -393,7 +376,7 @@ pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex:
 #[no_mangle]
 pub extern "C" fn MCC_Set3DCompareTolerance(wTolerance: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.compare_tol = wTolerance;
             Ok(c::NO_ERR)
         })

@@ -3,7 +3,7 @@
 //! trigger-out by encoder compares. The virtual card keeps the state of each output; the
 //! simulated machine reads it.
 
-use super::{card, channel, Out};
+use super::{card, channel, with_card_triggers, Card, Out};
 use crate::error::McclResult;
 use crate::machine::triggers::TrigOutKind;
 use crate::machine::FilterClock;
@@ -167,16 +167,6 @@ pub unsafe extern "C" fn MCC_GetHomeSensorStatus(
     }
 }
 
-fn with_triggers<R>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::machine::triggers::CardTriggers) -> Result<R, crate::error::McclError>,
-) -> Result<R, crate::error::McclError> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    f(&mut m.triggers[cd])
-}
-
 fn lio_point(wPoint: WORD) -> Result<usize, crate::error::McclError> {
     let p = usize::from(wPoint);
     if p < 24 {
@@ -209,7 +199,7 @@ pub extern "C" fn MCC_SetLIOTriggerType(
         if wTriggerType > c::LIO_INT_LEVEL {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.lio_type[p] = wTriggerType;
             Ok(c::NO_ERR)
         })
@@ -218,7 +208,7 @@ pub extern "C" fn MCC_SetLIOTriggerType(
 
 fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let p = lio_point(wPoint)?;
-    with_triggers(wCardIndex, |t| {
+    with_card_triggers(Card(wCardIndex), |t| {
         t.lio_enabled[p] = on;
         Ok(c::NO_ERR)
     })
@@ -246,7 +236,7 @@ pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
         if wEnable > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_outs(TrigOutKind::Local)[p].enabled = wEnable == 1;
             Ok(c::NO_ERR)
         })
@@ -262,7 +252,7 @@ pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex:
         if wValue > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_outs(TrigOutKind::Local)[p].value = wValue == 1;
             Ok(c::NO_ERR)
         })
@@ -280,7 +270,7 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
         if dwBitMask > 0xFF {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.set_trig_out_values(dwBitMask, dwBitValue);
             Ok(c::NO_ERR)
         })
@@ -295,7 +285,7 @@ pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
         if wSource > 0xFF {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_outs(TrigOutKind::Local)[p].source = wSource;
             Ok(c::NO_ERR)
         })
@@ -306,7 +296,7 @@ pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_period_ns = u64::from(dwPeriod);
             Ok(c::NO_ERR)
         })
@@ -326,7 +316,7 @@ pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
         if wEnable > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_outs(TrigOutKind::Led)[p].enabled = wEnable == 1;
             Ok(c::NO_ERR)
         })
@@ -342,7 +332,7 @@ pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex
         if wOutput > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_outs(TrigOutKind::Led)[p].value = wOutput == 1;
             Ok(c::NO_ERR)
         })
@@ -358,7 +348,7 @@ pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
         if wSource > 0xFF {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_outs(TrigOutKind::Led)[p].source = wSource;
             Ok(c::NO_ERR)
         })
@@ -374,7 +364,7 @@ pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex:
     ffi_boundary! {
         // SAFETY: NULL or writable, as this function's contract requires.
         let wCount = unsafe { Out::new(wCount) }?;
-        let n = with_triggers(wCardIndex, |t| Ok(t.lio_comp_stock_count()))?;
+        let n = with_card_triggers(Card(wCardIndex), |t| Ok(t.lio_comp_stock_count()))?;
         wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
     }
@@ -384,7 +374,7 @@ pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex:
 #[no_mangle]
 pub extern "C" fn MCC_EraseLIOCompValue(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.erase_lio_comp_values();
             Ok(c::NO_ERR)
         })

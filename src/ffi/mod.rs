@@ -93,6 +93,51 @@ thread_local! {
     static GROUP_STOPPED_AFTER_PANIC: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
+/// A card index as C passed it (`wCardIndex`), not yet checked. The accessors below
+/// take `Channel` and `Card` in the vendor's order (channel first), typed so that a
+/// swapped pair does not compile.
+#[derive(Debug, Clone, Copy)]
+pub struct Card(pub u16);
+
+/// A channel index as C passed it (`wChannel`), not yet checked.
+#[derive(Debug, Clone, Copy)]
+pub struct Channel(pub u16);
+
+/// Runs `f` on the simulated machine with its lock held and the index of card `cd`.
+/// `INITIAL_MOTION_ERR` before init, then `PARAMETER_ERR` for a bad card.
+pub fn with_machine<R>(
+    cd: Card,
+    f: impl FnOnce(&mut crate::machine::Machine, usize) -> McclResult<R>,
+) -> McclResult<R> {
+    let shared = crate::system::active()?;
+    let cd = shared.card(card(cd.0)?)?;
+    let mut m = shared.machine.lock();
+    f(&mut m, cd)
+}
+
+/// Runs `f` on the trigger state of card `cd` (see [`with_machine`]).
+pub fn with_card_triggers<R>(
+    cd: Card,
+    f: impl FnOnce(&mut crate::machine::triggers::CardTriggers) -> McclResult<R>,
+) -> McclResult<R> {
+    with_machine(cd, |m, cd| f(&mut m.triggers[cd]))
+}
+
+/// Runs `f` on channel `ch` of card `cd` of the simulated machine with its lock held.
+/// `PARAMETER_ERR` for a bad card or channel (checked first, in that order), then
+/// `INITIAL_MOTION_ERR` before init.
+pub fn with_machine_channel<R>(
+    ch: Channel,
+    cd: Card,
+    f: impl FnOnce(&mut crate::machine::Channel) -> McclResult<R>,
+) -> McclResult<R> {
+    let (cd, ch) = (card(cd.0)?, channel(ch.0)?);
+    let shared = crate::system::active()?;
+    let cd = shared.card(cd)?;
+    let mut m = shared.machine.lock();
+    f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?)
+}
+
 /// A card index from C.
 pub fn card(w: u16) -> McclResult<CardIx> {
     CardIx::new(w)

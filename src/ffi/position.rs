@@ -2,7 +2,7 @@
 //! gains (kept and reported: the simulated plant is set by the configuration), error
 //! counters, pulse speed and acceleration limits, tracking error, compensation.
 
-use super::{axis, card, channel, finite, update_group, with_group, Out};
+use super::{axis, card, channel, finite, update_group, with_group, with_machine, Card, Out};
 use crate::error::{McclError, McclResult};
 use crate::machine::{PulseLimit, MAX_PULSE_LIMIT};
 use crate::system;
@@ -10,21 +10,11 @@ use crate::vendor::consts as c;
 use crate::vendor::{DWORD, SYS_COMP_PARAM, WORD};
 use std::os::raw::{c_char, c_int};
 
-fn with_card<R>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::machine::Machine, usize) -> McclResult<R>,
-) -> McclResult<R> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    f(&mut m, cd)
-}
-
 fn set_gains(k: usize, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
     if v.iter().any(|&g| g > 255) {
         return Err(McclError::Parameter);
     }
-    with_card(wCardIndex, |m, cd| {
+    with_machine(Card(wCardIndex), |m, cd| {
         m.settings[cd].gains[k] = v;
         Ok(c::NO_ERR)
     })
@@ -35,7 +25,7 @@ fn set_gains(k: usize, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
 unsafe fn get_gains(k: usize, p: [*mut WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
     // SAFETY: NULL or writable, as this function's contract requires.
     let p = unsafe { Out::each(p) }?;
-    let v = with_card(wCardIndex, |m, cd| Ok(m.settings[cd].gains[k]))?;
+    let v = with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains[k]))?;
     super::write_each(p, v);
     Ok(c::NO_ERR)
 }
@@ -252,7 +242,7 @@ fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
     if v == 0 {
         return Err(McclError::Parameter);
     }
-    with_card(wCardIndex, |m, cd| {
+    with_machine(Card(wCardIndex), |m, cd| {
         m.settings[cd].dividers[k] = v;
         Ok(c::NO_ERR)
     })
@@ -299,7 +289,7 @@ pub unsafe extern "C" fn MCC_GetErrorCount(
         ];
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
-        let v = with_card(wCardIndex, |m, cd| {
+        let v = with_machine(Card(wCardIndex), |m, cd| {
             Ok(std::array::from_fn(|ch| {
                 m.cards[cd][ch]
                     .error_count()
@@ -322,7 +312,7 @@ pub extern "C" fn MCC_SetErrorCountThreshold(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        with_card(wCardIndex, |m, cd| {
+        with_machine(Card(wCardIndex), |m, cd| {
             m.settings[cd].error_threshold[ch.0] = (wPlusThreshold, wMinusThreshold);
             Ok(c::NO_ERR)
         })
@@ -354,7 +344,7 @@ pub extern "C" fn MCC_SetMaxPulseSpeed(
         let v = pulse_limits([
             nPulse0, nPulse1, nPulse2, nPulse3, nPulse4, nPulse5, nPulse6, nPulse7,
         ])?;
-        with_card(wCardIndex, |m, cd| {
+        with_machine(Card(wCardIndex), |m, cd| {
             m.set_pulse_limits(cd, PulseLimit::Speed, v);
             Ok(c::NO_ERR)
         })
@@ -383,7 +373,7 @@ pub unsafe extern "C" fn MCC_GetMaxPulseSpeed(
         ];
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
-        let v = with_card(wCardIndex, |m, cd| {
+        let v = with_machine(Card(wCardIndex), |m, cd| {
             Ok(m.pulse_limits(cd, PulseLimit::Speed))
         })?;
         super::write_each(p, v);
@@ -410,7 +400,7 @@ pub extern "C" fn MCC_SetMaxPulseAcc(
             nPulseAcc0, nPulseAcc1, nPulseAcc2, nPulseAcc3, nPulseAcc4, nPulseAcc5, nPulseAcc6,
             nPulseAcc7,
         ])?;
-        with_card(wCardIndex, |m, cd| {
+        with_machine(Card(wCardIndex), |m, cd| {
             m.set_pulse_limits(cd, PulseLimit::Acc, v);
             Ok(c::NO_ERR)
         })
@@ -446,7 +436,7 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
         ];
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
-        let v = with_card(wCardIndex, |m, cd| {
+        let v = with_machine(Card(wCardIndex), |m, cd| {
             Ok(m.pulse_limits(cd, PulseLimit::Acc))
         })?;
         super::write_each(p, v);

@@ -3,7 +3,7 @@
 //! move a sensor, read what the card outputs and where the motor is. Every call checks
 //! its arguments like the vendor functions.
 
-use super::{card, channel, finite, Out};
+use super::{card, channel, finite, with_machine_channel, Card, Channel, Out};
 use crate::error::McclError;
 use crate::machine::Sensor;
 use crate::system;
@@ -37,18 +37,6 @@ fn sensor(n: c_int) -> Result<Sensor, McclError> {
     }
 }
 
-fn with_channel<R>(
-    wCardIndex: WORD,
-    wChannel: WORD,
-    f: impl FnOnce(&mut crate::machine::Channel) -> R,
-) -> Result<R, McclError> {
-    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-    let shared = system::active()?;
-    let cd = shared.card(cd)?;
-    let mut m = shared.machine.lock();
-    Ok(f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?))
-}
-
 /// Sets the physical level of a sensor (`MCCL_SIM_HOME`, `MCCL_SIM_LIMIT_PLUS`,
 /// `MCCL_SIM_LIMIT_MINUS`): 1 hit (a normally-open switch closes), 0 not hit,
 /// `MCCL_SIM_FOLLOW` (-1) back to following the motor's position.
@@ -67,7 +55,10 @@ pub extern "C" fn MCCL_SimSetSensor(
             1 => Some(true),
             _ => return Err(McclError::Parameter),
         };
-        with_channel(wCardIndex, wChannel, |ch| ch.force(s, level))?;
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+            ch.force(s, level);
+            Ok(())
+        })?;
         Ok(c::NO_ERR)
     }
 }
@@ -89,14 +80,14 @@ pub extern "C" fn MCCL_SimPlaceSensor(
         if s == Sensor::Home && a > b {
             return Err(McclError::Parameter);
         }
-        with_channel(wCardIndex, wChannel, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             // A sensor where the channel could never count to is refused.
             let f = ch.factor();
             crate::config::range::position(a, f)?;
             crate::config::range::position(b, f)?;
             ch.place(s, a, b);
             Ok(())
-        })??;
+        })?;
         Ok(c::NO_ERR)
     }
 }
@@ -167,8 +158,8 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
         let pdfPosition = unsafe { Out::new(pdfPosition) }?;
         // SAFETY: NULL or writable, as this function's contract requires.
         let pllPulses = unsafe { Out::new(pllPulses) }?;
-        let (p, n) = with_channel(wCardIndex, wChannel, |ch| {
-            (ch.position(), ch.output_pulses())
+        let (p, n) = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+            Ok((ch.position(), ch.output_pulses()))
         })?;
         pdfPosition.write(p);
         pllPulses.write(n);
