@@ -23,7 +23,7 @@ fn ch_op(
     wCardIndex: WORD,
     f: impl FnOnce(&mut Adc, usize) -> McclResult<()>,
 ) -> McclResult<c_int> {
-    crate::system::active()?;
+    super::initialised()?;
     let ch = channel(wChannel)?.0;
     with_card(wCardIndex, |p| f(&mut p.adc, ch))?;
     Ok(c::NO_ERR)
@@ -39,7 +39,7 @@ unsafe fn ch_read<T>(
     wCardIndex: WORD,
     f: impl FnOnce(&Adc, usize) -> T,
 ) -> McclResult<c_int> {
-    crate::system::active()?;
+    super::initialised()?;
     let ch = channel(wChannel)?.0;
     // SAFETY: NULL or writable, as this function's contract requires.
     let p = unsafe { Out::new(p) }?;
@@ -111,7 +111,7 @@ pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        crate::system::active()?;
+        super::initialised()?;
         // SAFETY: NULL or writable, as this function's contract requires.
         let pwSTatus = unsafe { Out::new(pwSTatus) }?;
         let s = with_card(wCardIndex, |p| Ok(p.adc.work_status()))?;

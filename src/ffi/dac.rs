@@ -23,7 +23,7 @@ fn on_channel(
     wCardIndex: WORD,
     f: impl FnOnce(&mut crate::card::dac::Dac, usize) -> McclResult<()>,
 ) -> McclResult<c_int> {
-    system::active()?;
+    super::initialised()?;
     let ch = dac_channel(wChannel, wCardIndex)?;
     with_card(wCardIndex, |p| f(&mut p.dac, ch))?;
     Ok(c::NO_ERR)

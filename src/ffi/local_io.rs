@@ -311,7 +311,7 @@ pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> 
 pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        system::active()?;
+        super::initialised()?;
         let p = out_point(wPoint)?;
         if wEnable > 1 {
             return Err(crate::error::McclError::Parameter);
@@ -327,7 +327,7 @@ pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        system::active()?;
+        super::initialised()?;
         let p = out_point(wPoint)?;
         if wOutput > 1 {
             return Err(crate::error::McclError::Parameter);
@@ -343,7 +343,7 @@ pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        system::active()?;
+        super::initialised()?;
         let p = out_point(wPoint)?;
         if wSource > 0xFF {
             return Err(crate::error::McclError::Parameter);

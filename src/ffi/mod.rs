@@ -138,6 +138,12 @@ pub fn with_machine_channel<R>(
     f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?)
 }
 
+/// `INITIAL_MOTION_ERR` until `MCC_InitSystem` has run: checked first by the calls that
+/// answer so whatever their other arguments are.
+pub fn initialised() -> McclResult<()> {
+    crate::system::active().map(|_| ())
+}
+
 /// A card index from C.
 pub fn card(w: u16) -> McclResult<CardIx> {
     CardIx::new(w)

@@ -21,7 +21,7 @@ fn rio<R>(
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<RIO_PORTS>) -> McclResult<R>,
 ) -> McclResult<R> {
-    crate::system::active()?;
+    super::initialised()?;
     let s = set_ix(wSet)?;
     with_card(wCardIndex, |p| f(&mut p.rio.rio[s]))
 }
@@ -31,7 +31,7 @@ fn ario<R>(
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> McclResult<R>,
 ) -> McclResult<R> {
-    crate::system::active()?;
+    super::initialised()?;
     let s = set_ix(wSet)?;
     with_card(wCardIndex, |p| f(&mut p.rio.ario[s]))
 }
@@ -46,7 +46,7 @@ fn done(r: McclResult<()>) -> McclResult<c_int> {
 /// # Safety
 /// `p` must be NULL or point to a writable T.
 unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<c_int> {
-    crate::system::active()?;
+    super::initialised()?;
     // SAFETY: NULL or writable, as this function's contract requires.
     let p = unsafe { Out::new(p) }?;
     let v = get()?;
@@ -287,7 +287,7 @@ fn ario_timing(
     wCardIndex: WORD,
     f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> McclResult<()>,
 ) -> McclResult<c_int> {
-    crate::system::active()?;
+    super::initialised()?;
     done(with_card(wCardIndex, |p| f(&mut p.rio.ario_timing)))
 }
 
@@ -298,7 +298,7 @@ fn ario_timing(
 #[no_mangle]
 pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        crate::system::active()?;
+        super::initialised()?;
         let r = finite(dfUpdateRate)?;
         // The cycle lasts 1 / r: at most the longest time (r >= 2.33e-7 Hz).
         if r <= 0.0 {
@@ -316,7 +316,7 @@ pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardInde
 #[no_mangle]
 pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        crate::system::active()?;
+        super::initialised()?;
         let s = set_ix(wSet)?;
         ario_timing(wCardIndex, |t| t.set_divider(s, wDivider))
     }
