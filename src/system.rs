@@ -357,6 +357,17 @@ pub fn update_param() -> McclResult<()> {
 }
 
 impl System {
+    /// Whether DAC channel `ch` of card `cd` is free for the DAC calls: a channel whose
+    /// mechanism parameters in effect say `OCM_VOLTAGE` drives its axis
+    /// (`VOLTAGE_COMMAND_CHANNEL_ERR`); `INITIAL_MOTION_ERR` when nothing runs.
+    pub fn dac_channel_free(&self, cd: usize, ch: usize) -> McclResult<()> {
+        match self.running.as_ref().map(|r| r.mac[cd][ch].wCommandMode) {
+            None => Err(McclError::NotInitialized),
+            Some(c::OCM_VOLTAGE) => Err(McclError::VoltageChannel),
+            Some(_) => Ok(()),
+        }
+    }
+
     /// Fails with `COMMAND_NOTACCEPTED_ERR` while the card runs: the group table may only
     /// change while the system is closed (groups are created before `MCC_InitSystem`).
     fn require_closed(&self) -> McclResult<()> {

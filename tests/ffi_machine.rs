@@ -456,6 +456,7 @@ fn led_settings() -> [(bool, bool, u16); 8] {
         .lock()
         .triggers[0]
         .led_trig_out
+        .map(|o| (o.enabled, o.value, o.source))
 }
 
 #[test]

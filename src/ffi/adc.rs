@@ -3,8 +3,7 @@
 //! channel of the same number unless set otherwise from Rust
 //! (`Peripherals::set_adc_source`). The routine is registered with `MCC_SetADCRoutine`.
 
-use super::with_card;
-use super::{channel, guard, out_ok, write_out};
+use super::{channel, with_card, Out};
 use crate::card::adc::Adc;
 use crate::error::McclResult;
 use crate::vendor::consts as c;
@@ -14,39 +13,38 @@ use std::os::raw::c_int;
 fn card_op(
     wCardIndex: WORD,
     f: impl FnOnce(&mut crate::card::Peripherals) -> McclResult<()>,
-) -> c_int {
-    guard(|| {
-        with_card(wCardIndex, f)?;
-        Ok(c::NO_ERR)
-    })
+) -> McclResult<c_int> {
+    with_card(wCardIndex, f)?;
+    Ok(c::NO_ERR)
 }
 
 fn ch_op(
     wChannel: WORD,
     wCardIndex: WORD,
     f: impl FnOnce(&mut Adc, usize) -> McclResult<()>,
-) -> c_int {
-    guard(|| {
-        crate::system::active()?;
-        let ch = channel(wChannel)?.0;
-        with_card(wCardIndex, |p| f(&mut p.adc, ch))?;
-        Ok(c::NO_ERR)
-    })
+) -> McclResult<c_int> {
+    super::initialised()?;
+    let ch = channel(wChannel)?.0;
+    with_card(wCardIndex, |p| f(&mut p.adc, ch))?;
+    Ok(c::NO_ERR)
 }
 
 /// Reads one value through `p` after all checks (NULL is `PARAMETER_ERR`).
-fn ch_read<T>(
+///
+/// # Safety
+/// `p` must be NULL or point to a writable `T`.
+unsafe fn ch_read<T>(
     p: *mut T,
     wChannel: WORD,
     wCardIndex: WORD,
     f: impl FnOnce(&Adc, usize) -> T,
 ) -> McclResult<c_int> {
-    crate::system::active()?;
+    super::initialised()?;
     let ch = channel(wChannel)?.0;
-    out_ok(p)?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let p = unsafe { Out::new(p) }?;
     let v = with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))?;
-    // SAFETY: checked non-null; the caller passes a writable T (the function's contract).
-    unsafe { write_out(p, v) };
+    p.write(v);
     Ok(c::NO_ERR)
 }
 
@@ -54,7 +52,7 @@ fn ch_read<T>(
 /// `ADC_TYPE_UNI_DIFF`/`_UNI_SING` (0..10 V). Default `ADC_TYPE_BIP_DIFF`.
 #[no_mangle]
 pub extern "C" fn MCC_SetADCConvType(wConvType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| a.set_conv_type(ch, wConvType))
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_conv_type(ch, wConvType)) }
 }
 
 /// Reads a channel's conversion type.
@@ -67,14 +65,17 @@ pub unsafe extern "C" fn MCC_GetADCConvType(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch)))
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch)) }
+    }
 }
 
 /// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
 /// free-running conversion).
 #[no_mangle]
 pub extern "C" fn MCC_SetADCConvMode(wConvMode: WORD, wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| p.adc.set_mode(wConvMode))
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_mode(wConvMode)) }
 }
 
 /// Reads the last converted voltage of a channel (0 before its first conversion).
@@ -87,16 +88,19 @@ pub unsafe extern "C" fn MCC_GetADCInput(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch)))
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch)) }
+    }
 }
 
 /// Chooses the channel `ADC_MODE_SINGLE` converts.
 #[no_mangle]
 pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
         a.set_single_channel(ch);
         Ok(())
-    })
+    }) }
 }
 
 /// Writes 1 while conversion runs (free mode started), 0 otherwise (a single conversion
@@ -106,79 +110,79 @@ pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c
 /// `pwSTatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        crate::system::active()?;
-        out_ok(pwSTatus)?;
+    ffi_boundary! {
+        super::initialised()?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwSTatus = unsafe { Out::new(pwSTatus) }?;
         let s = with_card(wCardIndex, |p| Ok(p.adc.work_status()))?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { write_out(pwSTatus, s) };
+        pwSTatus.write(s);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Every completed conversion calls the ADC routine with `CONV` set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| {
+    ffi_boundary! { card_op(wCardIndex, |p| {
         p.adc.set_conv_trigger(true);
         Ok(())
-    })
+    }) }
 }
 
 /// Completed conversions no longer call the ADC routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| {
+    ffi_boundary! { card_op(wCardIndex, |p| {
         p.adc.set_conv_trigger(false);
         Ok(())
-    })
+    }) }
 }
 
 /// Chooses the tagged channel (one at a time).
 #[no_mangle]
 pub extern "C" fn MCC_SetADCTagChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
         a.set_tag_channel(ch);
         Ok(())
-    })
+    }) }
 }
 
 /// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| {
+    ffi_boundary! { card_op(wCardIndex, |p| {
         p.adc.set_tag_trigger(true);
         Ok(())
-    })
+    }) }
 }
 
 /// Conversions of the tagged channel no longer call the ADC routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| {
+    ffi_boundary! { card_op(wCardIndex, |p| {
         p.adc.set_tag_trigger(false);
         Ok(())
-    })
+    }) }
 }
 
 /// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
 /// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
 #[no_mangle]
 pub extern "C" fn MCC_SetADCCompMask(wMask: WORD, wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| p.adc.set_comp_mask(wMask))
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_comp_mask(wMask)) }
 }
 
 /// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
 /// `ADC_COMP_LEVEL` (2). Default `ADC_COMP_RISE`.
 #[no_mangle]
 pub extern "C" fn MCC_SetADCCompType(wCompType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_type(ch, wCompType))
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_type(ch, wCompType)) }
 }
 
 /// Sets a channel's compare value (finite, −10..10 V).
 #[no_mangle]
 pub extern "C" fn MCC_SetADCCompValue(fValue: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_value(ch, fValue))
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_value(ch, fValue)) }
 }
 
 /// Reads a channel's compare value.
@@ -191,43 +195,46 @@ pub unsafe extern "C" fn MCC_GetADCCompValue(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch)))
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch)) }
+    }
 }
 
 /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
         a.set_comp_trigger(ch, true);
         Ok(())
-    })
+    }) }
 }
 
 /// The channel's comparator no longer calls the ADC routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
         a.set_comp_trigger(ch, false);
         Ok(())
-    })
+    }) }
 }
 
 /// Lets a channel convert in free mode.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
         a.set_channel(ch, true);
         Ok(())
-    })
+    }) }
 }
 
 /// Stops a channel converting in free mode.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ch_op(wChannel, wCardIndex, |a, ch| {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
         a.set_channel(ch, false);
         Ok(())
-    })
+    }) }
 }
 
 /// Starts conversion: free mode converts every enabled channel once per tick from the
@@ -235,17 +242,17 @@ pub extern "C" fn MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD) ->
 /// next tick).
 #[no_mangle]
 pub extern "C" fn MCC_StartADCConv(wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| {
+    ffi_boundary! { card_op(wCardIndex, |p| {
         p.start_adc();
         Ok(())
-    })
+    }) }
 }
 
 /// Stops free-running conversion (the last values stay readable).
 #[no_mangle]
 pub extern "C" fn MCC_StopADCConv(wCardIndex: WORD) -> c_int {
-    card_op(wCardIndex, |p| {
+    ffi_boundary! { card_op(wCardIndex, |p| {
         p.adc.stop();
         Ok(())
-    })
+    }) }
 }

@@ -1,7 +1,7 @@
 //! Coordinate management (user manual §2.6.1, §2.6.5; vendor header "Coordinate
 //! Management").
 
-use super::{guard, outs8, with_group, write8};
+use super::{with_group, Out};
 use crate::error::McclError;
 use crate::system;
 use crate::vendor::consts as c;
@@ -11,19 +11,19 @@ use std::os::raw::{c_int, c_long, c_longlong};
 /// Following motion commands take absolute coordinates (the default).
 #[no_mangle]
 pub extern "C" fn MCC_SetAbsolute(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.settings.absolute = true))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings.absolute = true) }
 }
 
 /// Following motion commands take increments from the end of the previous command.
 #[no_mangle]
 pub extern "C" fn MCC_SetIncrease(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.settings.absolute = false))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings.absolute = false) }
 }
 
 /// 1 for absolute coordinates, 0 for incremental.
 #[no_mangle]
 pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
-    guard(|| with_group(wGroupIndex, |g| Ok(c_int::from(g.settings.absolute))))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(g.settings.absolute))) }
 }
 
 /// Current command position in user coordinates (UU). Under the fast and stepped clocks
@@ -44,16 +44,16 @@ pub unsafe extern "C" fn MCC_GetCurPos(
     pdfB: *mut f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let shared = system::active()?;
         shared.poll_position(wGroupIndex);
         let s = shared.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, s.pos) };
+        super::write_each(p, s.pos);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Current command position in reference coordinates: the user coordinates before
@@ -73,14 +73,14 @@ pub unsafe extern "C" fn MCC_GetCurRefPos(
     pdfB: *mut f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, s.ref_pos) };
+        super::write_each(p, s.ref_pos);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
@@ -100,14 +100,14 @@ pub unsafe extern "C" fn MCC_GetPulsePos(
     plB: *mut c_long,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable longs.
-        unsafe { write8(&p, s.pulses.map(|v| v as c_long)) };
+        super::write_each(p, s.pulses.map(|v| v as c_long));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// [`MCC_GetPulsePos`] with 64-bit results on every platform.
@@ -126,14 +126,14 @@ pub unsafe extern "C" fn MCC_GetPulsePosEx(
     plB: *mut c_longlong,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable long longs.
-        unsafe { write8(&p, s.pulses) };
+        super::write_each(p, s.pulses);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 fn axis_index(wAxis: WORD) -> Result<usize, McclError> {
@@ -149,20 +149,20 @@ fn axis_index(wAxis: WORD) -> Result<usize, McclError> {
 /// `COMMAND_NOTFINISHED_ERR` otherwise).
 #[no_mangle]
 pub extern "C" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let a = axis_index(wAxis)?;
         with_group(wGroupIndex, |g| g.define_pos(a, 0.0)).map(|()| c::NO_ERR)
-    })
+    }
 }
 
 /// The current position of one axis becomes `dfPos` (only while stopped).
 #[no_mangle]
 pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let a = axis_index(wAxis)?;
         let v = super::finite(dfPos)?;
         with_group(wGroupIndex, |g| g.define_pos(a, v)).map(|()| c::NO_ERR)
-    })
+    }
 }
 
 /// For the axes in the mask, the command position becomes the position the card has
@@ -170,7 +170,7 @@ pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c
 /// pulse. Only while stopped.
 #[no_mangle]
 pub extern "C" fn MCC_DefinePosHere(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if dwAxisMask & !0xFF != 0 {
             return Err(McclError::Parameter);
         }
@@ -183,5 +183,5 @@ pub extern "C" fn MCC_DefinePosHere(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_i
             }
             Ok(c::NO_ERR)
         })
-    })
+    }
 }

@@ -2,9 +2,8 @@
 //! Control"). A channel whose mechanism parameters in effect say `OCM_VOLTAGE` belongs
 //! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
 
-use super::with_card;
-use super::{channel, guard};
-use crate::error::{McclError, McclResult};
+use super::{channel, with_card};
+use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
@@ -14,31 +13,25 @@ use std::os::raw::c_int;
 fn dac_channel(wChannel: WORD, wCardIndex: WORD) -> McclResult<usize> {
     let ch = channel(wChannel)?.0;
     let cd = system::active()?.card(super::card(wCardIndex)?)?;
-    let mode = system::with(|s| s.running.as_ref().map(|r| r.mac[cd][ch].wCommandMode));
-    match mode {
-        None => Err(McclError::NotInitialized),
-        Some(c::OCM_VOLTAGE) => Err(McclError::VoltageChannel),
-        Some(_) => Ok(ch),
-    }
+    system::with(|s| s.dac_channel_free(cd, ch))?;
+    Ok(ch)
 }
 
 fn on_channel(
     wChannel: WORD,
     wCardIndex: WORD,
     f: impl FnOnce(&mut crate::card::dac::Dac, usize) -> McclResult<()>,
-) -> c_int {
-    guard(|| {
-        system::active()?;
-        let ch = dac_channel(wChannel, wCardIndex)?;
-        with_card(wCardIndex, |p| f(&mut p.dac, ch))?;
-        Ok(c::NO_ERR)
-    })
+) -> McclResult<c_int> {
+    super::initialised()?;
+    let ch = dac_channel(wChannel, wCardIndex)?;
+    with_card(wCardIndex, |p| f(&mut p.dac, ch))?;
+    Ok(c::NO_ERR)
 }
 
 /// Outputs `fVoltage` (−10..10 V) on a DAC channel.
 #[no_mangle]
 pub extern "C" fn MCC_SetDACOutput(fVoltage: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage))
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage)) }
 }
 
 /// Presets the voltage (−10..10 V) a channel outputs when its trigger source fires.
@@ -48,9 +41,9 @@ pub extern "C" fn MCC_SetDACTriggerOutput(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    on_channel(wChannel, wCardIndex, |d, ch| {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
         d.set_trigger_output(ch, fVoltage)
-    })
+    }) }
 }
 
 /// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
@@ -61,49 +54,49 @@ pub extern "C" fn MCC_SetDACTriggerSource(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    on_channel(wChannel, wCardIndex, |d, ch| {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
         d.set_trigger_source(ch, dwSource)
-    })
+    }) }
 }
 
 /// Turns a channel's trigger mode on.
 #[no_mangle]
 pub extern "C" fn MCC_EnableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    on_channel(wChannel, wCardIndex, |d, ch| {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
         d.set_trigger_mode(ch, true);
         Ok(())
-    })
+    }) }
 }
 
 /// Turns a channel's trigger mode off.
 #[no_mangle]
 pub extern "C" fn MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    on_channel(wChannel, wCardIndex, |d, ch| {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
         d.set_trigger_mode(ch, false);
         Ok(())
-    })
+    }) }
 }
 
 /// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
 /// from `MCC_InitSystem` on.
 #[no_mangle]
 pub extern "C" fn MCC_StartDACConv(wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_card(wCardIndex, |p| {
             p.dac.set_running(true);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
 /// kept).
 #[no_mangle]
 pub extern "C" fn MCC_StopDACConv(wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_card(wCardIndex, |p| {
             p.dac.set_running(false);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }

@@ -2,25 +2,12 @@
 //! encoder follows the motor: one count per pulse at x4, half at x2, a quarter at x1,
 //! reversed by A/B swap or a single inverted phase, scaled by `MCC_SetENCGearRate`.
 
-use super::{card, channel, guard, out_ok, write_out};
+use super::{channel, with_machine, with_machine_channel, Card, Channel, Out};
 use crate::error::{McclError, McclResult};
-use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::DWORD;
 use crate::vendor::WORD;
 use std::os::raw::{c_int, c_long, c_longlong};
-
-fn with_channel<R>(
-    wChannel: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::machine::Channel) -> McclResult<R>,
-) -> McclResult<R> {
-    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-    let shared = system::active()?;
-    let cd = shared.card(cd)?;
-    let mut m = shared.machine.lock();
-    f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?)
-}
 
 /// The encoder count of a channel.
 ///
@@ -32,13 +19,13 @@ pub unsafe extern "C" fn MCC_GetENCValue(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
-        out_ok(plValue)?;
-        let v = with_channel(wChannel, wCardIndex, |ch| Ok(ch.encoder()))?;
-        // SAFETY: checked non-null; the caller passes a writable long.
-        unsafe { write_out(plValue, v as c_long) };
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let plValue = unsafe { Out::new(plValue) }?;
+        let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))?;
+        plValue.write(v as c_long);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// The encoder count of a channel, 64-bit.
@@ -51,104 +38,104 @@ pub unsafe extern "C" fn MCC_GetENCValueEx(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
-        out_ok(pllValue)?;
-        let v = with_channel(wChannel, wCardIndex, |ch| Ok(ch.encoder()))?;
-        // SAFETY: checked non-null; the caller passes a writable long long.
-        unsafe { write_out(pllValue, v) };
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pllValue = unsafe { Out::new(pllValue) }?;
+        let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))?;
+        pllValue.write(v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Sets the encoder count of a channel to `lValue` (|lValue| <= 1e18; the motor does not
 /// move).
 #[no_mangle]
 pub extern "C" fn MCC_SetENCValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
         #[allow(clippy::useless_conversion)]
         let v = crate::config::range::enc_count(i64::from(lValue))?;
-        with_channel(wChannel, wCardIndex, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             ch.set_encoder(v);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Sets the encoder count of a channel to 0.
 #[no_mangle]
 pub extern "C" fn MCC_ClearENCCounter(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    MCC_SetENCValue(0, wChannel, wCardIndex)
+    ffi_boundary! {
+    Ok(MCC_SetENCValue(0, wChannel, wCardIndex))
+        }
 }
 
 /// Counts per encoder cycle: 1, 2 or 4 (3, `ENC_RATE_X4`, also means x4). The count
 /// keeps its value at the change.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if !(1..=4).contains(&wInputRate) {
             return Err(McclError::Parameter);
         }
-        with_channel(wChannel, wCardIndex, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             let v = ch.encoder();
             ch.input_rate = Some(wInputRate);
             ch.set_encoder(v);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Scales the encoder's counting (counts per motor pulse at x4, 1e-3..=1e3). The count
 /// keeps its value at the change.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let r = crate::config::range::enc_gear(dfGearRate)?;
-        with_channel(wChannel, wCardIndex, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             let v = ch.encoder();
             ch.gear_rate = r;
             ch.set_encoder(v);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Filter clock (divider) of the encoder inputs, kept per card like the other input
 /// filter clocks: the simulated encoder has no electrical noise to filter.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCFilterClock(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    super::local_io::filter(super::local_io::FILTER_ENC, wDivider, wCardIndex)
+    ffi_boundary! {
+    super::local_io::filter(crate::machine::FilterClock::Encoder, wDivider, wCardIndex)
+        }
 }
 
 fn with_triggers<R>(
-    wCardIndex: WORD,
+    cd: Card,
     f: impl FnOnce(
         &mut crate::machine::triggers::CardTriggers,
         &[crate::machine::Channel; 8],
     ) -> McclResult<R>,
 ) -> McclResult<R> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    let m = &mut *m;
-    f(&mut m.triggers[cd], &m.cards[cd])
+    with_machine(cd, |m, cd| f(&mut m.triggers[cd], &m.cards[cd]))
 }
 
 /// Latch type of a channel: `ENC_TRIG_FIRST` (keep the first event) or `ENC_TRIG_LAST`
 /// (every event). Setting it re-arms the latch.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
         if wType > c::ENC_TRIG_LAST {
             return Err(McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.latch_type[ch.0] = wType;
             t.latch[ch.0] = None;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Latch sources of a channel: `ENC_TRIG_INDEX0..7`, `ENC_TRIG_OTP0..7`,
@@ -156,17 +143,17 @@ pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: W
 /// switch turns active). Setting them re-arms the latch.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCLatchSource(wSource: DWORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
         if wSource & !0x00FF_FFFF != 0 {
             return Err(McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.latch_source[ch.0] = wSource;
             t.latch[ch.0] = None;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// The latched count of a channel (0 until something was latched).
@@ -179,23 +166,21 @@ pub unsafe extern "C" fn MCC_GetENCLatchValue(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(plLatchValue)?;
-        let v = with_triggers(wCardIndex, |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
-        // SAFETY: checked non-null; the caller passes a writable long.
-        unsafe { write_out(plLatchValue, v as c_long) };
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let plLatchValue = unsafe { Out::new(plLatchValue) }?;
+        let v = with_triggers(Card(wCardIndex), |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
+        plLatchValue.write(v as c_long);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
-fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> c_int {
-    guard(|| {
-        let ch = channel(wChannel)?;
-        with_triggers(wCardIndex, |t, _| {
-            t.index_enabled[ch.0] = on;
-            Ok(c::NO_ERR)
-        })
+fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    let ch = channel(wChannel)?;
+    with_triggers(Card(wCardIndex), |t, _| {
+        t.index_enabled[ch.0] = on;
+        Ok(c::NO_ERR)
     })
 }
 
@@ -203,13 +188,13 @@ fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> c_int {
 /// passes.
 #[no_mangle]
 pub extern "C" fn MCC_EnableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    index_trigger(wChannel, wCardIndex, true)
+    ffi_boundary! { index_trigger(wChannel, wCardIndex, true) }
 }
 
 /// Index pulses no longer call the encoder routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    index_trigger(wChannel, wCardIndex, false)
+    ffi_boundary! { index_trigger(wChannel, wCardIndex, false) }
 }
 
 /// 1 when an index pulse of the channel passed since the last read (the read clears it).
@@ -222,16 +207,16 @@ pub unsafe extern "C" fn MCC_GetENCIndexStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(pwStatus)?;
-        let v = with_triggers(wCardIndex, |t, _| {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStatus = unsafe { Out::new(pwStatus) }?;
+        let v = with_triggers(Card(wCardIndex), |t, _| {
             Ok(std::mem::take(&mut t.index_status[ch.0]))
         })?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { write_out(pwStatus, WORD::from(v)) };
+        pwStatus.write(WORD::from(v));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 fn push_compare(
@@ -251,15 +236,15 @@ fn push_compare(
 /// triggers from this channel fire, and the next value of the stock is armed.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
         // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
         #[allow(clippy::useless_conversion)]
         let v = crate::config::range::enc_count(i64::from(lValue))?;
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             push_compare(t, ch.0, v).map(|()| c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Adds the compare values start, start + delta, ... up to end (inclusive) to the stock.
@@ -271,7 +256,7 @@ pub extern "C" fn MCC_SetENCCompValueTab(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
         #[allow(clippy::useless_conversion)]
         let (a, b, d) = (
@@ -283,7 +268,7 @@ pub extern "C" fn MCC_SetENCCompValueTab(
             return Err(McclError::Parameter);
         }
         let n = (b - a) / d + 1;
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             if t.stock[ch.0].len() as i64 + n > crate::machine::triggers::MAX_COMPARE_STOCK as i64 {
                 return Err(McclError::BufferFull);
             }
@@ -292,7 +277,7 @@ pub extern "C" fn MCC_SetENCCompValueTab(
             }
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// The armed compare value of a channel (0 when the stock is empty).
@@ -305,16 +290,16 @@ pub unsafe extern "C" fn MCC_GetENCCompValue(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(lValue)?;
-        let v = with_triggers(wCardIndex, |t, _| {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let lValue = unsafe { Out::new(lValue) }?;
+        let v = with_triggers(Card(wCardIndex), |t, _| {
             Ok(t.stock[ch.0].front().copied().unwrap_or(0))
         })?;
-        // SAFETY: checked non-null; the caller passes a writable long.
-        unsafe { write_out(lValue, v as c_long) };
+        lValue.write(v as c_long);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// How many compare values of the channel are waiting (the armed one included).
@@ -327,75 +312,73 @@ pub unsafe extern "C" fn MCC_GetENCCompStockCount(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
-        out_ok(wCount)?;
-        let n = with_triggers(wCardIndex, |t, _| Ok(t.stock_count(ch.0)))?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { write_out(wCount, n.min(usize::from(WORD::MAX)) as WORD) };
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let wCount = unsafe { Out::new(wCount) }?;
+        let n = with_triggers(Card(wCardIndex), |t, _| Ok(t.stock_count(ch.0)))?;
+        wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
-fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> c_int {
-    guard(|| {
-        let ch = channel(wChannel)?;
-        with_triggers(wCardIndex, |t, chans| {
-            if on && !t.comp_enabled[ch.0] {
-                t.rebase(chans);
-            }
-            t.comp_enabled[ch.0] = on;
-            Ok(c::NO_ERR)
-        })
+fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    let ch = channel(wChannel)?;
+    with_triggers(Card(wCardIndex), |t, chans| {
+        if on && !t.comp_enabled[ch.0] {
+            t.rebase(chans);
+        }
+        t.comp_enabled[ch.0] = on;
+        Ok(c::NO_ERR)
     })
 }
 
 /// The channel's compare stock is active: values fire as the count reaches them.
 #[no_mangle]
 pub extern "C" fn MCC_EnableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    comp_trigger(wChannel, wCardIndex, true)
+    ffi_boundary! { comp_trigger(wChannel, wCardIndex, true) }
 }
 
 /// The channel's compare stock stops firing (the values stay).
 #[no_mangle]
 pub extern "C" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    comp_trigger(wChannel, wCardIndex, false)
+    ffi_boundary! { comp_trigger(wChannel, wCardIndex, false) }
 }
 
 /// Removes every compare value of the channel.
 #[no_mangle]
 pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.stock[ch.0].clear();
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Channels compared together (bit n: channel n): with two or more, their armed values
 /// fire together when every one of them is reached within the 3-D tolerance.
 #[no_mangle]
 pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if wCompareAxisMask > 0xFF {
             return Err(McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t, _| {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.compare_mask = wCompareAxisMask;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Tolerance (counts) of the 3-D compare.
 #[no_mangle]
 pub extern "C" fn MCC_Set3DCompareTolerance(wTolerance: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        with_triggers(wCardIndex, |t, _| {
+    ffi_boundary! {
+        with_triggers(Card(wCardIndex), |t, _| {
             t.compare_tol = wTolerance;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }

@@ -2,7 +2,7 @@
 //! `MCC_AbortGoHome`. The parameters come from `MCC_SetHomeConfig` (src/ffi/system.rs);
 //! the homing itself runs on the engine (src/engine/homing.rs).
 
-use super::{card, guard};
+use super::card;
 use crate::engine::homing::ORDER_SKIP;
 use crate::error::McclError;
 use crate::system;
@@ -28,7 +28,7 @@ pub extern "C" fn MCC_Home(
     nOrder7: c_int,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let cd = card(wCardIndex)?;
         let orders = [
             nOrder0, nOrder1, nOrder2, nOrder3, nOrder4, nOrder5, nOrder6, nOrder7,
@@ -44,7 +44,7 @@ pub extern "C" fn MCC_Home(
         let cd = shared.card(cd)?;
         shared.start_homing(cd, orders, &cfgs)?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// 1 when the last `MCC_Home` has completed, 0 while it runs (user manual §2.8.2), and
@@ -53,7 +53,7 @@ pub extern "C" fn MCC_Home(
 /// input or failed on a limit switch.
 #[no_mangle]
 pub extern "C" fn MCC_GetGoHomeStatus() -> c_int {
-    guard(|| Ok(system::active()?.home_status()))
+    ffi_boundary! { Ok(system::active()?.home_status()) }
 }
 
 /// Stops the homing in progress: every homing channel decelerates over its `dfDecTime`
@@ -61,8 +61,8 @@ pub extern "C" fn MCC_GetGoHomeStatus() -> c_int {
 /// `HOME_COMMAND_NOTCALLED_ERR` when no homing was started.
 #[no_mangle]
 pub extern "C" fn MCC_AbortGoHome() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         system::active()?.abort_homing()?;
         Ok(c::NO_ERR)
-    })
+    }
 }

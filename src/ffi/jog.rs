@@ -2,7 +2,7 @@
 //! queued point-to-point move of one axis and requires the group to be stopped
 //! (`COMMAND_NOTACCEPTED_ERR` otherwise).
 
-use super::{axis, finite, guard, with_group};
+use super::{axis, finite, with_group};
 use crate::error::{McclError, McclResult};
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -38,7 +38,7 @@ fn jog(
 /// Moves one axis by `nPulse` pulses (|nPulse| <= 2048) at the PtP speed ratio.
 #[no_mangle]
 pub extern "C" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if nPulse.unsigned_abs() > MAX_JOG_PULSES.unsigned_abs() {
             return Err(McclError::Parameter);
         }
@@ -46,7 +46,7 @@ pub extern "C" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) 
         jog(wGroupIndex, a, None, |from, m| {
             from + f64::from(nPulse) / m.factor.abs()
         })
-    })
+    }
 }
 
 /// Moves one axis by `dfOffset` UU at `dfRatio` percent of its maximum safe speed.
@@ -57,12 +57,12 @@ pub extern "C" fn MCC_JogSpace(
     cAxis: c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let off = finite(dfOffset)?;
         let r = ratio(dfRatio)?;
         let a = axis(cAxis)?;
         jog(wGroupIndex, a, Some(r), |from, _| from + off)
-    })
+    }
 }
 
 /// Moves one axis in direction `nDir` (1 or -1) at `dfRatio` percent until the work-zone
@@ -74,7 +74,7 @@ pub extern "C" fn MCC_JogConti(
     cAxis: c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if nDir != 1 && nDir != -1 {
             return Err(McclError::Parameter);
         }
@@ -88,5 +88,5 @@ pub extern "C" fn MCC_JogConti(
             }
         })
         .map(|i| i.max(c::NO_ERR))
-    })
+    }
 }

@@ -2,7 +2,7 @@
 //! examples manual §19; vendor header "Software Over Travel Check & Hardware Limit Switch
 //! Check").
 
-use super::{card, channel, guard, out_ok, outs8, update_group, with_group, write8, write_out};
+use super::{card, channel, update_group, with_group, Out};
 use crate::error::McclError;
 use crate::system;
 use crate::vendor::consts as c;
@@ -14,7 +14,7 @@ use std::sync::atomic::Ordering;
 /// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); see the README for the rules.
 #[no_mangle]
 pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if !(c::HLP_BIDIR..=c::HLP_UNIDIR_GEN_ERR).contains(&nMode) {
             return Err(McclError::Parameter);
         }
@@ -22,16 +22,16 @@ pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
             .limit_check
             .store(nMode, Ordering::Release);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Turns the hardware limit switch check off.
 #[no_mangle]
 pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         system::active()?.limit_check.store(-1, Ordering::Release);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 fn flag(v: c_int) -> Result<bool, McclError> {
@@ -56,7 +56,7 @@ pub extern "C" fn MCC_SetOverTravelCheck(
     nOTCheck7: c_int,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = [
             nOTCheck0, nOTCheck1, nOTCheck2, nOTCheck3, nOTCheck4, nOTCheck5, nOTCheck6, nOTCheck7,
         ];
@@ -65,7 +65,7 @@ pub extern "C" fn MCC_SetOverTravelCheck(
             *o = flag(x)?;
         }
         update_group(wGroupIndex, |g| g.ot_check = f)
-    })
+    }
 }
 
 /// Reads the over-travel check per axis (1 on, 0 off).
@@ -84,17 +84,17 @@ pub unsafe extern "C" fn MCC_GetOverTravelCheck(
     pnOTCheck7: *mut c_int,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3, pnOTCheck4, pnOTCheck5, pnOTCheck6,
             pnOTCheck7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 fn limit_status(
@@ -108,7 +108,8 @@ fn limit_status(
     if wUpDown > 1 {
         return Err(McclError::Parameter);
     }
-    out_ok(pwStatus)?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let pwStatus = unsafe { Out::new(pwStatus) }?;
     let shared = system::active()?;
     let cd = shared.card(cd)?;
     let m = shared.machine.lock();
@@ -120,8 +121,7 @@ fn limit_status(
     } else {
         chan.levels().minus
     };
-    // SAFETY: checked non-null by out_ok; the caller passes a writable WORD.
-    unsafe { write_out(pwStatus, WORD::from(v)) };
+    pwStatus.write(WORD::from(v));
     Ok(c::NO_ERR)
 }
 
@@ -136,7 +136,7 @@ pub unsafe extern "C" fn MCC_GetLimitSwitchStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false))
+    ffi_boundary! { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false) }
 }
 
 /// Whether the limit switch has been active since the latch was last cleared.
@@ -150,7 +150,7 @@ pub unsafe extern "C" fn MCC_GetLatchedLimitSwitchStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true))
+    ffi_boundary! { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true) }
 }
 
 /// Clears the latched limit switch status (it latches again while the switch is active).
@@ -160,7 +160,7 @@ pub extern "C" fn MCC_ClearLatchedLimitSwitchStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         if wUpDown > 1 {
             return Err(McclError::Parameter);
@@ -176,5 +176,5 @@ pub extern "C" fn MCC_ClearLatchedLimitSwitchStatus(
         };
         chan.latched[usize::from(wUpDown)] = active;
         Ok(c::NO_ERR)
-    })
+    }
 }

@@ -3,59 +3,58 @@
 //! trigger-out by encoder compares. The virtual card keeps the state of each output; the
 //! simulated machine reads it.
 
-use super::{card, channel, guard};
+use super::{card, channel, with_card_triggers, Card, Out};
+use crate::error::McclResult;
+use crate::machine::triggers::TrigOutKind;
+use crate::machine::FilterClock;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
 use std::sync::atomic::Ordering;
 
-fn servo(wChannel: WORD, wCardIndex: WORD, on: bool) -> c_int {
-    guard(|| {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        let shared = system::active()?;
-        let cd = shared.card(cd)?;
-        let bit = 1u32 << ch.0;
-        if on {
-            shared.servo_on[cd].fetch_or(bit, Ordering::AcqRel);
-        } else {
-            shared.servo_on[cd].fetch_and(!bit, Ordering::AcqRel);
-        }
-        Ok(c::NO_ERR)
-    })
+fn servo(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
+    let shared = system::active()?;
+    let cd = shared.card(cd)?;
+    let bit = 1u32 << ch.0;
+    if on {
+        shared.servo_on[cd].fetch_or(bit, Ordering::AcqRel);
+    } else {
+        shared.servo_on[cd].fetch_and(!bit, Ordering::AcqRel);
+    }
+    Ok(c::NO_ERR)
 }
 
 /// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
 #[no_mangle]
 pub extern "C" fn MCC_SetServoOn(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    servo(wChannel, wCardIndex, true)
+    ffi_boundary! { servo(wChannel, wCardIndex, true) }
 }
 
 /// Turns the servo-on output of one channel off.
 #[no_mangle]
 pub extern "C" fn MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    servo(wChannel, wCardIndex, false)
+    ffi_boundary! { servo(wChannel, wCardIndex, false) }
 }
 
-fn pos_ready(wCardIndex: WORD, on: bool) -> c_int {
-    guard(|| {
-        let shared = system::active()?;
-        let cd = shared.card(card(wCardIndex)?)?;
-        shared.pos_ready[cd].store(on, Ordering::Release);
-        Ok(c::NO_ERR)
-    })
+fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    let shared = system::active()?;
+    let cd = shared.card(card(wCardIndex)?)?;
+    shared.pos_ready[cd].store(on, Ordering::Release);
+    Ok(c::NO_ERR)
 }
 
 /// Turns the card's position-ready output on.
 #[no_mangle]
 pub extern "C" fn MCC_EnablePosReady(wCardIndex: WORD) -> c_int {
-    pos_ready(wCardIndex, true)
+    ffi_boundary! { pos_ready(wCardIndex, true) }
 }
 
 /// Turns the card's position-ready output off.
 #[no_mangle]
 pub extern "C" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
-    pos_ready(wCardIndex, false)
+    ffi_boundary! { pos_ready(wCardIndex, false) }
 }
 
 /// The emergency-stop input of the card: 1 pressed, 0 released.
@@ -64,53 +63,35 @@ pub extern "C" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
 /// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetEmgcStopStatus(pwStatus: *mut WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        super::out_ok(pwStatus)?;
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStatus = unsafe { Out::new(pwStatus) }?;
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
         let v = shared.machine.lock().emergency[cd];
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(pwStatus, WORD::from(v)) };
+        pwStatus.write(WORD::from(v));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
-fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> c_int {
-    guard(|| {
-        let ch = channel(Channel)?;
-        let shared = system::active()?;
-        let cd = shared.card(card(wCardIndex)?)?;
-        let mut m = shared.machine.lock();
-        let bit = 1u8 << ch.0;
-        if on {
-            m.settings[cd].leds |= bit;
-        } else {
-            m.settings[cd].leds &= !bit;
-        }
-        Ok(c::NO_ERR)
-    })
+fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    let ch = channel(Channel)?;
+    let shared = system::active()?;
+    let cd = shared.card(card(wCardIndex)?)?;
+    shared.machine.lock().settings[cd].set_led(ch.0, on);
+    Ok(c::NO_ERR)
 }
 
 /// Turns a channel's LED output on.
 #[no_mangle]
 pub extern "C" fn MCC_SetLedLightOn(Channel: WORD, wCardIndex: WORD) -> c_int {
-    led(Channel, wCardIndex, true)
+    ffi_boundary! { led(Channel, wCardIndex, true) }
 }
 
 /// Turns a channel's LED output off.
 #[no_mangle]
 pub extern "C" fn MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) -> c_int {
-    led(Channel, wCardIndex, false)
-}
-
-/// What LED `ch` of card `cd` shows: its trigger-out value while a trigger holds it,
-/// else what `MCC_SetLedLightOn`/`Off` set.
-pub(super) fn led_lit(m: &crate::machine::Machine, cd: usize, ch: usize) -> bool {
-    let own = m.settings.get(cd).is_some_and(|s| s.leds >> ch & 1 == 1);
-    m.triggers
-        .get(cd)
-        .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
-        .unwrap_or(own)
+    ffi_boundary! { led(Channel, wCardIndex, false) }
 }
 
 /// A channel's LED output: 1 on, 0 off (while an LED trigger-out holds it: its trigger
@@ -124,53 +105,42 @@ pub unsafe extern "C" fn MCC_GetLedLightStatus(
     Status: *mut WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(Channel)?;
-        super::out_ok(Status)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let Status = unsafe { Out::new(Status) }?;
         let shared = system::active()?;
         let cd = shared.card(card(wCardIndex)?)?;
-        let v = led_lit(&shared.machine.lock(), cd, ch.0);
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(Status, WORD::from(v)) };
+        let v = shared.machine.lock().led_lit(cd, ch.0);
+        Status.write(WORD::from(v));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
-/// Index in `CardSettings::filters` of the limit switch inputs' filter clock.
-pub(super) const FILTER_LIMIT: usize = 0;
-/// The home sensor inputs' filter clock.
-pub(super) const FILTER_HOME: usize = 1;
-/// The general-purpose inputs' filter clock.
-pub(super) const FILTER_GPIO: usize = 2;
-/// The encoder inputs' filter clock (`MCC_SetENCFilterClock`).
-pub(super) const FILTER_ENC: usize = 3;
-
 /// Keeps filter clock `k` of the card (any WORD: the manuals give no range).
-pub(super) fn filter(k: usize, Value: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        let shared = system::active()?;
-        let cd = shared.card(card(wCardIndex)?)?;
-        shared.machine.lock().settings[cd].filters[k] = Value;
-        Ok(c::NO_ERR)
-    })
+pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResult<c_int> {
+    let shared = system::active()?;
+    let cd = shared.card(card(wCardIndex)?)?;
+    shared.machine.lock().settings[cd].set_filter_clock(k, Value);
+    Ok(c::NO_ERR)
 }
 
 /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(FILTER_LIMIT, Value, wCardIndex)
+    ffi_boundary! { filter(FilterClock::Limit, Value, wCardIndex) }
 }
 
 /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(FILTER_HOME, Value, wCardIndex)
+    ffi_boundary! { filter(FilterClock::Home, Value, wCardIndex) }
 }
 
 /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
 #[no_mangle]
 pub extern "C" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    filter(FILTER_GPIO, Value, wCardIndex)
+    ffi_boundary! { filter(FilterClock::Gpio, Value, wCardIndex) }
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.
@@ -183,28 +153,18 @@ pub unsafe extern "C" fn MCC_GetHomeSensorStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        super::out_ok(pwStatus)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStatus = unsafe { Out::new(pwStatus) }?;
         let mode = system::with(|s| s.config.home[cd.0][ch.0].wSensorMode);
         let shared = system::active()?;
         let cd = shared.card(cd)?;
         let m = shared.machine.lock();
         let v = m.cards[cd][ch.0].home_level(mode);
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(pwStatus, WORD::from(v)) };
+        pwStatus.write(WORD::from(v));
         Ok(c::NO_ERR)
-    })
-}
-
-fn with_triggers<R>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::machine::triggers::CardTriggers) -> Result<R, crate::error::McclError>,
-) -> Result<R, crate::error::McclError> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    f(&mut m.triggers[cd])
+    }
 }
 
 fn lio_point(wPoint: WORD) -> Result<usize, crate::error::McclError> {
@@ -234,38 +194,36 @@ pub extern "C" fn MCC_SetLIOTriggerType(
     wPoint: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = lio_point(wPoint)?;
         if wTriggerType > c::LIO_INT_LEVEL {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.lio_type[p] = wTriggerType;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
-fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> c_int {
-    guard(|| {
-        let p = lio_point(wPoint)?;
-        with_triggers(wCardIndex, |t| {
-            t.lio_enabled[p] = on;
-            Ok(c::NO_ERR)
-        })
+fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    let p = lio_point(wPoint)?;
+    with_card_triggers(Card(wCardIndex), |t| {
+        t.lio_enabled[p] = on;
+        Ok(c::NO_ERR)
     })
 }
 
 /// The local-input routine is called (`LIOINT`) on the point's trigger.
 #[no_mangle]
 pub extern "C" fn MCC_EnableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
-    lio_trigger(wPoint, wCardIndex, true)
+    ffi_boundary! { lio_trigger(wPoint, wCardIndex, true) }
 }
 
 /// The point no longer calls the local-input routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
-    lio_trigger(wPoint, wCardIndex, false)
+    ffi_boundary! { lio_trigger(wPoint, wCardIndex, false) }
 }
 
 /// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
@@ -273,32 +231,32 @@ pub extern "C" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int
 /// value for the trigger period, then returns.
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = out_point(wPoint)?;
         if wEnable > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            t.trig_out[p].0 = wEnable == 1;
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.trig_outs(TrigOutKind::Local)[p].enabled = wEnable == 1;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// The value a triggered output takes (1: servo off, 0: servo on, as the examples
 /// manual's §26 uses it).
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = out_point(wPoint)?;
         if wValue > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            t.trig_out[p].1 = wValue == 1;
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.trig_outs(TrigOutKind::Local)[p].value = wValue == 1;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Trigger values of several points at once: bit n of the mask selects point n.
@@ -308,43 +266,41 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
     dwBitValue: DWORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if dwBitMask > 0xFF {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            for p in (0..8).filter(|p| dwBitMask & (1 << p) != 0) {
-                t.trig_out[p].1 = dwBitValue & (1 << p) != 0;
-            }
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.set_trig_out_values(dwBitMask, dwBitValue);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = out_point(wPoint)?;
         if wSource > 0xFF {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            t.trig_out[p].2 = wSource;
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.trig_outs(TrigOutKind::Local)[p].source = wSource;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// How long a triggered output or LED holds its value, ns (rounded up to whole ticks).
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        with_triggers(wCardIndex, |t| {
+    ffi_boundary! {
+        with_card_triggers(Card(wCardIndex), |t| {
             t.trig_period_ns = u64::from(dwPeriod);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
@@ -353,54 +309,50 @@ pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> 
 /// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        system::active()?;
+        super::initialised()?;
         let p = out_point(wPoint)?;
         if wEnable > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            t.led_trig_out[p].0 = wEnable == 1;
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.trig_outs(TrigOutKind::Led)[p].enabled = wEnable == 1;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// The value a triggered LED shows: 1 lit, 0 dark.
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        system::active()?;
+    ffi_boundary! {
+        super::initialised()?;
         let p = out_point(wPoint)?;
         if wOutput > 1 {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            t.led_trig_out[p].1 = wOutput == 1;
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.trig_outs(TrigOutKind::Led)[p].value = wOutput == 1;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        system::active()?;
+    ffi_boundary! {
+        super::initialised()?;
         let p = out_point(wPoint)?;
         if wSource > 0xFF {
             return Err(crate::error::McclError::Parameter);
         }
-        with_triggers(wCardIndex, |t| {
-            t.led_trig_out[p].2 = wSource;
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.trig_outs(TrigOutKind::Led)[p].source = wSource;
             Ok(c::NO_ERR)
         })
-    })
-}
-
-fn lio_sources(t: &crate::machine::triggers::CardTriggers) -> u16 {
-    t.trig_out.iter().filter(|o| o.0).fold(0, |m, o| m | o.2)
+    }
 }
 
 /// Compare values waiting on the channels that trigger local outputs.
@@ -409,31 +361,22 @@ fn lio_sources(t: &crate::machine::triggers::CardTriggers) -> u16 {
 /// `wCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        super::out_ok(wCount)?;
-        let n = with_triggers(wCardIndex, |t| {
-            let src = lio_sources(t);
-            Ok((0..8)
-                .filter(|ch| src & (1 << ch) != 0)
-                .map(|ch| t.stock_count(ch))
-                .sum::<usize>())
-        })?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(wCount, n.min(usize::from(WORD::MAX)) as WORD) };
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let wCount = unsafe { Out::new(wCount) }?;
+        let n = with_card_triggers(Card(wCardIndex), |t| Ok(t.lio_comp_stock_count()))?;
+        wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Removes the compare values of the channels that trigger local outputs.
 #[no_mangle]
 pub extern "C" fn MCC_EraseLIOCompValue(wCardIndex: WORD) -> c_int {
-    guard(|| {
-        with_triggers(wCardIndex, |t| {
-            let src = lio_sources(t);
-            for ch in (0..8).filter(|ch| src & (1 << ch) != 0) {
-                t.stock[ch].clear();
-            }
+    ffi_boundary! {
+        with_card_triggers(Card(wCardIndex), |t| {
+            t.erase_lio_comp_values();
             Ok(c::NO_ERR)
         })
-    })
+    }
 }

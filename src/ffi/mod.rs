@@ -1,6 +1,17 @@
 //! The extern "C" layer: argument checks, pointer checks, panic boundary, and Rust errors
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
-//! plain `#[no_mangle] pub extern "C" fn` whose body calls [`guard`] and the core.
+//! plain `#[no_mangle] pub extern "C" fn` whose body is one `ffi_boundary! { ... }`
+//! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
+//! `ffi_boundary` integration test rejects an exported body that does not enter it.
+
+/// The panic boundary of an exported function: the block runs as a closure returning
+/// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
+/// to `RUN_TIME_ERR`. Every `extern "C"` body in this module is exactly one of these.
+macro_rules! ffi_boundary {
+    ($($body:tt)*) => {
+        $crate::ffi::guard(|| { $($body)* })
+    };
+}
 
 pub mod adc;
 pub mod coordinate;
@@ -95,6 +106,57 @@ pub fn with_card<R>(
     f(&mut p)
 }
 
+/// A card index as C passed it (`wCardIndex`), not yet checked. The accessors below
+/// take `Channel` and `Card` in the vendor's order (channel first), typed so that a
+/// swapped pair does not compile.
+#[derive(Debug, Clone, Copy)]
+pub struct Card(pub u16);
+
+/// A channel index as C passed it (`wChannel`), not yet checked.
+#[derive(Debug, Clone, Copy)]
+pub struct Channel(pub u16);
+
+/// Runs `f` on the simulated machine with its lock held and the index of card `cd`.
+/// `INITIAL_MOTION_ERR` before init, then `PARAMETER_ERR` for a bad card.
+pub fn with_machine<R>(
+    cd: Card,
+    f: impl FnOnce(&mut crate::machine::Machine, usize) -> McclResult<R>,
+) -> McclResult<R> {
+    let shared = crate::system::active()?;
+    let cd = shared.card(card(cd.0)?)?;
+    let mut m = shared.machine.lock();
+    f(&mut m, cd)
+}
+
+/// Runs `f` on the trigger state of card `cd` (see [`with_machine`]).
+pub fn with_card_triggers<R>(
+    cd: Card,
+    f: impl FnOnce(&mut crate::machine::triggers::CardTriggers) -> McclResult<R>,
+) -> McclResult<R> {
+    with_machine(cd, |m, cd| f(&mut m.triggers[cd]))
+}
+
+/// Runs `f` on channel `ch` of card `cd` of the simulated machine with its lock held.
+/// `PARAMETER_ERR` for a bad card or channel (checked first, in that order), then
+/// `INITIAL_MOTION_ERR` before init.
+pub fn with_machine_channel<R>(
+    ch: Channel,
+    cd: Card,
+    f: impl FnOnce(&mut crate::machine::Channel) -> McclResult<R>,
+) -> McclResult<R> {
+    let (cd, ch) = (card(cd.0)?, channel(ch.0)?);
+    let shared = crate::system::active()?;
+    let cd = shared.card(cd)?;
+    let mut m = shared.machine.lock();
+    f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?)
+}
+
+/// `INITIAL_MOTION_ERR` until `MCC_InitSystem` has run: checked first by the calls that
+/// answer so whatever their other arguments are.
+pub fn initialised() -> McclResult<()> {
+    crate::system::active().map(|_| ())
+}
+
 /// A card index from C.
 pub fn card(w: u16) -> McclResult<CardIx> {
     CardIx::new(w)
@@ -127,23 +189,52 @@ pub unsafe fn read_in<T: Copy>(p: *const T) -> McclResult<T> {
     Ok(unsafe { p.read_unaligned() })
 }
 
-/// Checks an output pointer (`PARAMETER_ERR` for NULL) without writing to it, so a call
-/// can validate all its outputs before it changes anything.
-pub fn out_ok<T>(p: *mut T) -> McclResult<()> {
-    if p.is_null() {
-        Err(McclError::Parameter)
-    } else {
-        Ok(())
+/// An output pointer from C, checked when it is made: NULL is refused with
+/// `PARAMETER_ERR`. A call makes all its outputs first (so a NULL among them fails
+/// before anything changes), then writes them.
+pub struct Out<T>(std::ptr::NonNull<T>);
+
+impl<T> Out<T> {
+    /// Checks `p` (`PARAMETER_ERR` for NULL).
+    ///
+    /// # Safety
+    /// `p` must be NULL or point to memory writable as a `T` (alignment not needed) for
+    /// as long as the `Out` lives.
+    pub unsafe fn new(p: *mut T) -> McclResult<Self> {
+        std::ptr::NonNull::new(p)
+            .map(Out)
+            .ok_or(McclError::Parameter)
+    }
+
+    /// Checks every pointer of `p` (`PARAMETER_ERR` if one is NULL).
+    ///
+    /// # Safety
+    /// As [`Out::new`], for each pointer.
+    pub unsafe fn each<const N: usize>(p: [*mut T; N]) -> McclResult<[Self; N]> {
+        p.iter().try_for_each(|q| {
+            if q.is_null() {
+                Err(McclError::Parameter)
+            } else {
+                Ok(())
+            }
+        })?;
+        // SAFETY: every pointer was found non-null just above.
+        Ok(p.map(|q| Out(unsafe { std::ptr::NonNull::new_unchecked(q) })))
+    }
+
+    /// Writes the result.
+    pub fn write(self, v: T) {
+        // SAFETY: non-null (checked by `new`) and writable (`new`'s contract); C callers
+        // may pass packed buffers, so the write is unaligned.
+        unsafe { self.0.as_ptr().write_unaligned(v) }
     }
 }
 
-/// Writes a result through a pointer already checked with [`out_ok`].
-///
-/// # Safety
-/// `p` must be non-null and point to writable memory for a `T`.
-pub unsafe fn write_out<T>(p: *mut T, v: T) {
-    // SAFETY: the caller checked p with out_ok and guarantees it is writable.
-    unsafe { p.write_unaligned(v) }
+/// Writes `N` results through outputs made by [`Out::each`].
+pub fn write_each<T, const N: usize>(outs: [Out<T>; N], v: [T; N]) {
+    for (o, x) in outs.into_iter().zip(v) {
+        o.write(x);
+    }
 }
 
 #[cfg(test)]
@@ -246,22 +337,6 @@ pub fn shape_char(s: crate::planner::Shape) -> std::os::raw::c_char {
         crate::planner::Shape::T => b'T',
         crate::planner::Shape::S => b'S',
     }) as std::os::raw::c_char
-}
-
-/// Checks 8 output pointers (all must be non-NULL) before anything is written.
-pub fn outs8<T>(p: &[*mut T; 8]) -> McclResult<()> {
-    p.iter().try_for_each(|&q| out_ok(q))
-}
-
-/// Writes 8 values through pointers checked with [`outs8`].
-///
-/// # Safety
-/// Every pointer must be non-null and writable.
-pub unsafe fn write8<T: Copy>(p: &[*mut T; 8], v: [T; 8]) {
-    for (q, x) in p.iter().zip(v) {
-        // SAFETY: the caller checked the pointers and guarantees they are writable.
-        unsafe { write_out(*q, x) };
-    }
 }
 
 /// Checks that 8 numbers from C are finite.

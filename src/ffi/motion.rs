@@ -1,9 +1,7 @@
 //! General motion: line, arc, circle and helix commands and their settings (user manual
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
-use super::{
-    finite, finite8, guard, outs8, queue, queue_curve, shape, shape_char, with_group, write8,
-};
+use super::{finite, finite8, queue, queue_curve, shape, shape_char, with_group, Out};
 use crate::error::{McclError, McclResult};
 use crate::planner::{Path, Plane};
 use crate::system;
@@ -32,95 +30,95 @@ fn direction(byCirDir: BYTE) -> McclResult<bool> {
 /// Acceleration shape of general motion: 'T' (trapezoid) or 'S' (S-curve).
 #[no_mangle]
 pub extern "C" fn MCC_SetAccType(cAccType: c_char, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = shape(cAccType)?;
         super::update_group(wGroupIndex, |g| g.settings.acc = s)
-    })
+    }
 }
 
 /// The acceleration shape as its character code ('T' = 84, 'S' = 83).
 #[no_mangle]
 pub extern "C" fn MCC_GetAccType(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_group(wGroupIndex, |g| {
             Ok(c_int::from(shape_char(g.settings.acc) as u8))
         })
-    })
+    }
 }
 
 /// Deceleration shape of general motion: 'T' or 'S'.
 #[no_mangle]
 pub extern "C" fn MCC_SetDecType(cDecType: c_char, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = shape(cDecType)?;
         super::update_group(wGroupIndex, |g| g.settings.dec = s)
-    })
+    }
 }
 
 /// The deceleration shape as its character code.
 #[no_mangle]
 pub extern "C" fn MCC_GetDecType(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_group(wGroupIndex, |g| {
             Ok(c_int::from(shape_char(g.settings.dec) as u8))
         })
-    })
+    }
 }
 
 /// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
 #[no_mangle]
 pub extern "C" fn MCC_SetAccTime(dfAccTime: f64, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let t = time_ms(dfAccTime)?;
         super::update_group(wGroupIndex, |g| g.settings.acc_ms = t)
-    })
+    }
 }
 
 /// The acceleration time, ms.
 #[no_mangle]
 pub extern "C" fn MCC_GetAccTime(wGroupIndex: WORD) -> f64 {
-    guard(|| with_group(wGroupIndex, |g| Ok(g.settings.acc_ms)))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.acc_ms)) }
 }
 
 /// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300).
 #[no_mangle]
 pub extern "C" fn MCC_SetDecTime(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let t = time_ms(dfDecTime)?;
         super::update_group(wGroupIndex, |g| g.settings.dec_ms = t)
-    })
+    }
 }
 
 /// The deceleration time, ms.
 #[no_mangle]
 pub extern "C" fn MCC_GetDecTime(wGroupIndex: WORD) -> f64 {
-    guard(|| with_group(wGroupIndex, |g| Ok(g.settings.dec_ms)))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.dec_ms)) }
 }
 
 /// Feed speed of following general motion, UU/s (1e-6..=1e9). A speed above
 /// `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed speed now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_SetFeedSpeed(dfFeedSpeed: f64, wGroupIndex: WORD) -> f64 {
-    guard(|| {
+    ffi_boundary! {
         let v = crate::config::range::speed(dfFeedSpeed)?;
         let v = v.min(system::with(|s| s.config.sys_max_speed));
         with_group(wGroupIndex, |g| {
             g.settings.feed = v;
             Ok(v)
         })
-    })
+    }
 }
 
 /// The feed speed of following general motion, UU/s.
 #[no_mangle]
 pub extern "C" fn MCC_GetFeedSpeed(wGroupIndex: WORD) -> f64 {
-    guard(|| with_group(wGroupIndex, |g| Ok(g.settings.feed)))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.feed)) }
 }
 
 /// The current tangential speed (UU/s): X/Y/Z path speed, or the fastest aux axis.
 #[no_mangle]
 pub extern "C" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
-    guard(|| Ok(system::active()?.snapshot(wGroupIndex)?.path_speed))
+    ffi_boundary! { Ok(system::active()?.snapshot(wGroupIndex)?.path_speed) }
 }
 
 /// The current speed of every axis, UU/s (signed).
@@ -139,44 +137,42 @@ pub unsafe extern "C" fn MCC_GetSpeed(
     pdfVel7: *mut f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, s.vel) };
+        super::write_each(p, s.vel);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Point-to-point speed ratio, percent of each axis's maximum safe speed
 /// (0.01 <= r <= 100). Returns the ratio now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_SetPtPSpeed(dfRatio: f64, wGroupIndex: WORD) -> f64 {
-    guard(|| {
+    ffi_boundary! {
         let r = crate::config::range::percent(dfRatio, 100.0)?;
         with_group(wGroupIndex, |g| {
             g.settings.ptp_ratio = r;
             Ok(r)
         })
-    })
+    }
 }
 
 /// The point-to-point speed ratio, percent.
 #[no_mangle]
 pub extern "C" fn MCC_GetPtPSpeed(wGroupIndex: WORD) -> f64 {
-    guard(|| with_group(wGroupIndex, |g| Ok(g.settings.ptp_ratio)))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.ptp_ratio)) }
 }
 
-fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> c_int {
-    guard(|| {
-        let args = finite8(args)?;
-        let m = mask(m)?;
-        queue(g, |ctx| {
-            ctx.ptp(ctx.resolve(&args, m), ctx.settings.ptp_ratio, sync)
-        })
+fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
+    let args = finite8(args)?;
+    let m = mask(m)?;
+    queue(g, |ctx| {
+        ctx.ptp(ctx.resolve(&args, m), ctx.settings.ptp_ratio, sync)
     })
 }
 
@@ -195,12 +191,12 @@ pub extern "C" fn MCC_PtP(
     wGroupIndex: WORD,
     dwAxisMask: DWORD,
 ) -> c_int {
-    ptp(
+    ffi_boundary! { ptp(
         [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
         wGroupIndex,
         dwAxisMask,
         false,
-    )
+    ) }
 }
 
 /// Synchronised point-to-point motion: all axes start and end together, paced by the
@@ -218,12 +214,12 @@ pub extern "C" fn MCC_SyncPtP(
     wGroupIndex: WORD,
     dwAxisMask: DWORD,
 ) -> c_int {
-    ptp(
+    ffi_boundary! { ptp(
         [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
         wGroupIndex,
         dwAxisMask,
         true,
-    )
+    ) }
 }
 
 fn one(axis: usize, v: f64) -> [f64; 8] {
@@ -235,50 +231,48 @@ fn one(axis: usize, v: f64) -> [f64; 8] {
 /// Point-to-point motion of X alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPX(dfX: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(0, dfX), wGroupIndex, c::IMP_AXIS_X, false)
+    ffi_boundary! { ptp(one(0, dfX), wGroupIndex, c::IMP_AXIS_X, false) }
 }
 /// Point-to-point motion of Y alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPY(dfY: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y, false)
+    ffi_boundary! { ptp(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y, false) }
 }
 /// Point-to-point motion of Z alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPZ(dfZ: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z, false)
+    ffi_boundary! { ptp(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z, false) }
 }
 /// Point-to-point motion of U alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPU(dfU: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(3, dfU), wGroupIndex, c::IMP_AXIS_U, false)
+    ffi_boundary! { ptp(one(3, dfU), wGroupIndex, c::IMP_AXIS_U, false) }
 }
 /// Point-to-point motion of V alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPV(dfV: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(4, dfV), wGroupIndex, c::IMP_AXIS_V, false)
+    ffi_boundary! { ptp(one(4, dfV), wGroupIndex, c::IMP_AXIS_V, false) }
 }
 /// Point-to-point motion of W alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPW(dfW: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(5, dfW), wGroupIndex, c::IMP_AXIS_W, false)
+    ffi_boundary! { ptp(one(5, dfW), wGroupIndex, c::IMP_AXIS_W, false) }
 }
 /// Point-to-point motion of A alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPA(dfA: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(6, dfA), wGroupIndex, c::IMP_AXIS_A, false)
+    ffi_boundary! { ptp(one(6, dfA), wGroupIndex, c::IMP_AXIS_A, false) }
 }
 /// Point-to-point motion of B alone.
 #[no_mangle]
 pub extern "C" fn MCC_PtPB(dfB: f64, wGroupIndex: WORD) -> c_int {
-    ptp(one(7, dfB), wGroupIndex, c::IMP_AXIS_B, false)
+    ffi_boundary! { ptp(one(7, dfB), wGroupIndex, c::IMP_AXIS_B, false) }
 }
 
-fn line(args: [f64; 8], g: WORD, m: DWORD) -> c_int {
-    guard(|| {
-        let args = finite8(args)?;
-        let m = mask(m)?;
-        queue(g, |ctx| ctx.line(ctx.resolve(&args, m)))
-    })
+fn line(args: [f64; 8], g: WORD, m: DWORD) -> McclResult<c_int> {
+    let args = finite8(args)?;
+    let m = mask(m)?;
+    queue(g, |ctx| ctx.line(ctx.resolve(&args, m)))
 }
 
 /// Linear motion of the axes in the mask at the feed speed (only X/Y/Z count for the
@@ -296,52 +290,52 @@ pub extern "C" fn MCC_Line(
     wGroupIndex: WORD,
     dwAxisMask: DWORD,
 ) -> c_int {
-    line(
+    ffi_boundary! { line(
         [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
         wGroupIndex,
         dwAxisMask,
-    )
+    ) }
 }
 
 /// Linear motion of X alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineX(dfX: f64, wGroupIndex: WORD) -> c_int {
-    line(one(0, dfX), wGroupIndex, c::IMP_AXIS_X)
+    ffi_boundary! { line(one(0, dfX), wGroupIndex, c::IMP_AXIS_X) }
 }
 /// Linear motion of Y alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineY(dfY: f64, wGroupIndex: WORD) -> c_int {
-    line(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y)
+    ffi_boundary! { line(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y) }
 }
 /// Linear motion of Z alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineZ(dfZ: f64, wGroupIndex: WORD) -> c_int {
-    line(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z)
+    ffi_boundary! { line(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z) }
 }
 /// Linear motion of U alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineU(dfU: f64, wGroupIndex: WORD) -> c_int {
-    line(one(3, dfU), wGroupIndex, c::IMP_AXIS_U)
+    ffi_boundary! { line(one(3, dfU), wGroupIndex, c::IMP_AXIS_U) }
 }
 /// Linear motion of V alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineV(dfV: f64, wGroupIndex: WORD) -> c_int {
-    line(one(4, dfV), wGroupIndex, c::IMP_AXIS_V)
+    ffi_boundary! { line(one(4, dfV), wGroupIndex, c::IMP_AXIS_V) }
 }
 /// Linear motion of W alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineW(dfW: f64, wGroupIndex: WORD) -> c_int {
-    line(one(5, dfW), wGroupIndex, c::IMP_AXIS_W)
+    ffi_boundary! { line(one(5, dfW), wGroupIndex, c::IMP_AXIS_W) }
 }
 /// Linear motion of A alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineA(dfA: f64, wGroupIndex: WORD) -> c_int {
-    line(one(6, dfA), wGroupIndex, c::IMP_AXIS_A)
+    ffi_boundary! { line(one(6, dfA), wGroupIndex, c::IMP_AXIS_A) }
 }
 /// Linear motion of B alone (obsolete form).
 #[no_mangle]
 pub extern "C" fn MCC_LineB(dfB: f64, wGroupIndex: WORD) -> c_int {
-    line(one(7, dfB), wGroupIndex, c::IMP_AXIS_B)
+    ffi_boundary! { line(one(7, dfB), wGroupIndex, c::IMP_AXIS_B) }
 }
 
 /// Checks plane points (on `plane`'s two axes) and aux ends (U..B) against the position
@@ -365,24 +359,28 @@ fn aux5(v: [f64; 5]) -> McclResult<[f64; 5]> {
     Ok(v)
 }
 
-fn arc(plane: Plane, r: [f64; 2], e: [f64; 2], aux: Option<[f64; 5]>, g: WORD) -> c_int {
-    guard(|| {
-        let (r, e) = (
-            [finite(r[0])?, finite(r[1])?],
-            [finite(e[0])?, finite(e[1])?],
-        );
-        let aux = aux.map(aux5).transpose()?;
-        queue_curve(
-            g,
-            |ctx| {
-                let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                let (r, e) = (ctx.resolve_plane(plane, r), ctx.resolve_plane(plane, e));
-                check_plane(ctx, plane, &[r, e], aux)?;
-                Path::arc_3pt(plane, &ctx.from, r, e, aux)
-            },
-            false,
-        )
-    })
+fn arc(
+    plane: Plane,
+    r: [f64; 2],
+    e: [f64; 2],
+    aux: Option<[f64; 5]>,
+    g: WORD,
+) -> McclResult<c_int> {
+    let (r, e) = (
+        [finite(r[0])?, finite(r[1])?],
+        [finite(e[0])?, finite(e[1])?],
+    );
+    let aux = aux.map(aux5).transpose()?;
+    queue_curve(
+        g,
+        |ctx| {
+            let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+            let (r, e) = (ctx.resolve_plane(plane, r), ctx.resolve_plane(plane, e));
+            check_plane(ctx, plane, &[r, e], aux)?;
+            Path::arc_3pt(plane, &ctx.from, r, e, aux)
+        },
+        false,
+    )
 }
 
 /// Arc in the XY plane from the current point through (dfRX0, dfRX1) to (dfX0, dfX1).
@@ -394,7 +392,7 @@ pub extern "C" fn MCC_ArcXY(
     dfX1: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc(Plane::XY, [dfRX0, dfRX1], [dfX0, dfX1], None, wGroupIndex)
+    ffi_boundary! { arc(Plane::XY, [dfRX0, dfRX1], [dfX0, dfX1], None, wGroupIndex) }
 }
 
 /// Arc in the YZ plane through (dfRX1, dfRX2) to (dfX1, dfX2).
@@ -406,7 +404,7 @@ pub extern "C" fn MCC_ArcYZ(
     dfX2: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc(Plane::YZ, [dfRX1, dfRX2], [dfX1, dfX2], None, wGroupIndex)
+    ffi_boundary! { arc(Plane::YZ, [dfRX1, dfRX2], [dfX1, dfX2], None, wGroupIndex) }
 }
 
 /// Arc in the ZX plane through (dfRX2, dfRX0) to (dfX2, dfX0).
@@ -418,7 +416,7 @@ pub extern "C" fn MCC_ArcZX(
     dfX0: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc(Plane::ZX, [dfRX2, dfRX0], [dfX2, dfX0], None, wGroupIndex)
+    ffi_boundary! { arc(Plane::ZX, [dfRX2, dfRX0], [dfX2, dfX0], None, wGroupIndex) }
 }
 
 /// [`MCC_ArcXY`] with U..B moving linearly to the given ends.
@@ -435,13 +433,13 @@ pub extern "C" fn MCC_ArcXY_Aux(
     dfX7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc(
+    ffi_boundary! { arc(
         Plane::XY,
         [dfRX0, dfRX1],
         [dfX0, dfX1],
         Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
         wGroupIndex,
-    )
+    ) }
 }
 
 /// [`MCC_ArcYZ`] with U..B moving linearly to the given ends.
@@ -458,13 +456,13 @@ pub extern "C" fn MCC_ArcYZ_Aux(
     dfX7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc(
+    ffi_boundary! { arc(
         Plane::YZ,
         [dfRX1, dfRX2],
         [dfX1, dfX2],
         Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
         wGroupIndex,
-    )
+    ) }
 }
 
 /// [`MCC_ArcZX`] with U..B moving linearly to the given ends.
@@ -481,36 +479,33 @@ pub extern "C" fn MCC_ArcZX_Aux(
     dfX7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc(
+    ffi_boundary! { arc(
         Plane::ZX,
         [dfRX2, dfRX0],
         [dfX2, dfX0],
         Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
         wGroupIndex,
-    )
+    ) }
 }
 
-fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> c_int {
-    guard(|| {
-        for v in r.iter().chain(e.iter()) {
-            finite(*v)?;
-        }
-        let aux = aux.map(aux5).transpose()?;
-        queue_curve(
-            g,
-            |ctx| {
-                let rr: [f64; 3] = std::array::from_fn(|i| ctx.resolve_axis(i, r[i]));
-                let ee: [f64; 3] = std::array::from_fn(|i| ctx.resolve_axis(i, e[i]));
-                let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                let pts: Vec<(usize, f64)> =
-                    (0..3).flat_map(|i| [(i, rr[i]), (i, ee[i])]).collect();
-                ctx.check_points(&pts)?;
-                check_plane(ctx, Plane::XY, &[], aux)?;
-                Path::arc_3pt_xyz(&ctx.from, rr, ee, aux)
-            },
-            false,
-        )
-    })
+fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResult<c_int> {
+    for v in r.iter().chain(e.iter()) {
+        finite(*v)?;
+    }
+    let aux = aux.map(aux5).transpose()?;
+    queue_curve(
+        g,
+        |ctx| {
+            let rr: [f64; 3] = std::array::from_fn(|i| ctx.resolve_axis(i, r[i]));
+            let ee: [f64; 3] = std::array::from_fn(|i| ctx.resolve_axis(i, e[i]));
+            let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+            let pts: Vec<(usize, f64)> = (0..3).flat_map(|i| [(i, rr[i]), (i, ee[i])]).collect();
+            ctx.check_points(&pts)?;
+            check_plane(ctx, Plane::XY, &[], aux)?;
+            Path::arc_3pt_xyz(&ctx.from, rr, ee, aux)
+        },
+        false,
+    )
 }
 
 /// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
@@ -524,7 +519,7 @@ pub extern "C" fn MCC_ArcXYZ(
     dfX2: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex)
+    ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
 }
 
 /// [`MCC_ArcXYZ`] with U..B moving linearly to the given ends.
@@ -543,83 +538,85 @@ pub extern "C" fn MCC_ArcXYZ_Aux(
     dfX7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    arc_xyz(
+    ffi_boundary! { arc_xyz(
         [dfRX0, dfRX1, dfRX2],
         [dfX0, dfX1, dfX2],
         Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
         wGroupIndex,
-    )
+    ) }
 }
 
-fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> c_int {
-    guard(|| {
-        let cxy = [finite(cxy[0])?, finite(cxy[1])?];
-        let theta = finite(theta)?;
-        queue_curve(
-            g,
-            |ctx| {
-                let c = ctx.resolve_plane(plane, cxy);
-                check_plane(ctx, plane, &[c], None)?;
-                Path::arc_theta(plane, &ctx.from, c, theta)
-            },
-            false,
-        )
-    })
+fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_int> {
+    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
+    let theta = finite(theta)?;
+    queue_curve(
+        g,
+        |ctx| {
+            let c = ctx.resolve_plane(plane, cxy);
+            check_plane(ctx, plane, &[c], None)?;
+            Path::arc_theta(plane, &ctx.from, c, theta)
+        },
+        false,
+    )
 }
 
 /// Arc around the center (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise seen
 /// from +Z).
 #[no_mangle]
 pub extern "C" fn MCC_ArcThetaXY(dfCX: f64, dfCY: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-    arc_theta(Plane::XY, [dfCX, dfCY], dfTheta, wGroupIndex)
+    ffi_boundary! { arc_theta(Plane::XY, [dfCX, dfCY], dfTheta, wGroupIndex) }
 }
 
 /// Arc around (dfCY, dfCZ) by dfTheta degrees (> 0 counter-clockwise seen from +X).
 #[no_mangle]
 pub extern "C" fn MCC_ArcThetaYZ(dfCY: f64, dfCZ: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-    arc_theta(Plane::YZ, [dfCY, dfCZ], dfTheta, wGroupIndex)
+    ffi_boundary! { arc_theta(Plane::YZ, [dfCY, dfCZ], dfTheta, wGroupIndex) }
 }
 
 /// Arc around (dfCZ, dfCX) by dfTheta degrees (> 0 counter-clockwise seen from +Y).
 #[no_mangle]
 pub extern "C" fn MCC_ArcThetaZX(dfCZ: f64, dfCX: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-    arc_theta(Plane::ZX, [dfCZ, dfCX], dfTheta, wGroupIndex)
+    ffi_boundary! { arc_theta(Plane::ZX, [dfCZ, dfCX], dfTheta, wGroupIndex) }
 }
 
-fn circle(plane: Plane, cxy: [f64; 2], aux: Option<[f64; 5]>, dir: BYTE, g: WORD) -> c_int {
-    guard(|| {
-        let cxy = [finite(cxy[0])?, finite(cxy[1])?];
-        let ccw = direction(dir)?;
-        let aux = aux.map(aux5).transpose()?;
-        queue_curve(
-            g,
-            |ctx| {
-                let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                let c = ctx.resolve_plane(plane, cxy);
-                check_plane(ctx, plane, &[c], aux)?;
-                Path::circle(plane, &ctx.from, c, ccw, aux)
-            },
-            false,
-        )
-    })
+fn circle(
+    plane: Plane,
+    cxy: [f64; 2],
+    aux: Option<[f64; 5]>,
+    dir: BYTE,
+    g: WORD,
+) -> McclResult<c_int> {
+    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
+    let ccw = direction(dir)?;
+    let aux = aux.map(aux5).transpose()?;
+    queue_curve(
+        g,
+        |ctx| {
+            let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+            let c = ctx.resolve_plane(plane, cxy);
+            check_plane(ctx, plane, &[c], aux)?;
+            Path::circle(plane, &ctx.from, c, ccw, aux)
+        },
+        false,
+    )
 }
 
 /// Full circle around (dfCX, dfCY) in the XY plane, `CIR_CW` or `CIR_CCW` seen from +Z.
 #[no_mangle]
 pub extern "C" fn MCC_CircleXY(dfCX: f64, dfCY: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-    circle(Plane::XY, [dfCX, dfCY], None, byCirDir, wGroupIndex)
+    ffi_boundary! { circle(Plane::XY, [dfCX, dfCY], None, byCirDir, wGroupIndex) }
 }
 
 /// Full circle around (dfCY, dfCZ) in the YZ plane, seen from +X.
 #[no_mangle]
 pub extern "C" fn MCC_CircleYZ(dfCY: f64, dfCZ: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-    circle(Plane::YZ, [dfCY, dfCZ], None, byCirDir, wGroupIndex)
+    ffi_boundary! { circle(Plane::YZ, [dfCY, dfCZ], None, byCirDir, wGroupIndex) }
 }
 
 /// Full circle around (dfCZ, dfCX) in the ZX plane, seen from +Y.
 #[no_mangle]
 pub extern "C" fn MCC_CircleZX(dfCZ: f64, dfCX: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-    circle(Plane::ZX, [dfCZ, dfCX], None, byCirDir, wGroupIndex)
+    ffi_boundary! { circle(Plane::ZX, [dfCZ, dfCX], None, byCirDir, wGroupIndex) }
 }
 
 /// [`MCC_CircleXY`] with U..B moving linearly to the given ends.
@@ -635,13 +632,13 @@ pub extern "C" fn MCC_CircleXY_Aux(
     byCirDir: BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    circle(
+    ffi_boundary! { circle(
         Plane::XY,
         [dfCX, dfCY],
         Some([dfU, dfV, dfW, dfA, dfB]),
         byCirDir,
         wGroupIndex,
-    )
+    ) }
 }
 
 /// [`MCC_CircleYZ`] with U..B moving linearly to the given ends.
@@ -657,13 +654,13 @@ pub extern "C" fn MCC_CircleYZ_Aux(
     byCirDir: BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    circle(
+    ffi_boundary! { circle(
         Plane::YZ,
         [dfCY, dfCZ],
         Some([dfU, dfV, dfW, dfA, dfB]),
         byCirDir,
         wGroupIndex,
-    )
+    ) }
 }
 
 /// [`MCC_CircleZX`] with U..B moving linearly to the given ends.
@@ -679,13 +676,13 @@ pub extern "C" fn MCC_CircleZX_Aux(
     byCirDir: BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    circle(
+    ffi_boundary! { circle(
         Plane::ZX,
         [dfCZ, dfCX],
         Some([dfU, dfV, dfW, dfA, dfB]),
         byCirDir,
         wGroupIndex,
-    )
+    ) }
 }
 
 fn helical(
@@ -695,22 +692,20 @@ fn helical(
     theta: f64,
     aux: Option<[f64; 5]>,
     g: WORD,
-) -> c_int {
-    guard(|| {
-        let cxy = [finite(cxy[0])?, finite(cxy[1])?];
-        let (pitch, theta) = (finite(pitch)?, finite(theta)?);
-        let aux = aux.map(aux5).transpose()?;
-        queue_curve(
-            g,
-            |ctx| {
-                let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-                let c = ctx.resolve_plane(plane, cxy);
-                check_plane(ctx, plane, &[c], aux)?;
-                Path::helix(plane, &ctx.from, c, pitch, theta, aux)
-            },
-            true,
-        )
-    })
+) -> McclResult<c_int> {
+    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
+    let (pitch, theta) = (finite(pitch)?, finite(theta)?);
+    let aux = aux.map(aux5).transpose()?;
+    queue_curve(
+        g,
+        |ctx| {
+            let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+            let c = ctx.resolve_plane(plane, cxy);
+            check_plane(ctx, plane, &[c], aux)?;
+            Path::helix(plane, &ctx.from, c, pitch, theta, aux)
+        },
+        true,
+    )
 }
 
 /// Helix around (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise); Z moves
@@ -723,7 +718,7 @@ pub extern "C" fn MCC_HelicalXY_Z(
     dfTheta: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    helical(Plane::XY, [dfCX, dfCY], dfPitch, dfTheta, None, wGroupIndex)
+    ffi_boundary! { helical(Plane::XY, [dfCX, dfCY], dfPitch, dfTheta, None, wGroupIndex) }
 }
 
 /// Helix around (dfCY, dfCZ); X moves dfPitch per turn.
@@ -735,7 +730,7 @@ pub extern "C" fn MCC_HelicalYZ_X(
     dfTheta: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    helical(Plane::YZ, [dfCY, dfCZ], dfPitch, dfTheta, None, wGroupIndex)
+    ffi_boundary! { helical(Plane::YZ, [dfCY, dfCZ], dfPitch, dfTheta, None, wGroupIndex) }
 }
 
 /// Helix around (dfCZ, dfCX); Y moves dfPitch per turn.
@@ -747,7 +742,7 @@ pub extern "C" fn MCC_HelicalZX_Y(
     dfTheta: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    helical(Plane::ZX, [dfCZ, dfCX], dfPitch, dfTheta, None, wGroupIndex)
+    ffi_boundary! { helical(Plane::ZX, [dfCZ, dfCX], dfPitch, dfTheta, None, wGroupIndex) }
 }
 
 /// [`MCC_HelicalXY_Z`] with U..B moving linearly to the given ends.
@@ -764,14 +759,14 @@ pub extern "C" fn MCC_HelicalXY_Z_Aux(
     dfTheta: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    helical(
+    ffi_boundary! { helical(
         Plane::XY,
         [dfCX, dfCY],
         dfPitch,
         dfTheta,
         Some([dfU, dfV, dfW, dfA, dfB]),
         wGroupIndex,
-    )
+    ) }
 }
 
 /// [`MCC_HelicalYZ_X`] with U..B moving linearly to the given ends.
@@ -788,14 +783,14 @@ pub extern "C" fn MCC_HelicalYZ_X_Aux(
     dfTheta: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    helical(
+    ffi_boundary! { helical(
         Plane::YZ,
         [dfCY, dfCZ],
         dfPitch,
         dfTheta,
         Some([dfU, dfV, dfW, dfA, dfB]),
         wGroupIndex,
-    )
+    ) }
 }
 
 /// [`MCC_HelicalZX_Y`] with U..B moving linearly to the given ends.
@@ -812,33 +807,38 @@ pub extern "C" fn MCC_HelicalZX_Y_Aux(
     dfTheta: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    helical(
+    ffi_boundary! { helical(
         Plane::ZX,
         [dfCZ, dfCX],
         dfPitch,
         dfTheta,
         Some([dfU, dfV, dfW, dfA, dfB]),
         wGroupIndex,
-    )
+    ) }
 }
 
-fn helica(plane: Plane, cxy: [f64; 2], pos: f64, pitch: f64, dir: BYTE, g: WORD) -> c_int {
-    guard(|| {
-        let cxy = [finite(cxy[0])?, finite(cxy[1])?];
-        let (pos, pitch) = (finite(pos)?, finite(pitch)?);
-        let ccw = direction(dir)?;
-        let n = plane.axes().2;
-        queue_curve(
-            g,
-            |ctx| {
-                let (c, to) = (ctx.resolve_plane(plane, cxy), ctx.resolve_axis(n, pos));
-                check_plane(ctx, plane, &[c], None)?;
-                ctx.check_points(&[(n, to)])?;
-                Path::helix_to(plane, &ctx.from, c, to, pitch, ccw, None)
-            },
-            true,
-        )
-    })
+fn helica(
+    plane: Plane,
+    cxy: [f64; 2],
+    pos: f64,
+    pitch: f64,
+    dir: BYTE,
+    g: WORD,
+) -> McclResult<c_int> {
+    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
+    let (pos, pitch) = (finite(pos)?, finite(pitch)?);
+    let ccw = direction(dir)?;
+    let n = plane.axes().2;
+    queue_curve(
+        g,
+        |ctx| {
+            let (c, to) = (ctx.resolve_plane(plane, cxy), ctx.resolve_axis(n, pos));
+            check_plane(ctx, plane, &[c], None)?;
+            ctx.check_points(&[(n, to)])?;
+            Path::helix_to(plane, &ctx.from, c, to, pitch, ccw, None)
+        },
+        true,
+    )
 }
 
 /// Obsolete helix: around (dfCX, dfCY) in direction byCirDir until Z reaches dfPos,
@@ -852,14 +852,14 @@ pub extern "C" fn MCC_HelicaXY_Z(
     byCirDir: BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    helica(
+    ffi_boundary! { helica(
         Plane::XY,
         [dfCX, dfCY],
         dfPos,
         dfPitch,
         byCirDir,
         wGroupIndex,
-    )
+    ) }
 }
 
 /// Obsolete helix around (dfCY, dfCZ) until X reaches dfPos.
@@ -872,14 +872,14 @@ pub extern "C" fn MCC_HelicaYZ_X(
     byCirDir: BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    helica(
+    ffi_boundary! { helica(
         Plane::YZ,
         [dfCY, dfCZ],
         dfPos,
         dfPitch,
         byCirDir,
         wGroupIndex,
-    )
+    ) }
 }
 
 /// Obsolete helix around (dfCZ, dfCX) until Y reaches dfPos.
@@ -892,12 +892,12 @@ pub extern "C" fn MCC_HelicaZX_Y(
     byCirDir: BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    helica(
+    ffi_boundary! { helica(
         Plane::ZX,
         [dfCZ, dfCX],
         dfPos,
         dfPitch,
         byCirDir,
         wGroupIndex,
-    )
+    ) }
 }

@@ -2,46 +2,32 @@
 //! gains (kept and reported: the simulated plant is set by the configuration), error
 //! counters, pulse speed and acceleration limits, tracking error, compensation.
 
-use super::{axis, card, channel, finite, guard, outs8, update_group, with_group, write8};
+use super::{axis, card, channel, finite, update_group, with_group, with_machine, Card, Out};
 use crate::error::{McclError, McclResult};
-use crate::machine::MAX_PULSE_LIMIT;
+use crate::machine::{PulseLimit, MAX_PULSE_LIMIT};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, SYS_COMP_PARAM, WORD};
 use std::os::raw::{c_char, c_int};
 
-fn with_card<R>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::machine::Machine, usize) -> McclResult<R>,
-) -> McclResult<R> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    let mut m = shared.machine.lock();
-    f(&mut m, cd)
-}
-
-fn set_gains(k: usize, v: [WORD; 8], wCardIndex: WORD) -> c_int {
-    guard(|| {
-        if v.iter().any(|&g| g > 255) {
-            return Err(McclError::Parameter);
-        }
-        with_card(wCardIndex, |m, cd| {
-            m.settings[cd].gains[k] = v;
-            Ok(c::NO_ERR)
-        })
+fn set_gains(k: usize, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
+    if v.iter().any(|&g| g > 255) {
+        return Err(McclError::Parameter);
+    }
+    with_machine(Card(wCardIndex), |m, cd| {
+        m.settings[cd].gains[k] = v;
+        Ok(c::NO_ERR)
     })
 }
 
 /// # Safety
 /// Every pointer must be NULL or writable.
-unsafe fn get_gains(k: usize, p: [*mut WORD; 8], wCardIndex: WORD) -> c_int {
-    guard(|| {
-        outs8(&p)?;
-        let v = with_card(wCardIndex, |m, cd| Ok(m.settings[cd].gains[k]))?;
-        // SAFETY: checked non-null; the caller passes writable WORDs.
-        unsafe { write8(&p, v) };
-        Ok(c::NO_ERR)
-    })
+unsafe fn get_gains(k: usize, p: [*mut WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let p = unsafe { Out::each(p) }?;
+    let v = with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains[k]))?;
+    super::write_each(p, v);
+    Ok(c::NO_ERR)
 }
 
 /// Proportional gain per channel (0..255).
@@ -57,13 +43,13 @@ pub extern "C" fn MCC_SetPGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    set_gains(
+    ffi_boundary! { set_gains(
         0,
         [
             wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
         ],
         wCardIndex,
-    )
+    ) }
 }
 
 /// Reads the proportional gains.
@@ -82,16 +68,18 @@ pub unsafe extern "C" fn MCC_GetPGain(
     pwGain7: *mut WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    unsafe {
-        get_gains(
-            0,
-            [
-                pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-            ],
-            wCardIndex,
-        )
-    }
+        unsafe {
+            get_gains(
+                0,
+                [
+                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
+                ],
+                wCardIndex,
+            )
+        }
+        }
 }
 
 /// Integral gain per channel (0..255).
@@ -107,13 +95,13 @@ pub extern "C" fn MCC_SetIGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    set_gains(
+    ffi_boundary! { set_gains(
         1,
         [
             wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
         ],
         wCardIndex,
-    )
+    ) }
 }
 
 /// Reads the integral gains.
@@ -132,16 +120,18 @@ pub unsafe extern "C" fn MCC_GetIGain(
     pwGain7: *mut WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    unsafe {
-        get_gains(
-            1,
-            [
-                pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-            ],
-            wCardIndex,
-        )
-    }
+        unsafe {
+            get_gains(
+                1,
+                [
+                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
+                ],
+                wCardIndex,
+            )
+        }
+        }
 }
 
 /// Derivative gain per channel (0..255).
@@ -157,13 +147,13 @@ pub extern "C" fn MCC_SetDGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    set_gains(
+    ffi_boundary! { set_gains(
         2,
         [
             wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
         ],
         wCardIndex,
-    )
+    ) }
 }
 
 /// Reads the derivative gains.
@@ -182,16 +172,18 @@ pub unsafe extern "C" fn MCC_GetDGain(
     pwGain7: *mut WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    unsafe {
-        get_gains(
-            2,
-            [
-                pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-            ],
-            wCardIndex,
-        )
-    }
+        unsafe {
+            get_gains(
+                2,
+                [
+                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
+                ],
+                wCardIndex,
+            )
+        }
+        }
 }
 
 /// Feed-forward gain per channel (0..255).
@@ -207,13 +199,13 @@ pub extern "C" fn MCC_SetFGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    set_gains(
+    ffi_boundary! { set_gains(
         3,
         [
             wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
         ],
         wCardIndex,
-    )
+    ) }
 }
 
 /// Reads the feed-forward gains.
@@ -232,40 +224,40 @@ pub unsafe extern "C" fn MCC_GetFGain(
     pwGain7: *mut WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    unsafe {
-        get_gains(
-            3,
-            [
-                pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-            ],
-            wCardIndex,
-        )
-    }
+        unsafe {
+            get_gains(
+                3,
+                [
+                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
+                ],
+                wCardIndex,
+            )
+        }
+        }
 }
 
-fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        if v == 0 {
-            return Err(McclError::Parameter);
-        }
-        with_card(wCardIndex, |m, cd| {
-            m.settings[cd].dividers[k] = v;
-            Ok(c::NO_ERR)
-        })
+fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
+    if v == 0 {
+        return Err(McclError::Parameter);
+    }
+    with_machine(Card(wCardIndex), |m, cd| {
+        m.settings[cd].dividers[k] = v;
+        Ok(c::NO_ERR)
     })
 }
 
 /// Clock divider of the integral term (>= 1).
 #[no_mangle]
 pub extern "C" fn MCC_SetIGainClockDivider(dwClockDivider: DWORD, wCardIndex: WORD) -> c_int {
-    set_divider(0, dwClockDivider, wCardIndex)
+    ffi_boundary! { set_divider(0, dwClockDivider, wCardIndex) }
 }
 
 /// Clock divider of the derivative term (>= 1).
 #[no_mangle]
 pub extern "C" fn MCC_SetDGainClockDivider(dwClockDivider: DWORD, wCardIndex: WORD) -> c_int {
-    set_divider(1, dwClockDivider, wCardIndex)
+    ffi_boundary! { set_divider(1, dwClockDivider, wCardIndex) }
 }
 
 /// The closed-loop error counter per channel: pulses output minus the motor's position.
@@ -284,7 +276,7 @@ pub unsafe extern "C" fn MCC_GetErrorCount(
     pnErrCount7: *mut c_int,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pnErrCount0,
             pnErrCount1,
@@ -295,18 +287,18 @@ pub unsafe extern "C" fn MCC_GetErrorCount(
             pnErrCount6,
             pnErrCount7,
         ];
-        outs8(&p)?;
-        let v = with_card(wCardIndex, |m, cd| {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
+        let v = with_machine(Card(wCardIndex), |m, cd| {
             Ok(std::array::from_fn(|ch| {
                 m.cards[cd][ch]
                     .error_count()
                     .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
             }))
         })?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Thresholds of the closed-loop error counter of one channel (kept for the PCL
@@ -318,20 +310,13 @@ pub extern "C" fn MCC_SetErrorCountThreshold(
     wMinusThreshold: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let ch = channel(wChannel)?;
-        with_card(wCardIndex, |m, cd| {
+        with_machine(Card(wCardIndex), |m, cd| {
             m.settings[cd].error_threshold[ch.0] = (wPlusThreshold, wMinusThreshold);
             Ok(c::NO_ERR)
         })
-    })
-}
-
-fn pulse_limits_lowered(m: &crate::machine::Machine) -> bool {
-    m.cards
-        .iter()
-        .flatten()
-        .any(|c| c.max_speed < MAX_PULSE_LIMIT || c.max_acc < MAX_PULSE_LIMIT)
+    }
 }
 
 fn pulse_limits(v: [c_int; 8]) -> McclResult<[i32; 8]> {
@@ -355,18 +340,15 @@ pub extern "C" fn MCC_SetMaxPulseSpeed(
     nPulse7: c_int,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = pulse_limits([
             nPulse0, nPulse1, nPulse2, nPulse3, nPulse4, nPulse5, nPulse6, nPulse7,
         ])?;
-        with_card(wCardIndex, |m, cd| {
-            for (ch, x) in m.cards[cd].iter_mut().zip(v) {
-                ch.max_speed = x;
-            }
-            m.pulse_limits_set = pulse_limits_lowered(m);
+        with_machine(Card(wCardIndex), |m, cd| {
+            m.set_pulse_limits(cd, PulseLimit::Speed, v);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Reads the pulse speed limits.
@@ -385,18 +367,18 @@ pub unsafe extern "C" fn MCC_GetMaxPulseSpeed(
     pnSpeed7: *mut c_int,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pnSpeed0, pnSpeed1, pnSpeed2, pnSpeed3, pnSpeed4, pnSpeed5, pnSpeed6, pnSpeed7,
         ];
-        outs8(&p)?;
-        let v = with_card(wCardIndex, |m, cd| {
-            Ok(std::array::from_fn(|ch| m.cards[cd][ch].max_speed))
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
+        let v = with_machine(Card(wCardIndex), |m, cd| {
+            Ok(m.pulse_limits(cd, PulseLimit::Speed))
         })?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Most change of pulses per period from one period to the next (1..32767, default
@@ -413,19 +395,16 @@ pub extern "C" fn MCC_SetMaxPulseAcc(
     nPulseAcc7: c_int,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = pulse_limits([
             nPulseAcc0, nPulseAcc1, nPulseAcc2, nPulseAcc3, nPulseAcc4, nPulseAcc5, nPulseAcc6,
             nPulseAcc7,
         ])?;
-        with_card(wCardIndex, |m, cd| {
-            for (ch, x) in m.cards[cd].iter_mut().zip(v) {
-                ch.max_acc = x;
-            }
-            m.pulse_limits_set = pulse_limits_lowered(m);
+        with_machine(Card(wCardIndex), |m, cd| {
+            m.set_pulse_limits(cd, PulseLimit::Acc, v);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Reads the pulse acceleration limits.
@@ -444,7 +423,7 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
     pnPulseAcc7: *mut c_int,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pnPulseAcc0,
             pnPulseAcc1,
@@ -455,39 +434,39 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
             pnPulseAcc6,
             pnPulseAcc7,
         ];
-        outs8(&p)?;
-        let v = with_card(wCardIndex, |m, cd| {
-            Ok(std::array::from_fn(|ch| m.cards[cd][ch].max_acc))
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
+        let v = with_machine(Card(wCardIndex), |m, cd| {
+            Ok(m.pulse_limits(cd, PulseLimit::Acc))
         })?;
-        // SAFETY: checked non-null; the caller passes writable ints.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Tracking error check on for the axes in the mask: a following error above the
 /// axis's limit (`MCC_SetTrackErrorLimit`) stops the group with error 0xF801 + axis.
 #[no_mangle]
 pub extern "C" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if dwAxisMask & !0xFF != 0 {
             return Err(McclError::Parameter);
         }
         update_group(wGroupIndex, |g| g.track_mask |= dwAxisMask)
-    })
+    }
 }
 
 /// Tracking error check off for every axis.
 #[no_mangle]
 pub extern "C" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
-    guard(|| update_group(wGroupIndex, |g| g.track_mask = 0))
+    ffi_boundary! { update_group(wGroupIndex, |g| g.track_mask = 0) }
 }
 
 /// The tracking error limit of one axis, UU (>= 0, a distance of the axis in the
 /// position range: |limit| x pulses per UU <= 1e15).
 #[no_mangle]
 pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = finite(dfLimit)?;
         if v < 0.0 {
             return Err(McclError::Parameter);
@@ -498,7 +477,7 @@ pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupInde
             g.track_limit[a] = v;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Reads the tracking error limit of one axis (infinite until set).
@@ -511,14 +490,14 @@ pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
     cAxis: c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
-        super::out_ok(pdfLimit)?;
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pdfLimit = unsafe { Out::new(pdfLimit) }?;
         let a = axis(cAxis)?;
         let v = with_group(wGroupIndex, |g| Ok(g.track_limit[a]))?;
-        // SAFETY: checked non-null; the caller passes a writable double.
-        unsafe { super::write_out(pdfLimit, v) };
+        pdfLimit.write(v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Compensation tables of one channel (§2.7.5); they take effect at
@@ -533,7 +512,7 @@ pub unsafe extern "C" fn MCC_SetCompParam(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         // SAFETY: NULL is refused; otherwise the caller passes a SYS_COMP_PARAM.
         let p = unsafe { super::read_in(pstCompParam) }?;
@@ -542,13 +521,13 @@ pub unsafe extern "C" fn MCC_SetCompParam(
         }
         system::with(|s| s.config.comp[cd.0][ch.0] = Some(p));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Applies the compensation tables set with `MCC_SetCompParam`.
 #[no_mangle]
 pub extern "C" fn MCC_UpdateCompParam() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let comp = system::with(|s| s.config.comp.clone());
         let shared = system::active()?;
         let mut m = shared.machine.lock();
@@ -560,49 +539,47 @@ pub extern "C" fn MCC_UpdateCompParam() -> c_int {
             }
         }
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// In-position mode (`IPM_ONETIME_BLOCK`, `IPM_ONETIME_UNBLOCK`, `IPM_SETTLE_BLOCK`,
 /// `IPM_SETTLE_UNBLOCK`; user manual §2.7.2).
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if wMode > c::IPM_SETTLE_UNBLOCK {
             return Err(McclError::Parameter);
         }
         update_group(wGroupIndex, |g| g.inpos.mode = wMode)
-    })
+    }
 }
 
 /// Longest time (ms) the in-position check waits after a command's last pulse.
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         update_group(wGroupIndex, |g| {
             g.inpos.max_check_s = f64::from(wMaxCheckTime) / 1000.0
         })
-    })
+    }
 }
 
 /// How long (ms) the axes must stay within tolerance in the `IPM_SETTLE_*` modes.
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         update_group(wGroupIndex, |g| {
             g.inpos.settle_s = f64::from(wSettleTime) / 1000.0
         })
-    })
+    }
 }
 
-fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> c_int {
-    guard(|| {
-        if dwAxisMask & !0xFF != 0 {
-            return Err(McclError::Parameter);
-        }
-        super::queue(wGroupIndex, |ctx| {
-            Ok(ctx.marker(crate::engine::command::Plan::InPos(on, dwAxisMask)))
-        })
+fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> McclResult<c_int> {
+    if dwAxisMask & !0xFF != 0 {
+        return Err(McclError::Parameter);
+    }
+    super::queue(wGroupIndex, |ctx| {
+        Ok(ctx.marker(crate::engine::command::Plan::InPos(on, dwAxisMask)))
     })
 }
 
@@ -610,13 +587,13 @@ fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> c_int {
 /// the command index.
 #[no_mangle]
 pub extern "C" fn MCC_EnableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    inpos_marker(wGroupIndex, dwAxisMask, true)
+    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, true) }
 }
 
 /// Queues "in-position check off" for the axes in the mask. Returns the command index.
 #[no_mangle]
 pub extern "C" fn MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    inpos_marker(wGroupIndex, dwAxisMask, false)
+    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, false) }
 }
 
 /// In-position tolerance per axis, UU (>= 0, distances of the axes in the position range).
@@ -632,7 +609,7 @@ pub extern "C" fn MCC_SetInPosToleranceEx(
     dfTolerance7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = super::finite8([
             dfTolerance0,
             dfTolerance1,
@@ -653,7 +630,7 @@ pub extern "C" fn MCC_SetInPosToleranceEx(
             g.inpos.tolerance = v;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Reads the in-position tolerances, UU.
@@ -672,7 +649,7 @@ pub unsafe extern "C" fn MCC_GetInPosToleranceEx(
     pdfTolerance7: *mut f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pdfTolerance0,
             pdfTolerance1,
@@ -683,12 +660,12 @@ pub unsafe extern "C" fn MCC_GetInPosToleranceEx(
             pdfTolerance6,
             pdfTolerance7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// In-position status per axis: 0xFF once in position (held until the next command),
@@ -708,32 +685,34 @@ pub unsafe extern "C" fn MCC_GetInPosStatus(
     pbyInPos7: *mut crate::vendor::BYTE,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pbyInPos0, pbyInPos1, pbyInPos2, pbyInPos3, pbyInPos4, pbyInPos5, pbyInPos6, pbyInPos7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.inpos_status()))?;
-        // SAFETY: checked non-null; the caller passes writable bytes.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Obsolete name of [`MCC_SetInPosMaxCheckTime`].
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> c_int {
-    MCC_SetInPosMaxCheckTime(wCheckTime, wGroupIndex)
+    ffi_boundary! {
+    Ok(MCC_SetInPosMaxCheckTime(wCheckTime, wGroupIndex))
+        }
 }
 
 /// Obsolete: the settle (stable) time of the in-position check, ms.
 #[no_mangle]
 pub extern "C" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_group(wGroupIndex, |g| {
             Ok((g.inpos.settle_s * 1000.0).round() as c_int)
         })
-    })
+    }
 }
 
 /// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
@@ -750,7 +729,7 @@ pub extern "C" fn MCC_SetInPosTolerance(
     wTolerance7: WORD,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = [
             wTolerance0,
             wTolerance1,
@@ -767,7 +746,7 @@ pub extern "C" fn MCC_SetInPosTolerance(
                 g.inpos.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
             }
         })
-    })
+    }
 }
 
 /// Obsolete: reads the in-position tolerances in pulses.
@@ -786,7 +765,7 @@ pub unsafe extern "C" fn MCC_GetInPosTolerance(
     pwTolerance7: *mut WORD,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pwTolerance0,
             pwTolerance1,
@@ -797,7 +776,8 @@ pub unsafe extern "C" fn MCC_GetInPosTolerance(
             pwTolerance6,
             pwTolerance7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| {
             Ok(std::array::from_fn(|i| {
                 (g.inpos.tolerance[i] * g.axes[i].factor.abs())
@@ -805,8 +785,7 @@ pub unsafe extern "C" fn MCC_GetInPosTolerance(
                     .min(f64::from(WORD::MAX)) as WORD
             }))
         })?;
-        // SAFETY: checked non-null; the caller passes writable WORDs.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }

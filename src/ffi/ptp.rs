@@ -1,7 +1,7 @@
 //! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; vendor header
 //! "Point-to-Point Motion").
 
-use super::{guard, outs8, shape, shape_char, with_group, write8};
+use super::{shape, shape_char, with_group, Out};
 use crate::error::McclError;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -34,12 +34,12 @@ pub extern "C" fn MCC_SetPtPAccType(
     cAccType7: c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = shapes([
             cAccType0, cAccType1, cAccType2, cAccType3, cAccType4, cAccType5, cAccType6, cAccType7,
         ])?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_acc = s)
-    })
+    }
 }
 
 /// Reads the PtP acceleration shapes.
@@ -58,17 +58,17 @@ pub unsafe extern "C" fn MCC_GetPtPAccType(
     pcAccType7: *mut c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pcAccType0, pcAccType1, pcAccType2, pcAccType3, pcAccType4, pcAccType5, pcAccType6,
             pcAccType7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)))?;
-        // SAFETY: checked non-null; the caller passes writable chars.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// PtP deceleration shape per axis ('T' or 'S').
@@ -84,12 +84,12 @@ pub extern "C" fn MCC_SetPtPDecType(
     cDecType7: c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = shapes([
             cDecType0, cDecType1, cDecType2, cDecType3, cDecType4, cDecType5, cDecType6, cDecType7,
         ])?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_dec = s)
-    })
+    }
 }
 
 /// Reads the PtP deceleration shapes.
@@ -108,17 +108,17 @@ pub unsafe extern "C" fn MCC_GetPtPDecType(
     pcDecType7: *mut c_char,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pcDecType0, pcDecType1, pcDecType2, pcDecType3, pcDecType4, pcDecType5, pcDecType6,
             pcDecType7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)))?;
-        // SAFETY: checked non-null; the caller passes writable chars.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// PtP acceleration time per axis, ms (0..=2^32 − 1).
@@ -134,13 +134,13 @@ pub extern "C" fn MCC_SetPtPAccTime(
     dfAccTime7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let t = times([
             dfAccTime0, dfAccTime1, dfAccTime2, dfAccTime3, dfAccTime4, dfAccTime5, dfAccTime6,
             dfAccTime7,
         ])?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_acc_ms = t)
-    })
+    }
 }
 
 /// Reads the PtP acceleration times, ms.
@@ -159,7 +159,7 @@ pub unsafe extern "C" fn MCC_GetPtPAccTime(
     pdfAccTime7: *mut f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pdfAccTime0,
             pdfAccTime1,
@@ -170,12 +170,12 @@ pub unsafe extern "C" fn MCC_GetPtPAccTime(
             pdfAccTime6,
             pdfAccTime7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms))?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// PtP deceleration time per axis, ms (0..=2^32 − 1).
@@ -191,13 +191,13 @@ pub extern "C" fn MCC_SetPtPDecTime(
     dfDecTime7: f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let t = times([
             dfDecTime0, dfDecTime1, dfDecTime2, dfDecTime3, dfDecTime4, dfDecTime5, dfDecTime6,
             dfDecTime7,
         ])?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_dec_ms = t)
-    })
+    }
 }
 
 /// Reads the PtP deceleration times, ms.
@@ -216,7 +216,7 @@ pub unsafe extern "C" fn MCC_GetPtPDecTime(
     pdfDecTime7: *mut f64,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let p = [
             pdfDecTime0,
             pdfDecTime1,
@@ -227,10 +227,10 @@ pub unsafe extern "C" fn MCC_GetPtPDecTime(
             pdfDecTime6,
             pdfDecTime7,
         ];
-        outs8(&p)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let p = unsafe { Out::each(p) }?;
         let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms))?;
-        // SAFETY: checked non-null; the caller passes writable doubles.
-        unsafe { write8(&p, v) };
+        super::write_each(p, v);
         Ok(c::NO_ERR)
-    })
+    }
 }

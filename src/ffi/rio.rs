@@ -8,8 +8,7 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::with_card;
-use super::{finite, guard, out_ok, write_out};
+use super::{finite, with_card, Out};
 use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
@@ -21,7 +20,7 @@ fn rio<R>(
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<RIO_PORTS>) -> McclResult<R>,
 ) -> McclResult<R> {
-    crate::system::active()?;
+    super::initialised()?;
     let s = set_ix(wSet)?;
     with_card(wCardIndex, |p| f(&mut p.rio.rio[s]))
 }
@@ -31,7 +30,7 @@ fn ario<R>(
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> McclResult<R>,
 ) -> McclResult<R> {
-    crate::system::active()?;
+    super::initialised()?;
     let s = set_ix(wSet)?;
     with_card(wCardIndex, |p| f(&mut p.rio.ario[s]))
 }
@@ -46,11 +45,11 @@ fn done(r: McclResult<()>) -> McclResult<c_int> {
 /// # Safety
 /// `p` must be NULL or point to a writable T.
 unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<c_int> {
-    crate::system::active()?;
-    out_ok(p)?;
+    super::initialised()?;
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let p = unsafe { Out::new(p) }?;
     let v = get()?;
-    // SAFETY: checked non-null; writable by the caller's contract.
-    unsafe { write_out(p, v) };
+    p.write(v);
     Ok(c::NO_ERR)
 }
 
@@ -59,39 +58,39 @@ unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<
 /// Starts data transfer of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.control = true;
             Ok(())
         }))
-    })
+    }
 }
 
 /// Stops data transfer of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.control = false;
             Ok(())
         }))
-    })
+    }
 }
 
 /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| done(rio(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true))))
+    ffi_boundary! { done(rio(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true))) }
 }
 
 /// Stops data transfer with one slave of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_slave_control(wSlave, false)
         }))
-    })
+    }
 }
 
 /// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
@@ -104,8 +103,9 @@ pub unsafe extern "C" fn MCC_GetRIOTransStatus(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) })
+    unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) } }
 }
 
 /// Master status of a RIO set: 1 normal, 0 error.
@@ -118,12 +118,13 @@ pub unsafe extern "C" fn MCC_GetRIOMasterStatus(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
         read(pwStatus, || {
             rio(wSet, wCardIndex, |s| Ok(s.master_status()))
         })
-    })
+    } }
 }
 
 /// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
@@ -136,8 +137,9 @@ pub unsafe extern "C" fn MCC_GetRIOSlaveStatus(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) })
+    unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) } }
 }
 
 /// Failed transmitting slaves of a RIO set, bit n = slave n.
@@ -150,8 +152,9 @@ pub unsafe extern "C" fn MCC_GetRIOSlaveFail(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) })
+    unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) } }
 }
 
 /// The 16 inputs of a RIO port (bit n = input n), as last transferred.
@@ -165,8 +168,9 @@ pub unsafe extern "C" fn MCC_GetRIOInputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) })
+    unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) } }
 }
 
 /// Sets the 16 outputs of a RIO port (sent at the next transfer).
@@ -177,7 +181,7 @@ pub extern "C" fn MCC_SetRIOOutputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| done(rio(wSet, wCardIndex, |s| s.set_output(wPort, wValue))))
+    ffi_boundary! { done(rio(wSet, wCardIndex, |s| s.set_output(wPort, wValue))) }
 }
 
 /// The 16 outputs set for a RIO port.
@@ -191,8 +195,9 @@ pub unsafe extern "C" fn MCC_GetRIOOutputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) })
+    unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) } }
 }
 
 /// Consecutive failed transfers a slave of the RIO set may have before the set reports
@@ -200,12 +205,12 @@ pub unsafe extern "C" fn MCC_GetRIOOutputValue(
 /// first failed transfer, 5 the sixth. Undocumented by the vendor; see the README.
 #[no_mangle]
 pub extern "C" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_tolerance(wTime);
             Ok(())
         }))
-    })
+    }
 }
 
 /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
@@ -217,11 +222,11 @@ pub extern "C" fn MCC_SetRIOTriggerType(
     wDigitalInput: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_trigger_type(wDigitalInput, wType)
         }))
-    })
+    }
 }
 
 /// An edge of the digital input calls the RIO routine with `RDIn` set.
@@ -231,11 +236,11 @@ pub extern "C" fn MCC_EnableRIOInputTrigger(
     wDigitalInput: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_input_trigger(wDigitalInput, true)
         }))
-    })
+    }
 }
 
 /// The digital input no longer calls the RIO routine.
@@ -245,34 +250,34 @@ pub extern "C" fn MCC_DisableRIOInputTrigger(
     wDigitalInput: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_input_trigger(wDigitalInput, false)
         }))
-    })
+    }
 }
 
 /// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
 /// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_trans_trigger(true);
             Ok(())
         }))
-    })
+    }
 }
 
 /// Transfer errors no longer call the RIO routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(rio(wSet, wCardIndex, |s| {
             s.set_trans_trigger(false);
             Ok(())
         }))
-    })
+    }
 }
 
 // ---- ARIO ----
@@ -281,7 +286,7 @@ fn ario_timing(
     wCardIndex: WORD,
     f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> McclResult<()>,
 ) -> McclResult<c_int> {
-    crate::system::active()?;
+    super::initialised()?;
     done(with_card(wCardIndex, |p| f(&mut p.rio.ario_timing)))
 }
 
@@ -291,8 +296,8 @@ fn ario_timing(
 /// restarts at the call.
 #[no_mangle]
 pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        crate::system::active()?;
+    ffi_boundary! {
+        super::initialised()?;
         let r = finite(dfUpdateRate)?;
         // The cycle lasts 1 / r: at most the longest time (r >= 2.33e-7 Hz).
         if r <= 0.0 {
@@ -301,7 +306,7 @@ pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardInde
         crate::config::range::time_ms(1000.0 / r)?;
         let s = set_ix(wSet)?;
         ario_timing(wCardIndex, |t| t.set_update_rate(s, r))
-    })
+    }
 }
 
 /// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
@@ -309,43 +314,43 @@ pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardInde
 /// restarts at the call.
 #[no_mangle]
 pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
-        crate::system::active()?;
+    ffi_boundary! {
+        super::initialised()?;
         let s = set_ix(wSet)?;
         ario_timing(wCardIndex, |t| t.set_divider(s, wDivider))
-    })
+    }
 }
 
 /// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
 /// of the card. The cycle count restarts at the call.
 #[no_mangle]
 pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         ario_timing(wCardIndex, |t| {
             t.set_node_delay(dwDelay);
             Ok(())
         })
-    })
+    }
 }
 
 /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
 #[no_mangle]
 pub extern "C" fn MCC_EnableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(ario(wSet, wCardIndex, |s| {
             s.set_slave_control(wSlave, true)
         }))
-    })
+    }
 }
 
 /// Stops data transfer with an ARIO slave.
 #[no_mangle]
 pub extern "C" fn MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         done(ario(wSet, wCardIndex, |s| {
             s.set_slave_control(wSlave, false)
         }))
-    })
+    }
 }
 
 /// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
@@ -358,12 +363,13 @@ pub unsafe extern "C" fn MCC_GetARIOTransStatus(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
         read(pwStatus, || {
             ario(wSet, wCardIndex, |s| Ok(s.trans_status()))
         })
-    })
+    } }
 }
 
 /// ARIO master status: 1 normal, 0 error.
@@ -376,12 +382,13 @@ pub unsafe extern "C" fn MCC_GetARIOMasterStatus(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
         read(pwStatus, || {
             ario(wSet, wCardIndex, |s| Ok(s.master_status()))
         })
-    })
+    } }
 }
 
 /// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
@@ -394,12 +401,13 @@ pub unsafe extern "C" fn MCC_GetARIOSlaveStatus(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
         read(pwStatus, || {
             ario(wSet, wCardIndex, |s| Ok(s.slave_status()))
         })
-    })
+    } }
 }
 
 /// Failed transmitting ARIO slaves, bit n = slave n.
@@ -412,8 +420,9 @@ pub unsafe extern "C" fn MCC_GetARIOSlaveFail(
     wSet: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) })
+    unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) } }
 }
 
 /// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
@@ -427,8 +436,9 @@ pub unsafe extern "C" fn MCC_GetARIOInputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) })
+    unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) } }
 }
 
 /// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
@@ -439,7 +449,7 @@ pub extern "C" fn MCC_SetARIOOutputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| done(ario(wSet, wCardIndex, |s| s.set_output(wPort, wValue))))
+    ffi_boundary! { done(ario(wSet, wCardIndex, |s| s.set_output(wPort, wValue))) }
 }
 
 /// The 16 outputs set for ARIO slave `wPort`.
@@ -453,6 +463,7 @@ pub unsafe extern "C" fn MCC_GetARIOOutputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    guard(|| unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) })
+    unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) } }
 }

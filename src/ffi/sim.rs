@@ -3,7 +3,7 @@
 //! move a sensor, read what the card outputs and where the motor is. Every call checks
 //! its arguments like the vendor functions.
 
-use super::{card, channel, finite, guard, out_ok, write_out};
+use super::{card, channel, finite, with_machine_channel, Card, Channel, Out};
 use crate::error::McclError;
 use crate::machine::Sensor;
 use crate::system;
@@ -37,18 +37,6 @@ fn sensor(n: c_int) -> Result<Sensor, McclError> {
     }
 }
 
-fn with_channel<R>(
-    wCardIndex: WORD,
-    wChannel: WORD,
-    f: impl FnOnce(&mut crate::machine::Channel) -> R,
-) -> Result<R, McclError> {
-    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-    let shared = system::active()?;
-    let cd = shared.card(cd)?;
-    let mut m = shared.machine.lock();
-    Ok(f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?))
-}
-
 /// Sets the physical level of a sensor (`MCCL_SIM_HOME`, `MCCL_SIM_LIMIT_PLUS`,
 /// `MCCL_SIM_LIMIT_MINUS`): 1 hit (a normally-open switch closes), 0 not hit,
 /// `MCCL_SIM_FOLLOW` (-1) back to following the motor's position.
@@ -59,7 +47,7 @@ pub extern "C" fn MCCL_SimSetSensor(
     nSensor: c_int,
     nLevel: c_int,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = sensor(nSensor)?;
         let level = match nLevel {
             MCCL_SIM_FOLLOW => None,
@@ -67,9 +55,12 @@ pub extern "C" fn MCCL_SimSetSensor(
             1 => Some(true),
             _ => return Err(McclError::Parameter),
         };
-        with_channel(wCardIndex, wChannel, |ch| ch.force(s, level))?;
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+            ch.force(s, level);
+            Ok(())
+        })?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Places a sensor at machine position (UU): the home sensor's active region is
@@ -83,28 +74,28 @@ pub extern "C" fn MCCL_SimPlaceSensor(
     dfFrom: f64,
     dfTo: f64,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = sensor(nSensor)?;
         let (a, b) = (finite(dfFrom)?, finite(dfTo)?);
         if s == Sensor::Home && a > b {
             return Err(McclError::Parameter);
         }
-        with_channel(wCardIndex, wChannel, |ch| {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
             // A sensor where the channel could never count to is refused.
             let f = ch.factor();
             crate::config::range::position(a, f)?;
             crate::config::range::position(b, f)?;
             ch.place(s, a, b);
             Ok(())
-        })??;
+        })?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Presses (1) or releases (0) the card's emergency-stop input.
 #[no_mangle]
 pub extern "C" fn MCCL_SimSetEmergencyStop(wCardIndex: WORD, nLevel: c_int) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         if nLevel != 0 && nLevel != 1 {
             return Err(McclError::Parameter);
         }
@@ -112,7 +103,7 @@ pub extern "C" fn MCCL_SimSetEmergencyStop(wCardIndex: WORD, nLevel: c_int) -> c
         let cd = shared.card(card(wCardIndex)?)?;
         shared.machine.lock().emergency[cd] = nLevel == 1;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Reads an output of the card: `MCCL_SIM_OUT_SERVO` (of the channel),
@@ -127,9 +118,10 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
     nOutput: c_int,
     pnValue: *mut c_int,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pnValue)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pnValue = unsafe { Out::new(pnValue) }?;
         let shared = system::active()?;
         let cd = shared.card(cd)?;
         let v = match nOutput {
@@ -142,13 +134,12 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
                 }
             }
             MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
-            MCCL_SIM_OUT_LED => super::local_io::led_lit(&shared.machine.lock(), cd, ch.0),
+            MCCL_SIM_OUT_LED => shared.machine.lock().led_lit(cd, ch.0),
             _ => return Err(McclError::Parameter),
         };
-        // SAFETY: checked non-null; the caller passes a writable int.
-        unsafe { write_out(pnValue, c_int::from(v)) };
+        pnValue.write(c_int::from(v));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Where the motor of a channel is: machine position in UU, and pulses output so far.
@@ -162,19 +153,18 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
     pdfPosition: *mut f64,
     pllPulses: *mut std::os::raw::c_longlong,
 ) -> c_int {
-    guard(|| {
-        out_ok(pdfPosition)?;
-        out_ok(pllPulses)?;
-        let (p, n) = with_channel(wCardIndex, wChannel, |ch| {
-            (ch.position(), ch.output_pulses())
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pdfPosition = unsafe { Out::new(pdfPosition) }?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pllPulses = unsafe { Out::new(pllPulses) }?;
+        let (p, n) = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+            Ok((ch.position(), ch.output_pulses()))
         })?;
-        // SAFETY: checked non-null; the caller passes writable memory.
-        unsafe {
-            write_out(pdfPosition, p);
-            write_out(pllPulses, n);
-        }
+        pdfPosition.write(p);
+        pllPulses.write(n);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Virtual time since `MCC_InitSystem`, ms (ticks x interpolation period).
@@ -183,14 +173,14 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
 /// `pdfMs` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn MCCL_SimGetTime(pdfMs: *mut f64) -> c_int {
-    guard(|| {
-        out_ok(pdfMs)?;
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pdfMs = unsafe { Out::new(pdfMs) }?;
         let shared = system::active()?;
         let ms = shared.clock.now_ns() as f64 / 1e6;
-        // SAFETY: checked non-null; the caller passes a writable double.
-        unsafe { write_out(pdfMs, ms) };
+        pdfMs.write(ms);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Number of lateness buckets in [`MCCL_CLOCK_STATS`].
@@ -263,14 +253,13 @@ fn stats_of(
 /// `MCCL_CLOCK_STATS`.
 #[no_mangle]
 pub unsafe extern "C" fn MCCL_SimGetClockStats(pstStats: *mut MCCL_CLOCK_STATS) -> c_int {
-    guard(|| {
-        out_ok(pstStats)?;
+    ffi_boundary! {
+        // SAFETY: the caller passes NULL (refused here) or a writable struct.
+        let pstStats = unsafe { Out::new(pstStats) }?;
         let shared = system::active()?;
-        let st = clock_stats(&shared.clock);
-        // SAFETY: checked non-null; the caller passes a writable struct.
-        unsafe { write_out(pstStats, st) };
+        pstStats.write(clock_stats(&shared.clock));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 #[cfg(test)]

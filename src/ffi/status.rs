@@ -1,6 +1,6 @@
 //! Motion status (user manual §2.6.5; vendor header "Motion Status").
 
-use super::guard;
+use super::Out;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -11,7 +11,7 @@ use std::os::raw::c_int;
 /// virtual time runs (see `clock`), so `while (MCC_GetMotionStatus(g) != GMS_STOP);` ends.
 #[no_mangle]
 pub extern "C" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let shared = system::active()?;
         let status = shared.snapshot(wGroupIndex)?.status;
         if status != c::GMS_STOP {
@@ -19,7 +19,7 @@ pub extern "C" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
             return Ok(shared.snapshot(wGroupIndex)?.status);
         }
         Ok(status)
-    })
+    }
 }
 
 /// The command being executed (`nType` -1 when none): type (user manual §2.6.5 codes
@@ -34,13 +34,13 @@ pub unsafe extern "C" fn MCC_GetCurCommand(
     pstCurCommand: *mut crate::vendor::COMMAND_INFO,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
-        super::out_ok(pstCurCommand)?;
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstCurCommand = unsafe { Out::new(pstCurCommand) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        // SAFETY: checked non-null; the caller passes a writable COMMAND_INFO.
-        unsafe { super::write_out(pstCurCommand, s.cmd) };
+        pstCurCommand.write(s.cmd);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Commands queued and not yet started (the running one is not counted).
@@ -49,25 +49,25 @@ pub unsafe extern "C" fn MCC_GetCurCommand(
 /// `pnCmdCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetCommandCount(pnCmdCount: *mut c_int, wGroupIndex: WORD) -> c_int {
-    guard(|| {
-        super::out_ok(pnCmdCount)?;
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pnCmdCount = unsafe { Out::new(pnCmdCount) }?;
         let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
-        // SAFETY: checked non-null; the caller passes a writable int.
-        unsafe { super::write_out(pnCmdCount, c_int::try_from(n).unwrap_or(c_int::MAX)) };
+        pnCmdCount.write(c_int::try_from(n).unwrap_or(c_int::MAX));
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// The next queued command gets index 0 again (automatic numbering).
 #[no_mangle]
 pub extern "C" fn MCC_ResetCommandIndex(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.set_command_index(0, false)))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_command_index(0, false)) }
 }
 
 /// The count of started commands (`COMMAND_INFO.nCommandIndex_LD`) restarts from 0.
 #[no_mangle]
 pub extern "C" fn MCC_ResetCommandIndexLD(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.reset_ld_index()))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.reset_ld_index()) }
 }
 
 /// The next queued command gets index `wIndex`; with `bManualIndex` TRUE every following
@@ -79,11 +79,11 @@ pub extern "C" fn MCC_SetCommandIndex(
     bManualIndex: crate::vendor::BOOL,
     wGroupIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         super::update_group(wGroupIndex, |g| {
             g.set_command_index(i32::from(wIndex), bManualIndex != 0)
         })
-    })
+    }
 }
 
 /// The index the next queued command will get.
@@ -92,19 +92,19 @@ pub extern "C" fn MCC_SetCommandIndex(
 /// `wIndex` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetCommandIndex(wIndex: *mut WORD, wGroupIndex: WORD) -> c_int {
-    guard(|| {
-        super::out_ok(wIndex)?;
+    ffi_boundary! {
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let wIndex = unsafe { Out::new(wIndex) }?;
         let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(wIndex, n as WORD) };
+        wIndex.write(n as WORD);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Depth of the card's pulse FIFO (1..=10000; default 60).
 #[no_mangle]
 pub extern "C" fn MCC_SetMaxPulseStockNum(nMaxStockNum: c_int) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let n = u32::try_from(nMaxStockNum)
             .ok()
             .filter(|n| (1..=10_000).contains(n))
@@ -113,18 +113,18 @@ pub extern "C" fn MCC_SetMaxPulseStockNum(nMaxStockNum: c_int) -> c_int {
             .max_pulse_stock
             .store(n, std::sync::atomic::Ordering::Relaxed);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// The depth of the card's pulse FIFO.
 #[no_mangle]
 pub extern "C" fn MCC_GetMaxPulseStockNum() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let n = system::active()?
             .max_pulse_stock
             .load(std::sync::atomic::Ordering::Relaxed);
         Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
-    })
+    }
 }
 
 /// Fine movement commands waiting in a channel's FIFO. The virtual card never lets the
@@ -138,9 +138,10 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (super::card(wCardIndex)?, super::channel(wChannel)?);
-        super::out_ok(pwStockCount)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pwStockCount = unsafe { Out::new(pwStockCount) }?;
         let shared = system::active()?;
         shared.card(cd)?;
         let moving = shared.channel_moving(cd.0, ch.0);
@@ -152,20 +153,19 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
         } else {
             0
         };
-        // SAFETY: checked non-null; the caller passes a writable WORD.
-        unsafe { super::write_out(pwStockCount, n) };
+        pwStockCount.write(n);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// The group's error record (0 when none; codes in docs/vendor-interface.md).
 #[no_mangle]
 pub extern "C" fn MCC_GetErrorCode(wGroupIndex: WORD) -> c_int {
-    guard(|| Ok(system::active()?.snapshot(wGroupIndex)?.error))
+    ffi_boundary! { Ok(system::active()?.snapshot(wGroupIndex)?.error) }
 }
 
 /// Clears the group's error record; queued commands run again.
 #[no_mangle]
 pub extern "C" fn MCC_ClearError(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.clear_error()))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.clear_error()) }
 }

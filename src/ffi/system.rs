@@ -1,8 +1,9 @@
 //! System management (user manual §2.4–2.5; vendor header "System Management").
 
-use super::{card, channel, guard, out_ok, read_in, write_out};
+use super::{card, channel, read_in, Out};
 use crate::config::{self, GroupDef};
 use crate::error::McclError;
+use crate::error::McclResult;
 use crate::system::{self, InitKind};
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_CARD_CONFIG, SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM, WORD};
@@ -21,8 +22,10 @@ pub const VERSION_STRING: &[u8] = b"6.00\0";
 /// valid memory of the declared C type, as in the vendor library.
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
-    guard(|| {
-        out_ok(strVersion)?;
+    ffi_boundary! {
+        if strVersion.is_null() {
+            return Err(McclError::Parameter);
+        }
         // SAFETY: non-null; the caller provides a buffer for the version string (the
         // vendor's is 5 bytes, the same as ours).
         unsafe {
@@ -33,24 +36,24 @@ pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
             )
         };
         Ok(())
-    })
+    }
 }
 
 /// Sets the upper limit of the general-motion feed speed (UU/s, in the speed range
 /// 1e-6..=1e9 of `config::range`).
 #[no_mangle]
 pub extern "C" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let v = config::range::speed(dfMaxSpeed)?;
         system::with(|s| s.config.sys_max_speed = v);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// The upper limit of the general-motion feed speed (UU/s).
 #[no_mangle]
 pub extern "C" fn MCC_GetSysMaxSpeed() -> f64 {
-    guard(|| Ok(system::with(|s| s.config.sys_max_speed)))
+    ffi_boundary! { Ok(system::with(|s| s.config.sys_max_speed)) }
 }
 
 /// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
@@ -65,7 +68,7 @@ pub unsafe extern "C" fn MCC_SetMacParam(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         // SAFETY: NULL is rejected; otherwise the caller passes a SYS_MAC_PARAM.
         let p = unsafe { read_in(pstMacParam) }?;
@@ -76,7 +79,7 @@ pub unsafe extern "C" fn MCC_SetMacParam(
             s.config.mac[cd.0][ch.0] = p;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Reads the mechanism parameters last set for one channel.
@@ -90,14 +93,14 @@ pub unsafe extern "C" fn MCC_GetMacParam(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pstMacParam)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstMacParam = unsafe { Out::new(pstMacParam) }?;
         let p = system::with(|s| s.config.mac[cd.0][ch.0]);
-        // SAFETY: checked non-null; the caller passes a writable SYS_MAC_PARAM.
-        unsafe { write_out(pstMacParam, p) };
+        pstMacParam.write(p);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Sets the encoder configuration of one channel (§2.4.2).
@@ -111,14 +114,14 @@ pub unsafe extern "C" fn MCC_SetEncoderConfig(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         // SAFETY: NULL is rejected; otherwise the caller passes a SYS_ENCODER_CONFIG.
         let e = unsafe { read_in(pstEncoderConfig) }?;
         config::validate_encoder_config(&e)?;
         system::with(|s| s.config.encoder[cd.0][ch.0] = e);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Reads the encoder configuration last set for one channel.
@@ -132,14 +135,14 @@ pub unsafe extern "C" fn MCC_GetEncoderConfig(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pstEncoderConfig)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstEncoderConfig = unsafe { Out::new(pstEncoderConfig) }?;
         let e = system::with(|s| s.config.encoder[cd.0][ch.0]);
-        // SAFETY: checked non-null; the caller passes a writable SYS_ENCODER_CONFIG.
-        unsafe { write_out(pstEncoderConfig, e) };
+        pstEncoderConfig.write(e);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Sets the go-home parameters of one channel (§2.4.3); mode 3..16.
@@ -153,7 +156,7 @@ pub unsafe extern "C" fn MCC_SetHomeConfig(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         // SAFETY: NULL is rejected; otherwise the caller passes a SYS_HOME_CONFIG.
         let h = unsafe { read_in(pstHomeConfig) }?;
@@ -162,7 +165,7 @@ pub unsafe extern "C" fn MCC_SetHomeConfig(
             s.config.home[cd.0][ch.0] = h;
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Reads the go-home parameters last set for one channel.
@@ -176,20 +179,20 @@ pub unsafe extern "C" fn MCC_GetHomeConfig(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        out_ok(pstHomeConfig)?;
+        // SAFETY: NULL or writable, as this function's contract requires.
+        let pstHomeConfig = unsafe { Out::new(pstHomeConfig) }?;
         let h = system::with(|s| s.config.home[cd.0][ch.0]);
-        // SAFETY: checked non-null; the caller passes a writable SYS_HOME_CONFIG.
-        unsafe { write_out(pstHomeConfig, h) };
+        pstHomeConfig.write(h);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Removes every group (only while the system is closed).
 #[no_mangle]
 pub extern "C" fn MCC_CloseAllGroups() -> c_int {
-    guard(|| system::with(|s| s.close_all_groups()).map(|()| c::NO_ERR))
+    ffi_boundary! { system::with(|s| s.close_all_groups()).map(|()| c::NO_ERR) }
 }
 
 /// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
@@ -205,18 +208,20 @@ pub extern "C" fn MCC_CreateGroup(
     bMapToCh: c_int,
     nCardIndex: c_int,
 ) -> c_int {
-    MCC_CreateGroupEx(
-        xMapToCh,
-        yMapToCh,
-        zMapToCh,
-        uMapToCh,
-        vMapToCh,
-        wMapToCh,
-        aMapToCh,
-        bMapToCh,
-        nCardIndex,
-        c::MOTION_QUEUE_SIZE,
-    )
+    ffi_boundary! {
+    Ok(MCC_CreateGroupEx(
+            xMapToCh,
+            yMapToCh,
+            zMapToCh,
+            uMapToCh,
+            vMapToCh,
+            wMapToCh,
+            aMapToCh,
+            bMapToCh,
+            nCardIndex,
+            c::MOTION_QUEUE_SIZE,
+        ))
+        }
 }
 
 /// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
@@ -234,35 +239,35 @@ pub extern "C" fn MCC_CreateGroupEx(
     nCardIndex: c_int,
     nMotionQueueSize: c_int,
 ) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let map = [
             xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
         ];
         let def = GroupDef::new(map, nCardIndex, nMotionQueueSize)?;
         let g = system::with(|s| s.create_group(def))?;
         Ok(g as c_int)
-    })
+    }
 }
 
 /// Removes one group (only while the system is closed).
 #[no_mangle]
 pub extern "C" fn MCC_CloseGroup(nGroupIndex: c_int) -> c_int {
-    guard(|| system::with(|s| s.close_group(nGroupIndex)).map(|()| c::NO_ERR))
+    ffi_boundary! { system::with(|s| s.close_group(nGroupIndex)).map(|()| c::NO_ERR) }
 }
 
 /// The capacity of a group's motion command queue.
 #[no_mangle]
 pub extern "C" fn MCC_GetCmdQueueSize(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let def = system::with(|s| s.group_def(wGroupIndex))?;
         Ok(c_int::try_from(def.queue_size).unwrap_or(c_int::MAX))
-    })
+    }
 }
 
 /// Changes a group's queue capacity; only while no commands are queued.
 #[no_mangle]
 pub extern "C" fn MCC_SetCmdQueueSize(nSize: c_int, wGroupIndex: WORD) -> c_int {
-    guard(|| system::with(|s| s.set_queue_size(nSize, wGroupIndex)).map(|()| c::NO_ERR))
+    ffi_boundary! { system::with(|s| s.set_queue_size(nSize, wGroupIndex)).map(|()| c::NO_ERR) }
 }
 
 /// Reads `wCardNo` card descriptions (1..=MAX_CARD_NUM) from C.
@@ -286,14 +291,12 @@ unsafe fn card_configs(
 
 /// # Safety
 /// `p` must be NULL or point to `n` readable `SYS_CARD_CONFIG`.
-unsafe fn init(ms: f64, p: *mut SYS_CARD_CONFIG, n: WORD, kind: InitKind) -> c_int {
-    guard(|| {
-        let period = system::check_period_ms(ms)?;
-        // SAFETY: card_configs checks NULL and the count; see its contract.
-        let cards = unsafe { card_configs(p, n) }?;
-        system::init(period, &cards, kind)?;
-        Ok(c::NO_ERR)
-    })
+unsafe fn init(ms: f64, p: *mut SYS_CARD_CONFIG, n: WORD, kind: InitKind) -> McclResult<c_int> {
+    let period = system::check_period_ms(ms)?;
+    // SAFETY: card_configs checks NULL and the count; see its contract.
+    let cards = unsafe { card_configs(p, n) }?;
+    system::init(period, &cards, kind)?;
+    Ok(c::NO_ERR)
 }
 
 /// Starts the library and the virtual card with an interpolation period of
@@ -308,12 +311,12 @@ pub unsafe extern "C" fn MCC_InitSystem(
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
 ) -> c_int {
-    init(
+    ffi_boundary! { init(
         f64::from(nInterpolateTime),
         pstCardConfig,
         wCardNo,
         InitKind::System,
-    )
+    ) }
 }
 
 /// `MCC_InitSystem` with a fractional interpolation period in ms (1.0..=50.0).
@@ -327,8 +330,10 @@ pub unsafe extern "C" fn MCC_InitSystemEx(
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    unsafe { init(dfInterpolateTime, pstCardConfig, wCardNo, InitKind::System) }
+        unsafe { init(dfInterpolateTime, pstCardConfig, wCardNo, InitKind::System) }
+        }
 }
 
 /// Starts the library in simulation mode: the same virtual card, never a hardware backend.
@@ -342,76 +347,78 @@ pub unsafe extern "C" fn MCC_InitSimulation(
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
 ) -> c_int {
+    ffi_boundary! {
     // SAFETY: forwarded under this function's contract.
-    unsafe {
-        init(
-            f64::from(nInterpolateTime),
-            pstCardConfig,
-            wCardNo,
-            InitKind::Simulation,
-        )
-    }
+        unsafe {
+            init(
+                f64::from(nInterpolateTime),
+                pstCardConfig,
+                wCardNo,
+                InitKind::Simulation,
+            )
+        }
+        }
 }
 
 /// Stops the card at once and releases the engine thread.
 #[no_mangle]
 pub extern "C" fn MCC_CloseSystem() -> c_int {
-    guard(|| system::close().map(|()| c::NO_ERR))
+    ffi_boundary! { system::close().map(|()| c::NO_ERR) }
 }
 
 /// Returns every group to its state right after `MCC_InitSystem`.
 #[no_mangle]
 pub extern "C" fn MCC_ResetMotion() -> c_int {
-    guard(|| system::reset_motion().map(|()| c::NO_ERR))
+    ffi_boundary! { system::reset_motion().map(|()| c::NO_ERR) }
 }
 
 /// Applies mechanism and encoder parameters set since init; resets motion (§2.4.2).
 #[no_mangle]
 pub extern "C" fn MCC_UpdateParam() -> c_int {
-    guard(|| system::update_param().map(|()| c::NO_ERR))
+    ffi_boundary! { system::update_param().map(|()| c::NO_ERR) }
 }
 
 /// Pulses per user unit of a channel: dwPPR x dfGearRatio / dfPitch of the mechanism
 /// parameters in effect. A bad channel or card returns `PARAMETER_ERR` (-5.0).
 #[no_mangle]
 pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
-    guard(|| {
+    ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
         Ok(config::conv_factor(&system::with(|s| {
             s.mac_in_effect(cd, ch)
         })))
-    })
+    }
 }
 
 /// Turns dry run on: trajectories are planned and reported, nothing moves
 /// (`COMMAND_NOTACCEPTED_ERR` when a card is an MC3B: its motion is the device's).
 #[no_mangle]
 pub extern "C" fn MCC_EnableDryRun() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let shared = system::active()?;
         if system::has_mc3b() {
             return Err(crate::error::McclError::NotAccepted);
         }
         shared.dry_run.store(true, Ordering::Release);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Turns dry run off.
 #[no_mangle]
 pub extern "C" fn MCC_DisableDryRun() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         system::active()?.dry_run.store(false, Ordering::Release);
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// 0 when dry run is on, 1 when off (the same sense as `MCC_CheckBlend`).
 #[no_mangle]
 pub extern "C" fn MCC_CheckDryRun() -> c_int {
-    guard(|| {
+    ffi_boundary! {
         Ok(c_int::from(
             !system::active()?.dry_run.load(Ordering::Acquire),
         ))
-    })
+    }
 }

@@ -2,18 +2,16 @@
 //! Watch Dog Control"). Units: the timer counts system clocks of 10 ns; the watchdog
 //! counts timer periods (see `crate::card::timer` and the README).
 
-use super::guard;
 use super::with_card;
+use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
 
-fn on(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::Peripherals)) -> c_int {
-    guard(|| {
-        with_card(wCardIndex, |p| {
-            f(p);
-            Ok(c::NO_ERR)
-        })
+fn on(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::Peripherals)) -> McclResult<c_int> {
+    with_card(wCardIndex, |p| {
+        f(p);
+        Ok(c::NO_ERR)
     })
 }
 
@@ -21,54 +19,54 @@ fn on(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::Peripherals)) -> c_int 
 /// Counting restarts. Before any call the period is 100 (1 µs).
 #[no_mangle]
 pub extern "C" fn MCC_SetTimer(dwValue: DWORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_card(wCardIndex, |p| p.timer.set_period(dwValue))?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Starts the timer (counting from 0).
 #[no_mangle]
 pub extern "C" fn MCC_EnableTimer(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.timer.set_enabled(true))
+    ffi_boundary! { on(wCardIndex, |p| p.timer.set_enabled(true)) }
 }
 
 /// Stops the timer (and with it the watchdog's time base).
 #[no_mangle]
 pub extern "C" fn MCC_DisableTimer(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.timer.set_enabled(false))
+    ffi_boundary! { on(wCardIndex, |p| p.timer.set_enabled(false)) }
 }
 
 /// The timer's expirations call the TMR routine (`TMRINT.TIMER` = expirations in the
 /// tick).
 #[no_mangle]
 pub extern "C" fn MCC_EnableTimerTrigger(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.timer.trigger = true)
+    ffi_boundary! { on(wCardIndex, |p| p.timer.trigger = true) }
 }
 
 /// The timer's expirations no longer call the TMR routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableTimerTrigger(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.timer.trigger = false)
+    ffi_boundary! { on(wCardIndex, |p| p.timer.trigger = false) }
 }
 
 /// Sets the watchdog's compare value in timer periods (1..=2^32-1): with the timer at its
 /// default 1 µs, microseconds.
 #[no_mangle]
 pub extern "C" fn MCC_SetWatchDogTimer(wValue: DWORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_card(wCardIndex, |p| p.watchdog.set_compare(wValue))?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Sets the length of the watchdog's reset signal in system clocks (1..=2^32-1).
 #[no_mangle]
 pub extern "C" fn MCC_SetWatchDogResetPeriod(dwValue: DWORD, wCardIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_card(wCardIndex, |p| p.watchdog.set_reset_period(dwValue))?;
         Ok(c::NO_ERR)
-    })
+    }
 }
 
 /// Starts the watchdog (counting from 0). It counts while the timer runs; when the count
@@ -77,17 +75,17 @@ pub extern "C" fn MCC_SetWatchDogResetPeriod(dwValue: DWORD, wCardIndex: WORD) -
 /// remote outputs to 0, and the watchdog disables itself.
 #[no_mangle]
 pub extern "C" fn MCC_EnableWatchDogTimer(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.watchdog.set_enabled(true))
+    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_enabled(true)) }
 }
 
 /// Stops the watchdog.
 #[no_mangle]
 pub extern "C" fn MCC_DisableWatchDogTimer(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.watchdog.set_enabled(false))
+    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_enabled(false)) }
 }
 
 /// Clears the watchdog's count.
 #[no_mangle]
 pub extern "C" fn MCC_RefreshWatchDogTimer(wCardIndex: WORD) -> c_int {
-    on(wCardIndex, |p| p.watchdog.refresh())
+    ffi_boundary! { on(wCardIndex, |p| p.watchdog.refresh()) }
 }

@@ -1,6 +1,6 @@
 //! Trajectory planning controls (user manual §2.6.3; vendor header "Trajectory Planning").
 
-use super::guard;
+use crate::error::McclResult;
 use crate::system;
 use crate::vendor::DWORD;
 
@@ -9,13 +9,13 @@ use crate::vendor::DWORD;
 /// `MCC_InitSystem` it sleeps in real time.
 #[no_mangle]
 pub extern "C" fn MCC_TimeDelay(dwTime: DWORD) {
-    guard(|| {
+    ffi_boundary! {
         match system::active() {
             Ok(shared) => shared.clock.delay_ms(dwTime),
             Err(_) => std::thread::sleep(std::time::Duration::from_millis(u64::from(dwTime))),
         }
         Ok(())
-    })
+    }
 }
 
 use super::{queue, with_group};
@@ -30,58 +30,58 @@ use std::os::raw::c_int;
 /// `HOLD_ILLEGAL_ERR` when nothing runs or the group is already held.
 #[no_mangle]
 pub extern "C" fn MCC_HoldMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
-    guard(|| with_group(wGroupIndex, |g| g.hold(bBlockEnd != 0)).map(|()| c::NO_ERR))
+    ffi_boundary! { with_group(wGroupIndex, |g| g.hold(bBlockEnd != 0)).map(|()| c::NO_ERR) }
 }
 
 /// Resumes held motion with the command's acceleration time (`CONTI_ILLEGAL_ERR` unless
 /// held).
 #[no_mangle]
 pub extern "C" fn MCC_ContiMotion(wGroupIndex: WORD) -> c_int {
-    guard(|| with_group(wGroupIndex, |g| g.conti()).map(|()| c::NO_ERR))
+    ffi_boundary! { with_group(wGroupIndex, |g| g.conti()).map(|()| c::NO_ERR) }
 }
 
 /// Stops at once and empties the queue; with `bBlockEnd` TRUE the running command
 /// finishes first.
 #[no_mangle]
 pub extern "C" fn MCC_AbortMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.abort(0.0, bBlockEnd != 0)))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.abort(0.0, bBlockEnd != 0)) }
 }
 
 /// Empties the queue and stops within `dfDecTime` ms (0: at once; at most 2^32 − 1).
 /// While it decelerates, new motion commands are refused with `ABORT_NOT_FINISH_ERR`.
 #[no_mangle]
 pub extern "C" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let t = crate::config::range::time_ms(dfDecTime)?;
         super::update_group(wGroupIndex, |g| g.abort(t / 1000.0, false))
-    })
+    }
 }
 
 /// Single-block mode on: after each command the group waits (`GMS_HOLD`) for
 /// `MCC_RunSingleBlock`.
 #[no_mangle]
 pub extern "C" fn MCC_EnableSingleBlock(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.set_single_block(true)))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_single_block(true)) }
 }
 
 /// Single-block mode off.
 #[no_mangle]
 pub extern "C" fn MCC_DisableSingleBlock(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.set_single_block(false)))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_single_block(false)) }
 }
 
 /// Lets the next command run in single-block mode (`COMMAND_NOTACCEPTED_ERR` when the
 /// mode is off).
 #[no_mangle]
 pub extern "C" fn MCC_RunSingleBlock(wGroupIndex: WORD) -> c_int {
-    guard(|| with_group(wGroupIndex, |g| g.run_single_block()).map(|()| c::NO_ERR))
+    ffi_boundary! { with_group(wGroupIndex, |g| g.run_single_block()).map(|()| c::NO_ERR) }
 }
 
 /// Blending on, effective at once (not through the queue); `COMMAND_NOTACCEPTED_ERR` on
 /// an MC3B group (its moves start and end at rest).
 #[no_mangle]
 pub extern "C" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         with_group(wGroupIndex, |g| {
             if g.is_external() {
                 return Err(McclError::NotAccepted);
@@ -89,48 +89,48 @@ pub extern "C" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
             g.set_blend_now(true);
             Ok(c::NO_ERR)
         })
-    })
+    }
 }
 
 /// Blending off, effective at once.
 #[no_mangle]
 pub extern "C" fn MCC_DisableBlendInstant(wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.set_blend_now(false)))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_blend_now(false)) }
 }
 
 /// Queues "blending on": general motions after it start while the previous one
 /// decelerates. Returns the command index.
 #[no_mangle]
 pub extern "C" fn MCC_EnableBlend(wGroupIndex: WORD) -> c_int {
-    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(true)))))
+    ffi_boundary! { queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(true)))) }
 }
 
 /// Queues "blending off". Returns the command index.
 #[no_mangle]
 pub extern "C" fn MCC_DisableBlend(wGroupIndex: WORD) -> c_int {
-    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(false)))))
+    ffi_boundary! { queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(false)))) }
 }
 
 /// 0 when blending is on (as the end of the queue will have it), 1 when off.
 #[no_mangle]
 pub extern "C" fn MCC_CheckBlend(wGroupIndex: WORD) -> c_int {
-    guard(|| with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued))))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued))) }
 }
 
 /// Queues a delay of `dwTime` ms before the next command (`GMS_DELAYING` meanwhile).
 /// Returns the command index.
 #[no_mangle]
 pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
-    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.delay(f64::from(dwTime)))))
+    ffi_boundary! { queue(wGroupIndex, |ctx| Ok(ctx.delay(f64::from(dwTime)))) }
 }
 
 /// 0 while the group is delaying, 1 otherwise (the sense of `MCC_CheckBlend`).
 #[no_mangle]
 pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
-    guard(|| {
+    ffi_boundary! {
         let s = system::active()?.snapshot(wGroupIndex)?;
         Ok(c_int::from(s.status != c::GMS_DELAYING))
-    })
+    }
 }
 
 fn override_rate(r: f64) -> Result<f64, McclError> {
@@ -145,7 +145,9 @@ pub const MAX_OVERRIDE: f64 = 1000.0;
 /// rate now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
-    MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex)
+    ffi_boundary! {
+    Ok(MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex))
+        }
 }
 
 /// [`MCC_OverrideSpeed`]; with `bInstant` FALSE the new rate applies from the next
@@ -154,7 +156,7 @@ pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
 /// `COMMAND_NOTACCEPTED_ERR` (the MC3B cannot change the speed of a running move).
 #[no_mangle]
 pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: WORD) -> f64 {
-    guard(|| {
+    ffi_boundary! {
         let r = override_rate(dfRate)?;
         with_group(wGroupIndex, |g| {
             if bInstant != 0 && g.is_external() && g.busy() {
@@ -163,31 +165,35 @@ pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: 
             g.override_speed(r, bInstant != 0);
             Ok(r)
         })
-    })
+    }
 }
 
 /// The override ratio, percent.
 #[no_mangle]
 pub extern "C" fn MCC_GetOverrideRate(wGroupIndex: WORD) -> f64 {
-    guard(|| with_group(wGroupIndex, |g| Ok(g.override_pct)))
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.override_pct)) }
 }
 
 /// With `bFix` TRUE the override no longer changes speeds (motion runs at 100 %).
 #[no_mangle]
 pub extern "C" fn MCC_FixSpeed(bFix: BOOL, wGroupIndex: WORD) -> c_int {
-    guard(|| super::update_group(wGroupIndex, |g| g.fix_speed(bFix != 0)))
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.fix_speed(bFix != 0)) }
 }
 
 /// Obsolete name of [`MCC_OverrideSpeed`].
 #[no_mangle]
 pub extern "C" fn MCC_SetOverSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
-    MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex)
+    ffi_boundary! {
+    Ok(MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex))
+        }
 }
 
 /// Obsolete name of [`MCC_GetOverrideRate`].
 #[no_mangle]
 pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
-    MCC_GetOverrideRate(wGroupIndex)
+    ffi_boundary! {
+    Ok(MCC_GetOverrideRate(wGroupIndex))
+        }
 }
 
 /// Obsolete: changes the feed speed of the running general motion and of the following
@@ -195,18 +201,18 @@ pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
 /// Returns the feed speed now in effect.
 #[no_mangle]
 pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
-    guard(|| {
+    ffi_boundary! {
         let v = crate::config::range::speed(dfSpeed)?;
         let v = v.min(system::with(|s| s.config.sys_max_speed));
         with_group(wGroupIndex, |g| {
             g.change_feed_speed(v);
             Ok(v)
         })
-    })
+    }
 }
 
-fn queue_output(wGroupIndex: WORD, o: crate::engine::command::Output) -> c_int {
-    guard(|| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Output(o)))))
+fn queue_output(wGroupIndex: WORD, o: crate::engine::command::Output) -> McclResult<c_int> {
+    queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Output(o))))
 }
 
 /// Queues a change of the card's local outputs (points 0..7, the servo-on outputs): the
@@ -218,16 +224,18 @@ pub extern "C" fn MCC_QueueLIOOutputValue(
     wValue: WORD,
     wGroupIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     if wBitMask > 0xFF {
-        return c::PARAMETER_ERR;
-    }
-    queue_output(
-        wGroupIndex,
-        crate::engine::command::Output::Local {
-            mask: wBitMask,
-            value: wValue,
-        },
-    )
+            return Err(crate::error::McclError::Parameter);
+        }
+        queue_output(
+            wGroupIndex,
+            crate::engine::command::Output::Local {
+                mask: wBitMask,
+                value: wValue,
+            },
+        )
+        }
 }
 
 /// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
@@ -240,19 +248,21 @@ pub extern "C" fn MCC_QueueRIOOutputValue(
     wPort: WORD,
     wGroupIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     if wSet > 1 || wPort > 3 {
-        return c::PARAMETER_ERR;
-    }
-    queue_output(
-        wGroupIndex,
-        crate::engine::command::Output::Remote {
-            ario: false,
-            set: wSet,
-            port: wPort,
-            mask: wBitMask,
-            value: wValue,
-        },
-    )
+            return Err(crate::error::McclError::Parameter);
+        }
+        queue_output(
+            wGroupIndex,
+            crate::engine::command::Output::Remote {
+                ario: false,
+                set: wSet,
+                port: wPort,
+                mask: wBitMask,
+                value: wValue,
+            },
+        )
+        }
 }
 
 /// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
@@ -265,17 +275,19 @@ pub extern "C" fn MCC_QueueARIOOutputValue(
     wPort: WORD,
     wGroupIndex: WORD,
 ) -> c_int {
+    ffi_boundary! {
     if wSet > 1 || wPort > 31 {
-        return c::PARAMETER_ERR;
-    }
-    queue_output(
-        wGroupIndex,
-        crate::engine::command::Output::Remote {
-            ario: true,
-            set: wSet,
-            port: wPort,
-            mask: wBitMask,
-            value: wValue,
-        },
-    )
+            return Err(crate::error::McclError::Parameter);
+        }
+        queue_output(
+            wGroupIndex,
+            crate::engine::command::Output::Remote {
+                ario: true,
+                set: wSet,
+                port: wPort,
+                mask: wBitMask,
+                value: wValue,
+            },
+        )
+        }
 }

@@ -538,6 +538,36 @@ pub struct CardSettings {
     pub error_threshold: [(u16, u16); AXES],
 }
 
+/// An input filter clock of a card (index in [`CardSettings::filters`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FilterClock {
+    /// The limit switch inputs (`MCC_SetLimitFilterClk`).
+    Limit = 0,
+    /// The home sensor inputs (`MCC_SetHomeFilterClk`).
+    Home = 1,
+    /// The general-purpose inputs (`MCC_SetGpioFilterClk`).
+    Gpio = 2,
+    /// The encoder inputs (`MCC_SetENCFilterClock`).
+    Encoder = 3,
+}
+
+impl CardSettings {
+    /// Keeps filter clock `k` (any value: the manuals give no range).
+    pub fn set_filter_clock(&mut self, k: FilterClock, value: u16) {
+        self.filters[k as usize] = value;
+    }
+
+    /// Sets the LED output of channel `ch` (0..7) on or off.
+    pub fn set_led(&mut self, ch: usize, on: bool) {
+        let bit = 1u8 << ch;
+        if on {
+            self.leds |= bit;
+        } else {
+            self.leds &= !bit;
+        }
+    }
+}
+
 /// Every card's channels and emergency-stop input.
 #[derive(Debug, Clone)]
 pub struct Machine {
@@ -553,7 +583,51 @@ pub struct Machine {
     pub pulse_limits_set: bool,
 }
 
+/// Which pulse limit of the channels (user manual §2.7.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PulseLimit {
+    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
+    Speed,
+    /// Most change of pulses from one period to the next (`MCC_SetMaxPulseAcc`).
+    Acc,
+}
+
 impl Machine {
+    /// Sets limit `kind` of every channel of card `cd` (each 1..=[`MAX_PULSE_LIMIT`],
+    /// checked by the caller) and notes whether any channel's limit is now below the
+    /// default, so that the engine checks them.
+    pub fn set_pulse_limits(&mut self, cd: usize, kind: PulseLimit, v: [i32; AXES]) {
+        for (ch, x) in self.cards[cd].iter_mut().zip(v) {
+            match kind {
+                PulseLimit::Speed => ch.max_speed = x,
+                PulseLimit::Acc => ch.max_acc = x,
+            }
+        }
+        self.pulse_limits_set = self
+            .cards
+            .iter()
+            .flatten()
+            .any(|c| c.max_speed < MAX_PULSE_LIMIT || c.max_acc < MAX_PULSE_LIMIT);
+    }
+
+    /// Limit `kind` of every channel of card `cd`.
+    pub fn pulse_limits(&self, cd: usize, kind: PulseLimit) -> [i32; AXES] {
+        std::array::from_fn(|ch| match kind {
+            PulseLimit::Speed => self.cards[cd][ch].max_speed,
+            PulseLimit::Acc => self.cards[cd][ch].max_acc,
+        })
+    }
+
+    /// What LED `ch` of card `cd` shows: its trigger-out value while a trigger holds it,
+    /// else what `MCC_SetLedLightOn`/`Off` set.
+    pub fn led_lit(&self, cd: usize, ch: usize) -> bool {
+        let own = self.settings.get(cd).is_some_and(|s| s.leds >> ch & 1 == 1);
+        self.triggers
+            .get(cd)
+            .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
+            .unwrap_or(own)
+    }
+
     /// A machine for `n` cards from the parameters in effect and the specs.
     pub fn new(
         mac: &crate::config::MacTable,

@@ -42,23 +42,88 @@ pub struct CardTriggers {
     pub lio_type: [u16; 24],
     /// Local-input interrupt enabled per point.
     pub lio_enabled: [bool; 24],
-    /// Trigger-out per local output point: enabled, value while active, source bits.
-    pub trig_out: [(bool, bool, u16); AXES],
+    /// Trigger-out per local output point.
+    pub trig_out: [TrigOut; AXES],
     /// How long a triggered output holds its value, ns.
     pub trig_period_ns: u64,
     /// Until when each triggered output holds (virtual ns).
     pub trig_until: [Option<u128>; AXES],
     /// Output levels driven by trigger-out (bit per point), `None` where not driven.
     pub trig_level: [Option<bool>; AXES],
-    /// LED trigger-out per LED point (`MCC_SetLedTrigOut*`): enabled, value while active
-    /// (true: lit), source bits. The LEDs share the trigger period.
-    pub led_trig_out: [(bool, bool, u16); AXES],
+    /// LED trigger-out per LED point (`MCC_SetLedTrigOut*`; value true: lit). The LEDs
+    /// share the trigger period.
+    pub led_trig_out: [TrigOut; AXES],
     /// Until when each triggered LED holds (virtual ns).
     pub led_trig_until: [Option<u128>; AXES],
     /// LED levels driven by trigger-out, `None` where not driven.
     pub led_trig_level: [Option<bool>; AXES],
     prev_count: [i64; AXES],
     prev_over: [(bool, bool); AXES],
+}
+
+/// Trigger-out of one output point (a local output or an LED).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct TrigOut {
+    /// Trigger-out on for this point.
+    pub enabled: bool,
+    /// The level the point takes while a trigger holds it.
+    pub value: bool,
+    /// The compares (bit n: encoder compare of channel n) that trigger it.
+    pub source: u16,
+}
+
+/// Which outputs a trigger-out setting is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TrigOutKind {
+    /// The local output points (the servo-on outputs).
+    Local,
+    /// The LEDs.
+    Led,
+}
+
+impl CardTriggers {
+    /// The trigger-out settings of `kind`'s points.
+    pub fn trig_outs(&mut self, kind: TrigOutKind) -> &mut [TrigOut; AXES] {
+        match kind {
+            TrigOutKind::Local => &mut self.trig_out,
+            TrigOutKind::Led => &mut self.led_trig_out,
+        }
+    }
+
+    /// Sets the trigger value of every local output point whose bit is set in `mask`
+    /// to that bit of `values`.
+    pub fn set_trig_out_values(&mut self, mask: u32, values: u32) {
+        for (p, o) in self.trig_out.iter_mut().enumerate() {
+            if mask & (1 << p) != 0 {
+                o.value = values & (1 << p) != 0;
+            }
+        }
+    }
+
+    /// The compares that trigger some enabled local output point.
+    pub fn lio_sources(&self) -> u16 {
+        self.trig_out
+            .iter()
+            .filter(|o| o.enabled)
+            .fold(0, |m, o| m | o.source)
+    }
+
+    /// Compare values waiting on the channels that trigger local outputs.
+    pub fn lio_comp_stock_count(&self) -> usize {
+        let src = self.lio_sources();
+        (0..AXES)
+            .filter(|ch| src & (1 << ch) != 0)
+            .map(|ch| self.stock_count(ch))
+            .sum()
+    }
+
+    /// Removes the compare values of the channels that trigger local outputs.
+    pub fn erase_lio_comp_values(&mut self) {
+        let src = self.lio_sources();
+        for ch in (0..AXES).filter(|ch| src & (1 << ch) != 0) {
+            self.stock[ch].clear();
+        }
+    }
 }
 
 impl Default for CardTriggers {
@@ -75,11 +140,11 @@ impl Default for CardTriggers {
             latch: [None; AXES],
             lio_type: [c::LIO_INT_RISE; 24],
             lio_enabled: [false; 24],
-            trig_out: [(false, false, 0); AXES],
+            trig_out: [TrigOut::default(); AXES],
             trig_period_ns: 0,
             trig_until: [None; AXES],
             trig_level: [None; AXES],
-            led_trig_out: [(false, false, 0); AXES],
+            led_trig_out: [TrigOut::default(); AXES],
             led_trig_until: [None; AXES],
             led_trig_level: [None; AXES],
             prev_count: [0; AXES],
@@ -97,7 +162,7 @@ fn reached(a: i64, b: i64, v: i64) -> bool {
 /// source includes a compare that fired holds its value until `now_ns + period_ns`
 /// (again from now if it was holding); a point whose hold ended returns to its own level.
 fn trigger_outputs(
-    outs: &[(bool, bool, u16); AXES],
+    outs: &[TrigOut; AXES],
     until: &mut [Option<u128>; AXES],
     level: &mut [Option<bool>; AXES],
     compares: &[usize],
@@ -105,10 +170,14 @@ fn trigger_outputs(
     period_ns: u64,
 ) {
     for pt in 0..AXES {
-        let (en, val, src) = outs[pt];
-        let hit = compares.iter().any(|&c| src & (1 << c) != 0);
-        if en && hit {
-            level[pt] = Some(val);
+        let TrigOut {
+            enabled,
+            value,
+            source,
+        } = outs[pt];
+        let hit = compares.iter().any(|&c| source & (1 << c) != 0);
+        if enabled && hit {
+            level[pt] = Some(value);
             until[pt] = Some(now_ns + u128::from(period_ns));
         } else if until[pt].is_some_and(|u| now_ns >= u) {
             until[pt] = None;
@@ -350,7 +419,11 @@ mod tests {
         let mut t = CardTriggers::default();
         t.stock[0].push_back(10);
         t.comp_enabled[0] = true;
-        t.trig_out[1] = (true, true, 1);
+        t.trig_out[1] = TrigOut {
+            enabled: true,
+            value: true,
+            source: 1,
+        };
         t.trig_period_ns = 500_000_000;
         let lv = [SensorLevels::default(); AXES];
         let th = [(0, 0); AXES];
@@ -369,9 +442,21 @@ mod tests {
         let mut t = CardTriggers::default();
         t.stock[2].extend([10, 20]);
         t.comp_enabled[2] = true;
-        t.led_trig_out[5] = (true, true, 1 << 2); // LED 5 lights on compare 2
-        t.led_trig_out[6] = (true, true, 1 << 3); // LED 6 waits for compare 3
-        t.trig_out[5] = (false, true, 1 << 2); // the local output 5 is not enabled
+        t.led_trig_out[5] = TrigOut {
+            enabled: true,
+            value: true,
+            source: 1 << 2,
+        }; // LED 5 lights on compare 2
+        t.led_trig_out[6] = TrigOut {
+            enabled: true,
+            value: true,
+            source: 1 << 3,
+        }; // LED 6 waits for compare 3
+        t.trig_out[5] = TrigOut {
+            enabled: false,
+            value: true,
+            source: 1 << 2,
+        }; // the local output 5 is not enabled
         t.trig_period_ns = 3_000_000;
         let lv = [SensorLevels::default(); AXES];
         let th = [(0, 0); AXES];
