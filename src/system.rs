@@ -64,7 +64,8 @@ static ACTIVE: RwLock<Option<Arc<Shared>>> = RwLock::new(None);
 /// is released while the call joins an engine thread (whose routine may be waiting for
 /// that lock). Dropping the turn, also while unwinding, hands it to the next caller.
 ///
-/// The rule this gives (README, "Concurrency"): init and close take effect in the order
+/// The rule this gives (README, compatibility notes, "Init and close from several
+/// threads and routines"): init and close take effect in the order
 /// they take their turn, so the last one wins; when `MCC_CloseSystem` returns `NO_ERR` no
 /// engine of the system it closed, nor one that a routine of it started, is left. A
 /// routine of an engine that has been stopped cannot take a turn
@@ -100,9 +101,11 @@ impl Turn {
         self.sys = None;
     }
 
-    /// Takes the running system out and stops its engine; a routine of it that waits for
-    /// a turn gives up now. The old system is joined by [`Turn::retire`], without the lock.
-    fn stop_running(&mut self) -> (Option<Running>, Vec<JoinHandle<()>>) {
+    /// Takes the running system out and stops its engine (a routine of it that waits for
+    /// a turn gives up now), then joins it and the threads left to join with the system
+    /// lock released; a thread that cannot be joined here (this one) is kept for later.
+    /// Returns whether a system was running.
+    fn close_running(&mut self) -> bool {
         let sys = self.sys();
         let old = sys.running.take();
         let unjoined = std::mem::take(&mut sys.unjoined);
@@ -111,13 +114,8 @@ impl Turn {
             r.engine.stop();
         }
         TURN_CHANGED.notify_all();
-        (old, unjoined)
-    }
-
-    /// Joins the stopped engine and the threads left to join, with the system lock
-    /// released; a thread that cannot be joined here (this one) is kept for later.
-    fn retire(&mut self, old: Option<Running>, unjoined: Vec<JoinHandle<()>>) {
         self.unlock();
+        let was_running = old.is_some();
         let mut keep = Vec::new();
         if let Some(r) = old {
             let Running { engine, mc3b, .. } = r;
@@ -134,6 +132,7 @@ impl Turn {
             }
         }
         self.sys().unjoined.extend(keep);
+        was_running
     }
 }
 
@@ -211,9 +210,8 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     };
     let mut turn = Turn::take()?;
     groups_for(turn.sys())?;
-    let (old, unjoined) = turn.stop_running();
     // Stop a running card outside the lock (its callbacks may be calling in).
-    turn.retire(old, unjoined);
+    turn.close_running();
     let sys = turn.sys();
     let groups = groups_for(sys)?;
     let trace = crate::engine::trace::Trace::from_env().map_err(|msg| {
@@ -308,14 +306,11 @@ pub fn has_mc3b() -> bool {
 /// nothing runs). The configuration is kept for the next init.
 pub fn close() -> McclResult<()> {
     let mut turn = Turn::take()?;
-    let (old, unjoined) = turn.stop_running();
-    let closed = if old.is_some() {
+    if turn.close_running() {
         Ok(())
     } else {
         Err(McclError::NotInitialized)
-    };
-    turn.retire(old, unjoined);
-    closed
+    }
 }
 
 /// `MCC_ResetMotion`: every group back to its state right after init.

@@ -470,7 +470,7 @@ impl Shared {
     fn tick(&self) -> (bool, isr::Collected) {
         let dt = self.clock.period().as_secs_f64();
         let n = self.clock.ticks();
-        let t_ns = u128::from(n + 1) * self.clock.period().as_nanos();
+        let t_ns = self.running_tick_end_ns();
         let full = !self.clock.mode().virtual_time()
             || self.live_snapshots.load(Ordering::Relaxed)
             || n % PUBLISH_EVERY == 0
@@ -565,10 +565,16 @@ impl Shared {
 
     /// Writes the interrupts a tick collected to the trace's events file.
     fn trace_interrupts(&self, collected: &isr::Collected) {
-        let t_ns = u128::from(self.clock.ticks() + 1) * self.clock.period().as_nanos();
+        let t_ns = self.running_tick_end_ns();
         if let Some(t) = self.trace.lock().as_mut() {
             t.interrupt_events(t_ns, collected, &self.isr);
         }
+    }
+
+    /// Virtual time, ns, at the end of the tick now running (the time its trace rows and
+    /// events carry).
+    fn running_tick_end_ns(&self) -> u128 {
+        u128::from(self.clock.ticks() + 1) * self.clock.period().as_nanos()
     }
 
     /// Output changes of queued `MCC_Queue*OutputValue` commands.
