@@ -11,11 +11,13 @@
 //! Every test takes `LOCK` (the library has one global state) and a watchdog that
 //! ends the process with a message if the test hangs.
 
+mod common;
+use common::Watchdog;
 use std::collections::VecDeque;
 use std::io::{Read, Write};
 use std::os::raw::c_int;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::{mpsc, Arc, Mutex, MutexGuard};
+use std::sync::{Arc, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
@@ -25,31 +27,6 @@ use MCCLPCI_IMP::mc3b::mcl::*;
 
 static LOCK: Mutex<()> = Mutex::new(());
 static PANICS: AtomicUsize = AtomicUsize::new(0);
-
-/// Ends the process with a message when a test runs longer than it may (a hang
-/// must fail, not wait for the harness's timeout).
-struct Watchdog(Option<mpsc::Sender<()>>);
-
-impl Watchdog {
-    fn new(what: &'static str, limit: Duration) -> Watchdog {
-        let (tx, rx) = mpsc::channel::<()>();
-        std::thread::spawn(move || {
-            if let Err(mpsc::RecvTimeoutError::Timeout) = rx.recv_timeout(limit) {
-                eprintln!("mc3b_hostile: {what} still running after {limit:?}: hung, giving up");
-                std::process::exit(3);
-            }
-        });
-        Watchdog(Some(tx))
-    }
-}
-
-impl Drop for Watchdog {
-    fn drop(&mut self) {
-        if let Some(tx) = self.0.take() {
-            let _ = tx.send(());
-        }
-    }
-}
 
 /// How the fake device treats one command frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -383,7 +360,7 @@ fn sub(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
 
 #[test]
 fn a_garbled_reply_returns_at_once_with_invalid_command() {
-    let _w = Watchdog::new("garbled replies", Duration::from_secs(30));
+    let _w = Watchdog::new("mc3b_hostile: garbled replies", Duration::from_secs(30));
     // A long timeout (1 s) makes "at once" plain: a garbled, overlong or foreign
     // reply must not be waited out (before the fix: 1 s, then TIMEOUT).
     let (_g, fake) = setup(1000);
@@ -412,7 +389,7 @@ fn a_garbled_reply_returns_at_once_with_invalid_command() {
 
 #[test]
 fn a_vanished_port_returns_serial_port_error_at_once() {
-    let _w = Watchdog::new("vanishing port", Duration::from_secs(30));
+    let _w = Watchdog::new("mc3b_hostile: vanishing port", Duration::from_secs(30));
     let (_g, fake) = setup(1000);
     fake.plan(&[Fault::Vanish]);
     let (r, took) = timed(|| mcl_move_motor(0, 0, 0, 10));
@@ -429,7 +406,7 @@ fn a_vanished_port_returns_serial_port_error_at_once() {
 
 #[test]
 fn a_late_reply_is_never_taken_for_the_next_commands() {
-    let _w = Watchdog::new("late replies", Duration::from_secs(30));
+    let _w = Watchdog::new("mc3b_hostile: late replies", Duration::from_secs(30));
     let (_g, fake) = setup(200);
     // The ack of M comes 300 ms late: TIMEOUT. Motor 0 runs 3000 steps (0.65 s).
     fake.plan(&[Fault::Late { ms: 300 }]);
@@ -445,7 +422,7 @@ fn a_late_reply_is_never_taken_for_the_next_commands() {
 
 #[test]
 fn a_chain_cut_short_by_a_lost_reply_leaves_nothing_stored() {
-    let _w = Watchdog::new("cut chain", Duration::from_secs(30));
+    let _w = Watchdog::new("mc3b_hostile: cut chain", Duration::from_secs(30));
     let (_g, fake) = setup(200);
     // A 4-move chain of motor 0 (+5 each): the first two stores answer, the third
     // store's reply is lost: TIMEOUT, with 3 moves stored in the device.
@@ -551,7 +528,7 @@ fn random_fault(rng: &mut Rng, timeout_ms: u64) -> Fault {
 
 #[test]
 fn fuzz_mcl_against_a_hostile_device() {
-    let _w = Watchdog::new("the fuzz test", Duration::from_secs(120));
+    let _w = Watchdog::new("mc3b_hostile: the fuzz test", Duration::from_secs(120));
     const TIMEOUT_MS: u64 = 100;
     let seed = std::env::var("MC3B_FUZZ_SEED")
         .ok()

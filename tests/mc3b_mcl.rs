@@ -4,6 +4,8 @@
 //! Every test takes `LOCK` (the library has one global state and the tests
 //! set `MCL_COM1`), spawns its own emulator, and points COM1 at it.
 
+mod common;
+use common::Watchdog;
 use std::io::{BufRead, BufReader, Write};
 use std::os::raw::c_int;
 use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
@@ -21,32 +23,6 @@ struct Emu {
     path: String,
     /// Each test that talks to an emulator is bounded (60 s).
     _watchdog: Watchdog,
-}
-
-/// Ends the process with a message when a test runs longer than it may: a realtime
-/// test that hangs must fail, not wait for the harness's timeout.
-struct Watchdog(Option<std::sync::mpsc::Sender<()>>);
-
-impl Watchdog {
-    fn new(limit: Duration) -> Watchdog {
-        let (tx, rx) = std::sync::mpsc::channel::<()>();
-        let name = std::thread::current().name().unwrap_or("?").to_string();
-        std::thread::spawn(move || {
-            if let Err(std::sync::mpsc::RecvTimeoutError::Timeout) = rx.recv_timeout(limit) {
-                eprintln!("{name}: still running after {limit:?} (hung?), giving up");
-                std::process::exit(3);
-            }
-        });
-        Watchdog(Some(tx))
-    }
-}
-
-impl Drop for Watchdog {
-    fn drop(&mut self) {
-        if let Some(tx) = self.0.take() {
-            let _ = tx.send(());
-        }
-    }
 }
 
 impl Emu {
@@ -67,7 +43,7 @@ impl Emu {
             stdin,
             stdout,
             path,
-            _watchdog: Watchdog::new(Duration::from_secs(60)),
+            _watchdog: Watchdog::for_this_test(Duration::from_secs(60)),
         }
     }
 

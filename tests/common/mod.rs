@@ -107,3 +107,36 @@ pub fn within<R: Send + 'static>(
         }
     }
 }
+
+/// Ends the process with a message when the test holding it runs longer than `limit`: a
+/// test that hangs (a realtime test on a loaded host, a device that stops answering) must
+/// fail, not wait for the harness's timeout. Dropping it disarms it.
+pub struct Watchdog(Option<mpsc::Sender<()>>);
+
+impl Watchdog {
+    /// Arms a watchdog for `what` (named in the message).
+    pub fn new(what: &str, limit: Duration) -> Watchdog {
+        let (tx, rx) = mpsc::channel::<()>();
+        let what = what.to_string();
+        std::thread::spawn(move || {
+            if let Err(mpsc::RecvTimeoutError::Timeout) = rx.recv_timeout(limit) {
+                eprintln!("{what}: still running after {limit:?} (hung?), giving up");
+                std::process::exit(3);
+            }
+        });
+        Watchdog(Some(tx))
+    }
+
+    /// Arms a watchdog named after the current test.
+    pub fn for_this_test(limit: Duration) -> Watchdog {
+        Watchdog::new(std::thread::current().name().unwrap_or("?"), limit)
+    }
+}
+
+impl Drop for Watchdog {
+    fn drop(&mut self) {
+        if let Some(tx) = self.0.take() {
+            let _ = tx.send(());
+        }
+    }
+}
