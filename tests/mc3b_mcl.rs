@@ -515,7 +515,7 @@ fn chained_45_degree_square_from_the_guide() {
 #[test]
 fn serial_port_error_when_the_emulator_is_gone() {
     // The device side of the pty closes: the port itself fails (a hang-up), which is
-    // a SERIAL PORT ERROR at once, not a timeout (README "MC3B").
+    // a SERIAL PORT ERROR at once, not a timeout (docs/mc3b.md, "A bad line").
     let (_g, mut emu) = setup();
     assert_eq!(status(0), 0);
     emu.kill();

@@ -422,7 +422,8 @@ static void finish(fz_t *z, int f)
 /* Non-finite doubles that are the documented answer, counted instead of failing
  * (--strict fails on them). */
 static const char *const tolerated_nonfinite[] = {
-    "MCC_GetTrackErrorLimit", /* +inf while no limit was set: "no limit" (README) */
+    /* +inf while no limit was set: "no limit" (docs/testing.md "Fuzzing") */
+    "MCC_GetTrackErrorLimit",
 };
 
 static int tolerated(fz_t *z)
