@@ -38,8 +38,8 @@ bench:
 headers:
 	cargo run -q -p mccl-headers
 
-# Regenerate the README's picture docs/GeneralMotion.svg (commit the result; the
-# trace_tool test checks it).
+# Regenerate the picture docs/GeneralMotion.svg of docs/clocks-and-tracing.md (commit
+# the result; the trace_tool test checks it).
 docs-image: build
 	MCCL_CLOCK=fast MCCL_TRACE=$(BUILD)/docs-GeneralMotion.csv $(BUILD)/c-tests/GeneralMotion >/dev/null
 	$(TRACE_TOOL) plot $(BUILD)/docs-GeneralMotion.csv -o docs/GeneralMotion.svg
@@ -47,8 +47,9 @@ docs-image: build
 clean:
 	rm -rf $(BUILD)
 
-# The random-call fuzzer, long run (README "Fuzzing"): FUZZ_CALLS calls over FUZZ_WORKERS
-# seeds from FUZZ_SEED, calls/s printed; FUZZ_ARGS adds options (e.g. --routine-init safe).
+# The random-call fuzzer, long run (docs/testing.md "Fuzzing"): FUZZ_CALLS calls over
+# FUZZ_WORKERS seeds from FUZZ_SEED, calls/s printed; FUZZ_ARGS adds options (e.g.
+# --routine-init safe).
 FUZZ_SEED ?= 1
 FUZZ_CALLS ?= 10000000
 FUZZ_WORKERS ?= 100

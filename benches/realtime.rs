@@ -3,7 +3,7 @@
 //!
 //! For each period (1 ms, 2 ms) and load (idle; a CPU-bound thread on every core, started
 //! here and stopped when the case ends), in the same process and at the same scheduling
-//! settings (`MCCL_RT_*`, see README "The clock"):
+//! settings (`MCCL_RT_*`, see docs/clocks-and-tracing.md "The clock"):
 //!
 //! * reference: a bare loop sleeping to absolute deadlines `start + n × period` with
 //!   `clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME)`; its lateness is the time it woke

@@ -42,7 +42,7 @@
 #include "check.h"
 
 static const double K = 100.0;              // pulses (= MC3B steps) per UU
-static const int ERR_MC3B_LINK = 0xF901;    // README "MC3B": no reply / line failed
+static const int ERR_MC3B_LINK = 0xF901;    // docs/mc3b.md: no reply / line failed
 static const unsigned WATCHDOG_S = 150;     // below CTest's 180 s TIMEOUT
 static const double STEP_LIMIT_S = 20;      // one program step (under 3 s unloaded)
 

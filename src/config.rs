@@ -102,10 +102,10 @@ pub fn default_home_config() -> SYS_HOME_CONFIG {
     }
 }
 
-/// The documented ranges of the numbers a program passes (README "Ranges"), one check
-/// per kind of quantity. A value whose consequence the library cannot represent — a
-/// count beyond its counter, a time longer than it can count, a factor that overflows —
-/// is `PARAMETER_ERR`, and the call changes nothing.
+/// The documented ranges of the numbers a program passes (docs/compatibility.md
+/// "Ranges"), one check per kind of quantity. A value whose consequence the library
+/// cannot represent — a count beyond its counter, a time longer than it can count, a
+/// factor that overflows — is `PARAMETER_ERR`, and the call changes nothing.
 pub mod range {
     use crate::error::{McclError, McclResult};
 

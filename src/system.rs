@@ -64,7 +64,7 @@ static ACTIVE: RwLock<Option<Arc<Shared>>> = RwLock::new(None);
 /// is released while the call joins an engine thread (whose routine may be waiting for
 /// that lock). Dropping the turn, also while unwinding, hands it to the next caller.
 ///
-/// The rule this gives (README, compatibility notes, "Init and close from several
+/// The rule this gives (docs/compatibility.md, "Init and close from several
 /// threads and routines"): init and close take effect in the order
 /// they take their turn, so the last one wins; when `MCC_CloseSystem` returns `NO_ERR` no
 /// engine of the system it closed, nor one that a routine of it started, is left. A

@@ -99,7 +99,7 @@ fn every_exported_body_is_one_ffi_boundary() {
         total += n;
         bad.extend(b.into_iter().map(|f| format!("{file}: {f}")));
     }
-    // 314 entry points (README "What is implemented"); a lower count means the scan
+    // 314 entry points (docs/functions.md); a lower count means the scan
     // missed some and would pass without looking.
     assert!(
         total >= 314,

@@ -1,6 +1,7 @@
-//! The documented ranges (README "Ranges", `config::range`) through the C entry points:
-//! a value whose consequence cannot be represented is `PARAMETER_ERR` and changes
-//! nothing; a value just inside the range is taken and behaves (issue 12, defect 3).
+//! The documented ranges (docs/compatibility.md "Ranges", `config::range`) through the C
+//! entry points: a value whose consequence cannot be represented is `PARAMETER_ERR` and
+//! changes nothing; a value just inside the range is taken and behaves (issue 12,
+//! defect 3).
 //!
 //! Ranges used below: times 0..=4,294,967,295 ms (2^32 − 1); speeds 1e-6..=1e9 UU/s;
 //! positions |x| × pulses per UU <= 1e15 pulses (default 500 pulses/UU: ±2e12 UU);

@@ -1,8 +1,9 @@
-//! Regression (hostile-use review, defect 2): `MCC_CloseSystem` returning `NO_ERR` means no
-//! system is left running, even while a routine of the system being closed calls
-//! `MCC_InitSystem`. The rule (README, "Concurrency"): init and close take effect in the
-//! order they take hold of the system; a routine of a system that is being closed or
-//! replaced can no longer start or close one (`COMMAND_NOTACCEPTED_ERR`).
+//! Regression (hostile-use review, defect 2): `MCC_CloseSystem` returning `NO_ERR` means
+//! no system is left running, even while a routine of the system being closed calls
+//! `MCC_InitSystem`. The rule (docs/compatibility.md, "Init and close from several
+//! threads and routines"): init and close take effect in the order they take hold of the
+//! system; a routine of a system that is being closed or replaced can no longer start or
+//! close one (`COMMAND_NOTACCEPTED_ERR`).
 //!
 //! Before the fix the routine's init started a new, idle system after the program's close
 //! had taken the old one, in about 970 of 1000 cycles.

@@ -5,79 +5,15 @@
 //! set `MCL_COM1`), spawns its own emulator, and points COM1 at it.
 
 mod common;
-use common::Watchdog;
-use std::io::{BufRead, BufReader, Write};
+use common::emu::Emu;
 use std::os::raw::c_int;
-use std::process::{Child, ChildStdin, ChildStdout, Command, Stdio};
+use std::process::Command;
 use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
 use MCCLPCI_IMP::mc3b::mcl::*;
 
 static LOCK: Mutex<()> = Mutex::new(());
-
-struct Emu {
-    child: Child,
-    stdin: Option<ChildStdin>,
-    stdout: BufReader<ChildStdout>,
-    path: String,
-    /// Each test that talks to an emulator is bounded (60 s).
-    _watchdog: Watchdog,
-}
-
-impl Emu {
-    fn spawn() -> Emu {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_mc3b-emu"))
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .spawn()
-            .expect("spawn mc3b-emu");
-        let stdin = child.stdin.take();
-        let mut stdout = BufReader::new(child.stdout.take().expect("stdout"));
-        let mut path = String::new();
-        stdout.read_line(&mut path).expect("device path");
-        let path = path.trim().to_string();
-        assert!(path.starts_with("/dev/"), "path {path:?}");
-        Emu {
-            child,
-            stdin,
-            stdout,
-            path,
-            _watchdog: Watchdog::for_this_test(Duration::from_secs(60)),
-        }
-    }
-
-    /// One control-channel command, one reply line.
-    fn ctl(&mut self, cmd: &str) -> String {
-        let stdin = self.stdin.as_mut().expect("stdin");
-        writeln!(stdin, "{cmd}").expect("write control");
-        stdin.flush().expect("flush");
-        let mut line = String::new();
-        self.stdout.read_line(&mut line).expect("control reply");
-        line.trim().to_string()
-    }
-
-    fn pos(&mut self) -> (i64, i64, i64) {
-        let r = self.ctl("pos");
-        let v: Vec<i64> = r
-            .split_whitespace()
-            .skip(1)
-            .map(|w| w.parse().expect("number"))
-            .collect();
-        (v[0], v[1], v[2])
-    }
-
-    fn kill(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-impl Drop for Emu {
-    fn drop(&mut self) {
-        self.kill();
-    }
-}
 
 /// Lock, spawn an emulator, point COM1 at it and initialize the library.
 fn setup() -> (MutexGuard<'static, ()>, Emu) {
@@ -515,7 +451,7 @@ fn chained_45_degree_square_from_the_guide() {
 #[test]
 fn serial_port_error_when_the_emulator_is_gone() {
     // The device side of the pty closes: the port itself fails (a hang-up), which is
-    // a SERIAL PORT ERROR at once, not a timeout (README "MC3B").
+    // a SERIAL PORT ERROR at once, not a timeout (docs/mc3b.md, "A bad line").
     let (_g, mut emu) = setup();
     assert_eq!(status(0), 0);
     emu.kill();

@@ -2,58 +2,13 @@
 //! level of §6 frames (including errors the C library never provokes).
 
 mod common;
-use common::Watchdog;
-use std::io::{BufRead, BufReader, Write};
-use std::process::{Child, ChildStdin, ChildStdout, Command as Proc, Stdio};
+use common::emu::Emu;
+use std::process::Command as Proc;
 use std::time::Duration;
 
 use serialport::TTYPort;
 use MCCLPCI_IMP::mc3b::client::{open_port, Client, ClientError, Transport};
 use MCCLPCI_IMP::mc3b::codec::{Command, CommandCode, ErrorCode, Response};
-
-struct Emu {
-    child: Child,
-    stdin: ChildStdin,
-    stdout: BufReader<ChildStdout>,
-    path: String,
-    /// Each test that talks to an emulator is bounded (60 s).
-    _watchdog: Watchdog,
-}
-
-impl Emu {
-    fn spawn() -> Emu {
-        let mut child = Proc::new(env!("CARGO_BIN_EXE_mc3b-emu"))
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .spawn()
-            .expect("spawn");
-        let stdin = child.stdin.take().expect("stdin");
-        let mut stdout = BufReader::new(child.stdout.take().expect("stdout"));
-        let mut path = String::new();
-        stdout.read_line(&mut path).expect("path");
-        Emu {
-            child,
-            stdin,
-            stdout,
-            path: path.trim().into(),
-            _watchdog: Watchdog::for_this_test(Duration::from_secs(60)),
-        }
-    }
-    fn ctl(&mut self, cmd: &str) -> String {
-        writeln!(self.stdin, "{cmd}").expect("write");
-        self.stdin.flush().expect("flush");
-        let mut l = String::new();
-        self.stdout.read_line(&mut l).expect("read");
-        l.trim().into()
-    }
-}
-
-impl Drop for Emu {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
 
 fn connect(emu: &Emu) -> Client<TTYPort> {
     let port = open_port(&emu.path, Duration::from_millis(300)).expect("open pty");

@@ -6,7 +6,7 @@
 // transfer; data moves once per tick (1 ms here), ARIO data once per bus cycle (by
 // default shorter than a tick). Then the calls the manuals do not document: the vendor
 // test's MCC_SetRIOTransError(5, 0, 0) and the ARIO update rate, clock divider and
-// node-to-node delay (README "Remote I/O" for the cycle formula).
+// node-to-node delay (docs/compatibility.md "ARIO timing": the cycle formula).
 // Signatures are the B/C ones with wSet (docs/decisions.md, "Vendor interface"); the
 // manual's A-form calls
 // MCC_EnableARIOSlaveControl(RIO_SLAVE0, CARD_INDEX) and

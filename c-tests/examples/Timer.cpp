@@ -1,10 +1,10 @@
 // Timer.cpp: examples manual §31 (the manual's TimerTrigger.cpp): the card's 32-bit timer
 // calls a user routine each time its count reaches the set value, and starts again.
 //
-// Units (README, compatibility notes): MCC_SetTimer counts system clocks of 10 ns, as
-// the user manual (EN and ZH §2.13) says; the examples manual's text says 1 µs for the
-// same call. So the manual's MCC_SetTimer(1000) is 10 µs here, and a 1 ms timer is
-// MCC_SetTimer(100000).
+// Units (docs/compatibility.md, "Timer unit"): MCC_SetTimer counts system clocks of
+// 10 ns, as the user manual (EN and ZH §2.13) says; the examples manual's text says 1 µs
+// for the same call. So the manual's MCC_SetTimer(1000) is 10 µs here, and a 1 ms timer
+// is MCC_SetTimer(100000).
 // The virtual card runs in ticks of the interpolation time (1 ms here): a timer whose
 // period ends in a tick calls the routine once after that tick, TIMER = how many times
 // the period ended in the tick (saturated at 255).

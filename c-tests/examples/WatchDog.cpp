@@ -1,12 +1,12 @@
 // WatchDog.cpp: examples manual §32 (user manual §2.13.2): once enabled, the watchdog
 // must be refreshed before its count reaches the compare value, or it resets the card.
 //
-// Units (README): the watchdog counts periods of the card's timer, whose period is
-// 100 system clocks = 1 µs until MCC_SetTimer changes it. So the examples manual's
-// MCC_SetWatchDogTimer(10000000) is 10 s (1 µs x 10000000), and the user manual's
-// MCC_SetTimer(1000000) + MCC_SetWatchDogTimer(2000) is 10 ms x 2000 = 20 s. The
-// watchdog counts while the timer runs (user manual step 4: MCC_EnableTimer) and it is
-// enabled (MCC_EnableWatchDogTimer, one of the functions §32 lists).
+// Units (docs/compatibility.md, "Watchdog"): the watchdog counts periods of the card's
+// timer, whose period is 100 system clocks = 1 µs until MCC_SetTimer changes it. So the
+// examples manual's MCC_SetWatchDogTimer(10000000) is 10 s (1 µs x 10000000), and the
+// user manual's MCC_SetTimer(1000000) + MCC_SetWatchDogTimer(2000) is 10 ms x 2000
+// = 20 s. The watchdog counts while the timer runs (user manual step 4: MCC_EnableTimer) and
+// it is enabled (MCC_EnableWatchDogTimer, one of the functions §32 lists).
 //
 // What the reset does on the virtual card: the card's groups abort and record error
 // 0xF103 (MCC_GetErrorCode), servo-on and position-ready go off, DAC outputs go to 0 V,

@@ -422,7 +422,8 @@ static void finish(fz_t *z, int f)
 /* Non-finite doubles that are the documented answer, counted instead of failing
  * (--strict fails on them). */
 static const char *const tolerated_nonfinite[] = {
-    "MCC_GetTrackErrorLimit", /* +inf while no limit was set: "no limit" (README) */
+    /* +inf while no limit was set: "no limit" (docs/testing.md "Fuzzing") */
+    "MCC_GetTrackErrorLimit",
 };
 
 static int tolerated(fz_t *z)
@@ -499,39 +500,27 @@ static int fz_find(const char *name)
     return -1;
 }
 
+/* One scripted call of `fname`, logged with `args` and watched like a generated call: its
+ * table index is looked up once, then `run` makes the call and ends it (as `f_`). */
+#define FZ_SCRIPTED(z, fname, args, run)                                             \
+    do {                                                                             \
+        static _Atomic int f_ = -2;                                                  \
+        if (atomic_load(&f_) == -2)                                                  \
+            atomic_store(&f_, fz_find(fname));                                       \
+        fz_begin(z, f_);                                                             \
+        fz_log_raw(z, args);                                                         \
+        fz_call_start(z, f_);                                                        \
+        run;                                                                         \
+    } while (0)
+/* A function returning an integer (a vendor code), nothing, or a double. */
 #define FZ_DO(z, fname, args, expr)                                                  \
-    do {                                                                             \
-        static _Atomic int f_ = -2;                                                  \
-        if (atomic_load(&f_) == -2)                                                  \
-            atomic_store(&f_, fz_find(fname));                                       \
-        fz_begin(z, f_);                                                             \
-        fz_log_raw(z, args);                                                         \
-        fz_call_start(z, f_);                                                        \
-        long long r_ = (long long)(expr);                                            \
-        fz_end_int(z, f_, r_, FZ_CODES_VENDOR);                                      \
-    } while (0)
+    FZ_SCRIPTED(z, fname, args, long long r_ = (long long)(expr);                    \
+                fz_end_int(z, f_, r_, FZ_CODES_VENDOR))
 #define FZ_DO_VOID(z, fname, args, expr)                                             \
-    do {                                                                             \
-        static _Atomic int f_ = -2;                                                  \
-        if (atomic_load(&f_) == -2)                                                  \
-            atomic_store(&f_, fz_find(fname));                                       \
-        fz_begin(z, f_);                                                             \
-        fz_log_raw(z, args);                                                         \
-        fz_call_start(z, f_);                                                        \
-        expr;                                                                        \
-        fz_end_void(z, f_);                                                          \
-    } while (0)
+    FZ_SCRIPTED(z, fname, args, (expr); fz_end_void(z, f_))
 #define FZ_DO_REAL(z, fname, args, expr)                                             \
-    do {                                                                             \
-        static _Atomic int f_ = -2;                                                  \
-        if (atomic_load(&f_) == -2)                                                  \
-            atomic_store(&f_, fz_find(fname));                                       \
-        fz_begin(z, f_);                                                             \
-        fz_log_raw(z, args);                                                         \
-        fz_call_start(z, f_);                                                        \
-        double r_ = (double)(expr);                                                  \
-        fz_end_real(z, f_, r_, FZ_CODES_VENDOR);                                     \
-    } while (0)
+    FZ_SCRIPTED(z, fname, args, double r_ = (double)(expr);                          \
+                fz_end_real(z, f_, r_, FZ_CODES_VENDOR))
 
 static SYS_CARD_CONFIG good_cards[MAX_CARD_NUM];
 

@@ -1,10 +1,10 @@
 //! The card's 32-bit timer (user manual §2.13.1; examples manual §31).
 //!
 //! The period is counted in system clocks of 10 ns (user manual EN and ZH §2.13; the
-//! examples manual's "1 µs" disagrees, see README). Virtual time advances by whole ticks:
-//! in a tick of `dt` the timer expires as often as its period elapsed since it was
-//! enabled, and the TMRINT delivered after that tick has `TIMER` = that count (saturated
-//! at 255; 0 expirations: no interrupt).
+//! examples manual's "1 µs" disagrees, see docs/compatibility.md "Timer unit"). Virtual
+//! time advances by whole ticks: in a tick of `dt` the timer expires as often as its
+//! period elapsed since it was enabled, and the TMRINT delivered after that tick has
+//! `TIMER` = that count (saturated at 255; 0 expirations: no interrupt).
 
 use crate::error::{McclError, McclResult};
 

@@ -11,6 +11,8 @@
 //! (`lifecycle_*.rs`) sets `MCCL_CLOCK` once, before it starts a system.
 #![allow(dead_code)]
 
+pub mod emu;
+
 use parking_lot::{Mutex, MutexGuard};
 use std::sync::mpsc;
 use std::time::Duration;

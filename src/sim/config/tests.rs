@@ -90,27 +90,27 @@ fn default_example_parses_to_expected_structs() {
     assert_eq!(cfg.card(0).rio_slave(1, 0).map(|r| r.loopback), Some(true));
 }
 
-/// The README's example is valid.
+/// The example of docs/simulated-machine.md is valid.
 #[test]
-fn readme_example_parses() {
-    let readme = include_str!("../../../README.md");
-    let section = readme
-        .split("## The simulated machine: `MCCL_SIM`")
+fn docs_example_parses() {
+    let doc = include_str!("../../../docs/simulated-machine.md");
+    let section = doc
+        .split("# The simulated machine: `MCCL_SIM`")
         .nth(1)
-        .expect("README has the MCCL_SIM section");
+        .expect("docs/simulated-machine.md has the MCCL_SIM section");
     let block = section
         .split("```toml\n")
         .nth(1)
         .and_then(|b| b.split("```").next())
         .expect("the section has a toml block");
-    let cfg = SimConfig::parse(block, "machine.toml").expect("README example parses");
+    let cfg = SimConfig::parse(block, "machine.toml").expect("the docs example parses");
     assert_eq!(cfg.channel(0, 0).index_phase, 500);
     assert_eq!(cfg.channel(0, 0).plant, Plant::Lag { tau_s: 0.02 });
     assert_eq!(
         cfg.card(0).rio_slave(0, 3).map(|r| r.inputs),
         Some([1, 0, 0, 0])
     );
-    // The two messages the README shows are the ones the library gives.
+    // The two messages the docs show are the ones the library gives.
     let shown: Vec<&str> = section
         .lines()
         .map(str::trim)
