@@ -31,6 +31,8 @@
 //! Positions here are in the channel's user units in the frame of its command counter
 //! (pulses / pulses-per-UU), so the pulses sent are `round(x × factor)`.
 
+pub mod control;
+
 use crate::config::AXES;
 use crate::machine::Channel;
 use crate::planner::Axis1D;
