@@ -16,16 +16,13 @@ use super::command::{AxisMech, Command, Ctx, Output, Plan, Settings};
 use super::snapshot::{round_pulses, GroupSnapshot, Info, Motion};
 use crate::config::{GroupDef, AXES};
 use crate::error::{McclError, McclResult};
-use crate::mc3b::backend::{Job, Link, MOTORS};
 use crate::planner::{Axes, RateRamp};
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 use std::collections::VecDeque;
-use std::sync::Arc;
 
-mod external;
-pub use external::External;
-use external::Host;
+pub mod external;
+use external::{ExternalExecutor, Host};
 
 /// Commands a queue grows by at least when it is full (doubling from there on).
 const QUEUE_MIN_GROWTH: usize = 16;
@@ -35,7 +32,7 @@ pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0)
 
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
 /// far above the rounding of summing millions of ticks).
-const TIME_EPS: f64 = 1e-9;
+pub const TIME_EPS: f64 = 1e-9;
 
 /// Converts between real time within a tick and a command's own time: general and PtP
 /// motion run at the group's rate, delays in real time (paused while held).
@@ -162,8 +159,8 @@ pub struct GroupState {
     inpos_status: [u8; AXES],
     /// Output changes the queue reached this tick (the engine makes them).
     outputs: Vec<Output>,
-    /// Set when the group's channels are an MC3B: its commands run there (`external`).
-    external: Option<External>,
+    /// Set when the group's commands run outside the card (an MC3B: `external`).
+    external: Option<Box<dyn ExternalExecutor>>,
     /// Axes whose channels are being homed (`MCC_Home`), one bit each: the homing drives
     /// their positions and the group takes no command meanwhile.
     homing: u32,
@@ -280,7 +277,7 @@ impl GroupState {
     }
 
     /// `MCC_Home` on the simulated machine starts on the channels of axes `mask`: the
-    /// group must be idle. A group on an MC3B homes on the device (`begin_mc3b_home`).
+    /// group must be idle. A group on an MC3B homes on the device (`begin_external_home`).
     pub fn begin_homing(&mut self, mask: u32) -> McclResult<()> {
         if self.external.is_some() {
             return Err(McclError::NotAccepted);
@@ -341,9 +338,10 @@ impl GroupState {
         *self = GroupState::new(self.index, self.def, axes);
         self.trace_notes = notes;
         // An MC3B group stays on its device, rezeroed.
-        if let Some(x) = external {
-            self.external = Some(x.rezeroed());
-            self.mc3b_positions();
+        if let Some(mut x) = external {
+            x.rezero();
+            self.external = Some(x);
+            self.external_positions();
         }
     }
 
@@ -847,92 +845,66 @@ impl GroupState {
         self.running.push_back(Running { cmd, tau });
     }
 
-    /// Runs this group's motion on the MC3B behind `link` from now on. Axes on channels
-    /// 0..2 are its motors 0..2; motion of axes on channels 3..7 is refused.
-    pub fn attach_mc3b(&mut self, link: Arc<Link>) {
-        self.external = Some(External::new(link, &self.axes));
-        self.mc3b_positions();
+    /// Runs this group's commands on `executor` from now on (an MC3B: the system attaches
+    /// one to every group of the device's card).
+    pub fn attach_external(&mut self, executor: Box<dyn ExternalExecutor>) {
+        self.external = Some(executor);
+        self.external_positions();
     }
 
-    /// Whether this group runs on an MC3B.
+    /// Whether this group's commands run outside the card (on an MC3B).
     pub fn is_external(&self) -> bool {
         self.external.is_some()
     }
 
-    /// Whether the MC3B is running (or stopping) a job of this group.
+    /// Whether the external executor is running (or stopping) a job of this group.
     pub fn external_busy(&self) -> bool {
-        self.external.as_ref().is_some_and(External::busy)
+        self.external.as_ref().is_some_and(|x| x.busy())
     }
 
-    /// The MC3B's limit switches as the device was set up: per motor, direction 0 and 1.
-    pub fn set_mc3b_limits(&mut self, limits: [[bool; 2]; MOTORS]) {
-        if let Some(x) = self.external.as_mut() {
-            x.set_limits(limits);
-        }
-    }
-
-    /// The jobs of `MCC_Home` with `orders` (per channel, 255 skips) and the go-home
-    /// parameters `cfgs` on this MC3B group, with the axes mask and the motors homed
-    /// (see [`External`]); `COMMAND_NOTACCEPTED_ERR` for a group not on an MC3B and
-    /// what the MC3B cannot home.
-    #[allow(clippy::type_complexity)]
-    pub fn plan_mc3b_home(
-        &self,
+    /// `MCC_Home` with `orders` (per channel, 255 skips) and the go-home parameters
+    /// `cfgs` on a group whose commands run outside the card: the executor's own go home.
+    /// `COMMAND_NOTACCEPTED_ERR` for a group on the card and what the executor cannot
+    /// home, then `COMMAND_NOTFINISHED_ERR` unless the group is idle; it takes no motion
+    /// command until the homing ends.
+    pub fn begin_external_home(
+        &mut self,
         orders: &[i32; AXES],
         cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
-    ) -> McclResult<(u32, Vec<Job>, [bool; MOTORS])> {
-        let x = self.external.as_ref().ok_or(McclError::NotAccepted)?;
-        x.plan_home(orders, cfgs, &self.axes)
-    }
-
-    /// `MCC_Home` on the MC3B: runs `stages` (homings, then the moves to the working
-    /// homes) on the device; axes `mask` are homed (motors `motors`). The group must be
-    /// idle; it takes no motion command until the homing ends.
-    pub fn begin_mc3b_home(
-        &mut self,
-        mask: u32,
-        stages: Vec<Job>,
-        motors: [bool; MOTORS],
     ) -> McclResult<()> {
-        if self.external.is_none() {
-            return Err(McclError::NotAccepted);
-        }
-        if self.busy() {
-            return Err(McclError::NotFinished);
-        }
-        if let Some(x) = self.external.as_mut() {
-            x.begin_home(stages, motors);
-        }
+        let busy = self.busy();
+        let x = self.external.as_mut().ok_or(McclError::NotAccepted)?;
+        let mask = x.start_home(orders, cfgs, &self.axes, busy)?;
         self.homing = mask;
         self.update_status();
         Ok(())
     }
 
-    /// `MCC_AbortGoHome` on the MC3B: the job running stops (`S`, at once: the MC3B has
-    /// no controlled stop) and the homing ends without completing.
-    pub fn abort_mc3b_home(&mut self) {
+    /// `MCC_AbortGoHome` on the external executor: the job running stops and the homing
+    /// ends without completing.
+    pub fn abort_external_home(&mut self) {
         if let Some(x) = self.external.as_mut() {
             x.abort_home();
         }
     }
 
-    /// The end of an MC3B go home, once: `HOME_DONE` or `HOME_NONE`.
+    /// The end of an external go home, once: `HOME_DONE` or `HOME_NONE`.
     pub fn take_home_result(&mut self) -> Option<i32> {
         self.external.as_mut()?.take_home_result()
     }
 
-    /// Positions from the MC3B's steps (axes on its motors), else from what has finished.
-    fn mc3b_positions(&mut self) {
+    /// Positions from the external executor (axes it drives), else from what has finished.
+    fn external_positions(&mut self) {
         if let Some(x) = &self.external {
             self.pos = x.positions(self.base, &self.offset, &self.axes);
             self.vel = [0.0; AXES];
         }
     }
 
-    /// One tick of an MC3B group: its executor runs with the group as its [`Host`]. It is
+    /// One tick of a group on an external executor: the executor runs with the group as its [`Host`]. It is
     /// out of `self.external` meanwhile and back before the status is updated, also when
     /// the tick panics (the engine's recovery then stops the device's job).
-    fn tick_mc3b(&mut self, dt: f64) {
+    fn tick_external(&mut self, dt: f64) {
         let Some(mut x) = self.external.take() else {
             return;
         };
@@ -952,7 +924,7 @@ impl GroupState {
             return;
         }
         if self.external.is_some() {
-            return self.tick_mc3b(dt);
+            return self.tick_external(dt);
         }
         // Software over-travel compares with the position before the tick (only needed,
         // and so only copied, when a check is on).
@@ -1165,7 +1137,7 @@ impl GroupState {
         let active = !self.running.is_empty()
             || !self.queue.is_empty()
             || self.inpos_wait.is_some_and(|w| w.blocks())
-            || self.external.as_ref().is_some_and(External::active);
+            || self.external.as_ref().is_some_and(|x| x.active());
         self.status = if !active && self.mode != Mode::Aborting {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
                 self.mode = Mode::Normal;
@@ -1269,7 +1241,7 @@ impl GroupState {
     }
 }
 
-/// What the MC3B executor may do with its group (see [`Host`]).
+/// What an external executor may do with its group (see [`Host`]).
 impl Host for GroupState {
     fn axes(&self) -> &[AxisMech; AXES] {
         &self.axes

@@ -1,13 +1,57 @@
-//! The calls an MC3B executor makes on its group.
+//! The door for a group whose commands run outside the virtual card's interpolator (an
+//! MC3B today: `crate::mc3b::backend::Executor`). The engine defines both sides and names
+//! no backend: the group holds its executor as a [`ExternalExecutor`] and calls it; the
+//! executor reaches the group only through [`Host`], which the group implements.
 
 use crate::config::AXES;
 use crate::engine::command::{AxisMech, Command};
+use crate::error::McclResult;
 use crate::planner::Axes;
+use crate::vendor::SYS_HOME_CONFIG;
+
+/// An executor of a group's commands outside the card (attached with
+/// [`super::GroupState::attach_external`]). The group calls it when a command is queued,
+/// each tick, when it stops or is reset, for its positions, and for a go home.
+pub trait ExternalExecutor: Send + std::fmt::Debug {
+    /// The refusals of this executor, checked when `cmd` is queued on a group with
+    /// `axes` (nothing is queued on an error).
+    fn check(&self, cmd: &Command, axes: &[AxisMech; AXES]) -> McclResult<()>;
+    /// Whether the device is running (or stopping) a job.
+    fn busy(&self) -> bool;
+    /// Whether there is work (the group's motion status counts it as running).
+    fn active(&self) -> bool;
+    /// The group stops here: a running job stops, work not handed out is dropped.
+    fn stop(&mut self);
+    /// Back to reference position 0 where the device stands (`MCC_ResetMotion`,
+    /// `MCC_UpdateParam`); a running job is stopped first.
+    fn rezero(&mut self);
+    /// One tick of `dt` seconds with the group as `host`. The group updates its status
+    /// afterwards.
+    fn tick(&mut self, host: &mut dyn Host, dt: f64);
+    /// Where the axes stand: from the device for the axes it drives, else `base` (where
+    /// what has finished left them); `offset` and `axes` are the group's.
+    fn positions(&self, base: Axes, offset: &Axes, axes: &[AxisMech; AXES]) -> Axes;
+    /// `MCC_Home` with `orders` (per channel, 255 skips) and the go-home parameters
+    /// `cfgs`: checks what the device can home (`COMMAND_NOTACCEPTED_ERR` otherwise),
+    /// then, unless `group_busy` (`COMMAND_NOTFINISHED_ERR`), starts it. Returns the
+    /// mask of the group's axes homed. Nothing starts on an error.
+    fn start_home(
+        &mut self,
+        orders: &[i32; AXES],
+        cfgs: &[SYS_HOME_CONFIG; AXES],
+        axes: &[AxisMech; AXES],
+        group_busy: bool,
+    ) -> McclResult<u32>;
+    /// `MCC_AbortGoHome`: the go home stops and ends without completing.
+    fn abort_home(&mut self);
+    /// The end of a go home, once: `HOME_DONE` or `HOME_NONE` (`crate::engine::homing`).
+    fn take_home_result(&mut self) -> Option<i32>;
+}
 
 /// What the executor needs of its group, and nothing more: the group's settings, its
 /// queue, its running commands and its position. `GroupState` implements it; the executor
 /// is taken out of the group while it runs, so none of these calls reaches it.
-pub(in crate::engine::group) trait Host {
+pub trait Host {
     /// Mechanics of every axis (steps per UU, channel, work zone).
     fn axes(&self) -> &[AxisMech; AXES];
     /// Reference offset per axis, UU.

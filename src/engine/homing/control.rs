@@ -97,8 +97,7 @@ impl Shared {
             if g.def.card.0 != card || !g.is_external() {
                 continue;
             }
-            let (mask, stages, motors) = g.plan_mc3b_home(&orders, cfgs)?;
-            g.begin_mc3b_home(mask, stages, motors)?;
+            g.begin_external_home(&orders, cfgs)?;
             self.publish(&mut g);
             self.mc3b_home_card
                 .store(i32::try_from(card).unwrap_or(-1), Ordering::Release);
@@ -115,7 +114,7 @@ impl Shared {
         if let Ok(card) = usize::try_from(self.mc3b_home_card.load(Ordering::Acquire)) {
             self.for_each_group(|g| {
                 if g.def.card.0 == card {
-                    g.abort_mc3b_home();
+                    g.abort_external_home();
                 }
             });
             return Ok(());

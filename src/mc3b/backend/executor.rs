@@ -23,10 +23,10 @@
 
 mod home;
 
-use crate::engine::group::external::{ExternalExecutor, Host};
-use crate::engine::group::{ERR_OVER_TRAVEL, TIME_EPS};
 use crate::config::AXES;
 use crate::engine::command::{AxisMech, Command, Plan};
+use crate::engine::group::external::{ExternalExecutor, Host};
+use crate::engine::group::{ERR_OVER_TRAVEL, TIME_EPS};
 use crate::engine::homing::{HOME_DONE, HOME_NONE};
 use crate::engine::snapshot::round_pulses;
 use crate::error::{McclError, McclResult};
