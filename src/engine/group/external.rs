@@ -3,8 +3,11 @@
 //! no backend: the group holds its executor as a [`ExternalExecutor`] and calls it; the
 //! executor reaches the group only through [`Host`], which the group implements.
 
+use super::{GroupState, Mode};
 use crate::config::AXES;
+use crate::engine::command::Plan;
 use crate::engine::command::{AxisMech, Command};
+use crate::error::McclError;
 use crate::error::McclResult;
 use crate::planner::Axes;
 use crate::vendor::SYS_HOME_CONFIG;
@@ -100,4 +103,201 @@ pub trait Host {
     fn set_pos(&mut self, pos: Axes);
     /// Axes `mask` start from where they stand: base and queue end are their position.
     fn rebase(&mut self, mask: u32);
+}
+
+impl GroupState {
+    /// Runs this group's commands on `executor` from now on (an MC3B: the system attaches
+    /// one to every group of the device's card).
+    pub fn attach_external(&mut self, executor: Box<dyn ExternalExecutor>) {
+        self.external = Some(executor);
+        self.external_positions();
+    }
+
+    /// Whether this group's commands run outside the card (on an MC3B).
+    pub fn is_external(&self) -> bool {
+        self.external.is_some()
+    }
+
+    /// Whether the external executor is running (or stopping) a job of this group.
+    pub fn external_busy(&self) -> bool {
+        self.external.as_ref().is_some_and(|x| x.busy())
+    }
+
+    /// `MCC_Home` with `orders` (per channel, 255 skips) and the go-home parameters
+    /// `cfgs` on a group whose commands run outside the card: the executor's own go home.
+    /// `COMMAND_NOTACCEPTED_ERR` for a group on the card and what the executor cannot
+    /// home, then `COMMAND_NOTFINISHED_ERR` unless the group is idle; it takes no motion
+    /// command until the homing ends.
+    pub fn begin_external_home(
+        &mut self,
+        orders: &[i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<()> {
+        let busy = self.busy();
+        let x = self.external.as_mut().ok_or(McclError::NotAccepted)?;
+        let mask = x.start_home(orders, cfgs, &self.axes, busy)?;
+        self.homing = mask;
+        self.update_status();
+        Ok(())
+    }
+
+    /// `MCC_AbortGoHome` on the external executor: the job running stops and the homing
+    /// ends without completing.
+    pub fn abort_external_home(&mut self) {
+        if let Some(x) = self.external.as_mut() {
+            x.abort_home();
+        }
+    }
+
+    /// The end of an external go home, once: `HOME_DONE` or `HOME_NONE`.
+    pub fn take_home_result(&mut self) -> Option<i32> {
+        self.external.as_mut()?.take_home_result()
+    }
+
+    /// Positions from the external executor (axes it drives), else from what has finished.
+    pub(super) fn external_positions(&mut self) {
+        if let Some(x) = &self.external {
+            self.pos = x.positions(self.base, &self.offset, &self.axes);
+            self.vel = [0.0; AXES];
+        }
+    }
+
+    /// One tick of a group on an external executor: the executor runs with the group as its [`Host`]. It is
+    /// out of `self.external` meanwhile and back before the status is updated, also when
+    /// the tick panics (the engine's recovery then stops the device's job).
+    pub(super) fn tick_external(&mut self, dt: f64) {
+        let Some(mut x) = self.external.take() else {
+            return;
+        };
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| x.tick(self, dt)));
+        self.external = Some(x);
+        if let Err(p) = r {
+            std::panic::resume_unwind(p);
+        }
+        self.update_status();
+    }
+}
+
+/// What an external executor may do with its group (see [`Host`]).
+impl Host for GroupState {
+    fn axes(&self) -> &[AxisMech; AXES] {
+        &self.axes
+    }
+
+    fn offset(&self) -> &Axes {
+        &self.offset
+    }
+
+    fn ot_check(&self) -> &[bool; AXES] {
+        &self.ot_check
+    }
+
+    fn base(&self) -> Axes {
+        self.base
+    }
+
+    fn speed_scale(&self) -> f64 {
+        if self.fixed_speed {
+            1.0
+        } else {
+            self.override_pct / 100.0
+        }
+    }
+
+    fn single_block(&self) -> bool {
+        self.single_block
+    }
+
+    fn may_start(&self) -> bool {
+        GroupState::may_start(self)
+    }
+
+    fn may_go_on(&self) -> bool {
+        self.error == 0 && self.mode == Mode::Normal
+    }
+
+    fn held(&self) -> bool {
+        self.mode == Mode::Held
+    }
+
+    fn queued(&self) -> usize {
+        self.queue.len()
+    }
+
+    fn front(&self) -> Option<&Command> {
+        self.queue.front()
+    }
+
+    fn pop_front(&mut self) -> Option<Command> {
+        self.queue.pop_front()
+    }
+
+    fn apply_switch(&mut self) {
+        let Some(cmd) = self.queue.front() else {
+            return;
+        };
+        match cmd.plan {
+            Plan::Blend(on) => self.blend_on = on,
+            Plan::InPos(on, mask) => {
+                if on {
+                    self.inpos_mask |= mask;
+                } else {
+                    self.inpos_mask &= !mask;
+                }
+            }
+            Plan::Output(o) => self.outputs.push(o),
+            _ => return,
+        }
+        self.queue.pop_front();
+    }
+
+    fn start(&mut self, cmd: Command) {
+        GroupState::start(self, cmd, 0.0);
+    }
+
+    fn retire(&mut self, n: usize) {
+        for _ in 0..n {
+            if let Some(done) = self.running.pop_front() {
+                self.base = done.cmd.target;
+            }
+        }
+    }
+
+    fn drop_first(&mut self) {
+        self.running.pop_front();
+    }
+
+    fn job_ended(&mut self) {
+        if self.mode == Mode::HoldAtBlockEnd {
+            self.mode = Mode::Held;
+        }
+    }
+
+    fn stop_here(&mut self) {
+        GroupState::stop_here(self);
+    }
+
+    fn set_error(&mut self, code: i32) {
+        GroupState::set_error(self, code);
+    }
+
+    fn clear_running(&mut self) {
+        self.running.clear();
+    }
+
+    fn zero_offset(&mut self, i: usize) {
+        self.offset[i] = 0.0;
+    }
+
+    fn set_pos(&mut self, pos: Axes) {
+        self.pos = pos;
+        self.vel = [0.0; AXES];
+    }
+
+    fn rebase(&mut self, mask: u32) {
+        for i in (0..AXES).filter(|&i| mask & (1 << i) != 0) {
+            self.base[i] = self.pos[i];
+            self.queue_end[i] = self.pos[i];
+        }
+    }
 }
