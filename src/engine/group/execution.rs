@@ -97,14 +97,14 @@ impl GroupState {
         if cmd.is_motion() {
             self.inpos_status = [0; AXES];
         }
-        if let Some(p) = self.pending_override.take() {
+        if let Some(p) = self.rate.pending_override.take() {
             self.override_pct = p;
             if self.mode == Mode::Normal {
                 self.retarget_rate();
             }
         }
-        self.ld_index = self.ld_index.wrapping_add(1);
-        self.last_started = Some((cmd.index, self.ld_index));
+        self.cmd_index.ld = self.cmd_index.ld.wrapping_add(1);
+        self.cmd_index.last_started = Some((cmd.index, self.cmd_index.ld));
         self.note(Note::Start {
             index: cmd.index,
             ctype: cmd.ctype,
@@ -182,8 +182,8 @@ impl GroupState {
             }
             if self.mode == Mode::HoldAtBlockEnd {
                 self.mode = Mode::Held;
-                self.rate = 0.0;
-                self.ramp = None;
+                self.rate.value = 0.0;
+                self.rate.ramp = None;
                 return;
             }
             if !self.may_start() {
@@ -227,7 +227,7 @@ impl GroupState {
     }
 
     fn finish_abort(&mut self) {
-        if self.mode == Mode::Aborting && self.ramp.is_none() && self.rate == 0.0 {
+        if self.mode == Mode::Aborting && self.rate.ramp.is_none() && self.rate.value == 0.0 {
             self.compute_pos_vel();
             self.stop_here();
         }
@@ -243,7 +243,7 @@ impl GroupState {
             let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
                 0.0
             } else {
-                self.rate
+                self.rate.value
             };
             // Branch-free, so that both loops vectorize. `0.0 +` as in the sums below
             // (it turns -0.0 into 0.0).
@@ -266,7 +266,7 @@ impl GroupState {
             let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
                 0.0
             } else {
-                self.rate
+                self.rate.value
             };
             for i in 0..AXES {
                 if only && self.base[i] == s[i] {

@@ -162,9 +162,10 @@ impl GroupState {
         }
     }
 
-    /// One tick of a group on an external executor: the executor runs with the group as its [`Host`]. It is
-    /// out of `self.external` meanwhile and back before the status is updated, also when
-    /// the tick panics (the engine's recovery then stops the device's job).
+    /// One tick of a group on an external executor: it runs with the group as its
+    /// [`Host`]. It is out of `self.external` meanwhile and back before the status is
+    /// updated, also when the tick panics (the engine's recovery then stops the device's
+    /// job).
     pub(super) fn tick_external(&mut self, dt: f64) {
         let Some(mut x) = self.external.take() else {
             return;

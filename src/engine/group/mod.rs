@@ -3,14 +3,21 @@
 //!
 //! Execution model. Every running command has its own time τ. Each tick advances τ by
 //! ∫ rate dt, where `rate` is the group's time scale: the override ratio (1.0 = 100 %), 0
-//! while held or after an abort. Rate changes ramp linearly ([`crate::planner::RateRamp`]) so speed
-//! changes smoothly and position never jumps. The command position is
+//! while held or after an abort. Rate changes ramp linearly
+//! ([`crate::planner::RateRamp`]) so speed changes smoothly and position never jumps. The
+//! command position is
 //! `base + Σ (command.sample(τ) − command.start)` over the running commands; with
 //! blending on, the next general motion starts when the running one begins to
 //! decelerate, so two commands run at once and their displacements add (docs/decisions.md).
 //! A command that ends inside a tick hands the rest of the tick to the next one, so
 //! consecutive commands keep exact timing. Whenever the last running command ends, the
 //! position becomes its exact planned end: nothing accumulates over millions of moves.
+//!
+//! Files, one concept each: `queue.rs` (queuing, indices, single block), `execution.rs`
+//! (the running commands tick by tick), `rate.rs` (the time scale and what ramps it:
+//! override, feed, hold, abort), `inpos.rs` (the in-position check), `status.rs` (motion
+//! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
+//! `external.rs` (the door to an executor outside the card, e.g. the MC3B).
 
 use super::command::{AxisMech, Command, Ctx, Output, Settings};
 use super::snapshot::Info;
@@ -32,7 +39,8 @@ use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
-use rate::{Mode, Ramp};
+use queue::CommandIndex;
+use rate::{Mode, RateState};
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
 pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();
@@ -69,10 +77,8 @@ pub struct GroupState {
     /// Reference position = user position + offset (MCC_DefinePos moves the offset).
     offset: Axes,
     vel: Axes,
-    rate: f64,
-    ramp: Option<Ramp>,
-    /// Override to apply when the next command starts (`MCC_OverrideSpeedEx(r, FALSE)`).
-    pending_override: Option<f64>,
+    /// The time scale and its ramp (`rate.rs`).
+    rate: RateState,
     mode: Mode,
     single_block: bool,
     single_block_credit: bool,
@@ -81,10 +87,8 @@ pub struct GroupState {
     /// In-position check axes enabled by queued markers (used by the in-position check).
     pub inpos_mask: u32,
     error: i32,
-    next_index: i32,
-    auto_index: bool,
-    ld_index: i32,
-    last_started: Option<(i32, i32)>,
+    /// Command indices (`queue.rs`).
+    cmd_index: CommandIndex,
     status: i32,
     published_info: Option<Info>,
     /// Software over-travel check per axis (`MCC_SetOverTravelCheck`).
@@ -131,19 +135,14 @@ impl GroupState {
             pos: [0.0; AXES],
             offset: [0.0; AXES],
             vel: [0.0; AXES],
-            rate: 1.0,
-            ramp: None,
-            pending_override: None,
+            rate: RateState::default(),
             mode: Mode::Normal,
             single_block: false,
             single_block_credit: false,
             blend_on: false,
             inpos_mask: 0,
             error: 0,
-            next_index: 0,
-            auto_index: true,
-            ld_index: 0,
-            last_started: None,
+            cmd_index: CommandIndex::default(),
             status: c::GMS_STOP,
             published_info: None,
             ot_check: [false; AXES],

@@ -10,6 +10,31 @@ use crate::vendor::consts as c;
 /// Commands a queue grows by at least when it is full (doubling from there on).
 const QUEUE_MIN_GROWTH: usize = 16;
 
+/// The indices of a group's commands (`MCC_SetCommandIndex`, `MCC_GetCommandInfo`).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct CommandIndex {
+    /// The index the next queued command gets.
+    pub(super) next: i32,
+    /// Whether each queued command counts the index up; off after
+    /// `MCC_SetCommandIndex` with manual numbering (every command gets the index set).
+    pub(super) auto: bool,
+    /// Commands started since `MCC_ResetCommandIndexLD` (`nCommandIndex_LD`).
+    pub(super) ld: i32,
+    /// The last command started: its index and its `ld` count.
+    pub(super) last_started: Option<(i32, i32)>,
+}
+
+impl Default for CommandIndex {
+    fn default() -> Self {
+        CommandIndex {
+            next: 0,
+            auto: true,
+            ld: 0,
+            last_started: None,
+        }
+    }
+}
+
 impl GroupState {
     /// Commands waiting in the queue (not counting those running).
     pub fn queued(&self) -> usize {
@@ -45,9 +70,9 @@ impl GroupState {
                 return Err(McclError::BufferFull);
             }
         }
-        cmd.index = self.next_index;
-        if self.auto_index {
-            self.next_index = self.next_index.wrapping_add(1) & 0x7FFF_FFFF;
+        cmd.index = self.cmd_index.next;
+        if self.cmd_index.auto {
+            self.cmd_index.next = self.cmd_index.next.wrapping_add(1) & 0x7FFF_FFFF;
         }
         match cmd.plan {
             Plan::Blend(on) => self.blend_queued = on,
@@ -62,18 +87,18 @@ impl GroupState {
 
     /// Index management (`MCC_ResetCommandIndex`, `MCC_SetCommandIndex`).
     pub fn set_command_index(&mut self, index: i32, manual: bool) {
-        self.next_index = index;
-        self.auto_index = !manual;
+        self.cmd_index.next = index;
+        self.cmd_index.auto = !manual;
     }
 
     /// The index the next queued command gets.
     pub fn next_command_index(&self) -> i32 {
-        self.next_index
+        self.cmd_index.next
     }
 
     /// `MCC_ResetCommandIndexLD`.
     pub fn reset_ld_index(&mut self) {
-        self.ld_index = 0;
+        self.cmd_index.ld = 0;
     }
 
     /// Single-block mode: after each command the group waits for `MCC_RunSingleBlock`.

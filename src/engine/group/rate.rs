@@ -21,6 +21,28 @@ pub(super) enum Mode {
     Aborting,
 }
 
+/// The group's rate: its time scale (1.0 = 100 %, 0 while held or after an abort), the
+/// ramp it is changing by, and an override waiting for the next command.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct RateState {
+    /// The time scale now.
+    pub(super) value: f64,
+    /// The rate change in progress.
+    pub(super) ramp: Option<Ramp>,
+    /// Override to apply when the next command starts (`MCC_OverrideSpeedEx(r, FALSE)`).
+    pub(super) pending_override: Option<f64>,
+}
+
+impl Default for RateState {
+    fn default() -> Self {
+        RateState {
+            value: 1.0,
+            ramp: None,
+            pending_override: None,
+        }
+    }
+}
+
 /// A rate change in progress.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Ramp {
@@ -79,13 +101,13 @@ impl GroupState {
             block_end: at_block_end,
         });
         self.queue.clear();
-        self.pending_override = None;
+        self.rate.pending_override = None;
         if at_block_end {
             self.queue_end = self.running.back().map_or(self.pos, |r| r.cmd.target);
             self.update_status();
             return;
         }
-        let held = matches!(self.mode, Mode::Held) && self.rate == 0.0;
+        let held = matches!(self.mode, Mode::Held) && self.rate.value == 0.0;
         if dec_s <= 0.0 || held || self.running.is_empty() {
             self.stop_here();
         } else {
@@ -106,9 +128,9 @@ impl GroupState {
         self.base = self.pos;
         self.queue_end = self.pos;
         self.vel = [0.0; AXES];
-        self.ramp = None;
+        self.rate.ramp = None;
         self.mode = Mode::Normal;
-        self.rate = self.target_rate();
+        self.rate.value = self.target_rate();
     }
 
     /// `MCC_OverrideSpeedEx`: the new ratio applies now (ramped with the acc or dec
@@ -116,12 +138,12 @@ impl GroupState {
     pub fn override_speed(&mut self, pct: f64, instant: bool) {
         self.override_pct = pct;
         if instant {
-            self.pending_override = None;
+            self.rate.pending_override = None;
             if self.mode == Mode::Normal || self.mode == Mode::HoldAtBlockEnd {
                 self.retarget_rate();
             }
         } else {
-            self.pending_override = Some(pct);
+            self.rate.pending_override = Some(pct);
         }
     }
 
@@ -140,7 +162,7 @@ impl GroupState {
         if let Some(f) = running_feed {
             if f > 0.0 {
                 self.override_speed(100.0 * v / f, true);
-                self.pending_override = Some(100.0);
+                self.rate.pending_override = Some(100.0);
             }
         }
     }
@@ -155,7 +177,7 @@ impl GroupState {
 
     pub(super) fn retarget_rate(&mut self) {
         let target = self.target_rate();
-        let t = if target >= self.rate {
+        let t = if target >= self.rate.value {
             self.current_acc_s()
         } else {
             self.current_dec_s()
@@ -188,12 +210,12 @@ impl GroupState {
 
     fn ramp_to(&mut self, target: f64, secs: f64) {
         // With nothing moving there is no speed to smooth: the new rate holds at once.
-        if secs <= 0.0 || (target - self.rate).abs() < 1e-15 || self.running.is_empty() {
-            self.rate = target;
-            self.ramp = None;
+        if secs <= 0.0 || (target - self.rate.value).abs() < 1e-15 || self.running.is_empty() {
+            self.rate.value = target;
+            self.rate.ramp = None;
         } else {
-            self.ramp = Some(Ramp {
-                ramp: RateRamp::new(self.rate, target, secs),
+            self.rate.ramp = Some(Ramp {
+                ramp: RateRamp::new(self.rate.value, target, secs),
                 elapsed: 0.0,
             });
         }
@@ -201,15 +223,15 @@ impl GroupState {
 
     /// Advances the rate by `dt`; returns ∫ rate dt over the tick.
     pub(super) fn advance_rate(&mut self, dt: f64) -> f64 {
-        match &mut self.ramp {
-            None => self.rate * dt,
+        match &mut self.rate.ramp {
+            None => self.rate.value * dt,
             Some(r) => {
                 let d = r.ramp.integral(r.elapsed, r.elapsed + dt);
                 r.elapsed += dt;
-                self.rate = r.ramp.rate(r.elapsed);
+                self.rate.value = r.ramp.rate(r.elapsed);
                 if r.ramp.done(r.elapsed) {
-                    self.rate = r.ramp.to_rate();
-                    self.ramp = None;
+                    self.rate.value = r.ramp.to_rate();
+                    self.rate.ramp = None;
                 }
                 d
             }

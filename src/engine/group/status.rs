@@ -22,8 +22,8 @@ impl GroupState {
         self.status = if !active && self.mode != Mode::Aborting {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
                 self.mode = Mode::Normal;
-                self.rate = self.target_rate();
-                self.ramp = None;
+                self.rate.value = self.target_rate();
+                self.rate.ramp = None;
             }
             c::GMS_STOP
         } else if matches!(self.mode, Mode::Held)
@@ -99,7 +99,7 @@ impl GroupState {
                 dfAcctime: r.cmd.acc_ms,
                 dfDectime: r.cmd.dec_ms,
                 nMotionPhase: phase,
-                nCommandIndex_LD: self.last_started.map_or(0, |l| l.1),
+                nCommandIndex_LD: self.cmd_index.last_started.map_or(0, |l| l.1),
             };
         }
         Info {
