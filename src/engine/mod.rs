@@ -1,10 +1,17 @@
 //! The virtual card's engine: one thread per running system that ticks every interpolation
-//! period on the [`Clock`], advances every group, and publishes snapshots that status
-//! calls read without taking any lock.
+//! period on the [`Clock`](crate::clock::Clock), advances every group, and publishes
+//! snapshots that status calls read without taking any lock.
 //!
 //! Locks: each group has its own mutex (a call on group 3 never waits for group 5); the
 //! engine thread takes one group lock at a time and never holds one while user code runs,
 //! so a callback may call any MCC_* function. Order: `system::SYSTEM`, then a group.
+//!
+//! Files, one concept each: `shared.rs` ([`Shared`], what the engine thread and the
+//! program's threads share), `running.rs` ([`Engine`]: the thread's start, loop, stop and
+//! join), `tick.rs` (one tick of the card), `poll.rs` (polls that let virtual time run),
+//! `safety.rs` (checks against the machine), `snapshot.rs`, `trace.rs`, `isr.rs`
+//! (routines), `command.rs` (planning a command), `homing.rs` and `homing/` (go home of
+//! one card), `group/` (one group), `thread.rs` (real-time settings of the thread).
 
 pub mod command;
 pub mod group;
