@@ -22,8 +22,8 @@
 //! same times) — an estimate.
 //!
 //! Files: `convert.rs` (units, speeds, chords), `job.rs` (jobs, faults, reports),
-//! `link.rs` (the group–worker meeting point), `executor.rs` (a group's commands as jobs,
-//! and its go home in `executor/home.rs`), `worker.rs` (the blocking I/O and the
+//! `link.rs` (the group–worker meeting point), `executor.rs` (a group's commands as jobs;
+//! the batching in `executor/batch.rs`, its go home in `executor/home.rs`), `worker.rs` (the blocking I/O and the
 //! model), `limits.rs` (limit masks), `device.rs` (the worker's thread, opening the
 //! devices of a configuration; the system attaches the groups).
 

@@ -7,8 +7,9 @@ use crate::config::{default_mac_param, GroupDef};
 use crate::engine::command::AxisMech;
 use crate::engine::group::GroupState;
 use crate::mc3b::backend::tests::{worker, Rec};
+use crate::mc3b::backend::Ramp;
 use crate::mc3b::backend::{chord_count, Worker, ERR_MC3B_LINK};
-use crate::planner::Plane;
+use crate::planner::{Path, Plane};
 use crate::vendor::consts as c;
 
 /// 100 steps per UU on every axis.
