@@ -20,12 +20,10 @@ const LAYERS: &[&str] = &[
     "planner",      // pure trajectory planning
     "machine",      // the simulated machine
     "card",         // the card's peripherals
-    // The MC3B protocol, device and backend. It sits below the engine for now: the group's
-    // MC3B executor (engine/group/external) still names the backend's jobs and link. The
-    // planned order puts backends above the engine, reached through a trait the engine
-    // defines; when the executor moves behind one, move this line below "engine".
+    "engine",       // the tick, the groups, routines
+    // The MC3B protocol, device and backend: above the engine, whose groups reach its
+    // executor only through the trait the engine defines (engine::group::external).
     "mc3b",
-    "engine", // the tick, the groups, routines
     "system", // init and close, wiring
     "ffi",    // the C entry points
 ];

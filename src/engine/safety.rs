@@ -3,8 +3,11 @@
 //! limit switches, tracking error, and pulse speed and acceleration limits.
 
 use super::group::GroupState;
+use super::shared::Shared;
+use crate::config::{AXES, GROUPS};
 use crate::error_record::ErrorRecord;
 use crate::machine::Machine;
+use std::sync::atomic::Ordering;
 
 /// Error record: emergency stop.
 pub const ERR_EMERGENCY: i32 = ErrorRecord::EmergencyStop.code();
@@ -86,4 +89,57 @@ pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
         }
     }
     None
+}
+
+impl Shared {
+    /// The checks that need the machine: emergency stop (0xF102), hardware limit
+    /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
+    /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
+    /// group at once (its queue is dropped).
+    pub(super) fn safety(
+        &self,
+        machine: &Machine,
+        full: bool,
+        dt: f64,
+        own_checks: &[bool; GROUPS],
+    ) {
+        let limit_mode = self.limit_check.load(Ordering::Relaxed);
+        // Checks every moving group needs; otherwise only groups with checks of their own
+        // (tracking error, in-position) are looked at again.
+        let global =
+            limit_mode >= 0 || machine.emergency.iter().any(|&e| e) || machine.pulse_limits_set;
+        for (n, g) in self.groups.iter().enumerate() {
+            if !global && !own_checks[n] {
+                continue;
+            }
+            let mut g = g.lock();
+            if (!g.busy() && !g.has_safety_checks()) || g.homing() != 0 {
+                // Homing watches its own limit switches and emergency stop.
+                continue;
+            }
+            if g.inpos_waiting() {
+                let mask = g.inpos_mask_waiting();
+                let errs: [Option<f64>; AXES] = std::array::from_fn(|i| {
+                    let (card, ch) = g.axes[i].channel?;
+                    let chan = machine.channel(card, ch)?;
+                    let f = g.axes[i].factor.abs();
+                    (mask & (1 << i) != 0 && f > 0.0).then(|| chan.error_count() as f64 / f)
+                });
+                g.check_inpos(&errs, dt);
+                if full {
+                    self.publish(&mut g);
+                } else {
+                    self.status[g.index].store(g.status(), Ordering::Release);
+                }
+            }
+            if let Some(code) = check(&g, machine, limit_mode) {
+                g.stop_for(code.record);
+                if full {
+                    self.publish(&mut g);
+                } else {
+                    self.status[g.index].store(g.status(), Ordering::Release);
+                }
+            }
+        }
+    }
 }

@@ -1,749 +1,304 @@
-//! A group whose channels are an MC3B (`mc3b_port` in `MCCL_SIM`): its queued commands
-//! run on the device instead of the virtual card's interpolator.
-//!
-//! Each tick, while the device is idle, the executor takes the next commands off the
-//! group's queue and hands them to the device as one job ([`crate::mc3b::backend`]):
-//!
-//! * lines and the chords of arcs, circles and helices become synchronous moves; the
-//!   consecutive ones that share feed speed and acc/dec times go into one chained batch
-//!   of at most 100 moves (an arc of more chords continues in the next batch);
-//! * a point-to-point command (`MCC_PtP`, `MCC_SyncPtP`, every jog) becomes one
-//!   independent move per motor;
-//! * a delay waits on the engine's clock; queued output changes happen between batches.
-//!
-//! Positions come from the steps the device confirmed: while a job runs the group
-//! reports where it started; when the device reports every moving motor idle the
-//! group's axes are at the job's end (whole steps) and its commands are finished. After
-//! a stop (`MCC_AbortMotion`, a safety check) the position is the worker's estimate.
-//!
-//! [`External`] owns this state; the group calls it (attach, check a command, tick,
-//! stop, positions, go home) and it reaches the group's queue, running commands and
-//! position only through the [`Host`] calls the group implements.
+//! The door for a group whose commands run outside the virtual card's interpolator (an
+//! MC3B today: `crate::mc3b::backend::Executor`). The engine defines both sides and names
+//! no backend: the group holds its executor as a [`ExternalExecutor`] and calls it; the
+//! executor reaches the group only through [`Host`], which the group implements.
 
-mod home;
-mod host;
-
-pub(super) use host::Host;
-
-use super::{ERR_OVER_TRAVEL, TIME_EPS};
+use super::{GroupState, Mode};
 use crate::config::AXES;
-use crate::engine::command::{AxisMech, Command, Plan};
-use crate::engine::homing::{HOME_DONE, HOME_NONE};
-use crate::engine::snapshot::round_pulses;
-use crate::error::{McclError, McclResult};
-use crate::mc3b::backend::{
-    self, Job, Link, Outcome, Ramp, Seg, Speeds, CHORD_TOLERANCE_STEPS, MAX_BATCH, MAX_STEPS,
-    MOTORS,
-};
-use crate::planner::{Axes, Path};
-use home::HomeRun;
-use std::collections::VecDeque;
-use std::sync::Arc;
+use crate::engine::command::Plan;
+use crate::engine::command::{AxisMech, Command};
+use crate::error::McclError;
+use crate::error::McclResult;
+use crate::planner::Axes;
+use crate::vendor::SYS_HOME_CONFIG;
 
-/// What a synchronous move shares with the others of its batch.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum SegKind {
-    /// A line: feed speed and acc/dec times of its command.
-    Line { feed: f64, acc_ms: f64, dec_ms: f64 },
-    /// A chord of an arc: the feed speed; the MC3B's fastest ramps.
-    Chord { feed: f64 },
-}
-
-impl SegKind {
-    fn ramp(self) -> Ramp {
-        match self {
-            SegKind::Line { acc_ms, dec_ms, .. } => Ramp::Times {
-                acc_s: acc_ms / 1000.0,
-                dec_s: dec_ms / 1000.0,
-            },
-            SegKind::Chord { .. } => Ramp::Fastest,
-        }
-    }
-
-    fn feed(self) -> f64 {
-        match self {
-            SegKind::Line { feed, .. } | SegKind::Chord { feed } => feed,
-        }
-    }
-}
-
-/// A synchronous move of a started command, not handed to the device yet.
-#[derive(Debug, Clone, Copy)]
-struct Pending {
-    seg: Seg,
-    kind: SegKind,
-    /// The last move of its command.
-    ends_cmd: bool,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Phase {
-    /// Nothing handed out.
-    Idle,
-    /// Job `id` runs; `retire` commands end with it.
-    Busy { id: u64, retire: usize },
-    /// Job `id` was asked to stop; waiting for its report.
-    Stopping { id: u64 },
-    /// A queued delay runs (seconds left).
-    Delay { left: f64 },
-}
-
-/// The MC3B executor of a group: it owns everything about the device's side (the link,
-/// the step counts, the moves not handed out yet, the job or delay running, a go home)
-/// and reaches the group only through [`Host`].
-#[derive(Debug)]
-pub struct External {
-    link: Arc<Link>,
-    /// Motor (= channel 0..2) per group axis.
-    motor: [Option<usize>; AXES],
-    /// Axes on channels 3..7 of the card: the MC3B has no such motor.
-    blocked: u32,
-    /// Device steps at reference position 0.
-    origin: [i64; MOTORS],
-    /// Device steps as last confirmed (or estimated after a stop).
-    steps: [i64; MOTORS],
-    /// Device steps at the end of the moves handed out or pending.
-    planned: [i64; MOTORS],
-    pending: VecDeque<Pending>,
-    phase: Phase,
-    next_id: u64,
-    /// Take the position of the report awaited as the new origin (`MCC_ResetMotion`).
-    rezero: bool,
-    /// Per motor: a limit switch is set for direction 0 and for direction 1.
-    limits: [[bool; 2]; MOTORS],
-    /// A go home in progress on the device (`MCC_Home`).
-    home: Option<HomeRun>,
-}
-
-/// Every axis, one bit each.
-const ALL_AXES: u32 = (1 << AXES) - 1;
-
-/// What one attempt to start work did.
-enum Fill {
-    /// A job or a delay started, or nothing can start now.
-    Done,
-    /// Commands that need no step ended at once: try again.
-    Retired,
-}
-
-/// The next queued command as the batching sees it.
-enum Next {
-    /// A blending or in-position switch.
-    Switch,
-    /// An output change.
-    Output,
-    /// A line or an arc (its moves share `kind`).
-    Path(SegKind),
-    /// A point-to-point command.
-    Ptp { start: Axes, target: Axes },
-    /// A delay of `s` seconds.
-    Delay(f64),
-}
-
-impl External {
-    /// The executor of a group whose axes are `axes`, on the MC3B behind `link`: axes on
-    /// channels 0..2 are its motors 0..2; motion of axes on channels 3..7 is refused.
-    pub(super) fn new(link: Arc<Link>, axes: &[AxisMech; AXES]) -> External {
-        let mut motor = [None; AXES];
-        let mut blocked = 0;
-        for (i, a) in axes.iter().enumerate() {
-            if let Some((_, ch)) = a.channel {
-                if ch < MOTORS {
-                    motor[i] = Some(ch);
-                } else {
-                    blocked |= 1 << i;
-                }
-            }
-        }
-        External {
-            link,
-            motor,
-            blocked,
-            origin: [0; MOTORS],
-            steps: [0; MOTORS],
-            planned: [0; MOTORS],
-            pending: VecDeque::new(),
-            phase: Phase::Idle,
-            next_id: 1,
-            rezero: false,
-            limits: [[false; 2]; MOTORS],
-            home: None,
-        }
-    }
-
-    /// Back to reference position 0 where the device is (`MCC_ResetMotion`,
+/// An executor of a group's commands outside the card (attached with
+/// [`super::GroupState::attach_external`]). The group calls it when a command is queued,
+/// each tick, when it stops or is reset, for its positions, and for a go home.
+pub trait ExternalExecutor: Send + std::fmt::Debug {
+    /// The refusals of this executor, checked when `cmd` is queued on a group with
+    /// `axes` (nothing is queued on an error).
+    fn check(&self, cmd: &Command, axes: &[AxisMech; AXES]) -> McclResult<()>;
+    /// Whether the device is running (or stopping) a job.
+    fn busy(&self) -> bool;
+    /// Whether there is work (the group's motion status counts it as running).
+    fn active(&self) -> bool;
+    /// The group stops here: a running job stops, work not handed out is dropped.
+    fn stop(&mut self);
+    /// Back to reference position 0 where the device stands (`MCC_ResetMotion`,
     /// `MCC_UpdateParam`); a running job is stopped first.
-    pub(super) fn rezeroed(mut self) -> External {
-        self.pending.clear();
-        self.home = None;
-        match self.phase {
-            Phase::Busy { id, .. } | Phase::Stopping { id } => {
-                self.link.request_stop(id);
-                self.phase = Phase::Stopping { id };
-                self.rezero = true;
-            }
-            Phase::Idle | Phase::Delay { .. } => {
-                self.phase = Phase::Idle;
-                self.origin = self.steps;
-            }
-        }
-        self.planned = self.steps;
-        self
+    fn rezero(&mut self);
+    /// One tick of `dt` seconds with the group as `host`. The group updates its status
+    /// afterwards.
+    fn tick(&mut self, host: &mut dyn Host, dt: f64);
+    /// Where the axes stand: from the device for the axes it drives, else `base` (where
+    /// what has finished left them); `offset` and `axes` are the group's.
+    fn positions(&self, base: Axes, offset: &Axes, axes: &[AxisMech; AXES]) -> Axes;
+    /// `MCC_Home` with `orders` (per channel, 255 skips) and the go-home parameters
+    /// `cfgs`: checks what the device can home (`COMMAND_NOTACCEPTED_ERR` otherwise),
+    /// then, unless `group_busy` (`COMMAND_NOTFINISHED_ERR`), starts it. Returns the
+    /// mask of the group's axes homed. Nothing starts on an error.
+    fn start_home(
+        &mut self,
+        orders: &[i32; AXES],
+        cfgs: &[SYS_HOME_CONFIG; AXES],
+        axes: &[AxisMech; AXES],
+        group_busy: bool,
+    ) -> McclResult<u32>;
+    /// `MCC_AbortGoHome`: the go home stops and ends without completing.
+    fn abort_home(&mut self);
+    /// The end of a go home, once: `HOME_DONE` or `HOME_NONE` (`crate::engine::homing`).
+    fn take_home_result(&mut self) -> Option<i32>;
+}
+
+/// What the executor needs of its group, and nothing more: the group's settings, its
+/// queue, its running commands and its position. `GroupState` implements it; the executor
+/// is taken out of the group while it runs, so none of these calls reaches it.
+pub trait Host {
+    /// Mechanics of every axis (steps per UU, channel, work zone).
+    fn axes(&self) -> &[AxisMech; AXES];
+    /// Reference offset per axis, UU.
+    fn offset(&self) -> &Axes;
+    /// Software over-travel check per axis.
+    fn ot_check(&self) -> &[bool; AXES];
+    /// Where the finished commands leave the axes.
+    fn base(&self) -> Axes;
+    /// Factor of every speed handed to the device: the override ratio, 1 when the speed
+    /// is fixed.
+    fn speed_scale(&self) -> f64;
+    /// Single-block mode is on.
+    fn single_block(&self) -> bool;
+    /// A new command may start now.
+    fn may_start(&self) -> bool;
+    /// Moves of a started command may go on: no error record, not held.
+    fn may_go_on(&self) -> bool;
+    /// The group is held (a delay pauses).
+    fn held(&self) -> bool;
+    /// Commands waiting in the queue.
+    fn queued(&self) -> usize;
+    /// The first queued command.
+    fn front(&self) -> Option<&Command>;
+    /// Takes the first queued command off the queue.
+    fn pop_front(&mut self) -> Option<Command>;
+    /// Takes the queued switch at the front (blending, in-position, output) and applies
+    /// it.
+    fn apply_switch(&mut self);
+    /// `cmd` starts running.
+    fn start(&mut self, cmd: Command);
+    /// The first `n` running commands finished: the axes' base is their target.
+    fn retire(&mut self, n: usize);
+    /// The first running command ends without a move (a delay, a PtP of no step).
+    fn drop_first(&mut self);
+    /// A job ended: a hold at the block end takes effect now.
+    fn job_ended(&mut self);
+    /// Stops at once, dropping what is queued and running.
+    fn stop_here(&mut self);
+    /// Records an error.
+    fn set_error(&mut self, code: i32);
+    /// Nothing runs any more.
+    fn clear_running(&mut self);
+    /// The reference offset of axis `i` becomes 0 (it reached its working home).
+    fn zero_offset(&mut self, i: usize);
+    /// The axes stand at `pos`.
+    fn set_pos(&mut self, pos: Axes);
+    /// Axes `mask` start from where they stand: base and queue end are their position.
+    fn rebase(&mut self, mask: u32);
+}
+
+impl GroupState {
+    /// Runs this group's commands on `executor` from now on (an MC3B: the system attaches
+    /// one to every group of the device's card).
+    pub fn attach_external(&mut self, executor: Box<dyn ExternalExecutor>) {
+        self.external = Some(executor);
+        self.external_positions();
     }
 
-    /// Whether the MC3B is running (or stopping) a job.
-    pub(super) fn busy(&self) -> bool {
-        matches!(self.phase, Phase::Busy { .. } | Phase::Stopping { .. })
+    /// Whether this group's commands run outside the card (on an MC3B).
+    pub fn is_external(&self) -> bool {
+        self.external.is_some()
     }
 
-    /// Whether there is work (for the motion status).
-    pub(super) fn active(&self) -> bool {
-        self.phase != Phase::Idle || !self.pending.is_empty()
+    /// Whether the external executor is running (or stopping) a job of this group.
+    pub fn external_busy(&self) -> bool {
+        self.external.as_ref().is_some_and(|x| x.busy())
     }
 
-    /// The refusals of an MC3B group, checked when a command is queued:
-    /// `ABORT_NOT_FINISH_ERR` while a stop is confirmed; `COMMAND_NOTACCEPTED_ERR` for
-    /// blending and in-position checks (the MC3B has neither); `PARAMETER_ERR` for motion
-    /// of an axis on channels 3..7 or a move of more than 2³²−1 steps.
-    pub(super) fn check(&self, cmd: &Command, axes: &[AxisMech; AXES]) -> McclResult<()> {
-        if matches!(self.phase, Phase::Stopping { .. }) {
-            return Err(McclError::AbortNotFinished);
-        }
-        let points = match &cmd.plan {
-            Plan::Blend(true) | Plan::InPos(true, _) => return Err(McclError::NotAccepted),
-            Plan::Path(m) => backend::chord_points(&m.path, chord_tolerance(axes)),
-            Plan::Ptp(_) => vec![cmd.target],
-            _ => return Ok(()),
-        };
-        let mut prev = cmd.start();
-        for p in &points {
-            for i in 0..AXES {
-                let d = p[i] - prev[i];
-                if d != 0.0 && self.blocked & (1 << i) != 0 {
-                    return Err(McclError::Parameter);
-                }
-                if self.motor[i].is_some() && (d * axes[i].factor).abs() > MAX_STEPS as f64 {
-                    return Err(McclError::Parameter);
-                }
-            }
-            prev = *p;
-        }
+    /// `MCC_Home` with `orders` (per channel, 255 skips) and the go-home parameters
+    /// `cfgs` on a group whose commands run outside the card: the executor's own go home.
+    /// `COMMAND_NOTACCEPTED_ERR` for a group on the card and what the executor cannot
+    /// home, then `COMMAND_NOTFINISHED_ERR` unless the group is idle; it takes no motion
+    /// command until the homing ends.
+    pub fn begin_external_home(
+        &mut self,
+        orders: &[i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<()> {
+        let busy = self.busy();
+        let x = self.external.as_mut().ok_or(McclError::NotAccepted)?;
+        let mask = x.start_home(orders, cfgs, &self.axes, busy)?;
+        self.homing = mask;
+        self.update_status();
         Ok(())
     }
 
-    /// The group stops here: a running job stops (`S`), pending moves are dropped.
-    pub(super) fn stop(&mut self) {
-        match self.phase {
-            Phase::Busy { id, .. } => {
-                self.link.request_stop(id);
-                self.phase = Phase::Stopping { id };
-            }
-            Phase::Delay { .. } => self.phase = Phase::Idle,
-            Phase::Idle | Phase::Stopping { .. } => {}
-        }
-        self.pending.clear();
-        self.planned = self.steps;
-    }
-
-    /// [`External::stop`], then the group's own stop.
-    fn stop_group(&mut self, host: &mut dyn Host) {
-        self.stop();
-        host.stop_here();
-    }
-
-    /// The error record of a failed job: a limit stop names the axis on its motor.
-    fn fault_record(&self, f: backend::Fault) -> i32 {
-        match f {
-            backend::Fault::Limit(m) => {
-                let axis = self.motor.iter().position(|&mm| mm == Some(m)).unwrap_or(0);
-                f.record() + axis as i32
-            }
-            _ => f.record(),
+    /// `MCC_AbortGoHome` on the external executor: the job running stops and the homing
+    /// ends without completing.
+    pub fn abort_external_home(&mut self) {
+        if let Some(x) = self.external.as_mut() {
+            x.abort_home();
         }
     }
 
-    /// The MC3B's limit switches as the device was set up: per motor, direction 0 and 1.
-    pub(super) fn set_limits(&mut self, limits: [[bool; 2]; MOTORS]) {
-        self.limits = limits;
+    /// The end of an external go home, once: `HOME_DONE` or `HOME_NONE`.
+    pub fn take_home_result(&mut self) -> Option<i32> {
+        self.external.as_mut()?.take_home_result()
     }
 
-    /// The jobs of `MCC_Home` on this group's MC3B (see [`home::plan`]).
-    #[allow(clippy::type_complexity)]
-    pub(super) fn plan_home(
-        &self,
-        orders: &[i32; AXES],
-        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
-        axes: &[AxisMech; AXES],
-    ) -> McclResult<(u32, Vec<Job>, [bool; MOTORS])> {
-        home::plan(&self.motor, &self.limits, orders, cfgs, axes)
-    }
-
-    /// A go home starts: `stages` (homings, then the moves to the working homes) run on
-    /// the device; `motors` are homed.
-    pub(super) fn begin_home(&mut self, stages: Vec<Job>, motors: [bool; MOTORS]) {
-        self.home = Some(HomeRun {
-            stages: stages.into(),
-            current: None,
-            motors,
-            aborted: false,
-            result: None,
-        });
-    }
-
-    /// `MCC_AbortGoHome`: the job running stops (`S`, at once: the MC3B has no
-    /// controlled stop) and the homing ends without completing.
-    pub(super) fn abort_home(&mut self) {
-        if let Some(h) = self.home.as_mut() {
-            h.aborted = true;
-            if let Some(id) = h.current {
-                self.link.request_stop(id);
-            }
+    /// Positions from the external executor (axes it drives), else from what has finished.
+    pub(super) fn external_positions(&mut self) {
+        if let Some(x) = &self.external {
+            self.pos = x.positions(self.base, &self.offset, &self.axes);
+            self.vel = [0.0; AXES];
         }
     }
 
-    /// The end of a go home, once: [`HOME_DONE`] or [`HOME_NONE`].
-    pub(super) fn take_home_result(&mut self) -> Option<i32> {
-        let r = self.home.as_ref()?.result?;
-        self.home = None;
-        Some(r)
-    }
-
-    /// Runs the go home in progress; returns whether there is one (then nothing else
-    /// runs this tick).
-    fn tick_home(&mut self, host: &mut dyn Host) -> bool {
-        let mut record = None;
-        let mut zeroed = [false; MOTORS];
-        {
-            let Some(h) = self.home.as_mut() else {
-                return false;
-            };
-            if h.result.is_some() {
-                return true;
-            }
-            if let Some(id) = h.current {
-                let Some(r) = self.link.take_report(id) else {
-                    return true;
-                };
-                self.steps = r.position;
-                self.planned = r.position;
-                self.phase = Phase::Idle;
-                h.current = None;
-                match r.outcome {
-                    Outcome::Done => {}
-                    Outcome::Stopped => h.result = Some(HOME_NONE),
-                    Outcome::Failed(f) => {
-                        record = Some(f);
-                        h.result = Some(HOME_NONE);
-                    }
-                }
-            }
-            if h.result.is_none() && h.aborted {
-                h.result = Some(HOME_NONE);
-            }
-            if h.result.is_none() {
-                match h.stages.pop_front() {
-                    Some(job) => {
-                        let id = self.next_id;
-                        self.next_id = self.next_id.wrapping_add(1);
-                        self.link.post(id, job);
-                        self.phase = Phase::Busy { id, retire: 0 };
-                        h.current = Some(id);
-                    }
-                    None => {
-                        // At the working homes: they are position 0 from now on.
-                        for (m, z) in zeroed.iter_mut().enumerate() {
-                            if h.motors[m] {
-                                self.origin[m] = self.steps[m];
-                                *z = true;
-                            }
-                        }
-                        h.result = Some(HOME_DONE);
-                    }
-                }
-            }
-        }
-        if let Some(f) = record {
-            host.set_error(self.fault_record(f));
-        }
-        for i in 0..AXES {
-            if let Some(m) = self.motor[i] {
-                if zeroed[m] {
-                    host.zero_offset(i);
-                }
-            }
-        }
-        self.show_positions(host);
-        let on_motors = (0..AXES)
-            .filter(|&i| self.motor[i].is_some())
-            .fold(0u32, |mask, i| mask | 1 << i);
-        host.rebase(on_motors);
-        true
-    }
-
-    /// One tick: takes the device's report, runs a delay, starts the next job, and takes
-    /// the position from the device's steps. The group updates its status afterwards.
-    pub(super) fn tick(&mut self, host: &mut dyn Host, dt: f64) {
-        if self.tick_home(host) {
+    /// One tick of a group on an external executor: it runs with the group as its
+    /// [`Host`]. It is out of `self.external` meanwhile and back before the status is
+    /// updated, also when the tick panics (the engine's recovery then stops the device's
+    /// job).
+    pub(super) fn tick_external(&mut self, dt: f64) {
+        let Some(mut x) = self.external.take() else {
             return;
+        };
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| x.tick(self, dt)));
+        self.external = Some(x);
+        if let Err(p) = r {
+            std::panic::resume_unwind(p);
         }
-        self.take_report(host);
-        // A delay that starts now counts this tick; one that ends lets the next job start.
-        self.hand_out(host);
-        if self.run_delay(host, dt) {
-            self.hand_out(host);
-        }
-        self.show_positions(host);
+        self.update_status();
+    }
+}
+
+/// What an external executor may do with its group (see [`Host`]).
+impl Host for GroupState {
+    fn axes(&self) -> &[AxisMech; AXES] {
+        &self.axes
     }
 
-    fn hand_out(&mut self, host: &mut dyn Host) {
-        if self.may_hand_out(host) {
-            // Bounded: each pass starts something or retires at least one command.
-            for _ in 0..host.queued() + 2 {
-                match self.fill_batch(host) {
-                    Fill::Done => break,
-                    Fill::Retired => {}
-                }
-            }
-        }
+    fn offset(&self) -> &Axes {
+        &self.offset
     }
 
-    /// Idle, and either moves of a started command are left (they go on as long as no
-    /// error or hold stops the group) or a new command may start.
-    fn may_hand_out(&self, host: &dyn Host) -> bool {
-        if self.phase != Phase::Idle {
-            return false;
-        }
-        if self.pending.is_empty() {
-            host.may_start()
+    fn ot_check(&self) -> &[bool; AXES] {
+        &self.ot_check
+    }
+
+    fn base(&self) -> Axes {
+        self.base
+    }
+
+    fn speed_scale(&self) -> f64 {
+        if self.fixed_speed {
+            1.0
         } else {
-            host.may_go_on()
+            self.override_pct / 100.0
         }
     }
 
-    fn take_report(&mut self, host: &mut dyn Host) {
-        let (Phase::Busy { id, .. } | Phase::Stopping { id }) = self.phase else {
+    fn single_block(&self) -> bool {
+        self.single_block
+    }
+
+    fn may_start(&self) -> bool {
+        GroupState::may_start(self)
+    }
+
+    fn may_go_on(&self) -> bool {
+        self.error == 0 && self.mode == Mode::Normal
+    }
+
+    fn held(&self) -> bool {
+        self.mode == Mode::Held
+    }
+
+    fn queued(&self) -> usize {
+        self.queue.len()
+    }
+
+    fn front(&self) -> Option<&Command> {
+        self.queue.front()
+    }
+
+    fn pop_front(&mut self) -> Option<Command> {
+        self.queue.pop_front()
+    }
+
+    fn apply_switch(&mut self) {
+        let Some(cmd) = self.queue.front() else {
             return;
         };
-        let Some(r) = self.link.take_report(id) else {
-            return;
-        };
-        self.steps = r.position;
-        if self.rezero {
-            self.origin = r.position;
-            self.rezero = false;
-        }
-        let phase = self.phase;
-        self.phase = Phase::Idle;
-        match (phase, r.outcome) {
-            (Phase::Busy { retire, .. }, Outcome::Done) => {
-                host.retire(retire);
-                host.job_ended();
-            }
-            (_, Outcome::Failed(f)) => {
-                let record = self.fault_record(f);
-                self.stop_group(host);
-                host.set_error(record);
-                self.after_stop(host);
-            }
-            _ => self.after_stop(host),
-        }
-    }
-
-    /// After a stop: the estimated position is where the group stands.
-    fn after_stop(&mut self, host: &mut dyn Host) {
-        self.pending.clear();
-        self.planned = self.steps;
-        host.clear_running();
-        self.show_positions(host);
-        host.rebase(ALL_AXES);
-    }
-
-    /// Runs a delay for `dt`; returns whether it ended.
-    fn run_delay(&mut self, host: &mut dyn Host, dt: f64) -> bool {
-        let held = host.held();
-        let Phase::Delay { left } = &mut self.phase else {
-            return false;
-        };
-        if !held {
-            *left -= dt;
-        }
-        if *left > TIME_EPS {
-            return false;
-        }
-        self.phase = Phase::Idle;
-        host.drop_first();
-        true
-    }
-
-    /// Device steps of the motors at position `p` (user coordinates); motors the group
-    /// does not drive stay where the handed-out moves leave them.
-    fn device_steps(&self, host: &dyn Host, p: &Axes) -> [i64; MOTORS] {
-        let (axes, offset) = (host.axes(), host.offset());
-        let mut s = self.planned;
-        for (i, motor) in self.motor.iter().enumerate() {
-            if let Some(m) = *motor {
-                s[m] = self.origin[m] + round_pulses((p[i] + offset[i]) * axes[i].factor);
-            }
-        }
-        s
-    }
-
-    /// Over-travel before a command starts: like the virtual card, the group stops with
-    /// 0xF301 + axis instead of moving further out.
-    fn over_travel(&mut self, host: &mut dyn Host, axis: usize) {
-        self.stop_group(host);
-        host.set_error(ERR_OVER_TRAVEL + axis as i32);
-    }
-
-    fn post(&mut self, job: Job, retire: usize) {
-        let id = self.next_id;
-        self.next_id = self.next_id.wrapping_add(1);
-        self.link.post(id, job);
-        self.phase = Phase::Busy { id, retire };
-    }
-
-    /// The first queued command as the batching sees it.
-    fn peek(&self, host: &dyn Host) -> Option<Next> {
-        let cmd = host.front()?;
-        Some(match &cmd.plan {
-            Plan::Blend(_) | Plan::InPos(..) => Next::Switch,
-            Plan::Output(_) => Next::Output,
-            Plan::Path(m) => Next::Path(match m.path {
-                Path::Line(_) => SegKind::Line {
-                    feed: cmd.info_feed,
-                    acc_ms: cmd.acc_ms,
-                    dec_ms: cmd.dec_ms,
-                },
-                Path::Arc(_) | Path::Helix(_) => SegKind::Chord {
-                    feed: cmd.info_feed,
-                },
-            }),
-            Plan::Ptp(_) => Next::Ptp {
-                start: cmd.start(),
-                target: cmd.target,
-            },
-            Plan::Delay(s) => Next::Delay(*s),
-        })
-    }
-
-    /// Takes moves and commands for one job and hands it to the device.
-    fn fill_batch(&mut self, host: &mut dyn Host) -> Fill {
-        let tol = chord_tolerance(host.axes());
-        let mut batch: Vec<Pending> = Vec::new();
-        let mut retire = 0usize;
-        loop {
-            if batch.len() >= MAX_BATCH {
-                break;
-            }
-            if let Some(p) = self.pending.front().copied() {
-                if batch.first().is_some_and(|b| b.kind != p.kind) {
-                    break;
-                }
-                self.pending.pop_front();
-                retire += usize::from(p.ends_cmd);
-                batch.push(p);
-                continue;
-            }
-            // Single block: one command per job.
-            if !batch.is_empty() && host.single_block() {
-                break;
-            }
-            let Some(next) = self.peek(host) else {
-                break;
-            };
-            match next {
-                Next::Switch => host.apply_switch(),
-                Next::Output => {
-                    if !batch.is_empty() {
-                        break;
-                    }
-                    host.apply_switch();
-                }
-                Next::Path(kind) => {
-                    if batch.first().is_some_and(|b| b.kind != kind) {
-                        break;
-                    }
-                    let Some((start, points)) = host.front().and_then(|c| match &c.plan {
-                        Plan::Path(m) => {
-                            Some((m.path.start(), backend::chord_points(&m.path, tol)))
-                        }
-                        _ => None,
-                    }) else {
-                        break;
-                    };
-                    if let Some(axis) = leaves_zone(host, &start, &points) {
-                        if batch.is_empty() {
-                            self.over_travel(host, axis);
-                            return Fill::Done;
-                        }
-                        break;
-                    }
-                    let Some(cmd) = host.pop_front() else {
-                        break;
-                    };
-                    self.expand(host, &cmd, &points, kind);
-                    host.start(cmd);
-                }
-                Next::Ptp { .. } | Next::Delay(_) if !batch.is_empty() => break,
-                Next::Ptp { start, target } => {
-                    if let Some(axis) = leaves_zone(host, &start, &[target]) {
-                        self.over_travel(host, axis);
-                        return Fill::Done;
-                    }
-                    let Some(cmd) = host.pop_front() else {
-                        break;
-                    };
-                    let job = self.ptp_job(host, &cmd);
-                    host.start(cmd);
-                    if job.total() == [0; MOTORS] {
-                        host.drop_first();
-                        return Fill::Retired;
-                    }
-                    self.post(job, 1);
-                    return Fill::Done;
-                }
-                Next::Delay(left) => {
-                    let Some(cmd) = host.pop_front() else {
-                        break;
-                    };
-                    host.start(cmd);
-                    self.phase = Phase::Delay { left };
-                    return Fill::Done;
+        match cmd.plan {
+            Plan::Blend(on) => self.blend_on = on,
+            Plan::InPos(on, mask) => {
+                if on {
+                    self.inpos_mask |= mask;
+                } else {
+                    self.inpos_mask &= !mask;
                 }
             }
+            Plan::Output(o) => self.outputs.push(o),
+            _ => return,
         }
-        let Some(first) = batch.first() else {
-            return Fill::Done;
-        };
-        let segs: Vec<Seg> = batch.iter().map(|p| p.seg).collect();
-        let speeds = backend::sync_speeds(&segs, first.kind.ramp(), host.speed_scale());
-        let moves: Vec<[i64; MOTORS]> = segs
-            .iter()
-            .map(|s| s.steps)
-            .filter(|s| *s != [0; MOTORS])
-            .collect();
-        if moves.is_empty() {
-            host.retire(retire);
-            return Fill::Retired;
-        }
-        self.post(
-            Job::Sync {
-                segs: moves,
-                speeds,
-            },
-            retire,
-        );
-        Fill::Done
+        self.queue.pop_front();
     }
 
-    /// The synchronous moves of a path command through `points`.
-    fn expand(&mut self, host: &dyn Host, cmd: &Command, points: &[Axes], kind: SegKind) {
-        let feed = kind.feed();
-        let mut prev = cmd.start();
-        let n = points.len();
-        let mut out = Vec::with_capacity(n);
-        for (j, p) in points.iter().enumerate() {
-            let dev = self.device_steps(host, p);
-            let steps: [i64; MOTORS] = std::array::from_fn(|m| dev[m] - self.planned[m]);
-            self.planned = dev;
-            let len = backend::move_length(&prev, p);
-            let secs = if feed > 0.0 { len / feed } else { 0.0 };
-            out.push(Pending {
-                seg: Seg { steps, secs },
-                kind,
-                ends_cmd: j + 1 == n,
-            });
-            prev = *p;
-        }
-        self.pending.extend(out);
+    fn start(&mut self, cmd: Command) {
+        GroupState::start(self, cmd, 0.0);
     }
 
-    /// A point-to-point command as one independent move per motor: each at its axis's
-    /// speed (max safe speed × ratio, re-planned for `MCC_SyncPtP`) and acc/dec times.
-    fn ptp_job(&mut self, host: &dyn Host, cmd: &Command) -> Job {
-        let dev = self.device_steps(host, &cmd.target);
-        let scale = host.speed_scale();
-        let steps: [i64; MOTORS] = std::array::from_fn(|m| dev[m] - self.planned[m]);
-        self.planned = dev;
-        let mut speeds: [Option<Speeds>; MOTORS] = [None; MOTORS];
-        if let Plan::Ptp(p) = &cmd.plan {
-            for i in 0..AXES {
-                let (Some(m), Some(prof)) = (self.motor[i], p.axis_profile(i)) else {
-                    continue;
-                };
-                if steps[m] == 0 {
-                    continue;
-                }
-                let k = host.axes()[i].factor.abs();
-                let feed = prof.feed();
-                let peak = prof.peak_speed();
-                // The set times: a short move keeps the acceleration and lowers the peak.
-                let t = |actual: f64| {
-                    if peak > 0.0 {
-                        actual * feed / peak
-                    } else {
-                        0.0
-                    }
-                };
-                let ramp = Ramp::Times {
-                    acc_s: t(prof.acc_time()),
-                    dec_s: t(prof.dec_time()),
-                };
-                speeds[m] = Some(backend::speeds_for(feed * k * scale, ramp));
+    fn retire(&mut self, n: usize) {
+        for _ in 0..n {
+            if let Some(done) = self.running.pop_front() {
+                self.base = done.cmd.target;
             }
         }
-        Job::Independent { steps, speeds }
     }
 
-    /// Positions from the device's steps (axes on motors), else `base` (where what has
-    /// finished left them).
-    pub(super) fn positions(&self, base: Axes, offset: &Axes, axes: &[AxisMech; AXES]) -> Axes {
-        let mut pos = base;
-        for (i, p) in pos.iter_mut().enumerate() {
-            if let Some(m) = self.motor[i] {
-                let f = axes[i].factor;
-                if f != 0.0 {
-                    *p = (self.steps[m] - self.origin[m]) as f64 / f - offset[i];
-                }
-            }
+    fn drop_first(&mut self) {
+        self.running.pop_front();
+    }
+
+    fn job_ended(&mut self) {
+        if self.mode == Mode::HoldAtBlockEnd {
+            self.mode = Mode::Held;
         }
-        pos
     }
 
-    /// The group's axes stand where [`External::positions`] says.
-    fn show_positions(&self, host: &mut dyn Host) {
-        let pos = self.positions(host.base(), host.offset(), host.axes());
-        host.set_pos(pos);
+    fn stop_here(&mut self) {
+        GroupState::stop_here(self);
+    }
+
+    fn set_error(&mut self, code: i32) {
+        GroupState::set_error(self, code);
+    }
+
+    fn clear_running(&mut self) {
+        self.running.clear();
+    }
+
+    fn zero_offset(&mut self, i: usize) {
+        self.offset[i] = 0.0;
+    }
+
+    fn set_pos(&mut self, pos: Axes) {
+        self.pos = pos;
+        self.vel = [0.0; AXES];
+    }
+
+    fn rebase(&mut self, mask: u32) {
+        for i in (0..AXES).filter(|&i| mask & (1 << i) != 0) {
+            self.base[i] = self.pos[i];
+            self.queue_end[i] = self.pos[i];
+        }
     }
 }
-
-/// Chord tolerance in UU: [`CHORD_TOLERANCE_STEPS`] steps of the finest X/Y/Z axis.
-fn chord_tolerance(axes: &[AxisMech; AXES]) -> f64 {
-    let k = axes[..3].iter().map(|a| a.factor.abs()).fold(0.0, f64::max);
-    if k > 0.0 {
-        CHORD_TOLERANCE_STEPS / k
-    } else {
-        1e-3
-    }
-}
-
-/// The first axis whose work zone a command leaves going further out (software
-/// over-travel check on), visiting `points` from `start`.
-fn leaves_zone(host: &dyn Host, start: &Axes, points: &[Axes]) -> Option<usize> {
-    let (axes, ot_check) = (host.axes(), host.ot_check());
-    (0..AXES).find(|&i| {
-        if !ot_check[i] || axes[i].channel.is_none() {
-            return false;
-        }
-        let (hi, lo) = (axes[i].high, axes[i].low);
-        let mut prev = start[i];
-        points.iter().any(|p| {
-            let out = (p[i] > hi && p[i] > prev) || (p[i] < lo && p[i] < prev);
-            prev = p[i];
-            out
-        })
-    })
-}
-
-#[cfg(test)]
-mod tests;

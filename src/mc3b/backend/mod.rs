@@ -1,6 +1,7 @@
 //! The MC3B as a backend of the virtual card: a card whose `mc3b_port` is set in
 //! `MCCL_SIM` has its channels 0..2 on an MC3B, and `MCC_*` motion of a group on that
-//! card runs on the device (the group side is `crate::engine::group::external`).
+//! card runs on the device: [`Executor`] runs a group's queue there, behind the engine's
+//! door for executors outside the card (`crate::engine::group::external`).
 //!
 //! This module is the device side:
 //!
@@ -21,7 +22,8 @@
 //! same times) — an estimate.
 //!
 //! Files: `convert.rs` (units, speeds, chords), `job.rs` (jobs, faults, reports),
-//! `link.rs` (the group–worker meeting point), `worker.rs` (the blocking I/O and the
+//! `link.rs` (the group–worker meeting point), `executor.rs` (a group's commands as jobs;
+//! the batching in `executor/batch.rs`, its go home in `executor/home.rs`), `worker.rs` (the blocking I/O and the
 //! model), `limits.rs` (limit masks), `device.rs` (the worker's thread, opening the
 //! devices of a configuration; the system attaches the groups).
 
@@ -31,6 +33,7 @@ use super::emulator::CHAIN_CAPACITY;
 
 mod convert;
 mod device;
+mod executor;
 mod job;
 mod limits;
 mod link;
@@ -41,6 +44,7 @@ pub use convert::{
     sync_speeds, Ramp, Seg, Speeds, MAX_CHORDS,
 };
 pub use device::{open_devices, reply_timeout, Device};
+pub use executor::Executor;
 pub use job::{Fault, Job, Outcome, Report};
 pub use limits::{limit_masks, motor_limits, LimitMasks};
 pub use link::Link;

@@ -2,13 +2,14 @@
 //! runs the device's worker itself ([`Worker::run_pending`]), so what the group sees
 //! between ticks is exactly determined.
 
-use super::super::GroupState;
 use super::*;
 use crate::config::{default_mac_param, GroupDef};
 use crate::engine::command::AxisMech;
+use crate::engine::group::GroupState;
 use crate::mc3b::backend::tests::{worker, Rec};
+use crate::mc3b::backend::Ramp;
 use crate::mc3b::backend::{chord_count, Worker, ERR_MC3B_LINK};
-use crate::planner::Plane;
+use crate::planner::{Path, Plane};
 use crate::vendor::consts as c;
 
 /// 100 steps per UU on every axis.
@@ -31,7 +32,8 @@ fn rig() -> Rig {
     });
     let mut g = GroupState::new(0, def, axes);
     let (link, w) = worker();
-    g.attach_mc3b(link.clone());
+    let x = Executor::new(link.clone(), &g.axes);
+    g.attach_external(Box::new(x));
     g.settings.feed = 20.0;
     g.settings.acc_ms = 20.0;
     g.settings.dec_ms = 20.0;
@@ -428,8 +430,9 @@ fn homing_rig() -> Rig {
     let mut rec = Rec::new();
     rec.switches.push((0, 0, -500));
     let (link, w) = worker_with(rec, &[[0, 0, 1, 0], [0; 4], [0; 4]]);
-    r.g.attach_mc3b(link.clone());
-    r.g.set_mc3b_limits([[false, true], [false, false], [false, false]]);
+    let mut x = Executor::new(link.clone(), &r.g.axes);
+    x.set_limits(HOMING_LIMITS);
+    r.g.attach_external(Box::new(x));
     r.link = link;
     r.w = w;
     r
@@ -449,7 +452,23 @@ fn home_cfg(mode: u16) -> crate::vendor::SYS_HOME_CONFIG {
 
 const X_ONLY: [i32; 8] = [0, 255, 255, 255, 255, 255, 255, 255];
 
+/// The limit switches of `homing_rig()`: X's motor has a − switch.
+const HOMING_LIMITS: [[bool; 2]; MOTORS] = [[false, true], [false, false], [false, false]];
+
 impl Rig {
+    /// The jobs of a go home of `homing_rig()`'s group with `orders` and `cfgs`, with the
+    /// axes mask and the motors homed (planned by an executor set up as the group's).
+    #[allow(clippy::type_complexity)]
+    fn plan_home(
+        &self,
+        orders: &[i32; AXES],
+        cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
+    ) -> McclResult<(u32, Vec<Job>, [bool; MOTORS])> {
+        let mut x = Executor::new(self.link.clone(), &self.g.axes);
+        x.set_limits(HOMING_LIMITS);
+        x.plan_home(orders, cfgs, &self.g.axes)
+    }
+
     /// Ticks and runs the device until the homing ends; its result.
     fn run_home(&mut self) -> i32 {
         for _ in 0..100_000 {
@@ -470,7 +489,7 @@ fn go_home_uses_the_mc3b_homing_then_moves_to_the_working_home() {
     let mut r = homing_rig();
     let mut cfgs = [home_cfg(9); 8];
     cfgs[0].dfOffset = 2.0;
-    let (mask, stages, motors) = r.g.plan_mc3b_home(&X_ONLY, &cfgs).expect("plan");
+    let (mask, stages, motors) = r.plan_home(&X_ONLY, &cfgs).expect("plan");
     // X (axis 0) homes in direction 1 at 10 UU/s = 1000 steps/s, reached in 100 ms;
     // then phase 3: 2 UU = 200 steps up at the same speed.
     assert_eq!((mask, motors), (1, [true, false, false]));
@@ -496,12 +515,12 @@ fn go_home_uses_the_mc3b_homing_then_moves_to_the_working_home() {
     );
     r.line(1.0, 1.0).expect("line");
     assert_eq!(
-        r.g.begin_mc3b_home(mask, stages.clone(), motors),
+        r.g.begin_external_home(&X_ONLY, &cfgs),
         Err(McclError::NotFinished),
         "the group has motion to do"
     );
     r.run();
-    r.g.begin_mc3b_home(mask, stages, motors).expect("home");
+    r.g.begin_external_home(&X_ONLY, &cfgs).expect("home");
     assert_eq!(r.g.status(), c::GMS_RUNNING);
     assert_eq!(
         r.line(5.0, 0.0),
@@ -522,10 +541,9 @@ fn go_home_uses_the_mc3b_homing_then_moves_to_the_working_home() {
 
     // MCC_AbortGoHome before the device took the job: nothing moves, nothing is zeroed.
     let mut r = homing_rig();
-    let (mask, stages, motors) = r.g.plan_mc3b_home(&X_ONLY, &cfgs).expect("plan");
-    r.g.begin_mc3b_home(mask, stages, motors).expect("home");
+    r.g.begin_external_home(&X_ONLY, &cfgs).expect("home");
     r.g.tick(0.001);
-    r.g.abort_mc3b_home();
+    r.g.abort_external_home();
     assert_eq!(r.run_home(), HOME_NONE);
     assert_eq!((r.dev(), r.w.transport().count("0H")), ([0, 0, 0], 0));
 
@@ -534,8 +552,7 @@ fn go_home_uses_the_mc3b_homing_then_moves_to_the_working_home() {
     // without completing, with no error record and the position estimated.
     let mut r = homing_rig();
     r.w.transport().switches = vec![(0, 0, -1_000_000)];
-    let (mask, stages, motors) = r.g.plan_mc3b_home(&X_ONLY, &cfgs).expect("plan");
-    r.g.begin_mc3b_home(mask, stages, motors).expect("home");
+    r.g.begin_external_home(&X_ONLY, &cfgs).expect("home");
     r.w.transport().stop_at_query = Some((30, r.link.clone(), 1));
     assert_eq!(r.run_home(), HOME_NONE);
     assert_eq!(r.g.error(), 0);
@@ -553,14 +570,14 @@ fn go_home_refusals_on_the_mc3b() {
     let r = homing_rig();
     let ok = [home_cfg(16); 8];
     assert!(
-        r.g.plan_mc3b_home(&X_ONLY, &ok).is_ok(),
+        r.plan_home(&X_ONLY, &ok).is_ok(),
         "mode 16 is the same search"
     );
     for mode in [3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15] {
         // The MC3B has no home sensor and no index input.
         let cfgs = [home_cfg(mode); 8];
         assert_eq!(
-            r.g.plan_mc3b_home(&X_ONLY, &cfgs).map(|_| ()),
+            r.plan_home(&X_ONLY, &cfgs).map(|_| ()),
             Err(McclError::NotAccepted),
             "mode {mode}"
         );
@@ -569,17 +586,17 @@ fn go_home_refusals_on_the_mc3b() {
     let mut up = ok;
     up[0].wDirection = 0;
     assert_eq!(
-        r.g.plan_mc3b_home(&X_ONLY, &up).map(|_| ()),
+        r.plan_home(&X_ONLY, &up).map(|_| ()),
         Err(McclError::NotAccepted)
     );
     let y = [255, 0, 255, 255, 255, 255, 255, 255];
     assert_eq!(
-        r.g.plan_mc3b_home(&y, &ok).map(|_| ()),
+        r.plan_home(&y, &ok).map(|_| ()),
         Err(McclError::NotAccepted)
     );
     let u = [255, 255, 255, 0, 255, 255, 255, 255];
     assert_eq!(
-        r.g.plan_mc3b_home(&u, &ok).map(|_| ()),
+        r.plan_home(&u, &ok).map(|_| ()),
         Err(McclError::NotAccepted)
     );
 }

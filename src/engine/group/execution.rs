@@ -1,0 +1,283 @@
+//! Execution of the running commands, tick by tick (the model is in the module's
+//! documentation, [`super`]): own time per command, starting, blending, retiring, and
+//! sampling the position; the software over-travel check.
+
+use super::GroupState;
+use super::{InPosWait, Mode, ERR_OVER_TRAVEL, TIME_EPS};
+use crate::config::AXES;
+use crate::engine::command::{Command, Plan};
+use crate::engine::trace::Note;
+use crate::planner::Axes;
+
+/// Converts between real time within a tick and a command's own time: general and PtP
+/// motion run at the group's rate, delays in real time (paused while held).
+#[derive(Debug, Clone, Copy)]
+struct TickClock {
+    dt: f64,
+    dtau: f64,
+    delay_dt: f64,
+}
+
+impl TickClock {
+    fn per_tick(&self, cmd: &Command) -> f64 {
+        if matches!(cmd.plan, Plan::Delay(_)) {
+            self.delay_dt
+        } else {
+            self.dtau
+        }
+    }
+
+    /// `real` seconds of this tick, in `cmd`'s own time.
+    fn own_time(&self, real: f64, cmd: &Command) -> f64 {
+        if self.dt > 0.0 {
+            real / self.dt * self.per_tick(cmd)
+        } else {
+            0.0
+        }
+    }
+
+    /// `own` time of `cmd` within this tick, in real seconds.
+    fn real_time(&self, own: f64, cmd: &Command) -> f64 {
+        let per = self.per_tick(cmd);
+        if per > 0.0 {
+            (own / per * self.dt).min(self.dt)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// A command being executed and its own time.
+#[derive(Debug, Clone)]
+pub(super) struct Running {
+    pub(super) cmd: Command,
+    pub(super) tau: f64,
+}
+
+impl GroupState {
+    /// One interpolation period of `dt` seconds.
+    pub fn tick(&mut self, dt: f64) {
+        if self.homing != 0 && self.external.is_none() {
+            // The homing sets the positions (`set_homing_axis`).
+            self.update_status();
+            return;
+        }
+        if self.external.is_some() {
+            return self.tick_external(dt);
+        }
+        // Software over-travel compares with the position before the tick (only needed,
+        // and so only copied, when a check is on).
+        let before = (self.ot_check != [false; AXES]).then_some(self.pos);
+        let dtau = self.advance_rate(dt);
+        let delay_dt = if self.mode == Mode::Held { 0.0 } else { dt };
+        let clock = TickClock { dt, dtau, delay_dt };
+        if self.running.is_empty() {
+            // An idle group starts its next command at the start of the tick.
+            if self.may_start() {
+                if let Some(cmd) = self.pop_next() {
+                    let tau = clock.own_time(dt, &cmd);
+                    self.start(cmd, tau);
+                }
+            }
+        } else {
+            for r in self.running.iter_mut() {
+                r.tau += clock.own_time(dt, &r.cmd);
+            }
+        }
+        self.settle(&clock);
+        self.finish_abort();
+        self.compute_pos_vel();
+        if let Some(before) = before {
+            self.check_over_travel(&before);
+        }
+        self.update_status();
+    }
+
+    pub(super) fn start(&mut self, cmd: Command, tau: f64) {
+        if cmd.is_motion() {
+            self.inpos_status = [0; AXES];
+        }
+        if let Some(p) = self.rate.pending_override.take() {
+            self.override_pct = p;
+            if self.mode == Mode::Normal {
+                self.retarget_rate();
+            }
+        }
+        self.cmd_index.ld = self.cmd_index.ld.wrapping_add(1);
+        self.cmd_index.last_started = Some((cmd.index, self.cmd_index.ld));
+        self.note(Note::Start {
+            index: cmd.index,
+            ctype: cmd.ctype,
+        });
+        if self.single_block {
+            self.single_block_credit = false;
+        }
+        self.running.push_back(Running { cmd, tau });
+    }
+
+    /// Software over-travel (user manual §2.6.1): with the check on, an axis never goes
+    /// further out of its work zone (dfLowLimit..dfHighLimit). A tick that would take it
+    /// out stops the group where it was, records 0xF301 + axis, and motion waits for
+    /// `MCC_ClearError`; a move back into the zone is allowed.
+    fn check_over_travel(&mut self, before: &Axes) {
+        for i in 0..AXES {
+            if !self.ot_check[i] || self.axes[i].channel.is_none() {
+                continue;
+            }
+            let (p, b) = (self.pos[i], before[i]);
+            let out = (p > self.axes[i].high && p > b) || (p < self.axes[i].low && p < b);
+            if out {
+                self.pos = *before;
+                self.stop_here();
+                self.set_error(ERR_OVER_TRAVEL + i as i32);
+                return;
+            }
+        }
+    }
+
+    /// After the running commands advanced: blends in the next command, retires finished
+    /// commands and hands the rest of the tick to their successors.
+    fn settle(&mut self, clock: &TickClock) {
+        // Bounded: each pass starts or retires one command.
+        for _ in 0..(self.queue.len() + self.running.len() + 2) * 2 {
+            if self.try_blend() {
+                continue;
+            }
+            let Some(first) = self.running.front() else {
+                return;
+            };
+            let dur = first.cmd.duration();
+            if first.tau < dur - TIME_EPS {
+                return;
+            }
+            let spare = clock.real_time((first.tau - dur).max(0.0), &first.cmd);
+            let Some(done) = self.running.pop_front() else {
+                return;
+            };
+            self.note(Note::End {
+                index: done.cmd.index,
+                ctype: done.cmd.ctype,
+                stopped: false,
+            });
+            if self.running.is_empty() {
+                self.base = done.cmd.target;
+                if done.cmd.is_motion() && self.inpos_mask != 0 {
+                    self.note(Note::InPosBegin(self.inpos_mask));
+                    self.inpos_wait = Some(InPosWait {
+                        mask: self.inpos_mask,
+                        elapsed: 0.0,
+                        settled: 0.0,
+                        settings: self.inpos,
+                    });
+                    if self.inpos_wait.is_some_and(|w| w.blocks()) {
+                        return;
+                    }
+                }
+            } else {
+                let s = done.cmd.start();
+                for ((b, t), s) in self.base.iter_mut().zip(done.cmd.target).zip(s) {
+                    *b += t - s;
+                }
+                continue;
+            }
+            if self.mode == Mode::HoldAtBlockEnd {
+                self.mode = Mode::Held;
+                self.rate.value = 0.0;
+                self.rate.ramp = None;
+                return;
+            }
+            if !self.may_start() {
+                return;
+            }
+            let Some(next) = self.pop_next() else {
+                return;
+            };
+            let tau = clock.own_time(spare, &next);
+            self.start(next, tau);
+        }
+    }
+
+    /// Blending: when the newest general motion has reached its deceleration and the next
+    /// queued motion is general too, starts it (docs/decisions.md). Returns whether it did.
+    fn try_blend(&mut self) -> bool {
+        if !self.blend_on || !self.may_start() {
+            return false;
+        }
+        let Some(last) = self.running.back() else {
+            return false;
+        };
+        let Plan::Path(m) = &last.cmd.plan else {
+            return false;
+        };
+        let ds = m.decel_start();
+        if last.tau < ds - TIME_EPS || last.tau >= m.duration() - TIME_EPS || m.duration() <= 0.0 {
+            return false;
+        }
+        let over = (last.tau - ds).max(0.0);
+        if !matches!(self.peek_motion(), Some(Plan::Path(_))) {
+            return false;
+        }
+        match self.pop_next() {
+            Some(next) => {
+                self.start(next, over);
+                true
+            }
+            None => false,
+        }
+    }
+
+    fn finish_abort(&mut self) {
+        if self.mode == Mode::Aborting && self.rate.ramp.is_none() && self.rate.value == 0.0 {
+            self.compute_pos_vel();
+            self.stop_here();
+        }
+    }
+
+    fn compute_pos_vel(&mut self) {
+        if self.running.len() == 1 {
+            // The usual case, without the sums (the same operations as below).
+            let r = &self.running[0];
+            let (mut p, mut v) = ([0.0; AXES], [0.0; AXES]);
+            r.cmd.sample_into(r.tau, &mut p, &mut v);
+            let s = r.cmd.start();
+            let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
+                0.0
+            } else {
+                self.rate.value
+            };
+            // Branch-free, so that both loops vectorize. `0.0 +` as in the sums below
+            // (it turns -0.0 into 0.0).
+            #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
+            for i in 0..AXES {
+                let moved = self.base[i] + (p[i] - s[i]);
+                self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
+            }
+            for (out, v) in self.vel.iter_mut().zip(v) {
+                *out = 0.0 + v * scale;
+            }
+            return;
+        }
+        let mut pos = self.base;
+        let mut vel = [0.0; AXES];
+        let only = self.running.len() == 1;
+        for r in &self.running {
+            let (p, v) = r.cmd.sample(r.tau);
+            let s = r.cmd.start();
+            let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
+                0.0
+            } else {
+                self.rate.value
+            };
+            for i in 0..AXES {
+                if only && self.base[i] == s[i] {
+                    pos[i] = p[i];
+                } else {
+                    pos[i] += p[i] - s[i];
+                }
+                vel[i] += v[i] * scale;
+            }
+        }
+        self.pos = pos;
+        self.vel = vel;
+    }
+}

@@ -1,0 +1,287 @@
+//! One motion group on the virtual card: its settings, its bounded command queue, and the
+//! execution of queued commands tick by tick (user manual §2.3, §2.6).
+//!
+//! Execution model. Every running command has its own time τ. Each tick advances τ by
+//! ∫ rate dt, where `rate` is the group's time scale: the override ratio (1.0 = 100 %), 0
+//! while held or after an abort. Rate changes ramp linearly
+//! ([`crate::planner::RateRamp`]) so speed changes smoothly and position never jumps. The
+//! command position is
+//! `base + Σ (command.sample(τ) − command.start)` over the running commands; with
+//! blending on, the next general motion starts when the running one begins to
+//! decelerate, so two commands run at once and their displacements add (docs/decisions.md).
+//! A command that ends inside a tick hands the rest of the tick to the next one, so
+//! consecutive commands keep exact timing. Whenever the last running command ends, the
+//! position becomes its exact planned end: nothing accumulates over millions of moves.
+//!
+//! Files, one concept each: `queue.rs` (queuing, indices, single block), `execution.rs`
+//! (the running commands tick by tick), `rate.rs` (the time scale and what ramps it:
+//! override, feed, hold, abort), `inpos.rs` (the in-position check), `status.rs` (motion
+//! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
+//! `external.rs` (the door to an executor outside the card, e.g. the MC3B).
+
+use super::command::{AxisMech, Command, Ctx, Output, Settings};
+use super::snapshot::Info;
+use crate::config::{GroupDef, AXES};
+use crate::error::{McclError, McclResult};
+use crate::planner::Axes;
+use crate::vendor::consts as c;
+use std::collections::VecDeque;
+
+mod execution;
+pub mod external;
+mod homing;
+mod inpos;
+mod queue;
+mod rate;
+mod status;
+
+use execution::Running;
+use external::ExternalExecutor;
+use inpos::InPosWait;
+pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
+use queue::CommandIndex;
+use rate::{Mode, RateState};
+
+/// Error record of software over-travel, + axis (docs/vendor-interface.md).
+pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();
+
+/// A command whose own time is within this of its end has ended (1 ns: far below a tick,
+/// far above the rounding of summing millions of ticks).
+pub const TIME_EPS: f64 = 1e-9;
+
+/// A group as the card runs it.
+#[derive(Debug)]
+pub struct GroupState {
+    /// Group index (0..95).
+    pub index: usize,
+    /// The mapping and queue size the group runs with.
+    pub def: GroupDef,
+    /// Mechanism facts per axis (from the parameters in effect).
+    pub axes: [AxisMech; AXES],
+    /// Settings that queued commands capture.
+    pub settings: Settings,
+    /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
+    pub blend_queued: bool,
+    /// Override ratio, percent.
+    pub override_pct: f64,
+    /// `MCC_FixSpeed(TRUE)`: the override does not change speeds.
+    pub fixed_speed: bool,
+    queue: VecDeque<Command>,
+    /// End of the last queued command (user coordinates).
+    queue_end: Axes,
+    running: VecDeque<Running>,
+    /// Position of everything finished (user coordinates).
+    base: Axes,
+    /// Current command position (user coordinates).
+    pos: Axes,
+    /// Reference position = user position + offset (MCC_DefinePos moves the offset).
+    offset: Axes,
+    vel: Axes,
+    /// The time scale and its ramp (`rate.rs`).
+    rate: RateState,
+    mode: Mode,
+    single_block: bool,
+    single_block_credit: bool,
+    /// Blending as the engine has reached it in the queue.
+    blend_on: bool,
+    /// In-position check axes enabled by queued markers (used by the in-position check).
+    pub inpos_mask: u32,
+    error: i32,
+    /// Command indices (`queue.rs`).
+    cmd_index: CommandIndex,
+    status: i32,
+    published_info: Option<Info>,
+    /// Software over-travel check per axis (`MCC_SetOverTravelCheck`).
+    pub ot_check: [bool; AXES],
+    /// Tracking error check per axis (`MCC_EnableTrackError` mask).
+    pub track_mask: u32,
+    /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
+    pub track_limit: Axes,
+    /// In-position settings (`MCC_SetInPos*`).
+    pub inpos: InPosSettings,
+    /// In-position check of the last command, while it runs.
+    inpos_wait: Option<InPosWait>,
+    /// `MCC_GetInPosStatus`: 0xFF per axis once in position, until the next command.
+    inpos_status: [u8; AXES],
+    /// Output changes the queue reached this tick (the engine makes them).
+    outputs: Vec<Output>,
+    /// Set when the group's commands run outside the card (an MC3B: `external`).
+    external: Option<Box<dyn ExternalExecutor>>,
+    /// Axes whose channels are being homed (`MCC_Home`), one bit each: the homing drives
+    /// their positions and the group takes no command meanwhile.
+    homing: u32,
+    /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
+    pub trace_notes: Option<Vec<super::trace::Note>>,
+}
+
+impl GroupState {
+    /// A stopped group at position 0.
+    pub fn new(index: usize, def: GroupDef, axes: [AxisMech; AXES]) -> GroupState {
+        GroupState {
+            index,
+            def,
+            axes,
+            settings: Settings::default(),
+            blend_queued: false,
+            override_pct: 100.0,
+            fixed_speed: false,
+            // Grows as it fills (`enqueue` reserves fallibly): reserving the queue size up
+            // front (464 bytes a command) asked 44.5 GB for 96 queues of 1,000,000 and
+            // aborted the program under a memory limit.
+            queue: VecDeque::new(),
+            queue_end: [0.0; AXES],
+            running: VecDeque::new(),
+            base: [0.0; AXES],
+            pos: [0.0; AXES],
+            offset: [0.0; AXES],
+            vel: [0.0; AXES],
+            rate: RateState::default(),
+            mode: Mode::Normal,
+            single_block: false,
+            single_block_credit: false,
+            blend_on: false,
+            inpos_mask: 0,
+            error: 0,
+            cmd_index: CommandIndex::default(),
+            status: c::GMS_STOP,
+            published_info: None,
+            ot_check: [false; AXES],
+            track_mask: 0,
+            track_limit: [f64::INFINITY; AXES],
+            inpos: InPosSettings::default(),
+            inpos_wait: None,
+            inpos_status: [0; AXES],
+            outputs: Vec::new(),
+            external: None,
+            homing: 0,
+            trace_notes: None,
+        }
+    }
+
+    /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).
+    pub fn reset(&mut self, axes: [AxisMech; AXES]) {
+        let external = self.external.take();
+        let notes = self.trace_notes.take();
+        *self = GroupState::new(self.index, self.def, axes);
+        self.trace_notes = notes;
+        // An MC3B group stays on its device, rezeroed.
+        if let Some(mut x) = external {
+            x.rezero();
+            self.external = Some(x);
+            self.external_positions();
+        }
+    }
+
+    /// The planning context: settings, axes and the end of the queue.
+    pub fn ctx(&self) -> Ctx<'_> {
+        Ctx {
+            settings: &self.settings,
+            axes: &self.axes,
+            from: self.queue_end,
+            offset: self.offset,
+        }
+    }
+
+    /// Motion status (`GMS_*`).
+    pub fn status(&self) -> i32 {
+        self.status
+    }
+
+    /// Records an event for the trace (nothing but this check when not tracing).
+    #[inline]
+    fn note(&mut self, n: super::trace::Note) {
+        if let Some(v) = self.trace_notes.as_mut() {
+            v.push(n);
+        }
+    }
+
+    /// Notes the running commands as cut short (they are about to be dropped).
+    fn note_stopped(&mut self) {
+        if let Some(v) = self.trace_notes.as_mut() {
+            for r in &self.running {
+                v.push(super::trace::Note::End {
+                    index: r.cmd.index,
+                    ctype: r.cmd.ctype,
+                    stopped: true,
+                });
+            }
+        }
+    }
+
+    /// The error record (0 when none).
+    pub fn error(&self) -> i32 {
+        self.error
+    }
+
+    /// Records an error: the group stops executing commands until `MCC_ClearError`.
+    pub fn set_error(&mut self, code: i32) {
+        if self.error == 0 {
+            self.note(super::trace::Note::ErrorSet(code));
+            self.error = code;
+        }
+    }
+
+    /// `MCC_ClearError`.
+    pub fn clear_error(&mut self) {
+        if self.error != 0 {
+            self.note(super::trace::Note::ErrorCleared(self.error));
+        }
+        self.error = 0;
+        self.update_status();
+    }
+
+    /// Stops at once because a check tripped, dropping the queue; records `record`.
+    pub fn stop_for(&mut self, record: Option<i32>) {
+        self.stop_here();
+        if let Some(code) = record {
+            self.set_error(code);
+        }
+        self.update_status();
+    }
+
+    /// Velocity per axis (UU/s).
+    pub fn vel(&self) -> Axes {
+        self.vel
+    }
+
+    /// The current position (user coordinates).
+    pub fn pos(&self) -> Axes {
+        self.pos
+    }
+
+    /// The current reference position of axis `i` (user position + offset).
+    pub fn ref_pos(&self, i: usize) -> f64 {
+        self.pos[i] + self.offset[i]
+    }
+
+    /// `MCC_DefinePos`: the current position of `axis` becomes `value` (only when stopped;
+    /// `value` must be a position of the axis, `config::range::position`).
+    pub fn define_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
+        crate::config::range::position(value, self.axes[axis].factor)?;
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        let shift = value - self.pos[axis];
+        self.offset[axis] -= shift;
+        self.pos[axis] = value;
+        self.base[axis] = value;
+        self.queue_end[axis] = value;
+        Ok(())
+    }
+
+    /// `MCC_DefinePosHere`: the command position of axis `i` becomes the position the card
+    /// has output (its pulse count in UU); only when stopped.
+    pub fn sync_to_output(&mut self, i: usize) -> McclResult<()> {
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        let f = self.axes[i].factor;
+        if f != 0.0 {
+            let here = self.pulses(i) as f64 / f - self.offset[i];
+            self.pos[i] = here;
+            self.base[i] = here;
+            self.queue_end[i] = here;
+        }
+        Ok(())
+    }
+}

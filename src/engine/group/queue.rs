@@ -1,0 +1,178 @@
+//! The group's bounded command queue: queuing (indices, growth, refusals), single-block
+//! mode, and taking the next command off it (the switches it passes on the way).
+
+use super::GroupState;
+use super::Mode;
+use crate::engine::command::{Command, Output, Plan};
+use crate::error::{McclError, McclResult};
+use crate::vendor::consts as c;
+
+/// Commands a queue grows by at least when it is full (doubling from there on).
+const QUEUE_MIN_GROWTH: usize = 16;
+
+/// The indices of a group's commands (`MCC_SetCommandIndex`, `MCC_GetCommandInfo`).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct CommandIndex {
+    /// The index the next queued command gets.
+    pub(super) next: i32,
+    /// Whether each queued command counts the index up; off after
+    /// `MCC_SetCommandIndex` with manual numbering (every command gets the index set).
+    pub(super) auto: bool,
+    /// Commands started since `MCC_ResetCommandIndexLD` (`nCommandIndex_LD`).
+    pub(super) ld: i32,
+    /// The last command started: its index and its `ld` count.
+    pub(super) last_started: Option<(i32, i32)>,
+}
+
+impl Default for CommandIndex {
+    fn default() -> Self {
+        CommandIndex {
+            next: 0,
+            auto: true,
+            ld: 0,
+            last_started: None,
+        }
+    }
+}
+
+impl GroupState {
+    /// Commands waiting in the queue (not counting those running).
+    pub fn queued(&self) -> usize {
+        self.queue.len()
+    }
+
+    /// Whether the group has anything to do.
+    pub fn busy(&self) -> bool {
+        self.status != c::GMS_STOP || !self.queue.is_empty()
+    }
+
+    /// Queues a command; returns its index. `ABORT_NOT_FINISH_ERR` while an abort is
+    /// still decelerating, `COMMAND_BUFFER_FULL_ERR` when the queue is full or the memory
+    /// to grow it (doubling, up to the queue size) cannot be had.
+    pub fn enqueue(&mut self, mut cmd: Command) -> McclResult<i32> {
+        if self.homing != 0 {
+            return Err(McclError::NotAccepted);
+        }
+        if let Some(x) = &self.external {
+            x.check(&cmd, &self.axes)?;
+        }
+        if self.mode == Mode::Aborting {
+            return Err(McclError::AbortNotFinished);
+        }
+        if self.queue.len() >= self.def.queue_size {
+            return Err(McclError::BufferFull);
+        }
+        // Memory the queue cannot get is a full queue: an error code, never an abort.
+        if self.queue.len() == self.queue.capacity() {
+            let room = self.def.queue_size - self.queue.len();
+            let want = self.queue.len().max(QUEUE_MIN_GROWTH).min(room);
+            if self.queue.try_reserve_exact(want).is_err() {
+                return Err(McclError::BufferFull);
+            }
+        }
+        cmd.index = self.cmd_index.next;
+        if self.cmd_index.auto {
+            self.cmd_index.next = self.cmd_index.next.wrapping_add(1) & 0x7FFF_FFFF;
+        }
+        match cmd.plan {
+            Plan::Blend(on) => self.blend_queued = on,
+            _ => self.queue_end = cmd.target,
+        }
+        crate::fault::point("enqueue");
+        let idx = cmd.index;
+        self.queue.push_back(cmd);
+        self.update_status();
+        Ok(idx)
+    }
+
+    /// Index management (`MCC_ResetCommandIndex`, `MCC_SetCommandIndex`).
+    pub fn set_command_index(&mut self, index: i32, manual: bool) {
+        self.cmd_index.next = index;
+        self.cmd_index.auto = !manual;
+    }
+
+    /// The index the next queued command gets.
+    pub fn next_command_index(&self) -> i32 {
+        self.cmd_index.next
+    }
+
+    /// `MCC_ResetCommandIndexLD`.
+    pub fn reset_ld_index(&mut self) {
+        self.cmd_index.ld = 0;
+    }
+
+    /// Single-block mode: after each command the group waits for `MCC_RunSingleBlock`.
+    pub fn set_single_block(&mut self, on: bool) {
+        self.single_block = on;
+        self.single_block_credit = false;
+        self.update_status();
+    }
+
+    /// `MCC_RunSingleBlock`: lets one more command run.
+    pub fn run_single_block(&mut self) -> McclResult<()> {
+        if !self.single_block {
+            return Err(McclError::NotAccepted);
+        }
+        self.single_block_credit = true;
+        self.update_status();
+        Ok(())
+    }
+
+    /// `MCC_EnableBlendInstant`: switches blending now, not through the queue.
+    pub fn set_blend_now(&mut self, on: bool) {
+        self.blend_on = on;
+        self.blend_queued = on;
+    }
+
+    /// Whether a new command may start now.
+    pub(super) fn may_start(&self) -> bool {
+        self.error == 0
+            && matches!(self.mode, Mode::Normal)
+            && (!self.single_block || self.single_block_credit)
+            && !self.inpos_wait.is_some_and(|w| w.blocks())
+    }
+
+    /// Pops queued switches that are now reached; returns the next motion/delay command.
+    pub(super) fn pop_next(&mut self) -> Option<Command> {
+        while let Some(front) = self.queue.front() {
+            match front.plan {
+                Plan::Blend(on) => {
+                    self.blend_on = on;
+                    self.queue.pop_front();
+                }
+                Plan::InPos(on, mask) => {
+                    if on {
+                        self.inpos_mask |= mask;
+                    } else {
+                        self.inpos_mask &= !mask;
+                    }
+                    self.queue.pop_front();
+                }
+                Plan::Output(o) => {
+                    self.outputs.push(o);
+                    self.queue.pop_front();
+                }
+                _ => return self.queue.pop_front(),
+            }
+        }
+        None
+    }
+
+    /// The next queued motion/delay command's plan, looking past queued switches.
+    pub(super) fn peek_motion(&self) -> Option<&Plan> {
+        self.queue
+            .iter()
+            .map(|c| &c.plan)
+            .find(|p| !matches!(p, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
+    }
+
+    /// Output changes the queue reached since the last call.
+    pub fn take_outputs(&mut self) -> Vec<Output> {
+        std::mem::take(&mut self.outputs)
+    }
+
+    /// Whether the queue reached output changes since the last [`GroupState::take_outputs`].
+    pub fn has_outputs(&self) -> bool {
+        !self.outputs.is_empty()
+    }
+}

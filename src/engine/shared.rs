@@ -1,0 +1,253 @@
+//! What the engine thread and the program's threads share ([`Shared`]): the clock, the
+//! groups behind their locks, the published snapshots and statuses, the simulated
+//! machine, the card's outputs and peripherals, the routines and the go home in progress.
+//! The tick ([`super::tick`]), the virtual-time polls ([`super::poll`]) and the go-home
+//! control ([`super::homing::control`]) are methods of it in their own files.
+
+use super::group::GroupState;
+use super::snapshot::{GroupSnapshot, SnapshotCell};
+use super::tick::tick_ns;
+use super::{axes_of, homing, isr, safety, trace};
+use crate::clock::{Clock, ClockMode};
+use crate::config::{GroupDef, MacTable, AXES, CARDS, GROUPS};
+use crate::error::{McclError, McclResult};
+use crate::machine::Machine;
+use parking_lot::{Mutex, MutexGuard};
+use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, Ordering};
+use std::time::Duration;
+
+/// What the engine thread and the program's threads share.
+#[derive(Debug)]
+pub struct Shared {
+    /// The tick clock.
+    pub clock: Clock,
+    /// Group slot -> position in `groups`.
+    pub(super) slots: [Option<usize>; GROUPS],
+    /// The running groups.
+    pub(super) groups: Vec<Mutex<GroupState>>,
+    /// Per position in `groups`: the axes whose pulses command their channel, one bit each.
+    /// Several groups may map the same channel; the tick sends it the pulses of the last
+    /// axis (in group order, then axis order) mapping it, so the others need none computed.
+    /// The mapping is fixed while the engine runs (a group's channels come from its
+    /// definition).
+    pub(super) commanding: Vec<u32>,
+    /// Published state per group slot.
+    pub(super) snaps: Vec<SnapshotCell>,
+    /// Per group slot: the tick count at its last status poll and last position read
+    /// (virtual clocks: a repeated read at the same virtual time is a program waiting).
+    pub(super) last_poll: Vec<[AtomicU64; 2]>,
+    /// Per group slot: the published motion status.
+    pub(super) status: Vec<AtomicI32>,
+    /// A fast-clock poll in progress: group slot (or -1) and the status it saw; the engine
+    /// ends the run of ticks when that status changes.
+    pub(super) watch: (AtomicI32, AtomicI32),
+    /// Number of cards passed to `MCC_InitSystem`.
+    pub cards: usize,
+    /// The simulated machine behind the channels. Lock order: machine before a group.
+    pub machine: Mutex<Machine>,
+    /// Hardware limit switch check (`MCC_EnableLimitSwitchCheck` mode, -1 when off).
+    pub limit_check: AtomicI32,
+    /// `MCC_EnableDryRun` is in effect.
+    pub dry_run: AtomicBool,
+    /// Publish snapshots on every tick even under a virtual clock (set while code runs on
+    /// the engine thread between ticks, i.e. interrupt callbacks are registered).
+    pub live_snapshots: AtomicBool,
+    /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
+    pub servo_on: Vec<AtomicU32>,
+    /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
+    pub pos_ready: Vec<AtomicBool>,
+    /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
+    pub max_pulse_stock: AtomicU32,
+    /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
+    pub periph: Vec<crate::card::PeriphCell>,
+    /// The interrupt routines registered per card (`isr`).
+    pub isr: isr::IsrTable,
+    /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
+    pub(super) homing: Mutex<Option<homing::Homing>>,
+    /// `MCC_GetGoHomeStatus`: [`homing::HOME_BUSY`], [`homing::HOME_DONE`] or
+    /// [`homing::HOME_NONE`].
+    pub(super) home_status: AtomicI32,
+    /// The tick count and count of go-home status reads at it (see [`Shared::poll`]).
+    pub(super) home_poll: AtomicU64,
+    /// A fast-clock wait on the go-home status in progress: the status it saw, or
+    /// `i32::MIN` when none.
+    pub(super) home_watch: AtomicI32,
+    /// Cards whose channels 0..2 are an MC3B, one bit each.
+    pub(super) mc3b_cards: AtomicU32,
+    /// The card whose MC3B runs a go home, or -1.
+    pub(super) mc3b_home_card: AtomicI32,
+    pub(super) trace: Mutex<Option<trace::Trace>>,
+    /// Whether `trace` is `Some` (read without its lock on every tick).
+    pub(super) tracing: bool,
+}
+
+/// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum` (ZH manual §2.6.5: 60).
+pub const DEFAULT_PULSE_STOCK: u32 = 60;
+
+impl Shared {
+    /// The shared state of an engine about to start: `groups` (slot, definition) with
+    /// the mechanism facts of `mac`, the machine, and the trace (whose group headers are
+    /// written here). Every group is published once by the caller.
+    pub(super) fn new(
+        mode: ClockMode,
+        period: Duration,
+        groups: &[(usize, GroupDef)],
+        mac: &MacTable,
+        machine: Machine,
+        trace: Option<trace::Trace>,
+    ) -> Shared {
+        let cards = machine.cards.len();
+        let mut slots = [None; GROUPS];
+        let mut gs = Vec::with_capacity(groups.len());
+        for (n, (i, d)) in groups.iter().enumerate() {
+            slots[*i] = Some(n);
+            gs.push(Mutex::new(GroupState::new(*i, *d, axes_of(d, mac))));
+        }
+        let mut trace = trace;
+        if let Some(t) = trace.as_mut() {
+            for g in &gs {
+                t.start_group(&mut g.lock(), mac, &machine);
+            }
+        }
+        let commanding = commanding_axes(&gs);
+        Shared {
+            clock: Clock::new(mode, period),
+            slots,
+            commanding,
+            last_poll: (0..GROUPS)
+                .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
+                .collect(),
+            status: (0..GROUPS).map(|_| AtomicI32::new(-1)).collect(),
+            watch: (AtomicI32::new(-1), AtomicI32::new(0)),
+            groups: gs,
+            snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
+            cards: machine.cards.len(),
+            machine: Mutex::new(machine),
+            limit_check: AtomicI32::new(-1),
+            dry_run: AtomicBool::new(false),
+            live_snapshots: AtomicBool::new(false),
+            servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
+            pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
+            max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
+            periph: (0..cards)
+                .map(|_| crate::card::PeriphCell::new(tick_ns(period)))
+                .collect(),
+            isr: isr::IsrTable::new(cards),
+            homing: Mutex::new(None),
+            home_status: AtomicI32::new(homing::HOME_NONE),
+            home_poll: AtomicU64::new(u64::MAX),
+            home_watch: AtomicI32::new(i32::MIN),
+            mc3b_cards: AtomicU32::new(0),
+            mc3b_home_card: AtomicI32::new(-1),
+            tracing: trace.is_some(),
+            trace: Mutex::new(trace),
+        }
+    }
+
+    /// Locks group `g` (`GROUP_PARAMETER_ERR` when no such group runs).
+    pub fn group(&self, g: u16) -> McclResult<MutexGuard<'_, GroupState>> {
+        let slot = self
+            .slots
+            .get(usize::from(g))
+            .copied()
+            .flatten()
+            .ok_or(McclError::Group)?;
+        Ok(self.groups[slot].lock())
+    }
+
+    /// Marks `card` as an MC3B (its groups run on the device).
+    pub fn mark_mc3b(&self, card: usize) {
+        if card < 32 {
+            self.mc3b_cards.fetch_or(1 << card, Ordering::AcqRel);
+        }
+    }
+
+    /// Whether group `g` runs.
+    pub fn has_group(&self, g: u16) -> bool {
+        self.slots.get(usize::from(g)).copied().flatten().is_some()
+    }
+
+    /// The last published state of group `g`, without locking.
+    pub fn snapshot(&self, g: u16) -> McclResult<GroupSnapshot> {
+        if !self.has_group(g) {
+            return Err(McclError::Group);
+        }
+        Ok(self.snaps[usize::from(g)].load())
+    }
+
+    /// Publishes a group's state (call with its lock held) and, unless dry-running, the
+    /// pulse counters of its channels.
+    pub fn publish(&self, g: &mut GroupState) {
+        let cell = &self.snaps[g.index];
+        let info = g.info();
+        if g.published_info().as_ref() != Some(&info) {
+            cell.store_info(&info);
+            *g.published_info() = Some(info);
+        }
+        let motion = g.motion();
+        cell.store_motion(&motion);
+        self.status[g.index].store(motion.status, Ordering::Release);
+    }
+
+    /// Checks that `card` is one of the cards passed to `MCC_InitSystem`.
+    pub fn card(&self, card: crate::config::CardIx) -> McclResult<usize> {
+        if card.0 < self.cards {
+            Ok(card.0)
+        } else {
+            Err(McclError::Parameter)
+        }
+    }
+
+    /// Whether a group driving channel `ch` of `card` is moving.
+    pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
+        self.groups.iter().any(|g| {
+            let g = g.lock();
+            g.status() == crate::vendor::consts::GMS_RUNNING
+                && g.axes.iter().any(|a| a.channel == Some((card, ch)))
+        })
+    }
+
+    /// Every running group, locked one at a time.
+    pub fn for_each_group(&self, mut f: impl FnMut(&mut GroupState)) {
+        for g in &self.groups {
+            let mut g = g.lock();
+            f(&mut g);
+            self.publish(&mut g);
+        }
+    }
+
+    /// Resets every group (`MCC_ResetMotion`, `MCC_UpdateParam`) with new mechanism facts.
+    pub fn reset_all(&self, mac: &MacTable) {
+        self.cancel_homing();
+        self.for_each_group(|g| {
+            let axes = axes_of(&g.def, mac);
+            g.reset(axes);
+        });
+    }
+
+    /// Stops every group where it stands with the error record [`safety::ERR_INTERNAL`]
+    /// (the state after a caught panic that may have touched any group).
+    pub fn stop_all_for_internal_error(&self) {
+        self.for_each_group(|g| g.stop_for(Some(safety::ERR_INTERNAL)));
+    }
+}
+
+/// [`Shared::commanding`] for `groups`: per group, the axes that are the last (in group
+/// order, then axis order) to map their channel.
+fn commanding_axes(groups: &[Mutex<GroupState>]) -> Vec<u32> {
+    let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
+    for (n, g) in groups.iter().enumerate() {
+        for (i, ax) in g.lock().axes.iter().enumerate() {
+            if let Some((card, ch)) = ax.channel {
+                if let Some(c) = last.get_mut(card) {
+                    c[ch] = Some((n, i));
+                }
+            }
+        }
+    }
+    let mut out = vec![0u32; groups.len()];
+    for (n, i) in last.iter().flatten().flatten() {
+        out[*n] |= 1 << i;
+    }
+    out
+}

@@ -1,0 +1,199 @@
+//! One tick of the whole card ([`Shared::tick`]): the go home, every group's tick, the
+//! pulses to the channels, the simulated machine's step, triggers and interrupts, the
+//! safety checks, the snapshots and the trace; and the recovery from a panicking tick.
+
+use super::homing::control::apply_homing;
+use super::shared::Shared;
+use super::{command, isr, snapshot};
+use crate::config::{AXES, CARDS, GROUPS};
+use std::sync::atomic::Ordering;
+use std::time::Duration;
+
+/// Under a virtual clock, a long run of ticks publishes snapshots this often (and at its
+/// last tick): the program is waiting meanwhile, so only other threads could look.
+pub const PUBLISH_EVERY: u64 = 16;
+
+impl Shared {
+    /// [`Shared::tick`], and after a panic inside it (a defect of the library) a defined
+    /// state instead of a dead engine thread: every group stops where it stands, drops
+    /// its queue and records [`safety::ERR_INTERNAL`]; the clock goes on. The locks the
+    /// tick held were released while unwinding (parking_lot locks do not poison).
+    pub(super) fn tick_or_recover(&self) -> (bool, isr::Collected) {
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick())) {
+            Ok(done) => done,
+            Err(_) => {
+                self.stop_all_for_internal_error();
+                (true, isr::Collected::default())
+            }
+        }
+    }
+
+    /// One tick of the whole card.
+    ///
+    /// Snapshots are published every tick under the realtime clock and while
+    /// `live_snapshots` is set (callbacks registered). Under a virtual clock the program
+    /// is waiting while ticks run, so a long run publishes every [`PUBLISH_EVERY`] ticks
+    /// and at its last tick (see [`Shared::end_of_run`]); statuses are published every
+    /// tick. Returns whether it published everything, and the interrupts to deliver.
+    fn tick(&self) -> (bool, isr::Collected) {
+        let dt = self.clock.period().as_secs_f64();
+        let n = self.clock.ticks();
+        let t_ns = self.running_tick_end_ns();
+        let full = !self.clock.mode().virtual_time()
+            || self.live_snapshots.load(Ordering::Relaxed)
+            || n % PUBLISH_EVERY == 0
+            || self.clock.last_of_run();
+        let mut trace = self.trace.lock();
+        let mut machine = self.machine.lock();
+        let dry = self.dry_run.load(Ordering::Relaxed);
+        let mut cmds = [[None::<i64>; AXES]; CARDS];
+        let mut own_checks = [false; GROUPS];
+        let homed = self.tick_homing(&mut machine, dt);
+        for (n, g) in self.groups.iter().enumerate() {
+            let mut g = g.lock();
+            g.tick(dt);
+            crate::fault::point("group tick");
+            if let Some(h) = &homed {
+                apply_homing(&mut g, h);
+            }
+            if let Some(status) = g.take_home_result() {
+                // A go home on an MC3B ended.
+                self.home_status.store(status, Ordering::Release);
+                self.mc3b_home_card.store(-1, Ordering::Release);
+                g.end_homing();
+            }
+            own_checks[n] = g.has_safety_checks();
+            if g.has_outputs() {
+                let outputs = g.take_outputs();
+                self.make_outputs(g.def.card.0, &outputs);
+            }
+            // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
+            if !dry {
+                let mut axes = self.commanding[n];
+                while axes != 0 {
+                    let i = axes.trailing_zeros() as usize;
+                    axes &= axes - 1;
+                    if let Some((card, ch)) = g.axes[i].channel {
+                        cmds[card][ch] = Some(g.pulses(i));
+                    }
+                }
+            }
+            if full {
+                self.publish(&mut g);
+            } else {
+                self.status[g.index].store(g.status(), Ordering::Release);
+            }
+            if let Some(t) = trace.as_mut() {
+                t.row(t_ns, &g);
+                t.group_events(t_ns, &mut g);
+            }
+        }
+        if let Some(h) = &homed {
+            // The homed channels get the homing's position, grouped or not, dry run or not.
+            for (ch, a) in h.axes.iter().enumerate() {
+                if let (Some((x, _)), Some(chan)) = (a.pos, machine.channel(h.card, ch)) {
+                    cmds[h.card][ch] = Some(snapshot::round_pulses(x * chan.factor()));
+                }
+            }
+        }
+        let now_ns = t_ns;
+        let m = &mut *machine;
+        for (card, chans) in m.cards.iter_mut().enumerate() {
+            for (ch, chan) in chans.iter_mut().enumerate() {
+                let cmd = cmds[card][ch].unwrap_or_else(|| chan.command_pulses());
+                chan.step(cmd, dt);
+            }
+            let thresholds = m.settings[card].error_threshold;
+            if m.triggers[card].tick_idle(chans, &thresholds) {
+                continue;
+            }
+            let prev: [crate::machine::SensorLevels; AXES] =
+                std::array::from_fn(|i| chans[i].prev_levels());
+            let fired = m.triggers[card].tick(chans, &prev, &thresholds, now_ns);
+            if !fired.interrupts.is_empty() {
+                for &n in &fired.compares {
+                    self.periph[card].lock().dac_trigger(n);
+                }
+                for i in fired.interrupts {
+                    self.raise(card, i);
+                }
+            }
+        }
+        self.safety(&machine, full, dt, &own_checks);
+        if let Some(t) = trace.as_mut() {
+            t.machine_events(t_ns, &machine);
+            if let Some(h) = &homed {
+                t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
+            }
+        }
+        drop(machine);
+        drop(trace);
+        (full, self.tick_peripherals(tick_ns(self.clock.period())))
+    }
+
+    /// After a tick that did not publish everything: if it ended the run (the waiting
+    /// program resumes now), publishes every group.
+    pub(super) fn end_of_run(&self) {
+        if self.clock.last_of_run() {
+            self.for_each_group(|_| {});
+        }
+    }
+
+    /// Virtual time, ns, at the end of the tick now running (the time its trace rows and
+    /// events carry).
+    pub(super) fn running_tick_end_ns(&self) -> u128 {
+        u128::from(self.clock.ticks() + 1) * self.clock.period().as_nanos()
+    }
+
+    /// Writes the interrupts a tick collected to the trace's events file.
+    pub(super) fn trace_interrupts(&self, collected: &isr::Collected) {
+        let t_ns = self.running_tick_end_ns();
+        if let Some(t) = self.trace.lock().as_mut() {
+            t.interrupt_events(t_ns, collected, &self.isr);
+        }
+    }
+
+    /// Output changes of queued `MCC_Queue*OutputValue` commands.
+    fn make_outputs(&self, card: usize, outputs: &[command::Output]) {
+        for o in outputs {
+            match *o {
+                command::Output::Local { mask, value } => {
+                    if let Some(s) = self.servo_on.get(card) {
+                        let (m, v) = (u32::from(mask & 0xFF), u32::from(value & 0xFF));
+                        let _ = s.fetch_update(Ordering::AcqRel, Ordering::Acquire, |old| {
+                            Some(old & !m | v & m)
+                        });
+                    }
+                }
+                command::Output::Remote {
+                    ario,
+                    set,
+                    port,
+                    mask,
+                    value,
+                } => {
+                    if let Some(p) = self.periph.get(card) {
+                        let mut p = p.lock();
+                        let sets = if ario { None } else { Some(&mut p.rio.rio) };
+                        let r = match sets {
+                            Some(rio) => rio.get_mut(usize::from(set)).map(|s| {
+                                let old = s.output(port).unwrap_or(0);
+                                s.set_output(port, old & !mask | value & mask)
+                            }),
+                            None => p.rio.ario.get_mut(usize::from(set)).map(|s| {
+                                let old = s.output(port).unwrap_or(0);
+                                s.set_output(port, old & !mask | value & mask)
+                            }),
+                        };
+                        let _ = r;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The length of a tick in ns, as the peripherals count it.
+pub(super) fn tick_ns(period: Duration) -> u64 {
+    u64::try_from(period.as_nanos()).unwrap_or(u64::MAX)
+}
