@@ -147,7 +147,7 @@ impl IsrTable {
 }
 
 /// Error record of a card reset by its watchdog, set on every group of that card
-/// (no vendor code exists; 0xF103 is unused by the vendor's table, see README).
+/// (no vendor code exists; 0xF103 is unused by the vendor's table, see docs/decisions.md).
 pub const ERR_WATCHDOG_RESET: i32 = crate::error_record::ErrorRecord::WatchdogReset.code();
 
 impl Shared {
