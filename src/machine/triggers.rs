@@ -502,6 +502,40 @@ mod tests {
     }
 
     #[test]
+    fn compare_table_is_all_or_nothing() {
+        // 0, 3, 6, 9: (10 - 0) / 3 + 1 = 4 values; 10 itself is not reached.
+        let mut t = CardTriggers::default();
+        t.push_compare_table(1, &CompareTable::new(0, 10, 3).unwrap())
+            .unwrap();
+        assert_eq!(t.stock[1].iter().copied().collect::<Vec<_>>(), [0, 3, 6, 9]);
+        assert_eq!(t.armed_compare(1), 0);
+        // Downwards with a negative delta: 5, 3, 1.
+        t.push_compare_table(2, &CompareTable::new(5, 0, -2).unwrap())
+            .unwrap();
+        assert_eq!(t.stock[2].iter().copied().collect::<Vec<_>>(), [5, 3, 1]);
+        // A zero delta, or one pointing away from the end, is refused.
+        assert_eq!(
+            CompareTable::new(0, 10, 0).unwrap_err(),
+            McclError::Parameter
+        );
+        assert_eq!(
+            CompareTable::new(0, 10, -1).unwrap_err(),
+            McclError::Parameter
+        );
+        // One value over the stock's size: nothing is added. The stock of channel 1
+        // holds 4, so MAX - 3 more values (0..=MAX - 4) would make MAX + 1.
+        let n = MAX_COMPARE_STOCK as i64 - 3;
+        let big = CompareTable::new(0, n - 1, 1).unwrap();
+        assert_eq!(t.push_compare_table(1, &big), Err(McclError::BufferFull));
+        assert_eq!(t.stock_count(1), 4);
+        // MAX - 4 values fill it exactly.
+        let fits = CompareTable::new(0, n - 2, 1).unwrap();
+        t.push_compare_table(1, &fits).unwrap();
+        assert_eq!(t.stock_count(1), MAX_COMPARE_STOCK);
+        assert_eq!(t.push_compare(1, 7), Err(McclError::BufferFull));
+    }
+
+    #[test]
     fn compare_values_fire_in_turn() {
         let mut ch = chans();
         let mut t = CardTriggers::default();
