@@ -367,6 +367,62 @@ impl Default for Config {
 }
 
 impl Config {
+    /// `MCC_SetMacParam`: validated mechanism parameters for one channel, refused
+    /// (`PARAMETER_ERR`, nothing changed) when the channel's go-home offset would no
+    /// longer be a position it can count.
+    pub fn set_mac_param(&mut self, cd: CardIx, ch: ChannelIx, p: SYS_MAC_PARAM) -> McclResult<()> {
+        validate_mac_param(&p)?;
+        validate_home_config(&self.home[cd.0][ch.0], &p)?;
+        self.mac[cd.0][ch.0] = p;
+        Ok(())
+    }
+
+    /// `MCC_SetEncoderConfig`: a validated encoder configuration for one channel.
+    pub fn set_encoder_config(
+        &mut self,
+        cd: CardIx,
+        ch: ChannelIx,
+        e: SYS_ENCODER_CONFIG,
+    ) -> McclResult<()> {
+        validate_encoder_config(&e)?;
+        self.encoder[cd.0][ch.0] = e;
+        Ok(())
+    }
+
+    /// `MCC_SetHomeConfig`: go-home parameters for one channel, validated against the
+    /// channel's mechanism parameters as set.
+    pub fn set_home_config(
+        &mut self,
+        cd: CardIx,
+        ch: ChannelIx,
+        h: SYS_HOME_CONFIG,
+    ) -> McclResult<()> {
+        validate_home_config(&h, &self.mac[cd.0][ch.0])?;
+        self.home[cd.0][ch.0] = h;
+        Ok(())
+    }
+
+    /// `MCC_SetCompParam`: the compensation tables of one channel, applied at
+    /// `MCC_UpdateCompParam` (`wHome_No` above 255 is `PARAMETER_ERR`).
+    pub fn set_comp_param(
+        &mut self,
+        cd: CardIx,
+        ch: ChannelIx,
+        p: crate::vendor::SYS_COMP_PARAM,
+    ) -> McclResult<()> {
+        if p.wHome_No > 255 {
+            return Err(McclError::Parameter);
+        }
+        self.comp[cd.0][ch.0] = Some(p);
+        Ok(())
+    }
+
+    /// A feed speed as general motion uses it: at most the system maximum
+    /// (`MCC_SetSysMaxSpeed`).
+    pub fn feed_speed(&self, v: f64) -> f64 {
+        v.min(self.sys_max_speed)
+    }
+
     /// Puts a group into the lowest free slot and returns its index
     /// (`GROUP_PARAMETER_ERR` when all 96 are used).
     pub fn create_group(&mut self, def: GroupDef) -> McclResult<usize> {

@@ -148,6 +148,11 @@ pub fn with<R>(f: impl FnOnce(&mut System) -> R) -> R {
     f(&mut SYSTEM.lock())
 }
 
+/// Runs `f` on the configuration the program sets (the system locked).
+pub fn config<R>(f: impl FnOnce(&mut Config) -> R) -> R {
+    f(&mut SYSTEM.lock().config)
+}
+
 /// The running engine's shared state (`INITIAL_MOTION_ERR` when the system is closed).
 pub fn active() -> McclResult<Arc<Shared>> {
     ACTIVE.read().clone().ok_or(McclError::NotInitialized)
@@ -440,6 +445,12 @@ impl System {
         // The default group becomes an explicit one so the size survives the next init.
         self.config.groups[gi] = Some(def);
         Ok(())
+    }
+
+    /// `MCC_GetConvFactor`: pulses per user unit of a channel with the mechanism
+    /// parameters in effect ([`System::mac_in_effect`]).
+    pub fn conv_factor(&self, card: CardIx, ch: ChannelIx) -> f64 {
+        crate::config::conv_factor(&self.mac_in_effect(card, ch))
     }
 
     /// The mechanism parameters in effect for a channel (running: those applied at init

@@ -323,14 +323,14 @@ impl Default for ArioTiming {
 }
 
 impl ArioTiming {
-    /// `MCC_SetARIOUpdateRate`: `rate` updates per second at most (finite, > 0); the
-    /// period is rounded to whole ns (at least 1).
+    /// `MCC_SetARIOUpdateRate`: `rate` updates per second at most (finite, > 0, its
+    /// cycle `1 / rate` at most the longest time of [`crate::config::range::time_ms`],
+    /// so `rate` >= 2.33e-7 Hz); the period is rounded to whole ns (at least 1).
     pub fn set_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
         if !rate.is_finite() || rate <= 0.0 || set >= SETS {
             return Err(McclError::Parameter);
         }
-        // `as` saturates: a rate so low that the period exceeds u64 ns (584 years) waits
-        // that long.
+        crate::config::range::time_ms(1000.0 / rate)?;
         self.update_ns[set] = Some(((1e9 / rate).round() as u64).max(1));
         self.elapsed_ns[set] = 0;
         Ok(())
@@ -643,9 +643,17 @@ mod tests {
         );
         assert_eq!(m.ario_timing.set_divider(0, 0), Err(McclError::Parameter));
         assert_eq!(m.ario_timing, before);
-        // Extreme values saturate instead of overflowing.
-        m.ario_timing.set_update_rate(0, f64::MIN_POSITIVE).unwrap();
-        assert_eq!(m.ario_timing.cycle_ns(0, 1), u64::MAX);
+        // A cycle longer than the longest time (2^32 − 1 ms) is refused: 1000 / 2.3e-7 ms
+        // = 4.35e9 ms; 2.33e-7 Hz (4.29e9 ms) is the slowest whole-digit rate accepted.
+        for r in [f64::MIN_POSITIVE, 2.3e-7] {
+            assert_eq!(
+                m.ario_timing.set_update_rate(0, r),
+                Err(McclError::Parameter)
+            );
+        }
+        assert_eq!(m.ario_timing, before);
+        m.ario_timing.set_update_rate(0, 2.33e-7).unwrap();
+        // A very fast rate saturates at a period of 1 ns.
         m.ario_timing.set_update_rate(0, 1e300).unwrap();
         assert_eq!(m.ario_timing.update_ns[0], Some(1));
         assert!(ario_transfer_ticks(&mut m, 1).is_empty(), "bus-bound 5 ms");
