@@ -14,7 +14,7 @@ use std::os::raw::c_int;
 use std::sync::atomic::Ordering;
 
 /// Turns the hardware limit switch check on: `HLP_BIDIR` (0), `HLP_UNIDIR` (1),
-/// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); see the README for the rules.
+/// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); rules: docs/simulated-machine.md.
 #[no_mangle]
 pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
     ffi_boundary! {

@@ -212,7 +212,7 @@ pub unsafe extern "C" fn MCC_GetRIOOutputValue(
 
 /// Consecutive failed transfers a slave of the RIO set may have before the set reports
 /// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
-/// first failed transfer, 5 the sixth. Undocumented by the vendor; see the README.
+/// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
 #[no_mangle]
 pub extern "C" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_tolerance(wTime)) }

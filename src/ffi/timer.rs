@@ -1,6 +1,6 @@
 //! Timer and watchdog (user manual §2.13; examples manual §31–32; vendor header "Timer &
 //! Watch Dog Control"). Units: the timer counts system clocks of 10 ns; the watchdog
-//! counts timer periods (see `crate::card::timer` and the README).
+//! counts timer periods (see `crate::card::timer` and docs/compatibility.md).
 
 use super::{with_card, Done};
 use crate::error::McclResult;
