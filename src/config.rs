@@ -6,6 +6,8 @@ use crate::error::{McclError, McclResult};
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM};
 
+pub mod legacy;
+
 /// Cards the library accepts (`MAX_CARD_NUM`).
 pub(crate) const CARDS: usize = c::MAX_CARD_NUM as usize;
 /// Channels (axes) per card and axes per group.
