@@ -132,3 +132,70 @@ fn update_mach_param_applies_them_to_the_running_card() {
     assert_eq!(&pulses(0)[..2], &[3000, 250]);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+// ---- handshake ----
+
+use std::sync::atomic::{AtomicU32, Ordering::SeqCst};
+
+static HSK_CALLS: AtomicU32 = AtomicU32::new(0);
+static HSK_SUM: AtomicU32 = AtomicU32::new(0);
+
+unsafe extern "C" fn hsk_count(p: *mut HSKINT) {
+    HSK_CALLS.fetch_add(1, SeqCst);
+    // SAFETY: valid for the call.
+    HSK_SUM.fetch_add(u32::from(unsafe { (*p).HANDSHAKE }), SeqCst);
+}
+
+fn handshake_under(clock: &str) {
+    use MCCLPCI_IMP::ffi::handshake::*;
+    use MCCLPCI_IMP::ffi::isr::MCC_SetHSKRoutine;
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", clock);
+    assert_eq!(MCC_HostInterrupt(0), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_SlaveInterrupt(0), INITIAL_MOTION_ERR);
+    assert_eq!(common::init_ms(2, 1), NO_ERR);
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    HSK_CALLS.store(0, SeqCst);
+    HSK_SUM.store(0, SeqCst);
+    // No routine: the causes are dropped, nothing is called.
+    assert_eq!(MCC_SlaveInterrupt(0), NO_ERR);
+    MCC_TimeDelay(1);
+    assert_eq!(MCC_SetHSKRoutine(Some(hsk_count), 1), NO_ERR);
+    // Two host interrupts and one slave interrupt between ticks: the card acknowledges
+    // both requests in its next tick and the slave's own interrupt is delivered after it
+    // too: one call with HANDSHAKE = 3, after exactly one tick.
+    let t0 = shared.clock.ticks();
+    assert_eq!(MCC_HostInterrupt(1), NO_ERR);
+    assert_eq!(MCC_HostInterrupt(1), NO_ERR);
+    assert_eq!(MCC_SlaveInterrupt(1), NO_ERR);
+    assert_eq!(HSK_CALLS.load(SeqCst), 0, "not before a tick");
+    MCC_TimeDelay(1);
+    assert_eq!(shared.clock.ticks(), t0 + 1);
+    assert_eq!((HSK_CALLS.load(SeqCst), HSK_SUM.load(SeqCst)), (1, 3));
+    assert_eq!(shared.periph[1].lock().handshake.received, 2);
+    // Nothing more: each request is acknowledged once.
+    MCC_TimeDelay(5);
+    assert_eq!(HSK_CALLS.load(SeqCst), 1);
+    // Card 0's routine is not registered: its handshakes call nothing.
+    assert_eq!(MCC_HostInterrupt(0), NO_ERR);
+    MCC_TimeDelay(2);
+    assert_eq!(HSK_CALLS.load(SeqCst), 1);
+    // Bad cards: card 2 was not initialised, 12 does not exist; nothing raised.
+    for bad in [2, 12, 0xFFFF] {
+        assert_eq!(MCC_HostInterrupt(bad), PARAMETER_ERR);
+        assert_eq!(MCC_SlaveInterrupt(bad), PARAMETER_ERR);
+    }
+    MCC_TimeDelay(2);
+    assert_eq!(HSK_CALLS.load(SeqCst), 1);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn handshake_interrupts_stepped() {
+    handshake_under("stepped");
+}
+
+#[test]
+fn handshake_interrupts_fast() {
+    handshake_under("fast");
+}

@@ -9,6 +9,7 @@
 
 pub mod adc;
 pub mod dac;
+pub mod handshake;
 pub mod rio;
 pub mod timer;
 
@@ -16,6 +17,7 @@ use crate::config::AXES;
 use crate::interrupt::{Interrupt, Pending};
 use adc::{Adc, AdcSource};
 use dac::Dac;
+use handshake::Handshake;
 use parking_lot::{Mutex, MutexGuard};
 use rio::Master;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -34,6 +36,8 @@ pub struct Peripherals {
     pub adc: Adc,
     /// The remote I/O masters.
     pub rio: Master,
+    /// The handshake with the host (`MCC_HostInterrupt`, `MCC_SlaveInterrupt`).
+    pub handshake: Handshake,
     /// Interrupt causes raised since the last delivery.
     pub pending: Pending,
 }
@@ -57,6 +61,7 @@ impl Peripherals {
             self.adc.tick(&inputs, &mut self.pending);
         }
         self.rio.tick(dt_ns, &mut self.pending);
+        self.handshake.tick(&mut self.pending);
         reset
     }
 
@@ -66,6 +71,7 @@ impl Peripherals {
         !self.timer.enabled()
             && !self.watchdog.enabled()
             && !self.adc.converting()
+            && !self.handshake.waiting()
             && self.pending.is_empty()
             && self.rio.idle()
     }
