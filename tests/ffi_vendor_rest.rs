@@ -199,3 +199,172 @@ fn handshake_interrupts_stepped() {
 fn handshake_interrupts_fast() {
     handshake_under("fast");
 }
+
+// ---- converter and RIO timing ----
+
+fn adc_in(ch: u16) -> f32 {
+    let mut v = f32::NAN;
+    // SAFETY: valid pointer.
+    assert_eq!(
+        unsafe { MCCLPCI_IMP::ffi::adc::MCC_GetADCInput(&mut v, ch, 0) },
+        NO_ERR
+    );
+    v
+}
+
+fn timing_under(clock: &str) {
+    use MCCLPCI_IMP::ffi::adc::*;
+    use MCCLPCI_IMP::ffi::converter_timing::*;
+    use MCCLPCI_IMP::ffi::dac::MCC_SetDACOutput;
+    use MCCLPCI_IMP::ffi::rio::*;
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", clock);
+    assert_eq!(MCC_SetDACClockDivider(10, 0), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_SetRIOUpdateRate(10.0, 0, 0), INITIAL_MOTION_ERR);
+    assert_eq!(common::init_ms(1, 1), NO_ERR); // 1 ms ticks
+
+    // DAC at 100 Hz (10 ms per update), read through ADC 0 (wired to DAC 0) in single
+    // mode, 0..10 V. Value k/4 V written at k ms (k = 0..29), a tick, a conversion: the
+    // first write shows at once; later ones wait for the cycle from the last change:
+    // k/4 of k = 9 shows in the tick ending at 10 ms, of k = 19 at 20 ms, of 29 at 30 ms.
+    assert_eq!(MCC_SetDACUpdateRate(100.0, 0), NO_ERR);
+    assert_eq!(MCC_SetADCConvType(ADC_TYPE_UNI_DIFF, 0, 0), NO_ERR);
+    assert_eq!(MCC_SetADCConvMode(ADC_MODE_SINGLE, 0), NO_ERR);
+    assert_eq!(MCC_SetADCSingleChannel(0, 0), NO_ERR);
+    let mut seen = Vec::new();
+    for k in 0..30 {
+        assert_eq!(MCC_SetDACOutput(k as f32 / 4.0, 0, 0), NO_ERR);
+        MCC_TimeDelay(1);
+        assert_eq!(MCC_StartADCConv(0), NO_ERR);
+        seen.push(adc_in(0));
+    }
+    let mut want = vec![0.0; 9];
+    want.extend([2.25; 10]);
+    want.extend([4.75; 10]);
+    want.push(7.25);
+    assert_eq!(seen, want, "DAC output at 100 Hz");
+
+    // ADC free-running: 4 channels at divider 12500 scan in 4 x 16 x 12500 x 10 ns =
+    // 8 ms, counted from MCC_StartADCConv. DAC 0 (default timing again: each write shows
+    // at once) takes t/4 V before tick t; the scans in ticks 8 and 16 read 2 V and 4 V.
+    assert_eq!(MCC_SetDACUpdateRate(1e9, 0), NO_ERR); // 1 ns: bus-bound 1.6 us again
+    assert_eq!(MCC_SetADCConvMode(ADC_MODE_FREE, 0), NO_ERR);
+    assert_eq!(MCC_SetADCClockDivider(12_500, 0), NO_ERR);
+    for ch in 0..4 {
+        assert_eq!(MCC_EnableADCConvChannel(ch, 0), NO_ERR);
+    }
+    assert_eq!(MCC_SetDACOutput(0.0, 0, 0), NO_ERR);
+    MCC_TimeDelay(1);
+    assert_eq!(MCC_StartADCConv(0), NO_ERR);
+    let before = adc_in(0);
+    let mut seen = Vec::new();
+    for t in 1..=16 {
+        assert_eq!(MCC_SetDACOutput(t as f32 / 4.0, 0, 0), NO_ERR);
+        MCC_TimeDelay(1);
+        seen.push(adc_in(0));
+    }
+    let mut want = vec![before; 7];
+    want.extend([2.0; 8]);
+    want.push(4.0);
+    assert_eq!(seen, want, "ADC scans every 8 ms");
+    // 500 Hz with divider 50 (bus 32 us): a scan every 2 ms from the call.
+    assert_eq!(MCC_SetADCClockDivider(50, 0), NO_ERR);
+    assert_eq!(MCC_SetADCUpdateRate(500.0, 0), NO_ERR);
+    let mut seen = Vec::new();
+    for t in 1..=4 {
+        assert_eq!(MCC_SetDACOutput(5.0 + t as f32, 0, 0), NO_ERR);
+        MCC_TimeDelay(1);
+        seen.push(adc_in(0));
+    }
+    assert_eq!(seen, [4.0, 7.0, 7.0, 9.0], "scans in ticks 2 and 4");
+    assert_eq!(MCC_StopADCConv(0), NO_ERR);
+
+    // RIO set 0, slave 1 loops back; 300 Hz: a cycle of 3333333 ns from the call ends in
+    // the ticks ending at 4, 7 and 10 ms (3.33, 6.67, 9.999999 ms).
+    assert_eq!(MCC_EnableRIOSetControl(0, 0), NO_ERR);
+    assert_eq!(MCC_EnableRIOSlaveControl(0, 1, 0), NO_ERR);
+    assert_eq!(MCC_SetRIOUpdateRate(300.0, 0, 0), NO_ERR);
+    let mut seen = Vec::new();
+    for t in 1..=10u16 {
+        assert_eq!(MCC_SetRIOOutputValue(t, 0, 1, 0), NO_ERR);
+        MCC_TimeDelay(1);
+        let mut v = 0xFFFF;
+        // SAFETY: valid pointer.
+        assert_eq!(unsafe { MCC_GetRIOInputValue(&mut v, 0, 1, 0) }, NO_ERR);
+        seen.push(v);
+    }
+    assert_eq!(
+        seen,
+        [0, 0, 0, 4, 4, 4, 7, 7, 7, 10],
+        "RIO transfers at 300 Hz"
+    );
+    // Divider 6000 with 2 slaves: 2 x 32 x 6000 x 10 ns = 3.84 ms > 3.33 ms: ticks 4, 8.
+    assert_eq!(MCC_EnableRIOSlaveControl(0, 3, 0), NO_ERR);
+    assert_eq!(MCC_SetRIOClockDivider(6000, 0, 0), NO_ERR);
+    let mut seen = Vec::new();
+    for t in 11..=18u16 {
+        assert_eq!(MCC_SetRIOOutputValue(t, 0, 1, 0), NO_ERR);
+        MCC_TimeDelay(1);
+        let mut v = 0xFFFF;
+        // SAFETY: valid pointer.
+        assert_eq!(unsafe { MCC_GetRIOInputValue(&mut v, 0, 1, 0) }, NO_ERR);
+        seen.push(v);
+    }
+    assert_eq!(seen, [10, 10, 10, 14, 14, 14, 14, 18]);
+
+    // Refusals change nothing.
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    let snap = |s: &std::sync::Arc<MCCLPCI_IMP::engine::Shared>| {
+        let p = s.periph[0].lock();
+        (p.dac.cadence, p.adc.cadence, p.rio.rio_timing)
+    };
+    let before = snap(&shared);
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e-9] {
+        assert_eq!(MCC_SetDACUpdateRate(bad, 0), PARAMETER_ERR, "{bad}");
+        assert_eq!(MCC_SetADCUpdateRate(bad, 0), PARAMETER_ERR, "{bad}");
+        assert_eq!(MCC_SetRIOUpdateRate(bad, 0, 0), PARAMETER_ERR, "{bad}");
+    }
+    assert_eq!(MCC_SetDACClockDivider(0, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetADCClockDivider(0, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetRIOClockDivider(0, 0, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetRIOClockDivider(10, 2, 0), PARAMETER_ERR);
+    assert_eq!(MCC_SetRIOUpdateRate(10.0, 2, 0), PARAMETER_ERR);
+    for card in [1, 12, 0xFFFF] {
+        assert_eq!(MCC_SetDACClockDivider(10, card), PARAMETER_ERR);
+        assert_eq!(MCC_SetDACUpdateRate(10.0, card), PARAMETER_ERR);
+        assert_eq!(MCC_SetADCClockDivider(10, card), PARAMETER_ERR);
+        assert_eq!(MCC_SetADCUpdateRate(10.0, card), PARAMETER_ERR);
+        assert_eq!(MCC_SetRIOClockDivider(10, 0, card), PARAMETER_ERR);
+        assert_eq!(MCC_SetRIOUpdateRate(10.0, 0, card), PARAMETER_ERR);
+    }
+    let after = snap(&shared);
+    assert_eq!(
+        (
+            before.0.divider,
+            before.0.update_ns,
+            before.1.divider,
+            before.1.update_ns
+        ),
+        (
+            after.0.divider,
+            after.0.update_ns,
+            after.1.divider,
+            after.1.update_ns
+        )
+    );
+    assert_eq!(
+        before.2.map(|c| (c.divider, c.update_ns)),
+        after.2.map(|c| (c.divider, c.update_ns))
+    );
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn converter_and_rio_timing_stepped() {
+    timing_under("stepped");
+}
+
+#[test]
+fn converter_and_rio_timing_fast() {
+    timing_under("fast");
+}
