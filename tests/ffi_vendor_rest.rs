@@ -368,3 +368,219 @@ fn converter_and_rio_timing_stepped() {
 fn converter_and_rio_timing_fast() {
     timing_under("fast");
 }
+
+// ---- cone ----
+
+fn cur_pos(group: u16) -> [f64; 8] {
+    let mut p = [f64::NAN; 8];
+    let [a, b, c, d, e, f, g, h] = &mut p;
+    // SAFETY: eight valid pointers.
+    let r = unsafe { MCCLPCI_IMP::ffi::coordinate::MCC_GetCurPos(a, b, c, d, e, f, g, h, group) };
+    assert_eq!(r, NO_ERR);
+    p
+}
+
+fn command_count(group: u16) -> i32 {
+    let mut n = -1;
+    // SAFETY: valid pointer.
+    let r = unsafe { MCCLPCI_IMP::ffi::status::MCC_GetCommandCount(&mut n, group) };
+    assert_eq!(r, NO_ERR);
+    n
+}
+
+/// Samples a cone in plane axes (a, b) about (ca, cb) with normal axis n that starts at
+/// `p0` (read before it was queued: a status poll may already run ticks), every tick
+/// until the group stops: the unwrapped angle turned (signed), the radius and the normal
+/// coordinate of each sample.
+fn sample_cone(
+    p0: [f64; 8],
+    a: usize,
+    b: usize,
+    n: usize,
+    ca: f64,
+    cb: f64,
+) -> Vec<(f64, f64, f64)> {
+    let mut prev = (p0[b] - cb).atan2(p0[a] - ca);
+    let mut turned = 0.0;
+    let mut out = vec![(0.0, (p0[a] - ca).hypot(p0[b] - cb), p0[n])];
+    let mut stopped = false;
+    while !stopped {
+        stopped = MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus(0) == GMS_STOP;
+        let p = cur_pos(0);
+        let ang = (p[b] - cb).atan2(p[a] - ca);
+        let mut d = ang - prev;
+        while d > std::f64::consts::PI {
+            d -= std::f64::consts::TAU;
+        }
+        while d < -std::f64::consts::PI {
+            d += std::f64::consts::TAU;
+        }
+        turned += d;
+        prev = ang;
+        out.push((turned, (p[a] - ca).hypot(p[b] - cb), p[n]));
+        MCC_TimeDelay(1);
+    }
+    out
+}
+
+fn cone_under(clock: &str) {
+    use std::f64::consts::TAU;
+    use MCCLPCI_IMP::ffi::cone::*;
+    use MCCLPCI_IMP::ffi::motion::*;
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", clock);
+    assert_eq!(common::init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(20.0, 0), 20.0);
+    assert_eq!(MCC_SetAccTime(100.0, 0), NO_ERR);
+    assert_eq!(MCC_SetDecTime(100.0, 0), NO_ERR);
+    assert!(MCC_Line(10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0xFF) >= 0);
+    wait_stop(0);
+
+    // Counter-clockwise about (0, 0) from (10, 0, 0) to Z = 6 at pitch 2: 3 turns; the
+    // radius grows 2 per turn, 10 -> 16; the end is (16, 0, 6) (3 whole turns).
+    let p0 = cur_pos(0);
+    assert!(MCC_ConeXY_Z(0.0, 0.0, 6.0, 2.0, 2.0, CIR_CCW as BYTE, 0) >= 0);
+    let s = sample_cone(p0, 0, 1, 2, 0.0, 0.0);
+    let end = cur_pos(0);
+    assert!(
+        (end[0] - 16.0).abs() <= 1e-12 && end[1].abs() <= 1e-12,
+        "{end:?}"
+    );
+    assert_eq!(end[2], 6.0, "the normal axis ends exactly at dfPos");
+    assert!(
+        ((s.last().unwrap().0 / TAU) - 3.0).abs() <= 1e-12,
+        "3 turns"
+    );
+    // Every tick: radius = 10 + 2 x turns and Z = 2 x turns within 1e-9; counter-
+    // clockwise: the angle never decreases.
+    for (k, w) in s.windows(2).enumerate() {
+        let (turned, r, z) = w[1];
+        let turns = turned / TAU;
+        assert!(
+            (r - (10.0 + 2.0 * turns)).abs() <= 1e-9,
+            "radius at tick {k}"
+        );
+        assert!((z - 2.0 * turns).abs() <= 1e-9, "Z at tick {k}");
+        assert!(turned >= w[0].0, "counter-clockwise at tick {k}");
+    }
+    // Path speed: the arc length between two samples, integrated independently here
+    // (Simpson, 8 intervals, of |dp/dφ| = sqrt(r² + k² + h²) with k = 2/2π, h = 2/2π),
+    // over 1 ms. Length: about 6π x 13 = 245 UU; at 20 UU/s with 100 ms ramps the
+    // command lasts L/F + 0.1 s, so at least (L/F − 0.1 s)/1 ms ticks cruise at exactly
+    // 20 UU/s (within 1e-9), and no tick is faster.
+    let k = 2.0 / TAU;
+    let arc = |p0: f64, p1: f64| {
+        let f = |t: f64| ((10.0 + k * t).powi(2) + 2.0 * k * k).sqrt();
+        let h = (p1 - p0) / 8.0;
+        let mut acc = f(p0) + f(p1);
+        for i in 1..8 {
+            acc += f(p0 + i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
+        }
+        acc * h / 3.0
+    };
+    let speeds: Vec<f64> = s.windows(2).map(|w| arc(w[0].0, w[1].0) / 1e-3).collect();
+    let total: f64 = s.windows(2).map(|w| arc(w[0].0, w[1].0)).sum();
+    assert!(
+        speeds.iter().all(|&v| v <= 20.0 + 1e-9),
+        "never above the feed"
+    );
+    let cruise = speeds.iter().filter(|&&v| (v - 20.0).abs() <= 1e-9).count();
+    let min_cruise = ((total / 20.0 - 0.1) * 1000.0) as usize;
+    assert!(
+        cruise >= min_cruise,
+        "{cruise} cruise ticks, {min_cruise} expected"
+    );
+    // The command ran as long as the profile says: L/F + (0.1 + 0.1)/2 s, to a tick.
+    let ticks = s.len() - 1;
+    let want = ((total / 20.0 + 0.1) * 1000.0).round() as usize;
+    assert!(ticks.abs_diff(want) <= 2, "{ticks} ticks, {want} expected");
+
+    // Clockwise in ZX (first coordinate Z), shrinking: about (Z, X) = (0, 0) from
+    // (X, Y, Z) = (16, 6, 0)... the group stands at (16, 0, 6): Z = 6, X = 16 in plane
+    // (Z, X) coordinates, radius sqrt(36 + 256). Y goes to -1 at pitch 0.5: 2 turns,
+    // the radius shrinking 1 per turn.
+    let r0 = (36.0f64 + 256.0).sqrt();
+    let p0 = cur_pos(0);
+    assert!(MCC_ConeZX_Y(0.0, 0.0, -1.0, 0.5, -1.0, CIR_CW as BYTE, 0) >= 0);
+    let s = sample_cone(p0, 2, 0, 1, 0.0, 0.0);
+    for (k, w) in s.windows(2).enumerate() {
+        let (turned, r, y) = w[1];
+        let turns = -turned / TAU;
+        assert!(
+            (r - (r0 - turns)).abs() <= 1e-9,
+            "radius at tick {k}: {r} {turns} {w:?}"
+        );
+        assert!((y - -0.5 * turns).abs() <= 1e-9, "Y at tick {k}");
+        assert!(turned <= w[0].0, "clockwise at tick {k}");
+    }
+    // The end: 2 whole turns back on the start's ray at radius r0 − 2. (The start's Y is
+    // 16·sin(6π) = −1.2e-14, not 0, so the turns are 2 − 2.4e-14: 2e-12 UU off the ray.)
+    let end = cur_pos(0);
+    assert!((end[2] - 6.0 * (r0 - 2.0) / r0).abs() <= 1e-11, "{end:?}");
+    assert!((end[0] - 16.0 * (r0 - 2.0) / r0).abs() <= 1e-11, "{end:?}");
+    assert_eq!(end[1], -1.0);
+    // YZ, incremental: center 1 UU from the start in Y, X rises 1 at pitch 1: 1 turn.
+    assert_eq!(MCCLPCI_IMP::ffi::coordinate::MCC_SetIncrease(0), NO_ERR);
+    let p = cur_pos(0);
+    assert!(MCC_ConeYZ_X(1.0, 0.0, 1.0, 1.0, 0.5, CIR_CCW as BYTE, 0) >= 0);
+    wait_stop(0);
+    let q = cur_pos(0);
+    // One whole turn from angle π about (Y+1, Z): back at angle π, radius 1.5.
+    assert!((q[1] - (p[1] + 1.0 - 1.5)).abs() <= 1e-12 && (q[2] - p[2]).abs() <= 1e-12);
+    assert_eq!(q[0], p[0] + 1.0);
+    assert_eq!(MCCLPCI_IMP::ffi::coordinate::MCC_SetAbsolute(0), NO_ERR);
+
+    // Refusals: nothing queued, and only the degenerate center records 0xF104.
+    let before = command_count(0);
+    let ok = (0.0, 0.0, 1.0, 1.0, 0.0, CIR_CCW as BYTE);
+    type Args = (f64, f64, f64, f64, f64, BYTE);
+    let bads: Vec<Args> = vec![
+        (f64::NAN, ok.1, ok.2, ok.3, ok.4, ok.5),
+        (ok.0, f64::INFINITY, ok.2, ok.3, ok.4, ok.5),
+        (ok.0, ok.1, f64::NAN, ok.3, ok.4, ok.5),
+        (ok.0, ok.1, ok.2, f64::NEG_INFINITY, ok.4, ok.5),
+        (ok.0, ok.1, ok.2, ok.3, f64::NAN, ok.5),
+        (ok.0, ok.1, ok.2, ok.3, ok.4, 2),
+        (ok.0, ok.1, ok.2, 0.0, ok.4, ok.5),   // zero pitch
+        (ok.0, ok.1, 100.0, 1.0, -1.0, ok.5),  // 100 turns, radius < 0
+        (ok.0, ok.1, ok.2, ok.3, 1e300, ok.5), // beyond the position range
+    ];
+    for (i, a) in bads.iter().enumerate() {
+        for f in [MCC_ConeXY_Z, MCC_ConeYZ_X, MCC_ConeZX_Y] {
+            assert_eq!(
+                f(a.0, a.1, a.2, a.3, a.4, a.5, 0),
+                PARAMETER_ERR,
+                "case {i}"
+            );
+        }
+    }
+    assert_eq!(MCCLPCI_IMP::ffi::status::MCC_GetErrorCode(0), 0);
+    // The start on the center: a bad arc (PARAMETER_ERR and 0xF104), as a helix.
+    let p = cur_pos(0);
+    assert_eq!(MCC_ConeXY_Z(p[0], p[1], 1.0, 1.0, 0.0, 1, 0), PARAMETER_ERR);
+    assert_eq!(MCCLPCI_IMP::ffi::status::MCC_GetErrorCode(0), 0xF104);
+    assert_eq!(MCCLPCI_IMP::ffi::status::MCC_ClearError(0), NO_ERR);
+    assert_eq!(command_count(0), before);
+    // Bad groups answer as the helix does.
+    for g in [1, 96, 0xFFFF] {
+        assert_eq!(
+            MCC_ConeXY_Z(0.0, 0.0, 1.0, 1.0, 0.0, 1, g),
+            MCC_HelicaXY_Z(0.0, 0.0, 1.0, 1.0, 1, g)
+        );
+    }
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+    assert_eq!(
+        MCC_ConeXY_Z(0.0, 0.0, 1.0, 1.0, 0.0, 1, 0),
+        INITIAL_MOTION_ERR
+    );
+}
+
+#[test]
+fn cone_stepped() {
+    cone_under("stepped");
+}
+
+#[test]
+fn cone_fast() {
+    cone_under("fast");
+}

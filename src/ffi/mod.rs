@@ -14,6 +14,7 @@ macro_rules! ffi_boundary {
 }
 
 pub mod adc;
+pub mod cone;
 pub mod converter_timing;
 pub mod coordinate;
 pub mod dac;
