@@ -1407,6 +1407,10 @@ public static class MCCL
     public static extern double MCC_GetOverSpeed(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ChangeFeedSpeed")]
     public static extern double MCC_ChangeFeedSpeed(double dfSpeed, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetUnit")]
+    public static extern int MCC_SetUnit(int nUnitMode, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetUnit")]
+    public static extern int MCC_GetUnit(ushort wGroupIndex = 0);
 
     // ---- Names the IMP manuals use that the headers lack ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutineEx")]

@@ -388,6 +388,8 @@ MCC_API int MCC_CALL MCC_GetInPosTolerance(WORD *pwTolerance0, WORD *pwTolerance
 MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetUnit(int nUnitMode, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetUnit(WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Names the IMP manuals use that the headers lack */
 MCC_API int MCC_CALL MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));

@@ -584,3 +584,114 @@ fn cone_stepped() {
 fn cone_fast() {
     cone_under("fast");
 }
+
+// ---- units ----
+
+fn speeds(group: u16) -> [f64; 8] {
+    let mut v = [f64::NAN; 8];
+    let [a, b, c, d, e, f, g, h] = &mut v;
+    // SAFETY: eight valid pointers.
+    let r = unsafe { MCCLPCI_IMP::ffi::motion::MCC_GetSpeed(a, b, c, d, e, f, g, h, group) };
+    assert_eq!(r, NO_ERR);
+    v
+}
+
+fn units_under(clock: &str) {
+    use MCCLPCI_IMP::ffi::motion::*;
+    use MCCLPCI_IMP::ffi::units::*;
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", clock);
+    // Closed: the implicit group 0 exists, no other.
+    assert_eq!(MCC_GetUnit(0), UNIT_MM);
+    assert_eq!(MCC_GetUnit(1), GROUP_PARAMETER_ERR);
+    for bad in [0, 3, -1, c_int_max()] {
+        assert_eq!(MCC_SetUnit(bad, 0), PARAMETER_ERR);
+    }
+    assert_eq!(MCC_SetUnit(UNIT_INCH, 1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_SetUnit(UNIT_INCH, 0xFFFF), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_GetUnit(0), UNIT_MM, "refusals change nothing");
+    assert_eq!(MCC_SetUnit(UNIT_INCH, 0), NO_ERR);
+    assert_eq!(MCC_GetUnit(0), UNIT_INCH);
+    // X's work zone ends at 50.8 mm = 2 inch.
+    let mut m = get_mach(0, 0);
+    m.dfHighLimit = 50.8;
+    // SAFETY: valid pointer.
+    assert_eq!(unsafe { MCC_SetMachParam(&mut m, 0, 0) }, NO_ERR);
+    assert_eq!(common::init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_GetUnit(0), UNIT_INCH);
+
+    // A line of 0.5 inch = 12.7 mm: 12.7 x 500 pulses per mm = 6350 pulses. Feed 2
+    // inch/s, 100 ms ramps: 0.5 / 2 + 0.1 = 0.35 s = 350 ticks.
+    assert_eq!(MCC_SetFeedSpeed(2.0, 0), 2.0);
+    assert_eq!(MCC_SetAccTime(100.0, 0), NO_ERR);
+    assert_eq!(MCC_SetDecTime(100.0, 0), NO_ERR);
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    let t0 = shared.clock.ticks();
+    assert!(MCC_Line(0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0xFF) >= 0);
+    let mut peak: f64 = 0.0;
+    while MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus(0) != GMS_STOP {
+        MCC_TimeDelay(1);
+        peak = peak.max(speeds(0)[0]);
+    }
+    assert_eq!(pulses(0)[0], 6350);
+    assert_eq!(cur_pos(0)[0], 0.5);
+    assert!((peak - 2.0).abs() <= 1e-9, "feed in inch/s: {peak}");
+    let ticks = shared.clock.ticks() - t0;
+    assert!(ticks.abs_diff(350) <= 2, "{ticks} ticks");
+    // Jog to the work zone's end: 2 inch (50.8 mm / 25.4), at the maximum safe speed
+    // 3000 rpm / 60 x 1 mm = 50 mm/s = 50 / 25.4 inch/s (reached: the ramps of 300 ms
+    // take 1.97 x 0.3 = 0.59 inch of the 1.5); 2 inch = 25400 pulses.
+    assert!(MCCLPCI_IMP::ffi::jog::MCC_JogConti(1, 100.0, b'X' as std::os::raw::c_char, 0) >= 0);
+    let mut peak: f64 = 0.0;
+    while MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus(0) != GMS_STOP {
+        MCC_TimeDelay(1);
+        peak = peak.max(speeds(0)[0]);
+    }
+    assert_eq!(cur_pos(0)[0], 2.0);
+    assert_eq!(pulses(0)[0], 25400);
+    assert!(
+        (peak - 50.0 / 25.4).abs() <= 1e-9,
+        "safe speed in inch/s: {peak}"
+    );
+
+    // Back to mm: read at once, in effect from MCC_UpdateParam (positions start at 0).
+    assert_eq!(MCC_SetUnit(UNIT_MM, 0), NO_ERR);
+    assert_eq!(MCC_GetUnit(0), UNIT_MM);
+    assert!(MCC_Line(0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0xFF) >= 0);
+    wait_stop(0);
+    // Back to X = 0.5 inch: 6350 pulses.
+    assert_eq!(pulses(0)[0], 6350, "still inches until the update");
+    assert_eq!(MCC_UpdateParam(), NO_ERR);
+    let p0 = pulses(0)[0];
+    assert!(MCC_Line(0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0xFF) >= 0);
+    wait_stop(0);
+    assert_eq!(pulses(0)[0] - p0, 250, "0.5 mm = 250 pulses");
+    // Running: a group that does not run is refused.
+    assert_eq!(MCC_SetUnit(UNIT_INCH, 1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_GetUnit(1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+    // A group created anew starts in mm; closing groups forgets their units.
+    assert_eq!(MCC_SetUnit(UNIT_INCH, 0), NO_ERR);
+    assert_eq!(MCC_CloseAllGroups(), NO_ERR);
+    assert_eq!(MCC_GetUnit(0), UNIT_MM);
+    assert_eq!(MCC_CreateGroup(0, 1, 2, -1, -1, -1, -1, -1, 0), 0);
+    assert_eq!(MCC_SetUnit(UNIT_INCH, 0), NO_ERR);
+    assert_eq!(MCC_CloseGroup(0), NO_ERR);
+    assert_eq!(MCC_CreateGroup(0, 1, 2, -1, -1, -1, -1, -1, 0), 0);
+    assert_eq!(MCC_GetUnit(0), UNIT_MM);
+    assert_eq!(MCC_CloseAllGroups(), NO_ERR);
+}
+
+fn c_int_max() -> std::os::raw::c_int {
+    std::os::raw::c_int::MAX
+}
+
+#[test]
+fn units_stepped() {
+    units_under("stepped");
+}
+
+#[test]
+fn units_fast() {
+    units_under("fast");
+}

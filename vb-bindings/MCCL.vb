@@ -1674,6 +1674,12 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ChangeFeedSpeed")>
     Public Function MCC_ChangeFeedSpeed(ByVal dfSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetUnit")>
+    Public Function MCC_SetUnit(ByVal nUnitMode As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetUnit")>
+    Public Function MCC_GetUnit(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
 
     ' ---- Names the IMP manuals use that the headers lack ----
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetLIORoutineEx")>

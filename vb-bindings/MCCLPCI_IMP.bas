@@ -904,6 +904,8 @@ Public Declare Function MCC_GetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByRef pwTol
 Public Declare Function MCC_SetOverSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_SetUnit Lib "MCCLPCI_IMP.dll" (ByVal nUnitMode As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetUnit Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 
 ' ---- Names the IMP manuals use that the headers lack ----
 Public Declare Function MCC_SetLIORoutineEx Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long

@@ -35,6 +35,7 @@ pub mod status;
 pub mod system;
 pub mod timer;
 pub mod trajectory;
+pub mod units;
 
 use crate::config::{CardIx, ChannelIx};
 use crate::error::{McclError, McclResult};
