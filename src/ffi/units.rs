@@ -35,8 +35,11 @@ pub extern "C" fn MCC_SetUnit(nUnitMode: c_int, wGroupIndex: WORD) -> c_int {
                 Ok(())
             })?;
         }
-        system::with(|s| s.config.units[usize::from(wGroupIndex)] = nUnitMode);
-        Ok(c::NO_ERR)
+        system::with(|s| {
+            let u = s.config.units.get_mut(usize::from(wGroupIndex)).ok_or(McclError::Group)?;
+            *u = nUnitMode;
+            Ok(c::NO_ERR)
+        })
     }
 }
 
@@ -47,7 +50,7 @@ pub extern "C" fn MCC_GetUnit(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         system::with(|s| -> McclResult<c_int> {
             s.group_def(wGroupIndex)?;
-            Ok(s.config.units[usize::from(wGroupIndex)])
+            s.config.units.get(usize::from(wGroupIndex)).copied().ok_or(McclError::Group)
         })
     }
 }
