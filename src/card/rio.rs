@@ -635,7 +635,7 @@ mod tests {
         let mut m = Master::default();
         m.rio[1].control = true;
         m.rio[1].set_slave_control(2, true).unwrap();
-        let mut transfers = |m: &mut Master, n: u16| -> Vec<u16> {
+        let transfers = |m: &mut Master, n: u16| -> Vec<u16> {
             let mut at = Vec::new();
             for t in 1..=n {
                 let v = m.rio[1].output(2).unwrap().wrapping_add(1);
