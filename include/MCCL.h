@@ -128,9 +128,9 @@
 
 typedef uint16_t WORD;
 
-typedef uint32_t DWORD;
-
 typedef uint8_t BYTE;
+
+typedef uint32_t DWORD;
 
 typedef struct {
   BYTE OTP0;
@@ -244,6 +244,46 @@ typedef struct {
 typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
 typedef struct {
+  WORD wType;
+  WORD wApproachDir;
+  WORD wLeaveDir;
+  WORD wSensorMode;
+  double dfOffset;
+} HOME_CONFIG;
+
+typedef struct {
+  WORD wType;
+  WORD wAInverse;
+  WORD wBInverse;
+  WORD wCInverse;
+  WORD wABSwap;
+  WORD wInputRate;
+  WORD wPaddle[2];
+} SYS_ENCODER_CONFIG;
+
+typedef SYS_ENCODER_CONFIG ENCODER_CONFIG;
+
+typedef struct {
+  WORD wPosToEncoderDir;
+  WORD wRPM;
+  DWORD dwPPR;
+  double dfPitch;
+  double dfGearRatio;
+  double dfHighLimit;
+  double dfLowLimit;
+  double dfHighLimitOffset;
+  double dfLowLimitOffset;
+  WORD wPulseMode;
+  WORD wPulseWidth;
+  WORD wCommandMode;
+  WORD wPaddle;
+  HOME_CONFIG stHome;
+  ENCODER_CONFIG stEncoder;
+  WORD wOverTravelUpSensorMode;
+  WORD wOverTravelDownSensorMode;
+} SYS_MACH_PARAM;
+
+typedef struct {
   DWORD dwInterval;
   WORD wHome_No;
   WORD wPaddle;
@@ -283,16 +323,6 @@ typedef struct {
 } SYS_MAC_PARAM;
 
 typedef struct {
-  WORD wType;
-  WORD wAInverse;
-  WORD wBInverse;
-  WORD wCInverse;
-  WORD wABSwap;
-  WORD wInputRate;
-  WORD wPaddle[2];
-} SYS_ENCODER_CONFIG;
-
-typedef struct {
   WORD wMode;
   WORD wDirection;
   WORD wSensorMode;
@@ -330,8 +360,6 @@ typedef struct {
   WORD wOverTravelDownSensorMode;
 } SYS_MAC_PARAM_EX;
 
-typedef SYS_ENCODER_CONFIG ENCODER_CONFIG;
-
 typedef struct {
   WORD wType;
   WORD wAInverse;
@@ -359,34 +387,6 @@ typedef struct {
   WORD wStaticError;
   WORD wTolerance;
 } SYS_HOME_CONFIG_EX;
-
-typedef struct {
-  WORD wType;
-  WORD wApproachDir;
-  WORD wLeaveDir;
-  WORD wSensorMode;
-  double dfOffset;
-} HOME_CONFIG;
-
-typedef struct {
-  WORD wPosToEncoderDir;
-  WORD wRPM;
-  DWORD dwPPR;
-  double dfPitch;
-  double dfGearRatio;
-  double dfHighLimit;
-  double dfLowLimit;
-  double dfHighLimitOffset;
-  double dfLowLimitOffset;
-  WORD wPulseMode;
-  WORD wPulseWidth;
-  WORD wCommandMode;
-  WORD wPaddle;
-  HOME_CONFIG stHome;
-  ENCODER_CONFIG stEncoder;
-  WORD wOverTravelUpSensorMode;
-  WORD wOverTravelDownSensorMode;
-} SYS_MACH_PARAM;
 
 typedef struct {
   int32_t nCardIndex;

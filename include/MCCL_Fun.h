@@ -39,6 +39,8 @@ MCC_API int MCC_CALL MCC_CreateGroupEx(int xMapToCh, int yMapToCh, int zMapToCh,
 MCC_API int MCC_CALL MCC_CloseGroup(int nGroupIndex);
 MCC_API int MCC_CALL MCC_CloseAllGroups(void);
 MCC_API int MCC_CALL MCC_SetHSKRoutine(HSKISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_HostInterrupt(WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SlaveInterrupt(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetEncoderConfig(SYS_ENCODER_CONFIG *pstEncoderConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
@@ -365,8 +367,20 @@ MCC_API int MCC_CALL MCC_LineB(double dfB, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_HelicaXY_Z(double dfCX, double dfCY, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ConeXY_Z(double dfCX, double dfCY, double dfPos, double dfPitch, double CenterRate, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ConeYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, double CenterRate, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_ConeZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, double CenterRate, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2) */
+MCC_API int MCC_CALL MCC_SetMachParam(SYS_MACH_PARAM *pstMachParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetMachParam(SYS_MACH_PARAM *pstMachParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_UpdateMachParam(void);
+MCC_API int MCC_CALL MCC_SetDACClockDivider(WORD wDivider, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetDACUpdateRate(double dfUpdateRate, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCClockDivider(WORD wDivider, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetADCUpdateRate(double dfUpdateRate, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetRIOClockDivider(WORD wDivider, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetRIOUpdateRate(double dfUpdateRate, WORD wSet, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetInPosCheckTime(WORD wCheckTime, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetInPosStableTime(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetInPosTolerance(WORD wTolerance0, WORD wTolerance1, WORD wTolerance2, WORD wTolerance3, WORD wTolerance4, WORD wTolerance5, WORD wTolerance6, WORD wTolerance7, WORD wGroupIndex MCC_DEFAULT(0));
@@ -374,6 +388,8 @@ MCC_API int MCC_CALL MCC_GetInPosTolerance(WORD *pwTolerance0, WORD *pwTolerance
 MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetUnit(int nUnitMode, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_GetUnit(WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Names the IMP manuals use that the headers lack */
 MCC_API int MCC_CALL MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));

@@ -6,6 +6,8 @@ use crate::error::{McclError, McclResult};
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM};
 
+pub mod legacy;
+
 /// Cards the library accepts (`MAX_CARD_NUM`).
 pub(crate) const CARDS: usize = c::MAX_CARD_NUM as usize;
 /// Channels (axes) per card and axes per group.
@@ -285,6 +287,20 @@ pub struct GroupDef {
     pub channels: [Option<ChannelIx>; AXES],
     /// Capacity of the group's motion command queue.
     pub queue_size: usize,
+    /// The unit of the lengths the program gives and reads in this group: `UNIT_MM`
+    /// (the mechanism parameters' own unit) or `UNIT_INCH` (`MCC_SetUnit`; see
+    /// [`unit_scale`]).
+    pub unit: i32,
+}
+
+/// Mechanism units (the unit of `dfPitch` and the work zone, taken to be mm) per unit of
+/// a group in `unit`: 25.4 for `UNIT_INCH`, else 1.
+pub fn unit_scale(unit: i32) -> f64 {
+    if unit == c::UNIT_INCH {
+        25.4
+    } else {
+        1.0
+    }
 }
 
 impl GroupDef {
@@ -318,6 +334,7 @@ impl GroupDef {
             card,
             channels,
             queue_size,
+            unit: c::UNIT_MM,
         })
     }
 
@@ -327,6 +344,7 @@ impl GroupDef {
             card: CardIx(0),
             channels: std::array::from_fn(|i| Some(ChannelIx(i))),
             queue_size: c::MOTION_QUEUE_SIZE as usize,
+            unit: c::UNIT_MM,
         }
     }
 }
@@ -347,6 +365,9 @@ pub struct Config {
     /// Compensation tables set per card and channel (`MCC_SetCompParam`), applied by
     /// `MCC_UpdateCompParam`.
     pub comp: Vec<[Option<crate::vendor::SYS_COMP_PARAM>; AXES]>,
+    /// The unit of each group slot (`MCC_SetUnit`); a group created or closed starts
+    /// over in `UNIT_MM`.
+    pub units: [i32; GROUPS],
 }
 
 /// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s. The manuals
@@ -362,6 +383,7 @@ impl Default for Config {
             groups: [None; GROUPS],
             sys_max_speed: DEFAULT_SYS_MAX_SPEED,
             comp: vec![[None; AXES]; CARDS],
+            units: [c::UNIT_MM; GROUPS],
         }
     }
 }
@@ -432,6 +454,7 @@ impl Config {
             .position(Option::is_none)
             .ok_or(McclError::Group)?;
         self.groups[slot] = Some(def);
+        self.units[slot] = c::UNIT_MM;
         Ok(slot)
     }
 
@@ -443,11 +466,15 @@ impl Config {
             .enumerate()
             .filter_map(|(i, g)| g.map(|g| (i, g)))
             .collect();
-        if created.is_empty() {
+        let mut groups = if created.is_empty() {
             vec![(0, GroupDef::default_group())]
         } else {
             created
+        };
+        for (i, d) in &mut groups {
+            d.unit = self.units[*i];
         }
+        groups
     }
 }
 

@@ -393,7 +393,10 @@ impl System {
             .filter(|&g| g < GROUPS)
             .ok_or(McclError::Group)?;
         match self.config.groups[slot].take() {
-            Some(_) => Ok(()),
+            Some(_) => {
+                self.config.units[slot] = crate::vendor::consts::UNIT_MM;
+                Ok(())
+            }
             None => Err(McclError::Group),
         }
     }
@@ -402,6 +405,7 @@ impl System {
     pub fn close_all_groups(&mut self) -> McclResult<()> {
         self.require_closed()?;
         self.config.groups = [None; GROUPS];
+        self.config.units = [crate::vendor::consts::UNIT_MM; GROUPS];
         Ok(())
     }
 

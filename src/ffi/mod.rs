@@ -14,12 +14,16 @@ macro_rules! ffi_boundary {
 }
 
 pub mod adc;
+pub mod cone;
+pub mod converter_timing;
 pub mod coordinate;
 pub mod dac;
 pub mod encoder;
+pub mod handshake;
 pub mod home;
 pub mod isr;
 pub mod jog;
+pub mod legacy_params;
 pub mod limits;
 pub mod local_io;
 pub mod motion;
@@ -31,6 +35,7 @@ pub mod status;
 pub mod system;
 pub mod timer;
 pub mod trajectory;
+pub mod units;
 
 use crate::config::{CardIx, ChannelIx};
 use crate::error::{McclError, McclResult};
