@@ -250,7 +250,7 @@ impl Server {
                     }
                     let _ = stream.set_nodelay(true);
                     if self.conns.len() >= MAX_CONNECTIONS {
-                        let _ = (&stream).write(&error(503, "too many connections"));
+                        refuse(&stream);
                         continue;
                     }
                     self.conns.push(Conn {
@@ -321,10 +321,7 @@ impl Server {
                 return any;
             }
             Parsed::Bad(status, why) => Some(error(status, why)),
-            Parsed::Done(req) => {
-                self.last_request = Some(Instant::now());
-                self.handle(i, &req)
-            }
+            Parsed::Done(req) => self.handle(i, &req),
         };
         let c = &mut self.conns[i];
         if let Some(out) = answer {
@@ -343,6 +340,9 @@ impl Server {
         {
             return Some(error(403, "missing or wrong token"));
         }
+        // Before the answer goes out: the ticks the client causes next copy the view.
+        self.last_request = Some(Instant::now());
+        self.source.want(true);
         let _ = req.query;
         match (req.method, req.path) {
             ("GET", "/") | ("GET", "/index.html") => {
@@ -411,6 +411,22 @@ impl Server {
         }
         true
     }
+}
+
+/// Answers 503 to a connection beyond the limit and closes it; what the client sent so
+/// far is read first (closing over unread bytes would reset the connection before the
+/// client reads the answer).
+fn refuse(stream: &TcpStream) {
+    let mut sink = [0u8; 1024];
+    let mut s = stream;
+    for _ in 0..16 {
+        match s.read(&mut sink) {
+            Ok(n) if n > 0 => {}
+            _ => break,
+        }
+    }
+    let _ = s.write(&error(503, "too many connections"));
+    let _ = stream.shutdown(std::net::Shutdown::Write);
 }
 
 /// Writes what a connection has pending without blocking; a finished response closes it.
