@@ -34,6 +34,9 @@ pub struct Running {
     pub sim: crate::sim::config::SimConfig,
     /// The MC3B devices behind cards with an `mc3b_port` (closed after the engine).
     pub mc3b: Vec<crate::mc3b::backend::Device>,
+    /// The browser panel (`MCCL_PANEL`), stopped before the engine.
+    #[cfg(feature = "panel")]
+    pub panel: Option<crate::panel::Panel>,
 }
 
 /// Configuration plus the running card.
@@ -118,6 +121,8 @@ impl Turn {
         let was_running = old.is_some();
         let mut keep = Vec::new();
         if let Some(r) = old {
+            #[cfg(feature = "panel")]
+            drop(r.panel);
             let Running { engine, mc3b, .. } = r;
             keep.extend(engine.finish());
             // The MC3B ports close after the engine that used them stopped.
@@ -265,6 +270,12 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         }
     }
     attach_mc3b(engine.shared(), &mc3b);
+    #[cfg(feature = "panel")]
+    let panel = crate::panel::start_from_env(engine.shared(), &groups);
+    #[cfg(not(feature = "panel"))]
+    if std::env::var_os("MCCL_PANEL").is_some_and(|v| !v.is_empty() && v != "0") {
+        eprintln!("MCCL: this library was built without the panel: MCCL_PANEL is ignored");
+    }
     *ACTIVE.write() = Some(engine.shared().clone());
     debug_assert!(
         sys.running.is_none(),
@@ -280,6 +291,8 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         simulation: kind == InitKind::Simulation,
         sim,
         mc3b,
+        #[cfg(feature = "panel")]
+        panel,
     });
     Ok(())
 }

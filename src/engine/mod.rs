@@ -25,6 +25,7 @@ pub mod snapshot;
 pub mod thread;
 mod tick;
 pub mod trace;
+pub mod view;
 
 pub use poll::SPIN_POLLS;
 pub use running::{on_retired_engine_thread, Engine};
