@@ -15,6 +15,7 @@ macro_rules! ffi_boundary {
 
 pub mod adc;
 pub mod coordinate;
+pub mod custom;
 pub mod dac;
 pub mod encoder;
 pub mod home;
