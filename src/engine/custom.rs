@@ -196,7 +196,16 @@ impl Shared {
             if self.clock.stopped() {
                 return;
             }
-            let batch = g.lock().custom_batch(dt);
+            let batch = {
+                let mut g = g.lock();
+                let batch = g.custom_batch(dt);
+                if batch.call.is_some() {
+                    // Status calls from the callback read what the group shows now (a
+                    // virtual clock's run publishes only every few ticks).
+                    self.publish(&mut g);
+                }
+                batch
+            };
             self.run_batch(g, batch, dt);
         }
     }

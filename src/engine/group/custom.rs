@@ -99,6 +99,23 @@ pub fn command(ctx: &Ctx<'_>, spec: Arc<CustomSpec>) -> Command {
     }
 }
 
+/// Moves a queued command by `d`.
+fn translate(cmd: &mut Command, d: &Axes) {
+    match &mut cmd.plan {
+        Plan::Path(m) => m.path.translate(d),
+        Plan::Ptp(p) => p.translate(d),
+        Plan::Custom(c) => {
+            for (s, d) in c.start.iter_mut().zip(d) {
+                *s += d;
+            }
+        }
+        Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => {}
+    }
+    for (t, d) in cmd.target.iter_mut().zip(d) {
+        *t += d;
+    }
+}
+
 /// One period's step the stage computed: applied if the command still runs.
 #[derive(Debug, Clone, Copy)]
 pub struct Step {
@@ -383,9 +400,15 @@ impl GroupState {
                 }
             }
             // Later commands were planned from where this one started (its end was not
-            // known): they run displaced by its displacement, and so does the queue's end.
-            for (q, d) in self.queue_end.iter_mut().zip(next) {
-                *q += d;
+            // known): they move with it, translated by its displacement, and so does the
+            // queue's end.
+            if next != [0.0; AXES] {
+                for cmd in self.queue.iter_mut() {
+                    translate(cmd, &next);
+                }
+                for (q, d) in self.queue_end.iter_mut().zip(next) {
+                    *q += d;
+                }
             }
         }
         blend_end
