@@ -575,7 +575,7 @@ fn infinite_motion_cruises_until_its_flag() {
         setup(clock, false);
         let mut p = Prog::new(straight());
         p.tot = 0.0;
-        p.abort_after = 15.0;
+        p.abort_after = 15.005;
         let r = MCC_InfiniteMotion(
             Some(on_start),
             Some(on_infinite),
@@ -589,7 +589,7 @@ fn infinite_motion_cruises_until_its_flag() {
         wait_stop(0);
         let l = p.log.lock();
         // Accelerates to the feed and cruises: s(t) = 0.5 + 10 (t − 0.1) past the ramp, no
-        // deceleration; the first call past 15 sets the flag: t = 1.551 → s = 15.01.
+        // deceleration; the first call past 15.005 sets the flag: t = 1.551 → s = 15.01.
         let last = l.calls.last().unwrap().0;
         assert!((last - 15.01).abs() < 1e-9, "{last}");
         assert_eq!(l.calls.len(), 1551);

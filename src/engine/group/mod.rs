@@ -17,7 +17,8 @@
 //! (the running commands tick by tick), `rate.rs` (the time scale and what ramps it:
 //! override, feed, hold, abort), `inpos.rs` (the in-position check), `status.rs` (motion
 //! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
-//! `external.rs` (the door to an executor outside the card, e.g. the MC3B).
+//! `external.rs` (the door to an executor outside the card, e.g. the MC3B), `custom.rs`
+//! (the running custom motion's side of its callbacks' stage).
 
 use super::command::{AxisMech, Command, Ctx, Output, Settings};
 use super::snapshot::Info;
