@@ -604,6 +604,25 @@ public static class MCCL
 
     // ---- Callback types (keep the delegate instance alive while registered) ----
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate double CUSTOM_START_MOTION(int arg0, int arg1, int arg2, [MarshalAs(UnmanagedType.Bool)] bool arg3, ref double arg4, IntPtr arg5);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool CUSTOM_INTERPOLATION(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, double arg5, double arg6, ref double arg7, IntPtr arg8);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void CUSTOM_CLEANUP(int arg0, int arg1, IntPtr arg2);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool CUSTOM_BLENDING_START(int arg0, int arg1, int arg2, [MarshalAs(UnmanagedType.Bool)] bool arg3, ref double arg4, ref double arg5, ref double arg6, ref double arg7, ref double arg8, ref double arg9, ref double arg10, double arg11, IntPtr arg12);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool CUSTOM_BLENDING(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, ref double arg5, double arg6, ref double arg7, IntPtr arg8);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool CUSTOM_BLENDING_END(int arg0, int arg1, IntPtr arg2);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool INFINITE_INTERPOLATION(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, double arg5, double arg6, ref double arg7, IntPtr arg8, [MarshalAs(UnmanagedType.Bool)] ref bool arg9);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void LIOISR(ref LIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void ENCISR(ref ENCINT value);
@@ -1411,6 +1430,12 @@ public static class MCCL
     public static extern int MCC_SetUnit(int nUnitMode, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetUnit")]
     public static extern int MCC_GetUnit(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CustomMotionEx")]
+    public static extern int MCC_CustomMotionEx(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, CUSTOM_BLENDING_START pfnBlendingStart, CUSTOM_BLENDING pfnBlending, CUSTOM_BLENDING_END pfnBlendingEnd, IntPtr pvBuffer, [MarshalAs(UnmanagedType.Bool)] bool bOverrideMotion = false, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CustomMotion")]
+    public static extern int MCC_CustomMotion(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, IntPtr pvBuffer, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_InfiniteMotion")]
+    public static extern int MCC_InfiniteMotion(CUSTOM_START_MOTION pfnStartMotion, INFINITE_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, IntPtr pvBuffer, [MarshalAs(UnmanagedType.Bool)] bool bOverrideMotion, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
 
     // ---- Names the IMP manuals use that the headers lack ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutineEx")]

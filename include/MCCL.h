@@ -132,6 +132,26 @@ typedef uint8_t BYTE;
 
 typedef uint32_t DWORD;
 
+typedef int BOOL;
+
+typedef double (MCC_CALLBACK *CUSTOM_START_MOTION)(int, int, int, BOOL, const double*, void*);
+
+typedef BOOL (MCC_CALLBACK *CUSTOM_INTERPOLATION)(int, int, int, const double*, const double*, double, double, double*, void*);
+
+typedef void (MCC_CALLBACK *CUSTOM_CLEANUP)(int, int, void*);
+
+typedef BOOL (MCC_CALLBACK *CUSTOM_BLENDING_START)(int, int, int, BOOL, const double*, const double*, const double*, const double*, const double*, const double*, const double*, double, void*);
+
+typedef BOOL (MCC_CALLBACK *CUSTOM_BLENDING)(int, int, int, const double*, const double*, const double*, double, double*, void*);
+
+typedef BOOL (MCC_CALLBACK *CUSTOM_BLENDING_END)(int, int, void*);
+
+typedef CUSTOM_START_MOTION INFINITE_START_MOTION;
+
+typedef BOOL (MCC_CALLBACK *INFINITE_INTERPOLATION)(int, int, int, const double*, const double*, double, double, double*, void*, BOOL*);
+
+typedef CUSTOM_CLEANUP INFINITE_CLEANUP;
+
 typedef struct {
   BYTE OTP0;
   BYTE OTP1;
@@ -301,8 +321,6 @@ typedef struct {
   int32_t nMotionPhase;
   int32_t nCommandIndex_LD;
 } COMMAND_INFO;
-
-typedef int BOOL;
 
 typedef struct {
   WORD wPosToEncoderDir;

@@ -390,6 +390,9 @@ MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetUnit(int nUnitMode, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetUnit(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CustomMotionEx(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, CUSTOM_BLENDING_START pfnBlendingStart, CUSTOM_BLENDING pfnBlending, CUSTOM_BLENDING_END pfnBlendingEnd, void *pvBuffer, BOOL bOverrideMotion MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_CustomMotion(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, void *pvBuffer, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_InfiniteMotion(INFINITE_START_MOTION pfnStartMotion, INFINITE_INTERPOLATION pfnInterpolation, INFINITE_CLEANUP pfnCleanUp, void *pvBuffer, BOOL bOverrideMotion, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
 
 /* Names the IMP manuals use that the headers lack */
 MCC_API int MCC_CALL MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));

@@ -28,6 +28,9 @@ pub enum ErrorRecord {
     Mc3bLink,
     /// An MC3B refused a command or answered what does not fit (0xF902, the library's own).
     Mc3bDevice,
+    /// A custom motion's callback gave an unusable total distance or offset (0xF10A,
+    /// the library's own).
+    CustomMotion,
     /// The library caught a panic of its own and stopped the group (0xF1FF, the
     /// library's own; the vendor's test programs report unknown codes as "Run Time Error").
     Internal,
@@ -48,6 +51,7 @@ impl ErrorRecord {
             ErrorRecord::Tracking(axis) => 0xF801 + axis as i32,
             ErrorRecord::Mc3bLink => 0xF901,
             ErrorRecord::Mc3bDevice => 0xF902,
+            ErrorRecord::CustomMotion => 0xF10A,
             ErrorRecord::Internal => 0xF1FF,
         }
     }

@@ -194,6 +194,10 @@ pub enum InitKind {
 /// `MCC_InitSystem`: validates everything first, then (re)starts the virtual card. A
 /// running system is closed and started again. Nothing changes when validation fails.
 pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> McclResult<()> {
+    // A custom-motion callback may not replace the system its motion runs on.
+    if crate::engine::custom::in_callback().is_some() {
+        return Err(McclError::NotAccepted);
+    }
     if cards.is_empty() || cards.len() > crate::config::CARDS {
         return Err(McclError::Parameter);
     }
@@ -324,6 +328,10 @@ pub fn has_mc3b() -> bool {
 /// `MCC_CloseSystem`: stops the engine and joins its thread (`INITIAL_MOTION_ERR` when
 /// nothing runs). The configuration is kept for the next init.
 pub fn close() -> McclResult<()> {
+    // A custom-motion callback may not close the system its motion runs on.
+    if crate::engine::custom::in_callback().is_some() {
+        return Err(McclError::NotAccepted);
+    }
     let mut turn = Turn::take()?;
     if turn.close_running() {
         Ok(())

@@ -560,6 +560,20 @@ Public Module MCCL
 
     ' ---- Callback types (keep the delegate instance alive while registered) ----
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function CUSTOM_START_MOTION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, <MarshalAs(UnmanagedType.Bool)> ByVal arg3 As Boolean, ByRef arg4 As Double, ByVal arg5 As IntPtr) As Double
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function CUSTOM_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByVal arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub CUSTOM_CLEANUP(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As IntPtr)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function CUSTOM_BLENDING_START(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, <MarshalAs(UnmanagedType.Bool)> ByVal arg3 As Boolean, ByRef arg4 As Double, ByRef arg5 As Double, ByRef arg6 As Double, ByRef arg7 As Double, ByRef arg8 As Double, ByRef arg9 As Double, ByRef arg10 As Double, ByVal arg11 As Double, ByVal arg12 As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function CUSTOM_BLENDING(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByRef arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function CUSTOM_BLENDING_END(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function INFINITE_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByVal arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr, <MarshalAs(UnmanagedType.Bool)> ByRef arg9 As Boolean) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub LIOISR(ByRef value As LIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub ENCISR(ByRef value As ENCINT)
@@ -1679,6 +1693,15 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetUnit")>
     Public Function MCC_GetUnit(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CustomMotionEx")>
+    Public Function MCC_CustomMotionEx(ByVal pfnStartMotion As CUSTOM_START_MOTION, ByVal pfnInterpolation As CUSTOM_INTERPOLATION, ByVal pfnCleanUp As CUSTOM_CLEANUP, ByVal pfnBlendingStart As CUSTOM_BLENDING_START, ByVal pfnBlending As CUSTOM_BLENDING, ByVal pfnBlendingEnd As CUSTOM_BLENDING_END, ByVal pvBuffer As IntPtr, <MarshalAs(UnmanagedType.Bool)> Optional ByVal bOverrideMotion As Boolean = False, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CustomMotion")>
+    Public Function MCC_CustomMotion(ByVal pfnStartMotion As CUSTOM_START_MOTION, ByVal pfnInterpolation As CUSTOM_INTERPOLATION, ByVal pfnCleanUp As CUSTOM_CLEANUP, ByVal pvBuffer As IntPtr, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_InfiniteMotion")>
+    Public Function MCC_InfiniteMotion(ByVal pfnStartMotion As CUSTOM_START_MOTION, ByVal pfnInterpolation As INFINITE_INTERPOLATION, ByVal pfnCleanUp As CUSTOM_CLEANUP, ByVal pvBuffer As IntPtr, <MarshalAs(UnmanagedType.Bool)> ByVal bOverrideMotion As Boolean, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
     End Function
 
     ' ---- Names the IMP manuals use that the headers lack ----

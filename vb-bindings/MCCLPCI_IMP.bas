@@ -543,6 +543,13 @@ Public Type SYS_GROUP_CONFIG
 End Type
 
 ' ---- Callbacks ----
+' CUSTOM_START_MOTION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Bool, Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
+' CUSTOM_INTERPOLATION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Float(8), Float(8), Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
+' CUSTOM_CLEANUP: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
+' CUSTOM_BLENDING_START: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Bool, Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Float(8), Ptr(Void)), passed as AddressOf MyIsr
+' CUSTOM_BLENDING: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Float(8), Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
+' CUSTOM_BLENDING_END: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
+' INFINITE_INTERPOLATION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Float(8), Float(8), Ptr(Float(8)), Ptr(Void), Ptr(Bool)), passed as AddressOf MyIsr
 ' LIOISR: Sub MyIsr(ByRef value As LIOINT), passed as AddressOf MyIsr
 ' ENCISR: Sub MyIsr(ByRef value As ENCINT), passed as AddressOf MyIsr
 ' PCLISR: Sub MyIsr(ByRef value As PCLINT), passed as AddressOf MyIsr
@@ -906,6 +913,9 @@ Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal w
 Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_SetUnit Lib "MCCLPCI_IMP.dll" (ByVal nUnitMode As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetUnit Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CustomMotionEx Lib "MCCLPCI_IMP.dll" (ByVal pfnStartMotion As Long, ByVal pfnInterpolation As Long, ByVal pfnCleanUp As Long, ByVal pfnBlendingStart As Long, ByVal pfnBlending As Long, ByVal pfnBlendingEnd As Long, ByRef pvBuffer As Any, Optional ByVal bOverrideMotion As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_CustomMotion Lib "MCCLPCI_IMP.dll" (ByVal pfnStartMotion As Long, ByVal pfnInterpolation As Long, ByVal pfnCleanUp As Long, ByRef pvBuffer As Any, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_InfiniteMotion Lib "MCCLPCI_IMP.dll" (ByVal pfnStartMotion As Long, ByVal pfnInterpolation As Long, ByVal pfnCleanUp As Long, ByRef pvBuffer As Any, ByVal bOverrideMotion As Long, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
 
 ' ---- Names the IMP manuals use that the headers lack ----
 Public Declare Function MCC_SetLIORoutineEx Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long

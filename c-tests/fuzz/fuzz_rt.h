@@ -59,6 +59,7 @@ typedef struct {
     const char *arg;  /* its argument struct, e.g. LIOINT */
     void (*fn)(void); /* the fuzzer's routine of that type */
     int setters;      /* exported functions that take this type */
+    int command;      /* 1: a queued command's callback (custom motion), not a routine */
 } fz_cb_t;
 
 /* Generated. */

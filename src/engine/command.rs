@@ -49,6 +49,8 @@ pub enum Plan {
     InPos(bool, u32),
     /// Queued output change (`MCC_Queue*OutputValue`), made when the queue reaches it.
     Output(Output),
+    /// Custom motion: the program's callbacks give the path (`group/custom.rs`).
+    Custom(super::group::custom::CustomMove),
 }
 
 /// An output a queued command sets: the bits of `mask` take those of `value`.
@@ -102,13 +104,14 @@ impl Command {
             Plan::Path(m) => m.duration(),
             Plan::Ptp(p) => p.duration(),
             Plan::Delay(s) => *s,
+            Plan::Custom(m) => m.duration(),
             Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => 0.0,
         }
     }
 
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
-        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_))
+        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_))
     }
 
     /// Position and velocity (per unit of the command's own time) at time `t`.
@@ -117,6 +120,7 @@ impl Command {
         match &self.plan {
             Plan::Path(m) => m.sample(t),
             Plan::Ptp(p) => p.sample(t),
+            Plan::Custom(m) => m.sample(),
             _ => (self.target, [0.0; AXES]),
         }
     }
@@ -136,6 +140,7 @@ impl Command {
         match &self.plan {
             Plan::Path(m) => m.path.start(),
             Plan::Ptp(p) => p.start(),
+            Plan::Custom(m) => m.start,
             _ => self.target,
         }
     }

@@ -10,10 +10,12 @@
 //! program's threads share), `running.rs` ([`Engine`]: the thread's start, loop, stop and
 //! join), `tick.rs` (one tick of the card), `poll.rs` (polls that let virtual time run),
 //! `safety.rs` (checks against the machine), `snapshot.rs`, `trace.rs`, `isr.rs`
-//! (routines), `command.rs` (planning a command), `homing.rs` and `homing/` (go home of
+//! (routines), `command.rs` (planning a command), `custom.rs` (custom motion's callback
+//! stage), `homing.rs` and `homing/` (go home of
 //! one card), `group/` (one group), `thread.rs` (real-time settings of the thread).
 
 pub mod command;
+pub mod custom;
 pub mod group;
 pub mod homing;
 pub mod isr;

@@ -130,7 +130,10 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
     drop(ready);
     loop {
         match shared.clock.wait_next() {
-            Next::Stop => return,
+            Next::Stop => {
+                shared.custom_close();
+                return;
+            }
             Next::Tick => {
                 let (published, interrupts) = shared.tick_or_recover();
                 shared.check_watch();
@@ -140,7 +143,9 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
                 if shared.tracing && !interrupts.is_empty() {
                     shared.trace_interrupts(&interrupts);
                 }
-                // Interrupt callbacks collected in the tick run here, without any lock.
+                // Custom-motion callbacks, then the interrupt callbacks collected in the
+                // tick, run here without any lock.
+                shared.custom_stage();
                 shared.isr.deliver(&interrupts, &shared.clock);
                 shared.clock.tick_done();
             }

@@ -17,6 +17,7 @@ pub mod adc;
 pub mod cone;
 pub mod converter_timing;
 pub mod coordinate;
+pub mod custom;
 pub mod dac;
 pub mod encoder;
 pub mod handshake;

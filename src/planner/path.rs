@@ -495,6 +495,29 @@ impl Path {
         *self.common().1
     }
 
+    /// The same path moved by `d` (a command queued behind a custom motion, which ended
+    /// elsewhere than the queue assumed). Lengths and directions do not change.
+    pub fn translate(&mut self, d: &Axes) {
+        let add = |p: &mut Axes| {
+            for (x, d) in p.iter_mut().zip(d) {
+                *x += d;
+            }
+        };
+        match self {
+            Path::Line(l) => {
+                add(&mut l.start);
+                add(&mut l.end);
+            }
+            Path::Arc(a) | Path::Helix(a) => {
+                add(&mut a.start);
+                add(&mut a.end);
+                for (c, d) in a.center.iter_mut().zip(d) {
+                    *c += d;
+                }
+            }
+        }
+    }
+
     /// Per axis, an interval `(low, high)` holding the coordinate over the whole path:
     /// from start to end for a line and for U..B; for X/Y/Z of an arc or helix the
     /// center's travel (0, or rise along the normal) widened by radius · √(u_i² + v_i²),

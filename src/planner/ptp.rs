@@ -143,6 +143,14 @@ impl PtpMove {
         self.end
     }
 
+    /// The same move shifted by `d` (see [`crate::planner::Path::translate`]).
+    pub fn translate(&mut self, d: &Axes) {
+        for ((s, e), d) in self.start.iter_mut().zip(self.end.iter_mut()).zip(d) {
+            *s += d;
+            *e += d;
+        }
+    }
+
     /// Positions and velocities at time `t` (clamped). An axis that has
     /// arrived is exactly at its end position with zero velocity.
     pub fn sample(&self, t: f64) -> (Axes, Axes) {

@@ -18,3 +18,100 @@ pub type TMRISR = Option<unsafe extern "C" fn(*mut TMRINT)>;
 pub type HSKISR = Option<unsafe extern "C" fn(*mut HSKINT)>;
 /// Cycle interrupt ISR (obsolete form).
 pub type CYCLE_INTERRUPT_ISR = Option<unsafe extern "C" fn()>;
+
+/// `CUSTOM_START_MOTION`: called when a custom motion starts; returns its total distance.
+/// Arguments: group, number of axes, command index, absolute coordinates, the start
+/// position (one value per axis), the program's buffer.
+pub type CUSTOM_START_MOTION = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        super::BOOL,
+        *const f64,
+        *mut std::os::raw::c_void,
+    ) -> f64,
+>;
+/// `INFINITE_START_MOTION`: as [`CUSTOM_START_MOTION`], for `MCC_InfiniteMotion`.
+pub type INFINITE_START_MOTION = CUSTOM_START_MOTION;
+/// `CUSTOM_INTERPOLATION`: called every period with the start and current positions, the
+/// distance the speed profile reaches at the next period and the total; writes the next
+/// position's offset from the start. FALSE ends the command.
+pub type CUSTOM_INTERPOLATION = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        *const f64,
+        *const f64,
+        f64,
+        f64,
+        *mut f64,
+        *mut std::os::raw::c_void,
+    ) -> super::BOOL,
+>;
+/// `INFINITE_INTERPOLATION`: [`CUSTOM_INTERPOLATION`] plus `BOOL *AbortThisCommand`.
+pub type INFINITE_INTERPOLATION = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        *const f64,
+        *const f64,
+        f64,
+        f64,
+        *mut f64,
+        *mut std::os::raw::c_void,
+        *mut super::BOOL,
+    ) -> super::BOOL,
+>;
+/// `CUSTOM_CLEANUP`: called once when a started custom motion ends (group, command
+/// index, buffer).
+pub type CUSTOM_CLEANUP = Option<
+    unsafe extern "C" fn(std::os::raw::c_int, std::os::raw::c_int, *mut std::os::raw::c_void),
+>;
+/// `INFINITE_CLEANUP`: as [`CUSTOM_CLEANUP`].
+pub type INFINITE_CLEANUP = CUSTOM_CLEANUP;
+/// `CUSTOM_BLENDING_START`: the corner before a custom motion with blending on (group,
+/// axes, command index, absolute, start0, start1, start2, mid, end0, end1, end2, blend
+/// interval, buffer).
+pub type CUSTOM_BLENDING_START = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        super::BOOL,
+        *const f64,
+        *const f64,
+        *const f64,
+        *const f64,
+        *const f64,
+        *const f64,
+        *const f64,
+        f64,
+        *mut std::os::raw::c_void,
+    ) -> super::BOOL,
+>;
+/// `CUSTOM_BLENDING`: one period of the blend (group, axes, command index, blend start,
+/// blend end, current position, distance, next offset out, buffer).
+pub type CUSTOM_BLENDING = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        *const f64,
+        *const f64,
+        *const f64,
+        f64,
+        *mut f64,
+        *mut std::os::raw::c_void,
+    ) -> super::BOOL,
+>;
+/// `CUSTOM_BLENDING_END`: the blend is over (group, command index, buffer).
+pub type CUSTOM_BLENDING_END = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        *mut std::os::raw::c_void,
+    ) -> super::BOOL,
+>;

@@ -20,10 +20,11 @@ struct TickClock {
 
 impl TickClock {
     fn per_tick(&self, cmd: &Command) -> f64 {
-        if matches!(cmd.plan, Plan::Delay(_)) {
-            self.delay_dt
-        } else {
-            self.dtau
+        match cmd.plan {
+            Plan::Delay(_) => self.delay_dt,
+            // Advanced by the custom-motion stage (`custom.rs`).
+            Plan::Custom(_) => 0.0,
+            _ => self.dtau,
         }
     }
 

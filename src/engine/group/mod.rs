@@ -17,7 +17,8 @@
 //! (the running commands tick by tick), `rate.rs` (the time scale and what ramps it:
 //! override, feed, hold, abort), `inpos.rs` (the in-position check), `status.rs` (motion
 //! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
-//! `external.rs` (the door to an executor outside the card, e.g. the MC3B).
+//! `external.rs` (the door to an executor outside the card, e.g. the MC3B), `custom.rs`
+//! (the running custom motion's side of its callbacks' stage).
 
 use super::command::{AxisMech, Command, Ctx, Output, Settings};
 use super::snapshot::Info;
@@ -27,6 +28,7 @@ use crate::planner::Axes;
 use crate::vendor::consts as c;
 use std::collections::VecDeque;
 
+pub mod custom;
 mod execution;
 pub mod external;
 mod homing;
@@ -112,6 +114,8 @@ pub struct GroupState {
     homing: u32,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
     pub trace_notes: Option<Vec<super::trace::Note>>,
+    /// Custom commands started and not cleaned up yet (`custom.rs`).
+    custom: custom::CustomSide,
 }
 
 impl GroupState {
@@ -155,6 +159,7 @@ impl GroupState {
             external: None,
             homing: 0,
             trace_notes: None,
+            custom: custom::CustomSide::default(),
         }
     }
 
@@ -162,8 +167,10 @@ impl GroupState {
     pub fn reset(&mut self, axes: [AxisMech; AXES]) {
         let external = self.external.take();
         let notes = self.trace_notes.take();
+        let custom = std::mem::take(&mut self.custom);
         *self = GroupState::new(self.index, self.def, axes);
         self.trace_notes = notes;
+        self.custom = custom;
         // An MC3B group stays on its device, rezeroed.
         if let Some(mut x) = external {
             x.rezero();

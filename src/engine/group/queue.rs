@@ -50,7 +50,7 @@ impl GroupState {
     /// still decelerating, `COMMAND_BUFFER_FULL_ERR` when the queue is full or the memory
     /// to grow it (doubling, up to the queue size) cannot be had.
     pub fn enqueue(&mut self, mut cmd: Command) -> McclResult<i32> {
-        if self.homing != 0 {
+        if self.homing != 0 || crate::engine::custom::in_callback() == Some(self.index) {
             return Err(McclError::NotAccepted);
         }
         if let Some(x) = &self.external {

@@ -33,6 +33,13 @@ pub(super) struct RateState {
     pub(super) pending_override: Option<f64>,
 }
 
+impl RateState {
+    /// The rates the ramp in progress goes from and to (custom motion, `custom.rs`).
+    pub(super) fn ramp_ends(&self) -> Option<(f64, f64)> {
+        self.ramp.map(|r| (r.ramp.from_rate(), r.ramp.to_rate()))
+    }
+}
+
 impl Default for RateState {
     fn default() -> Self {
         RateState {

@@ -353,7 +353,10 @@ impl ExternalExecutor for Executor {
             return Err(McclError::AbortNotFinished);
         }
         let points = match &cmd.plan {
-            Plan::Blend(true) | Plan::InPos(true, _) => return Err(McclError::NotAccepted),
+            // Custom motion needs a position every period, which the MC3B cannot take.
+            Plan::Blend(true) | Plan::InPos(true, _) | Plan::Custom(_) => {
+                return Err(McclError::NotAccepted)
+            }
             Plan::Path(m) => backend::chord_points(&m.path, chord_tolerance(axes)),
             Plan::Ptp(_) => vec![cmd.target],
             _ => return Ok(()),

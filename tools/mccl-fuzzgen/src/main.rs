@@ -74,12 +74,25 @@ struct Func {
     codes: Codes,
 }
 
+/// A callback type.
+struct CbType {
+    /// The calling-convention macro text.
+    conv: String,
+    /// An interrupt routine's argument struct, or "void"; "(command)" for the callbacks
+    /// of a queued command (custom motion), which take several arguments.
+    arg: String,
+    /// The return type.
+    ret: String,
+    /// A command callback's parameter types (empty for an interrupt routine).
+    params: Vec<String>,
+}
+
 #[derive(Default)]
 struct Model {
     aliases: BTreeMap<String, String>,
     structs: BTreeMap<String, Vec<Decl>>,
-    /// Callback typedef name -> (calling-convention macro text, argument type or "void").
-    callbacks: BTreeMap<String, (String, String)>,
+    /// Callback typedef name -> its calling convention, argument and return.
+    callbacks: BTreeMap<String, CbType>,
     funcs: Vec<Func>,
     headers: Vec<String>,
     /// Integer macros (`#define NAME 16`), for array lengths given by name.
@@ -251,19 +264,36 @@ impl Model {
     fn typedef(&mut self, file: &str, stmt: &str) -> Result<(), String> {
         let t = &stmt["typedef ".len()..];
         if let Some(star) = t.find('(') {
-            let inner_end = t[star..].find(')').ok_or("bad callback typedef")? + star;
+            let inner_end = t[star..]
+                .find(')')
+                .ok_or_else(|| format!("{file}: bad callback typedef `{stmt}`"))?
+                + star;
             let inner = &t[star + 1..inner_end];
-            let (conv, nm) = inner.split_once('*').ok_or("bad callback typedef")?;
+            let (conv, nm) = inner
+                .split_once('*')
+                .ok_or_else(|| format!("{file}: bad callback typedef `{stmt}`"))?;
             let args = t[inner_end + 1..]
                 .trim()
                 .trim_start_matches('(')
                 .trim_end_matches(')');
-            if args.contains(',') {
-                return Err(format!("{file}: callback `{stmt}` takes several arguments"));
-            }
-            let arg = args.replace('*', "").trim().to_string();
-            self.callbacks
-                .insert(nm.trim().to_string(), (conv.trim().to_string(), arg));
+            let ret = t[..star].trim().to_string();
+            // A routine takes one struct pointer (or nothing); a queued command's callback
+            // (custom motion) several arguments and may return a value.
+            let (arg, params) = if args.contains(',') {
+                let params = args.split(',').map(|a| a.trim().to_string()).collect();
+                ("(command)".to_string(), params)
+            } else {
+                (args.replace('*', "").trim().to_string(), Vec::new())
+            };
+            self.callbacks.insert(
+                nm.trim().to_string(),
+                CbType {
+                    conv: conv.trim().to_string(),
+                    arg,
+                    ret,
+                    params,
+                },
+            );
         } else {
             let toks: Vec<&str> = t.split_whitespace().collect();
             if let Some((n, ty)) = toks.split_last() {
@@ -667,7 +697,34 @@ fn gen(m: &Model) -> Result<String, String> {
         .enumerate()
         .map(|(i, k)| (k, i))
         .collect();
-    for (i, (name, (conv, arg))) in m.callbacks.iter().enumerate() {
+    for (i, (name, cb)) in m.callbacks.iter().enumerate() {
+        let (conv, arg) = (&cb.conv, &cb.arg);
+        if !cb.params.is_empty() {
+            // A command callback counts its call and returns 0 (FALSE, or a total
+            // distance of 0): the command ends at once.
+            let sig: Vec<String> = cb
+                .params
+                .iter()
+                .enumerate()
+                .map(|(k, t)| format!("{t} a{k}"))
+                .collect();
+            let unused: String = (0..cb.params.len())
+                .map(|k| format!(" (void)a{k};"))
+                .collect();
+            let ret = if cb.ret == "void" {
+                String::new()
+            } else {
+                format!("\n    return ({})0;", cb.ret)
+            };
+            let _ = writeln!(
+                o,
+                "\nstatic {} {conv} fz_cb_{}({})\n{{\n   {unused}\n    fz_routine({i}, NULL, 0);{ret}\n}}",
+                cb.ret,
+                c_ident(name),
+                sig.join(", ")
+            );
+            continue;
+        }
         let (sig, size) = if arg == "void" || arg.is_empty() {
             ("void".to_string(), "0".to_string())
         } else {
@@ -681,7 +738,8 @@ fn gen(m: &Model) -> Result<String, String> {
         );
     }
     let _ = writeln!(o, "\nconst fz_cb_t fz_cbs[] = {{");
-    for (name, (_, arg)) in &m.callbacks {
+    for (name, cb) in &m.callbacks {
+        let arg = &cb.arg;
         let setters = m
             .funcs
             .iter()
@@ -693,8 +751,9 @@ fn gen(m: &Model) -> Result<String, String> {
             .count();
         let _ = writeln!(
             o,
-            "    {{\"{name}\", \"{arg}\", (void (*)(void))fz_cb_{}, {setters}}},",
-            c_ident(name)
+            "    {{\"{name}\", \"{arg}\", (void (*)(void))fz_cb_{}, {setters}, {}}},",
+            c_ident(name),
+            i32::from(!cb.params.is_empty())
         );
     }
     let _ = writeln!(o, "}};\nconst int fz_ncbs = {};", m.callbacks.len());

@@ -1,0 +1,416 @@
+//! A group's side of custom motion (the stage is in `engine/custom.rs`): the running
+//! custom command's state, what the stage calls next, and storing what it returned.
+//!
+//! A custom command's own time does not advance in the tick (`execution.rs` gives it no
+//! time): the stage advances it, one period ahead, when it asks the callback for the next
+//! position. It ends (its duration becomes 0, so the tick after retires it at the offset
+//! the callback gave last) when the callback returns FALSE, sets `*AbortThisCommand`, or
+//! the profile reaches the total distance.
+
+use super::GroupState;
+use crate::config::{range, AXES};
+use crate::engine::command::{Command, Ctx, Plan};
+use crate::engine::custom::{CustomSpec, Interp, CTYPE_CUSTOM, ERR_CUSTOM_MOTION};
+use crate::planner::{Axes, Profile, Shape};
+use std::os::raw::c_int;
+use std::sync::Arc;
+
+/// The length an infinite motion's profile is planned over: it never gets there (at
+/// 10⁶ UU/s it would take 3·10²⁸⁸ years), so it accelerates and cruises at the feed.
+const INFINITE_LEN: f64 = 1e300;
+
+/// A queued or running custom command.
+#[derive(Debug, Clone)]
+pub struct CustomMove {
+    /// The callbacks and their settings.
+    pub spec: Arc<CustomSpec>,
+    /// Where the command started (the queue's end when queued, the group's position
+    /// once started).
+    pub start: Axes,
+    /// Acceleration shape captured when queued.
+    pub acc: Shape,
+    /// Deceleration shape captured when queued.
+    pub dec: Shape,
+    run: Run,
+}
+
+/// Progress of a custom command.
+#[derive(Debug, Clone, Default)]
+struct Run {
+    started: bool,
+    profile: Option<Profile>,
+    /// The total distance `start` returned.
+    tot: f64,
+    /// Own time of the offset stored (the position of the coming tick).
+    tau: f64,
+    /// Distance of the offset stored.
+    dist: f64,
+    /// Offset from the start for the coming tick.
+    offset: Axes,
+    /// Velocity per unit of own time.
+    vel: Axes,
+    ended: bool,
+    /// Ex with blending on: `BlendingStart` returned TRUE; the blend lasts `interval`.
+    blending: bool,
+    blend_done: bool,
+    interval: f64,
+}
+
+impl CustomMove {
+    /// Duration in own time: unknown (infinite) until the stage ends it, then 0.
+    pub fn duration(&self) -> f64 {
+        if self.run.ended {
+            0.0
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Position and velocity per own time: the start plus the offset stored.
+    pub fn sample(&self) -> (Axes, Axes) {
+        (
+            std::array::from_fn(|i| self.start[i] + self.run.offset[i]),
+            self.run.vel,
+        )
+    }
+
+    fn infinite(&self) -> bool {
+        matches!(self.spec.interp, Interp::Infinite(_))
+    }
+}
+
+/// A custom command queued at the end of `ctx`'s queue.
+pub fn command(ctx: &Ctx<'_>, spec: Arc<CustomSpec>) -> Command {
+    let s = ctx.settings;
+    Command {
+        index: 0,
+        ctype: CTYPE_CUSTOM,
+        info_feed: s.feed,
+        target: ctx.from,
+        acc_ms: s.acc_ms,
+        dec_ms: s.dec_ms,
+        plan: Plan::Custom(CustomMove {
+            spec,
+            start: ctx.from,
+            acc: s.acc,
+            dec: s.dec,
+            run: Run::default(),
+        }),
+    }
+}
+
+/// Moves a queued command by `d`.
+fn translate(cmd: &mut Command, d: &Axes) {
+    match &mut cmd.plan {
+        Plan::Path(m) => m.path.translate(d),
+        Plan::Ptp(p) => p.translate(d),
+        Plan::Custom(c) => {
+            for (s, d) in c.start.iter_mut().zip(d) {
+                *s += d;
+            }
+        }
+        Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => {}
+    }
+    for (t, d) in cmd.target.iter_mut().zip(d) {
+        *t += d;
+    }
+}
+
+/// One period's step the stage computed: applied if the command still runs.
+#[derive(Debug, Clone, Copy)]
+pub struct Step {
+    tau_next: f64,
+    dist: f64,
+    last: bool,
+    /// The offset stored now (what the callback's output starts as).
+    pub offset_now: Axes,
+}
+
+/// The callback the stage calls next for a group.
+#[derive(Debug)]
+pub enum Call {
+    /// `pfnStartMotion`.
+    Start {
+        /// The command.
+        spec: Arc<CustomSpec>,
+        /// Its index.
+        index: c_int,
+        /// Where it starts.
+        start: Axes,
+    },
+    /// `pfnBlendingStart` (Ex, blending on).
+    BlendStart {
+        /// The command.
+        spec: Arc<CustomSpec>,
+        /// Its index.
+        index: c_int,
+        /// Where it started.
+        start: Axes,
+        /// The blend interval (the acceleration ramp's distance).
+        interval: f64,
+    },
+    /// `pfnInterpolation` (or `pfnBlending` while blending).
+    Interp {
+        /// The command.
+        spec: Arc<CustomSpec>,
+        /// Its index.
+        index: c_int,
+        /// Where it started.
+        start: Axes,
+        /// The group's position now.
+        cur: Axes,
+        /// The distance the profile reaches at the next tick.
+        dist: f64,
+        /// The total distance.
+        tot: f64,
+        /// Call `pfnBlending` instead.
+        blend: bool,
+        /// What to apply.
+        step: Step,
+    },
+}
+
+/// What the stage does for one group after a tick.
+#[derive(Debug, Default)]
+pub struct CustomBatch {
+    /// The group index.
+    pub group: usize,
+    /// Started commands that ended: `cleanup` for each.
+    pub cleanups: Vec<(c_int, Arc<CustomSpec>)>,
+    /// The next callback.
+    pub call: Option<Call>,
+}
+
+/// The group's custom commands that were started and not cleaned up yet.
+#[derive(Debug, Default)]
+pub struct CustomSide {
+    started: Vec<(c_int, Arc<CustomSpec>)>,
+}
+
+impl GroupState {
+    fn custom_running(&mut self, id: Option<u64>) -> Option<(c_int, &mut CustomMove)> {
+        self.running.iter_mut().find_map(|r| match &mut r.cmd.plan {
+            Plan::Custom(m) if id.is_none_or(|id| m.spec.id == id) && !m.run.ended => {
+                Some((r.cmd.index, m))
+            }
+            _ => None,
+        })
+    }
+
+    fn custom_is_running(&self, id: u64) -> bool {
+        self.running
+            .iter()
+            .any(|r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id))
+    }
+
+    /// Takes every started command for its cleanup (the engine is closing).
+    pub(crate) fn custom_take_all(&mut self) -> Vec<(c_int, Arc<CustomSpec>)> {
+        std::mem::take(&mut self.custom.started)
+    }
+
+    /// What the stage does for this group after a tick of `dt` seconds.
+    pub(crate) fn custom_batch(&mut self, dt: f64) -> CustomBatch {
+        let mut batch = CustomBatch {
+            group: self.index,
+            ..CustomBatch::default()
+        };
+        if !self.custom.started.is_empty() {
+            let started = std::mem::take(&mut self.custom.started);
+            for (idx, spec) in started {
+                if self.custom_is_running(spec.id) {
+                    self.custom.started.push((idx, spec));
+                } else {
+                    batch.cleanups.push((idx, spec));
+                }
+            }
+        }
+        let pos = self.pos;
+        let Some((index, m)) = self.custom_running(None) else {
+            return batch;
+        };
+        if !m.run.started {
+            m.run.started = true;
+            m.start = pos;
+            let spec = m.spec.clone();
+            for r in self.running.iter_mut() {
+                if matches!(&r.cmd.plan, Plan::Custom(c) if c.spec.id == spec.id) {
+                    r.cmd.target = pos;
+                }
+            }
+            self.custom.started.push((index, spec.clone()));
+            batch.call = Some(Call::Start {
+                spec,
+                index,
+                start: pos,
+            });
+        } else {
+            batch.call = self.custom_step(dt);
+        }
+        batch
+    }
+
+    /// `start` of command `id` returned `tot`: checks it, plans the profile, and returns
+    /// the next call (None when the command is gone or the group stopped).
+    pub(crate) fn custom_begin(&mut self, id: u64, tot: f64, dt: f64) -> Option<Call> {
+        let (feed, acc_ms, dec_ms) = {
+            let r = self.running.iter().find(
+                |r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id && !m.run.ended),
+            )?;
+            (r.cmd.info_feed, r.cmd.acc_ms, r.cmd.dec_ms)
+        };
+        let blend_on = self.blend_on;
+        let (index, m) = self.custom_running(Some(id))?;
+        let len = if m.infinite() { INFINITE_LEN } else { tot };
+        let profile = if tot.is_finite() && tot >= 0.0 {
+            Profile::new(len, feed, acc_ms / 1000.0, dec_ms / 1000.0, m.acc, m.dec).ok()
+        } else {
+            None
+        };
+        let Some(profile) = profile else {
+            self.stop_for(Some(ERR_CUSTOM_MOTION));
+            return None;
+        };
+        // Both ramp shapes cover half the peak speed times their time.
+        let interval = 0.5 * profile.peak_speed() * profile.acc_time();
+        m.run.tot = tot;
+        m.run.profile = Some(profile);
+        if m.spec.blending.is_some() && blend_on {
+            m.run.interval = interval;
+            return Some(Call::BlendStart {
+                spec: m.spec.clone(),
+                index,
+                start: m.start,
+                interval,
+            });
+        }
+        self.custom_step(dt)
+    }
+
+    /// `BlendingStart` of command `id` returned `accepted`: the next call.
+    pub(crate) fn custom_blending(&mut self, id: u64, accepted: bool, dt: f64) -> Option<Call> {
+        let (_, m) = self.custom_running(Some(id))?;
+        m.run.blending = accepted;
+        self.custom_step(dt)
+    }
+
+    /// Own time the running custom command advances in the coming tick: the group's
+    /// time scale over one period, predicted on a copy; without `bOverrideMotion` the
+    /// override ratio is divided out (hold, continue and abort ramps still count).
+    fn custom_dtau(&mut self, dt: f64, override_motion: bool) -> f64 {
+        let saved = self.rate;
+        let d = self.advance_rate(dt);
+        self.rate = saved;
+        if override_motion || self.fixed_speed {
+            return d;
+        }
+        match self.rate.ramp_ends() {
+            // A hold or abort: from the rate it had to 0.
+            Some((r0, 0.0)) if r0 > 0.0 => d / r0,
+            // A continue: from 0 to the rate it returns to.
+            Some((0.0, r1)) if r1 > 0.0 => d / r1,
+            Some(_) => dt,
+            None if self.rate.value == 0.0 => 0.0,
+            None => dt,
+        }
+    }
+
+    /// The interpolation call for the coming tick.
+    fn custom_step(&mut self, dt: f64) -> Option<Call> {
+        let override_motion = self.custom_running(None)?.1.spec.override_motion;
+        let dtau = self.custom_dtau(dt, override_motion);
+        let cur = self.pos;
+        let (index, m) = self.custom_running(None)?;
+        let profile = m.run.profile.as_ref()?;
+        let tau_next = m.run.tau + dtau;
+        let last = !m.infinite() && tau_next >= profile.duration() - super::TIME_EPS;
+        let dist = if last {
+            profile.len()
+        } else {
+            profile.sample(tau_next).0.max(m.run.dist)
+        };
+        let blend = m.run.blending && !m.run.blend_done;
+        Some(Call::Interp {
+            spec: m.spec.clone(),
+            index,
+            start: m.start,
+            cur,
+            dist,
+            tot: m.run.tot,
+            blend,
+            step: Step {
+                tau_next,
+                dist,
+                last,
+                offset_now: m.run.offset,
+            },
+        })
+    }
+
+    /// Stores what the interpolation callback of command `id` gave for the coming tick.
+    /// Returns whether its blend ended with this call (`BlendingEnd` is due).
+    pub(crate) fn custom_apply(
+        &mut self,
+        id: u64,
+        ok: bool,
+        abort: bool,
+        next: &Axes,
+        step: Step,
+    ) -> bool {
+        let axes = self.axes;
+        let offset = self.offset;
+        let Some((_, m)) = self.custom_running(Some(id)) else {
+            return false;
+        };
+        let mask = m.spec.mask;
+        let next: Axes = std::array::from_fn(|i| if mask & (1 << i) != 0 { next[i] } else { 0.0 });
+        let bad = (0..AXES).any(|i| {
+            let x = m.start[i] + next[i];
+            !next[i].is_finite()
+                || range::position(x, axes[i].factor).is_err()
+                || range::position(x + offset[i], axes[i].factor).is_err()
+        });
+        if bad {
+            self.stop_for(Some(ERR_CUSTOM_MOTION));
+            return false;
+        }
+        let dtau = step.tau_next - m.run.tau;
+        m.run.vel = std::array::from_fn(|i| {
+            if dtau > 0.0 {
+                (next[i] - m.run.offset[i]) / dtau
+            } else {
+                0.0
+            }
+        });
+        m.run.offset = next;
+        m.run.tau = step.tau_next;
+        m.run.dist = step.dist;
+        let ended = !ok || abort || step.last;
+        let blending = m.run.blending && !m.run.blend_done;
+        let blend_end = blending && (ended || step.dist >= m.run.interval);
+        if blend_end {
+            m.run.blend_done = true;
+        }
+        if ended {
+            m.run.ended = true;
+            m.run.vel = [0.0; AXES];
+            let target: Axes = std::array::from_fn(|i| m.start[i] + next[i]);
+            for r in self.running.iter_mut() {
+                if matches!(&r.cmd.plan, Plan::Custom(c) if c.spec.id == id) {
+                    r.cmd.target = target;
+                }
+            }
+            // Later commands were planned from where this one started (its end was not
+            // known): they move with it, translated by its displacement, and so does the
+            // queue's end.
+            if next != [0.0; AXES] {
+                for cmd in self.queue.iter_mut() {
+                    translate(cmd, &next);
+                }
+                for (q, d) in self.queue_end.iter_mut().zip(next) {
+                    *q += d;
+                }
+            }
+        }
+        blend_end
+    }
+}
