@@ -65,6 +65,18 @@ fn asinh_ratio(y: f64) -> f64 {
 }
 
 impl ConeSeg {
+    /// The same cone moved by `d` (see `Path::translate`): its shape, length and
+    /// direction do not change.
+    pub(crate) fn translate(&mut self, d: &Axes) {
+        for (i, d) in d.iter().enumerate() {
+            self.start[i] += d;
+            self.end[i] += d;
+            if let Some(c) = self.center.get_mut(i) {
+                *c += d;
+            }
+        }
+    }
+
     /// The cone about `center` (plane coordinates) from `start` until the normal axis
     /// reaches `end_n`: `|end_n − start_n| / |pitch|` turns, counter-clockwise when
     /// `ccw`, the radius changing by `center_rate` per turn.
@@ -321,6 +333,31 @@ mod tests {
             s += f(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
         }
         s * h / 3.0
+    }
+
+    /// A cone moved by d (a command queued behind a custom motion) is the same cone: at
+    /// every arc length its point is the original's plus d, and its length is unchanged.
+    #[test]
+    fn translated_cone_is_the_cone_moved() {
+        use crate::planner::{Path, Plane};
+        let start = ax(12.0, 0.0, 0.0);
+        let orig = Path::cone(Plane::XY, &start, [2.0, 0.0], 6.0, 2.0, 2.0, true).unwrap();
+        let d = [1.5, -2.0, 0.25, 3.0, 0.0, 0.0, 0.0, 1.0];
+        let mut moved = orig.clone();
+        moved.translate(&d);
+        assert_eq!(moved.length(), orig.length());
+        for i in 0..=20 {
+            let s = orig.length() * f64::from(i) / 20.0;
+            let (p, q) = (orig.point(s), moved.point(s));
+            for k in 0..8 {
+                assert!(
+                    (q[k] - p[k] - d[k]).abs() < 1e-9,
+                    "axis {k} at s={s}: {} vs {}",
+                    q[k],
+                    p[k]
+                );
+            }
+        }
     }
 
     #[test]

@@ -515,6 +515,7 @@ impl Path {
                     *c += d;
                 }
             }
+            Path::Cone(c) => c.translate(d),
         }
     }
 
