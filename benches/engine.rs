@@ -6,7 +6,9 @@
 //!   than real time the fast clock runs them at a 1 ms period.
 //!
 //! * with the `panel` feature: the tick cost with the browser panel off, on without a
-//!   client, and with a client reading its event stream (issue #17: < 5 % more).
+//!   client, and with a client reading its event stream (issue #17: < 5 % more); and the
+//!   realtime tick lateness (p99) with the panel quiet against the panel under a stream
+//!   of bad requests and idle connections (issue #17: unchanged).
 //!
 //! Interrupt delivery and tick lateness under the realtime clock: `benches/realtime.rs`.
 //!
@@ -69,6 +71,12 @@ fn start_all_moving(len: f64) {
 }
 
 fn main() {
+    // `MCCL_BENCH_ONLY=panel-hostile cargo bench --bench engine`: only that line.
+    #[cfg(feature = "panel")]
+    if std::env::var("MCCL_BENCH_ONLY").as_deref() == Ok("panel-hostile") {
+        panel_hostile_lateness();
+        return;
+    }
     // Engine cost and fast-clock ratio: 48 groups, 8 axes each, all moving for 10 s of
     // virtual time (10,000 ticks of 1 ms).
     init("fast");
@@ -162,6 +170,8 @@ fn main() {
     MCC_CloseSystem();
     #[cfg(feature = "panel")]
     panel_cost();
+    #[cfg(feature = "panel")]
+    panel_hostile_lateness();
 }
 
 /// CPU time the engine thread has used, ns (`/proc/self/task/*/schedstat` of the thread
@@ -249,5 +259,114 @@ fn panel_cost() {
         (us[1] / us[0] - 1.0) * 100.0,
         us[2],
         (us[2] / us[0] - 1.0) * 100.0
+    );
+}
+
+/// The panel's address and token from its printed URL.
+#[cfg(feature = "panel")]
+fn panel_addr_token() -> (String, String) {
+    let url = MCCLPCI_IMP::panel::url().expect("panel");
+    let (addr, token) = url
+        .strip_prefix("http://")
+        .and_then(|r| r.split_once("/?token="))
+        .expect("panel URL");
+    (addr.to_string(), token.to_string())
+}
+
+/// Bad requests until `stop`: a wrong token, malformed JSON, an oversized head, a body
+/// larger than allowed, a GET on the control endpoint, and 20 connections held idle.
+/// Every socket has 200 ms timeouts, so the attacker never blocks. Returns the number
+/// of requests sent.
+#[cfg(feature = "panel")]
+fn attack(
+    addr: String,
+    token: String,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+) -> usize {
+    use std::io::{Read, Write};
+    use std::net::TcpStream;
+    use std::sync::atomic::Ordering;
+    use std::time::Duration;
+    let big_head = format!(
+        "GET /api/state?token={token} HTTP/1.1\r\nX-Pad: {}\r\n\r\n",
+        "a".repeat(10_000)
+    );
+    let requests = [
+        "GET /api/state?token=00000000000000000000000000000000 HTTP/1.1\r\n\r\n".to_string(),
+        format!(
+            "POST /api/control?token={token} HTTP/1.1\r\nContent-Length: 9\r\n\r\n{{\"press\":"
+        ),
+        big_head,
+        format!("POST /api/control?token={token} HTTP/1.1\r\nContent-Length: 1000000\r\n\r\n"),
+        format!("GET /api/control?token={token} HTTP/1.1\r\n\r\n"),
+    ];
+    let connect = || {
+        let s = TcpStream::connect(&addr).ok()?;
+        s.set_read_timeout(Some(Duration::from_millis(200))).ok()?;
+        s.set_write_timeout(Some(Duration::from_millis(200))).ok()?;
+        Some(s)
+    };
+    let idle: Vec<TcpStream> = (0..20).filter_map(|_| connect()).collect();
+    let mut sent = 0;
+    let mut buf = [0u8; 4096];
+    while !stop.load(Ordering::Relaxed) {
+        for r in &requests {
+            if let Some(mut s) = connect() {
+                let _ = s.write_all(r.as_bytes());
+                let _ = s.read(&mut buf);
+                sent += 1;
+            }
+        }
+    }
+    drop(idle);
+    sent
+}
+
+/// Realtime tick lateness p99 (µs, `MCCL_SimGetClockStats`) over 2 s of 48 moving groups
+/// at 1 ms with the panel on; with `hostile`, a thread sends bad requests all along.
+#[cfg(feature = "panel")]
+fn realtime_p99(hostile: bool) -> (f64, usize) {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::Arc;
+    std::env::set_var("MCCL_PANEL", "127.0.0.1:0");
+    init("realtime");
+    std::env::remove_var("MCCL_PANEL");
+    start_all_moving(1000.0);
+    let stop = Arc::new(AtomicBool::new(false));
+    let attacker = hostile.then(|| {
+        let (addr, token) = panel_addr_token();
+        let stop = stop.clone();
+        std::thread::spawn(move || attack(addr, token, stop))
+    });
+    std::thread::sleep(std::time::Duration::from_secs(2));
+    let mut st = MCCLPCI_IMP::ffi::sim::MCCL_CLOCK_STATS::default();
+    // SAFETY: a valid, writable struct.
+    assert_eq!(
+        unsafe { MCCLPCI_IMP::ffi::sim::MCCL_SimGetClockStats(&mut st) },
+        NO_ERR
+    );
+    stop.store(true, Ordering::Relaxed);
+    let sent = attacker.map_or(0, |a| a.join().unwrap_or(0));
+    MCC_CloseSystem();
+    (st.dfP99Us, sent)
+}
+
+/// Issue #17: bad requests and idle connections do not make the engine late. Alternates
+/// 5 rounds of 2 s quiet and 2 s under attack (realtime clock, 1 ms, SCHED_OTHER) and
+/// prints the medians of the tick lateness p99 and their ratio.
+#[cfg(feature = "panel")]
+fn panel_hostile_lateness() {
+    let (mut quiet, mut hostile, mut sent) = (Vec::new(), Vec::new(), 0);
+    for _ in 0..5 {
+        quiet.push(realtime_p99(false).0);
+        let (p99, n) = realtime_p99(true);
+        hostile.push(p99);
+        sent += n;
+    }
+    let q = percentile(&mut quiet, 0.5);
+    let h = percentile(&mut hostile, 0.5);
+    println!(
+        "panel: realtime tick lateness p99 (48 groups, 1 ms, median of 5 rounds of 2 s): quiet {q:.0} us, under bad requests {h:.0} us (ratio {:.2}; {sent} bad requests and 20 idle connections a round)",
+        h / q.max(1.0)
     );
 }

@@ -103,6 +103,19 @@ pub fn start_from_env(shared: &Arc<Shared>, groups: &[(usize, GroupDef)]) -> Opt
     }
 }
 
+/// The panel is a best-effort observer: its thread runs at nice 10, so under CPU
+/// contention (a flood of requests, a busy 2-core host) the engine thread and the
+/// program's threads go first. Lowering one's own priority is always permitted; should
+/// it fail anyway, the panel runs at normal priority.
+fn background_priority() {
+    // SAFETY: gettid has no preconditions and returns the calling thread's id.
+    let tid = unsafe { libc::syscall(libc::SYS_gettid) };
+    if let Ok(tid) = libc::id_t::try_from(tid) {
+        // SAFETY: setpriority on this thread's own id changes only its nice value.
+        let _ = unsafe { libc::setpriority(libc::PRIO_PROCESS, tid, 10) };
+    }
+}
+
 /// Starts a panel on `addr` and prints its URL on stderr.
 pub fn start(
     addr: SocketAddr,
@@ -130,7 +143,10 @@ pub fn start(
     );
     let thread = std::thread::Builder::new()
         .name("mccl-panel".into())
-        .spawn(move || server.run())?;
+        .spawn(move || {
+            background_priority();
+            server.run()
+        })?;
     eprintln!("MCCL: panel at {url}");
     *URL.lock() = Some(url);
     Ok(Panel {
