@@ -14,6 +14,7 @@
 //! one card), `group/` (one group), `thread.rs` (real-time settings of the thread).
 
 pub mod command;
+pub mod cycle;
 pub mod group;
 pub mod homing;
 pub mod isr;

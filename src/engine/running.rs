@@ -142,6 +142,7 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
                 }
                 // Interrupt callbacks collected in the tick run here, without any lock.
                 shared.isr.deliver(&interrupts, &shared.clock);
+                shared.call_cycle_routines();
                 shared.clock.tick_done();
             }
         }

@@ -17,6 +17,7 @@ pub mod adc;
 pub mod coordinate;
 pub mod dac;
 pub mod encoder;
+pub mod filters;
 pub mod home;
 pub mod isr;
 pub mod jog;

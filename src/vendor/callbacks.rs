@@ -18,3 +18,13 @@ pub type TMRISR = Option<unsafe extern "C" fn(*mut TMRINT)>;
 pub type HSKISR = Option<unsafe extern "C" fn(*mut HSKINT)>;
 /// Cycle interrupt ISR (obsolete form).
 pub type CYCLE_INTERRUPT_ISR = Option<unsafe extern "C" fn()>;
+/// Reverse interpolation routine: `(group, command index, time index, buffer)` ->
+/// > 0 forward, < 0 backward, 0 pause (`MCC_SetReverseInterpRoutine`).
+pub type INTERP = Option<
+    unsafe extern "C" fn(
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        std::os::raw::c_int,
+        *mut std::os::raw::c_void,
+    ) -> std::os::raw::c_int,
+>;

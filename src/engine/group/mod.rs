@@ -31,6 +31,7 @@ mod execution;
 pub mod external;
 mod homing;
 mod inpos;
+mod post;
 mod queue;
 mod rate;
 mod status;
@@ -39,6 +40,7 @@ use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
+pub use post::{MAX_FILTER_PERIODS, MOVING_AVERAGE_TAPS, REVERSE_HISTORY};
 use queue::CommandIndex;
 use rate::{Mode, RateState};
 
@@ -112,6 +114,9 @@ pub struct GroupState {
     homing: u32,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
     pub trace_notes: Option<Vec<super::trace::Note>>,
+    /// After-interpolation filters and reverse interpolation (`post.rs`); `None` until
+    /// the program uses one.
+    post: Option<Box<post::Post>>,
 }
 
 impl GroupState {
@@ -155,6 +160,7 @@ impl GroupState {
             external: None,
             homing: 0,
             trace_notes: None,
+            post: None,
         }
     }
 
@@ -241,7 +247,7 @@ impl GroupState {
 
     /// Velocity per axis (UU/s).
     pub fn vel(&self) -> Axes {
-        self.vel
+        self.out_vel()
     }
 
     /// The current position (user coordinates).
