@@ -604,6 +604,10 @@ public static class MCCL
 
     // ---- Callback types (keep the delegate instance alive while registered) ----
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void CYCLE_INTERRUPT_ISR();
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate int INTERP(int nGroup, int nCommandIndex, int nTimeIndex, IntPtr pvBuffer);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void LIOISR(ref LIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void ENCISR(ref ENCINT value);
@@ -617,8 +621,6 @@ public static class MCCL
     public delegate void RIOISR(ref RIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void HSKISR(ref HSKINT value);
-    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
-    public delegate void CYCLE_INTERRUPT_ISR();
 
     // C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
     private static readonly bool NativeLongIs64 = IntPtr.Size == 8 && Environment.OSVersion.Platform != PlatformID.Win32NT;
@@ -636,6 +638,8 @@ public static class MCCL
     public static extern int MCC_CloseGroup(int nGroupIndex);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CloseAllGroups")]
     public static extern int MCC_CloseAllGroups();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetComposeAxis")]
+    public static extern int MCC_SetComposeAxis(ushort wAxesMask, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHSKRoutine")]
     public static extern int MCC_SetHSKRoutine(HSKISR pfnLIORoutine, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMacParam")]
@@ -650,6 +654,10 @@ public static class MCCL
     public static extern int MCC_UpdateParam();
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetConvFactor")]
     public static extern double MCC_GetConvFactor(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetReverseInterpRoutine")]
+    public static extern int MCC_SetReverseInterpRoutine(INTERP pfnForwardReverse, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableReverseInterp")]
+    public static extern int MCC_EnableReverseInterp([MarshalAs(UnmanagedType.Bool)] bool bEnableReverse, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCmdQueueSize")]
     public static extern int MCC_SetCmdQueueSize(int nSize, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCmdQueueSize")]
@@ -1365,6 +1373,8 @@ public static class MCCL
     public static extern int MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaZX_Y")]
     public static extern int MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCycleInterruptRoutine")]
+    public static extern int MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosCheckTime")]
     public static extern int MCC_SetInPosCheckTime(ushort wCheckTime, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosStableTime")]
@@ -1379,6 +1389,14 @@ public static class MCCL
     public static extern double MCC_GetOverSpeed(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ChangeFeedSpeed")]
     public static extern double MCC_ChangeFeedSpeed(double dfSpeed, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableAccDecAfterIPO")]
+    public static extern int MCC_EnableAccDecAfterIPO(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableAccDecAfterIPO")]
+    public static extern int MCC_DisableAccDecAfterIPO(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableMovingAverage")]
+    public static extern int MCC_EnableMovingAverage(ushort wGroupIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableMovingAverage")]
+    public static extern int MCC_DisableMovingAverage(ushort wGroupIndex);
 
     // ---- Names the IMP manuals use that the headers lack ----
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetLIORoutineEx")]

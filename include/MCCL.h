@@ -130,6 +130,12 @@ typedef uint16_t WORD;
 
 typedef uint32_t DWORD;
 
+typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
+
+typedef int (MCC_CALLBACK *INTERP)(int nGroup, int nCommandIndex, int nTimeIndex, void *pvBuffer);
+
+typedef int BOOL;
+
 typedef uint8_t BYTE;
 
 typedef struct {
@@ -261,8 +267,6 @@ typedef struct {
   int32_t nMotionPhase;
   int32_t nCommandIndex_LD;
 } COMMAND_INFO;
-
-typedef int BOOL;
 
 typedef struct {
   WORD wPosToEncoderDir;
@@ -397,8 +401,6 @@ typedef struct {
   int32_t nGroupUsed[96];
   SYS_GROUP_INFO stGroupInfo[96];
 } SYS_GROUP_CONFIG;
-
-typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
 
 #define OCM_PULSE 0
 

@@ -38,6 +38,7 @@ MCC_API int MCC_CALL MCC_CreateGroup(int xMapToCh, int yMapToCh, int zMapToCh, i
 MCC_API int MCC_CALL MCC_CreateGroupEx(int xMapToCh, int yMapToCh, int zMapToCh, int uMapToCh, int vMapToCh, int wMapToCh, int aMapToCh, int bMapToCh, int nCardIndex, int nMotionQueueSize MCC_DEFAULT(MOTION_QUEUE_SIZE));
 MCC_API int MCC_CALL MCC_CloseGroup(int nGroupIndex);
 MCC_API int MCC_CALL MCC_CloseAllGroups(void);
+MCC_API int MCC_CALL MCC_SetComposeAxis(WORD wAxesMask, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetHSKRoutine(HSKISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetMacParam(SYS_MAC_PARAM *pstMacParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
@@ -45,6 +46,8 @@ MCC_API int MCC_CALL MCC_SetEncoderConfig(SYS_ENCODER_CONFIG *pstEncoderConfig, 
 MCC_API int MCC_CALL MCC_GetEncoderConfig(SYS_ENCODER_CONFIG *pstEncoderConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_UpdateParam(void);
 MCC_API double MCC_CALL MCC_GetConvFactor(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetReverseInterpRoutine(INTERP pfnForwardReverse, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableReverseInterp(BOOL bEnableReverse, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetCmdQueueSize(int nSize, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetCmdQueueSize(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_InitSystem(int nInterpolateTime, SYS_CARD_CONFIG *pstCardConfig, WORD wCardNo);
@@ -367,6 +370,7 @@ MCC_API int MCC_CALL MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, doub
 MCC_API int MCC_CALL MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2) */
+MCC_API int MCC_CALL MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
 MCC_API int MCC_CALL MCC_SetInPosCheckTime(WORD wCheckTime, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetInPosStableTime(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetInPosTolerance(WORD wTolerance0, WORD wTolerance1, WORD wTolerance2, WORD wTolerance3, WORD wTolerance4, WORD wTolerance5, WORD wTolerance6, WORD wTolerance7, WORD wGroupIndex MCC_DEFAULT(0));
@@ -374,6 +378,10 @@ MCC_API int MCC_CALL MCC_GetInPosTolerance(WORD *pwTolerance0, WORD *pwTolerance
 MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableAccDecAfterIPO(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableAccDecAfterIPO(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableMovingAverage(WORD wGroupIndex);
+MCC_API int MCC_CALL MCC_DisableMovingAverage(WORD wGroupIndex);
 
 /* Names the IMP manuals use that the headers lack */
 MCC_API int MCC_CALL MCC_SetLIORoutineEx(LIOISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));

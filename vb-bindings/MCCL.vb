@@ -560,6 +560,10 @@ Public Module MCCL
 
     ' ---- Callback types (keep the delegate instance alive while registered) ----
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub CYCLE_INTERRUPT_ISR()
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function INTERP(ByVal nGroup As Integer, ByVal nCommandIndex As Integer, ByVal nTimeIndex As Integer, ByVal pvBuffer As IntPtr) As Integer
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub LIOISR(ByRef value As LIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub ENCISR(ByRef value As ENCINT)
@@ -573,8 +577,6 @@ Public Module MCCL
     Public Delegate Sub RIOISR(ByRef value As RIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub HSKISR(ByRef value As HSKINT)
-    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Sub CYCLE_INTERRUPT_ISR()
 
     ' C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
     Private ReadOnly NativeLongIs64 As Boolean = IntPtr.Size = 8 AndAlso Environment.OSVersion.Platform <> PlatformID.Win32NT
@@ -594,6 +596,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CloseAllGroups")>
     Public Function MCC_CloseAllGroups() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetComposeAxis")>
+    Public Function MCC_SetComposeAxis(ByVal wAxesMask As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetHSKRoutine")>
     Public Function MCC_SetHSKRoutine(ByVal pfnLIORoutine As HSKISR, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -615,6 +620,12 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetConvFactor")>
     Public Function MCC_GetConvFactor(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetReverseInterpRoutine")>
+    Public Function MCC_SetReverseInterpRoutine(ByVal pfnForwardReverse As INTERP, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableReverseInterp")>
+    Public Function MCC_EnableReverseInterp(<MarshalAs(UnmanagedType.Bool)> ByVal bEnableReverse As Boolean, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCmdQueueSize")>
     Public Function MCC_SetCmdQueueSize(ByVal nSize As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
@@ -1611,6 +1622,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaZX_Y")>
     Public Function MCC_HelicaZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCycleInterruptRoutine")>
+    Public Function MCC_SetCycleInterruptRoutine(ByVal pfnCycleIntRoutine As CYCLE_INTERRUPT_ISR) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosCheckTime")>
     Public Function MCC_SetInPosCheckTime(ByVal wCheckTime As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
@@ -1631,6 +1645,18 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ChangeFeedSpeed")>
     Public Function MCC_ChangeFeedSpeed(ByVal dfSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableAccDecAfterIPO")>
+    Public Function MCC_EnableAccDecAfterIPO(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableAccDecAfterIPO")>
+    Public Function MCC_DisableAccDecAfterIPO(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableMovingAverage")>
+    Public Function MCC_EnableMovingAverage(ByVal wGroupIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableMovingAverage")>
+    Public Function MCC_DisableMovingAverage(ByVal wGroupIndex As UShort) As Integer
     End Function
 
     ' ---- Names the IMP manuals use that the headers lack ----

@@ -543,6 +543,8 @@ Public Type SYS_GROUP_CONFIG
 End Type
 
 ' ---- Callbacks ----
+' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
+' INTERP: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
 ' LIOISR: Sub MyIsr(ByRef value As LIOINT), passed as AddressOf MyIsr
 ' ENCISR: Sub MyIsr(ByRef value As ENCINT), passed as AddressOf MyIsr
 ' PCLISR: Sub MyIsr(ByRef value As PCLINT), passed as AddressOf MyIsr
@@ -550,7 +552,6 @@ End Type
 ' TMRISR: Sub MyIsr(ByRef value As TMRINT), passed as AddressOf MyIsr
 ' RIOISR: Sub MyIsr(ByRef value As RIOINT), passed as AddressOf MyIsr
 ' HSKISR: Sub MyIsr(ByRef value As HSKINT), passed as AddressOf MyIsr
-' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
 
 ' ---- System Management ----
 Public Declare Sub MCC_GetVersion Lib "MCCLPCI_IMP.dll" (ByVal strVersion As String)
@@ -558,6 +559,7 @@ Public Declare Function MCC_CreateGroup Lib "MCCLPCI_IMP.dll" (ByVal xMapToCh As
 Public Declare Function MCC_CreateGroupEx Lib "MCCLPCI_IMP.dll" (ByVal xMapToCh As Long, ByVal yMapToCh As Long, ByVal zMapToCh As Long, ByVal uMapToCh As Long, ByVal vMapToCh As Long, ByVal wMapToCh As Long, ByVal aMapToCh As Long, ByVal bMapToCh As Long, ByVal nCardIndex As Long, Optional ByVal nMotionQueueSize As Long = MOTION_QUEUE_SIZE) As Long
 Public Declare Function MCC_CloseGroup Lib "MCCLPCI_IMP.dll" (ByVal nGroupIndex As Long) As Long
 Public Declare Function MCC_CloseAllGroups Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_SetComposeAxis Lib "MCCLPCI_IMP.dll" (ByVal wAxesMask As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetHSKRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetMacParam Lib "MCCLPCI_IMP.dll" (ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetMacParam Lib "MCCLPCI_IMP.dll" (ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -565,6 +567,8 @@ Public Declare Function MCC_SetEncoderConfig Lib "MCCLPCI_IMP.dll" (ByRef pstEnc
 Public Declare Function MCC_GetEncoderConfig Lib "MCCLPCI_IMP.dll" (ByRef pstEncoderConfig As SYS_ENCODER_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_UpdateParam Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_GetConvFactor Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Double
+Public Declare Function MCC_SetReverseInterpRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnForwardReverse As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableReverseInterp Lib "MCCLPCI_IMP.dll" (ByVal bEnableReverse As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetCmdQueueSize Lib "MCCLPCI_IMP.dll" (ByVal nSize As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetCmdQueueSize Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_InitSystem Lib "MCCLPCI_IMP.dll" (ByVal nInterpolateTime As Long, ByRef pstCardConfig As SYS_CARD_CONFIG, ByVal wCardNo As Integer) As Long
@@ -883,6 +887,7 @@ Public Declare Function MCC_LineB Lib "MCCLPCI_IMP.dll" (ByVal dfB As Double, Op
 Public Declare Function MCC_HelicaXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_HelicaYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_HelicaZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetCycleInterruptRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnCycleIntRoutine As Long) As Long
 Public Declare Function MCC_SetInPosCheckTime Lib "MCCLPCI_IMP.dll" (ByVal wCheckTime As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetInPosStableTime Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByVal wTolerance0 As Integer, ByVal wTolerance1 As Integer, ByVal wTolerance2 As Integer, ByVal wTolerance3 As Integer, ByVal wTolerance4 As Integer, ByVal wTolerance5 As Integer, ByVal wTolerance6 As Integer, ByVal wTolerance7 As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
@@ -890,6 +895,10 @@ Public Declare Function MCC_GetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByRef pwTol
 Public Declare Function MCC_SetOverSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_EnableAccDecAfterIPO Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableAccDecAfterIPO Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableMovingAverage Lib "MCCLPCI_IMP.dll" (ByVal wGroupIndex As Integer) As Long
+Public Declare Function MCC_DisableMovingAverage Lib "MCCLPCI_IMP.dll" (ByVal wGroupIndex As Integer) As Long
 
 ' ---- Names the IMP manuals use that the headers lack ----
 Public Declare Function MCC_SetLIORoutineEx Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long

@@ -22,9 +22,9 @@ pub type CYCLE_INTERRUPT_ISR = Option<unsafe extern "C" fn()>;
 /// > 0 forward, < 0 backward, 0 pause (`MCC_SetReverseInterpRoutine`).
 pub type INTERP = Option<
     unsafe extern "C" fn(
-        std::os::raw::c_int,
-        std::os::raw::c_int,
-        std::os::raw::c_int,
-        *mut std::os::raw::c_void,
+        nGroup: std::os::raw::c_int,
+        nCommandIndex: std::os::raw::c_int,
+        nTimeIndex: std::os::raw::c_int,
+        pvBuffer: *mut std::os::raw::c_void,
     ) -> std::os::raw::c_int,
 >;

@@ -80,6 +80,9 @@ struct Model {
     structs: BTreeMap<String, Vec<Decl>>,
     /// Callback typedef name -> (calling-convention macro text, argument type or "void").
     callbacks: BTreeMap<String, (String, String)>,
+    /// Callbacks with several parameters or a return value: name -> (return type, C
+    /// parameter list with names). Their routines pass no struct and return 1.
+    cb_sigs: BTreeMap<String, (String, String)>,
     funcs: Vec<Func>,
     headers: Vec<String>,
     /// Integer macros (`#define NAME 16`), for array lengths given by name.
@@ -248,7 +251,7 @@ impl Model {
 
     /// An alias (`typedef uint16_t WORD`) or a callback type
     /// (`typedef void (MCC_CALLBACK *LIOISR)(LIOINT*)`).
-    fn typedef(&mut self, file: &str, stmt: &str) -> Result<(), String> {
+    fn typedef(&mut self, _file: &str, stmt: &str) -> Result<(), String> {
         let t = &stmt["typedef ".len()..];
         if let Some(star) = t.find('(') {
             let inner_end = t[star..].find(')').ok_or("bad callback typedef")? + star;
@@ -258,8 +261,15 @@ impl Model {
                 .trim()
                 .trim_start_matches('(')
                 .trim_end_matches(')');
-            if args.contains(',') {
-                return Err(format!("{file}: callback `{stmt}` takes several arguments"));
+            let ret = t[..star].trim().to_string();
+            if args.contains(',') || ret != "void" {
+                self.cb_sigs
+                    .insert(nm.trim().to_string(), (ret, args.trim().to_string()));
+                self.callbacks.insert(
+                    nm.trim().to_string(),
+                    (conv.trim().to_string(), "void".into()),
+                );
+                return Ok(());
             }
             let arg = args.replace('*', "").trim().to_string();
             self.callbacks
@@ -668,6 +678,22 @@ fn gen(m: &Model) -> Result<String, String> {
         .map(|(i, k)| (k, i))
         .collect();
     for (i, (name, (conv, arg))) in m.callbacks.iter().enumerate() {
+        if let Some((ret, params)) = m.cb_sigs.get(name) {
+            // Every parameter named, each marked used; the routine returns 1.
+            let used: String = params
+                .split(',')
+                .filter_map(|p| p.trim().rsplit(|c: char| c == ' ' || c == '*').next())
+                .filter(|n| !n.is_empty() && *n != "void")
+                .map(|n| format!("    (void){n};\n"))
+                .collect();
+            let back = if ret == "void" { "" } else { "    return 1;\n" };
+            let _ = writeln!(
+                o,
+                "\nstatic {ret} {conv} fz_cb_{}({params})\n{{\n{used}    fz_routine({i}, NULL, 0);\n{back}}}",
+                c_ident(name)
+            );
+            continue;
+        }
         let (sig, size) = if arg == "void" || arg.is_empty() {
             ("void".to_string(), "0".to_string())
         } else {
