@@ -682,7 +682,7 @@ fn gen(m: &Model) -> Result<String, String> {
             // Every parameter named, each marked used; the routine returns 1.
             let used: String = params
                 .split(',')
-                .filter_map(|p| p.trim().rsplit(|c: char| c == ' ' || c == '*').next())
+                .filter_map(|p| p.trim().rsplit([' ', '*']).next())
                 .filter(|n| !n.is_empty() && *n != "void")
                 .map(|n| format!("    (void){n};\n"))
                 .collect();
