@@ -287,3 +287,53 @@ fn reverse_interpolation_retraces_the_path_exactly() {
     assert_eq!(MCC_EnableReverseInterp(0, 0), NO_ERR);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+static DECISION: AtomicI32 = AtomicI32::new(1);
+
+extern "C" fn steer(_g: c_int, _c: c_int, _t: c_int, _b: *mut c_void) -> c_int {
+    DECISION.load(Ordering::SeqCst)
+}
+
+#[test]
+fn reverse_pause_and_abort_behind_the_front() {
+    let _g = fresh();
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    DECISION.store(1, Ordering::SeqCst);
+    assert_eq!(MCC_SetReverseInterpRoutine(Some(steer), 0), NO_ERR);
+    assert_eq!(MCC_EnableReverseInterp(1, 0), NO_ERR);
+    assert_eq!(line([10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), 0);
+    let mut seen = vec![pos(0)];
+    for _ in 0..201 {
+        tick(1);
+        seen.push(pos(0));
+    }
+    // The call after tick 201 was made with DECISION 1: tick 202 goes forward (to where
+    // the commands take it, seen[202] unrecorded here); the calls after 202..210 say
+    // back: ticks 203..211 step back 9 periods, to tick 193's position.
+    DECISION.store(-1, Ordering::SeqCst);
+    tick(10);
+    assert_eq!(pos(0), seen[193]);
+    // Tick 212 still goes back (decided after tick 211), then 0 pauses.
+    DECISION.store(0, Ordering::SeqCst);
+    tick(5);
+    assert_eq!(pos(0), seen[192]);
+    let st = MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(0)
+        .unwrap()
+        .status;
+    assert_eq!(st, GMS_RUNNING, "paused behind the front");
+    // An abort behind the front stops there; that is now the end of the path.
+    assert_eq!(MCCLPCI_IMP::ffi::trajectory::MCC_AbortMotion(0, 0), NO_ERR);
+    DECISION.store(1, Ordering::SeqCst);
+    tick(20);
+    assert_eq!(pos(0), seen[192]);
+    let st = MCCLPCI_IMP::system::active()
+        .unwrap()
+        .snapshot(0)
+        .unwrap()
+        .status;
+    assert_eq!(st, GMS_STOP);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
