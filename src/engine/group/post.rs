@@ -302,7 +302,10 @@ impl GroupState {
             // here), then the front of the path moves on.
             self.tick(dt);
             let r = &mut post.reverse;
-            if r.enabled {
+            let idle = self.running.is_empty() && self.pos == before;
+            if r.enabled && idle {
+                // Nothing executed: nothing to record (the front stays where it is).
+            } else if r.enabled {
                 r.hist.push_back(self.pos);
                 if r.hist.len() > REVERSE_HISTORY {
                     r.hist.pop_front();
