@@ -254,6 +254,8 @@ impl GroupState {
     }
 
     /// The position the card outputs (the raw position after the filters).
+    #[cold]
+    #[inline(never)]
     pub(super) fn out_pos(&self) -> Axes {
         match &self.post {
             Some(p) if !p.filters.stages.is_empty() => {
@@ -286,6 +288,8 @@ impl GroupState {
 
     /// The tick of a group with a [`Post`]: reverse interpolation, the usual tick, the
     /// filters (module documentation).
+    #[cold]
+    #[inline(never)]
     pub(super) fn tick_post(&mut self, dt: f64) {
         let Some(mut post) = self.post.take() else {
             return;
@@ -378,6 +382,8 @@ impl GroupState {
     /// [`GroupState::motion`] of a group with a [`Post`] or a compose mask other than
     /// X|Y|Z: the output position and velocity, and the path speed over the composing
     /// axes (with no speed on them, the fastest other axis; the X/Y/Z rule generalised).
+    #[cold]
+    #[inline(never)]
     pub(super) fn post_motion(&self) -> crate::engine::snapshot::Motion {
         let vel = self.out_vel();
         let mask = self.settings.compose;
