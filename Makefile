@@ -7,7 +7,7 @@ EXAMPLE ?= GeneralMotion
 MCCL_CLOCK ?= fast
 export MCCL_CLOCK
 
-.PHONY: deps build example test bench headers docs-image clean fuzz
+.PHONY: deps build example test bench headers docs-image docs-panel clean fuzz
 
 deps:
 	@scripts/install-deps.sh
@@ -43,6 +43,11 @@ headers:
 docs-image: build
 	MCCL_CLOCK=fast MCCL_TRACE=$(BUILD)/docs-GeneralMotion.csv $(BUILD)/c-tests/GeneralMotion >/dev/null
 	$(TRACE_TOOL) plot $(BUILD)/docs-GeneralMotion.csv -o docs/GeneralMotion.svg
+
+# Regenerate the README's screenshot of the browser panel docs/panel.png (commit it): the
+# panel_browser test's run of panel_demo under the realtime clock in headless Chromium.
+docs-panel: build
+	python3 c-tests/scripts/panel_browser.py $(BUILD)/c-tests/panel_demo --screenshot docs/panel.png
 
 clean:
 	rm -rf $(BUILD)

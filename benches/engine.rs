@@ -5,6 +5,9 @@
 //! * engine cost per tick with 48 groups x 8 axes all moving, and how many times faster
 //!   than real time the fast clock runs them at a 1 ms period.
 //!
+//! * with the `panel` feature: the tick cost with the browser panel off, on without a
+//!   client, and with a client reading its event stream (issue #17: < 5 % more).
+//!
 //! Interrupt delivery and tick lateness under the realtime clock: `benches/realtime.rs`.
 //!
 //! Latencies are measured over batches of 100 calls (the clock's own cost is ~20 ns, too
@@ -157,4 +160,94 @@ fn main() {
     });
     println!("MCC_Line enqueue: median {med:.0} ns, p99 {p99:.0} ns (target < 1 us)");
     MCC_CloseSystem();
+    #[cfg(feature = "panel")]
+    panel_cost();
+}
+
+/// CPU time the engine thread has used, ns (`/proc/self/task/*/schedstat` of the thread
+/// named `mccl-engine`): the engine's own work, without the time it waited for a CPU
+/// while other threads (the panel's, the client's, the host's) ran.
+#[cfg(feature = "panel")]
+fn engine_cpu_ns() -> u64 {
+    for e in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
+        let comm = std::fs::read_to_string(e.path().join("comm")).unwrap_or_default();
+        if comm.trim() == "mccl-engine" {
+            let st = std::fs::read_to_string(e.path().join("schedstat")).unwrap_or_default();
+            return st
+                .split(' ')
+                .next()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(0);
+        }
+    }
+    panic!("no mccl-engine thread")
+}
+
+/// Engine CPU time per tick, µs, over 30,000 ticks (1 ms) of 48 moving groups publishing
+/// every tick, as under the realtime clock.
+#[cfg(feature = "panel")]
+fn tick_cpu_us() -> f64 {
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    shared
+        .live_snapshots
+        .store(true, std::sync::atomic::Ordering::Relaxed);
+    MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(1);
+    let c = engine_cpu_ns();
+    MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(30_000);
+    (engine_cpu_ns() - c) as f64 / 30_000.0 / 1e3
+}
+
+/// Engine CPU per tick without a panel, with one and no client, and with a client reading the event
+/// stream (25 states a second of 48 groups and 6 cards); best of 7 alternating rounds.
+#[cfg(feature = "panel")]
+fn panel_cost() {
+    use std::io::{Read, Write};
+    let mut best = [f64::MAX; 3];
+    for _ in 0..7 {
+        std::env::remove_var("MCCL_PANEL");
+        init("fast");
+        start_all_moving(5000.0);
+        best[0] = best[0].min(tick_cpu_us());
+        std::env::set_var("MCCL_PANEL", "127.0.0.1:0");
+        init("fast");
+        std::env::remove_var("MCCL_PANEL");
+        start_all_moving(5000.0);
+        best[1] = best[1].min(tick_cpu_us());
+        let url = MCCLPCI_IMP::panel::url().expect("panel");
+        let (addr, token) = url
+            .strip_prefix("http://")
+            .and_then(|r| r.split_once("/?token="))
+            .unwrap();
+        let mut s = std::net::TcpStream::connect(addr).unwrap();
+        write!(s, "GET /api/events?token={token} HTTP/1.1\r\n\r\n").unwrap();
+        let (tx, rx) = std::sync::mpsc::channel::<()>();
+        let reader = std::thread::spawn(move || {
+            let mut b = vec![0u8; 1 << 16];
+            let mut events = 0usize;
+            while let Ok(n) = s.read(&mut b) {
+                if n == 0 || rx.try_recv().is_ok() {
+                    break;
+                }
+                events += b[..n].windows(6).filter(|w| w == b"data: ").count();
+            }
+            events
+        });
+        std::thread::sleep(std::time::Duration::from_millis(100));
+        let t = Instant::now();
+        best[2] = best[2].min(tick_cpu_us());
+        let secs = t.elapsed().as_secs_f64();
+        let _ = tx.send(());
+        MCC_CloseSystem();
+        let events = reader.join().unwrap();
+        println!("  (round: {events} events in {secs:.2} s + 0.1 s)");
+    }
+    let us = best;
+    println!(
+        "panel: engine CPU per tick (48 groups, publishing every tick): off {:.2} us, on without a client {:.2} us ({:+.1} %), with an event-stream client {:.2} us ({:+.1} %, target < 5 %)",
+        us[0],
+        us[1],
+        (us[1] / us[0] - 1.0) * 100.0,
+        us[2],
+        (us[2] / us[0] - 1.0) * 100.0
+    );
 }

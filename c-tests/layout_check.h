@@ -50,10 +50,15 @@ static int check_layouts(void)
     SIZE(SYS_CARD_CONFIG, 8);
     OFF(SYS_CARD_CONFIG, wIRQ_No, 4);
     SIZE(HOME_CONFIG, 16);
-    OFF(HOME_CONFIG, dfOffset, 8);
+    OFF(HOME_CONFIG, wApproachDir, 2); OFF(HOME_CONFIG, wLeaveDir, 4);
+    OFF(HOME_CONFIG, wSensorMode, 6); OFF(HOME_CONFIG, dfOffset, 8);
     SIZE(SYS_MACH_PARAM, 104);
+    OFF(SYS_MACH_PARAM, dwPPR, 4); OFF(SYS_MACH_PARAM, dfPitch, 8);
+    OFF(SYS_MACH_PARAM, dfLowLimitOffset, 48); OFF(SYS_MACH_PARAM, wPulseMode, 56);
+    OFF(SYS_MACH_PARAM, wPaddle, 62);
     OFF(SYS_MACH_PARAM, stHome, 64); OFF(SYS_MACH_PARAM, stEncoder, 80);
     OFF(SYS_MACH_PARAM, wOverTravelUpSensorMode, 96);
+    OFF(SYS_MACH_PARAM, wOverTravelDownSensorMode, 98);
     SIZE(SYS_GROUP_INFO, 36);
     SIZE(SYS_GROUP_CONFIG, 3840);
     OFF(SYS_GROUP_CONFIG, stGroupInfo, 384);

@@ -133,6 +133,64 @@ public struct HSKINT
 }
 
 [StructLayout(LayoutKind.Sequential)]
+public struct HOME_CONFIG
+{
+    public ushort wType;
+    public ushort wApproachDir;
+    public ushort wLeaveDir;
+    public ushort wSensorMode;
+    public double dfOffset;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct SYS_ENCODER_CONFIG
+{
+    public ushort wType;
+    public ushort wAInverse;
+    public ushort wBInverse;
+    public ushort wCInverse;
+    public ushort wABSwap;
+    public ushort wInputRate;
+    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+    public ushort[] wPaddle;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct ENCODER_CONFIG
+{
+    public ushort wType;
+    public ushort wAInverse;
+    public ushort wBInverse;
+    public ushort wCInverse;
+    public ushort wABSwap;
+    public ushort wInputRate;
+    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+    public ushort[] wPaddle;
+}
+
+[StructLayout(LayoutKind.Sequential)]
+public struct SYS_MACH_PARAM
+{
+    public ushort wPosToEncoderDir;
+    public ushort wRPM;
+    public uint dwPPR;
+    public double dfPitch;
+    public double dfGearRatio;
+    public double dfHighLimit;
+    public double dfLowLimit;
+    public double dfHighLimitOffset;
+    public double dfLowLimitOffset;
+    public ushort wPulseMode;
+    public ushort wPulseWidth;
+    public ushort wCommandMode;
+    public ushort wPaddle;
+    public HOME_CONFIG stHome;
+    public SYS_ENCODER_CONFIG stEncoder;
+    public ushort wOverTravelUpSensorMode;
+    public ushort wOverTravelDownSensorMode;
+}
+
+[StructLayout(LayoutKind.Sequential)]
 public struct SYS_COMP_PARAM
 {
     public uint dwInterval;
@@ -176,19 +234,6 @@ public struct SYS_MAC_PARAM
     public ushort wPaddle;
     public ushort wOverTravelUpSensorMode;
     public ushort wOverTravelDownSensorMode;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct SYS_ENCODER_CONFIG
-{
-    public ushort wType;
-    public ushort wAInverse;
-    public ushort wBInverse;
-    public ushort wCInverse;
-    public ushort wABSwap;
-    public ushort wInputRate;
-    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
-    public ushort[] wPaddle;
 }
 
 [StructLayout(LayoutKind.Sequential)]
@@ -236,19 +281,6 @@ public struct SYS_MAC_PARAM_EX
 }
 
 [StructLayout(LayoutKind.Sequential)]
-public struct ENCODER_CONFIG
-{
-    public ushort wType;
-    public ushort wAInverse;
-    public ushort wBInverse;
-    public ushort wCInverse;
-    public ushort wABSwap;
-    public ushort wInputRate;
-    [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
-    public ushort[] wPaddle;
-}
-
-[StructLayout(LayoutKind.Sequential)]
 public struct SYS_PULSE_CONFIG
 {
     public ushort wType;
@@ -285,38 +317,6 @@ public struct SYS_HOME_CONFIG_EX
     public double dfEscapeTime;
     public ushort wStaticError;
     public ushort wTolerance;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct HOME_CONFIG
-{
-    public ushort wType;
-    public ushort wApproachDir;
-    public ushort wLeaveDir;
-    public ushort wSensorMode;
-    public double dfOffset;
-}
-
-[StructLayout(LayoutKind.Sequential)]
-public struct SYS_MACH_PARAM
-{
-    public ushort wPosToEncoderDir;
-    public ushort wRPM;
-    public uint dwPPR;
-    public double dfPitch;
-    public double dfGearRatio;
-    public double dfHighLimit;
-    public double dfLowLimit;
-    public double dfHighLimitOffset;
-    public double dfLowLimitOffset;
-    public ushort wPulseMode;
-    public ushort wPulseWidth;
-    public ushort wCommandMode;
-    public ushort wPaddle;
-    public HOME_CONFIG stHome;
-    public SYS_ENCODER_CONFIG stEncoder;
-    public ushort wOverTravelUpSensorMode;
-    public ushort wOverTravelDownSensorMode;
 }
 
 [StructLayout(LayoutKind.Sequential)]
@@ -642,6 +642,10 @@ public static class MCCL
     public static extern int MCC_SetComposeAxis(ushort wAxesMask, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHSKRoutine")]
     public static extern int MCC_SetHSKRoutine(HSKISR pfnLIORoutine, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HostInterrupt")]
+    public static extern int MCC_HostInterrupt(ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SlaveInterrupt")]
+    public static extern int MCC_SlaveInterrupt(ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMacParam")]
     public static extern int MCC_SetMacParam(ref SYS_MAC_PARAM pstMacParam, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMacParam")]
@@ -1373,8 +1377,32 @@ public static class MCCL
     public static extern int MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaZX_Y")]
     public static extern int MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ConeXY_Z")]
+    public static extern int MCC_ConeXY_Z(double dfCX, double dfCY, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ConeYZ_X")]
+    public static extern int MCC_ConeYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ConeZX_Y")]
+    public static extern int MCC_ConeZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCycleInterruptRoutine")]
     public static extern int MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMachParam")]
+    public static extern int MCC_SetMachParam(ref SYS_MACH_PARAM pstMachParam, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMachParam")]
+    public static extern int MCC_GetMachParam(ref SYS_MACH_PARAM pstMachParam, ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_UpdateMachParam")]
+    public static extern int MCC_UpdateMachParam();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACClockDivider")]
+    public static extern int MCC_SetDACClockDivider(ushort wDivider, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetDACUpdateRate")]
+    public static extern int MCC_SetDACUpdateRate(double dfUpdateRate, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCClockDivider")]
+    public static extern int MCC_SetADCClockDivider(ushort wDivider, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetADCUpdateRate")]
+    public static extern int MCC_SetADCUpdateRate(double dfUpdateRate, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOClockDivider")]
+    public static extern int MCC_SetRIOClockDivider(ushort wDivider, ushort wSet, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetRIOUpdateRate")]
+    public static extern int MCC_SetRIOUpdateRate(double dfUpdateRate, ushort wSet, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosCheckTime")]
     public static extern int MCC_SetInPosCheckTime(ushort wCheckTime, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosStableTime")]
@@ -1393,6 +1421,10 @@ public static class MCCL
     public static extern int MCC_EnableAccDecAfterIPO(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableAccDecAfterIPO")]
     public static extern int MCC_DisableAccDecAfterIPO(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetUnit")]
+    public static extern int MCC_SetUnit(int nUnitMode, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetUnit")]
+    public static extern int MCC_GetUnit(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableMovingAverage")]
     public static extern int MCC_EnableMovingAverage(ushort wGroupIndex);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableMovingAverage")]

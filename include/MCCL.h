@@ -128,6 +128,8 @@
 
 typedef uint16_t WORD;
 
+typedef uint8_t BYTE;
+
 typedef uint32_t DWORD;
 
 typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
@@ -135,8 +137,6 @@ typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
 typedef int (MCC_CALLBACK *INTERP)(int nGroup, int nCommandIndex, int nTimeIndex, void *pvBuffer);
 
 typedef int BOOL;
-
-typedef uint8_t BYTE;
 
 typedef struct {
   BYTE OTP0;
@@ -250,6 +250,46 @@ typedef struct {
 typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
 typedef struct {
+  WORD wType;
+  WORD wApproachDir;
+  WORD wLeaveDir;
+  WORD wSensorMode;
+  double dfOffset;
+} HOME_CONFIG;
+
+typedef struct {
+  WORD wType;
+  WORD wAInverse;
+  WORD wBInverse;
+  WORD wCInverse;
+  WORD wABSwap;
+  WORD wInputRate;
+  WORD wPaddle[2];
+} SYS_ENCODER_CONFIG;
+
+typedef SYS_ENCODER_CONFIG ENCODER_CONFIG;
+
+typedef struct {
+  WORD wPosToEncoderDir;
+  WORD wRPM;
+  DWORD dwPPR;
+  double dfPitch;
+  double dfGearRatio;
+  double dfHighLimit;
+  double dfLowLimit;
+  double dfHighLimitOffset;
+  double dfLowLimitOffset;
+  WORD wPulseMode;
+  WORD wPulseWidth;
+  WORD wCommandMode;
+  WORD wPaddle;
+  HOME_CONFIG stHome;
+  ENCODER_CONFIG stEncoder;
+  WORD wOverTravelUpSensorMode;
+  WORD wOverTravelDownSensorMode;
+} SYS_MACH_PARAM;
+
+typedef struct {
   DWORD dwInterval;
   WORD wHome_No;
   WORD wPaddle;
@@ -285,16 +325,6 @@ typedef struct {
   WORD wOverTravelUpSensorMode;
   WORD wOverTravelDownSensorMode;
 } SYS_MAC_PARAM;
-
-typedef struct {
-  WORD wType;
-  WORD wAInverse;
-  WORD wBInverse;
-  WORD wCInverse;
-  WORD wABSwap;
-  WORD wInputRate;
-  WORD wPaddle[2];
-} SYS_ENCODER_CONFIG;
 
 typedef struct {
   WORD wMode;
@@ -334,8 +364,6 @@ typedef struct {
   WORD wOverTravelDownSensorMode;
 } SYS_MAC_PARAM_EX;
 
-typedef SYS_ENCODER_CONFIG ENCODER_CONFIG;
-
 typedef struct {
   WORD wType;
   WORD wAInverse;
@@ -363,34 +391,6 @@ typedef struct {
   WORD wStaticError;
   WORD wTolerance;
 } SYS_HOME_CONFIG_EX;
-
-typedef struct {
-  WORD wType;
-  WORD wApproachDir;
-  WORD wLeaveDir;
-  WORD wSensorMode;
-  double dfOffset;
-} HOME_CONFIG;
-
-typedef struct {
-  WORD wPosToEncoderDir;
-  WORD wRPM;
-  DWORD dwPPR;
-  double dfPitch;
-  double dfGearRatio;
-  double dfHighLimit;
-  double dfLowLimit;
-  double dfHighLimitOffset;
-  double dfLowLimitOffset;
-  WORD wPulseMode;
-  WORD wPulseWidth;
-  WORD wCommandMode;
-  WORD wPaddle;
-  HOME_CONFIG stHome;
-  ENCODER_CONFIG stEncoder;
-  WORD wOverTravelUpSensorMode;
-  WORD wOverTravelDownSensorMode;
-} SYS_MACH_PARAM;
 
 typedef struct {
   int32_t nCardIndex;

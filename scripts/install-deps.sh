@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build and the tests need, only those missing:
 # cmake (build), clang (header compile matrix), mono (C# tests), socat (serial tests),
-# valgrind (leak checks). Runs apt-get as root, or through sudo.
+# valgrind (leak checks), chromium, chromium-driver and python3 (the browser panel's test).
+# Runs apt-get as root, or through sudo.
 set -euo pipefail
-pkgs=(cmake clang mono-mcs mono-runtime socat valgrind)
+pkgs=(cmake clang mono-mcs mono-runtime socat valgrind chromium chromium-driver python3)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -8,7 +8,8 @@
 //!   sleeps with `clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME)` straight to the
 //!   deadline (in slices of at most [`STOP_SLICE`], so that `stop` is seen promptly),
 //!   takes no lock and makes no other system call on the way to a tick, and counts how
-//!   late each tick started ([`Clock::lateness`]).
+//!   late each tick started ([`Clock::lateness`]). Optionally (`MCCL_RT_SPIN_US`, off by
+//!   default) it wakes a little early and spins on the clock up to the deadline.
 //! * `fast` and `stepped`: virtual time runs only while the program waits, back to back
 //!   as fast as the CPU allows, so a program always sees the same sequence of states
 //!   whatever the machine's load. `MCC_TimeDelay(ms)` runs exactly the ticks covering
@@ -29,6 +30,24 @@ use std::time::Duration;
 /// The longest single sleep of the realtime engine thread: `stop` waits at most this
 /// long for a sleeping engine to notice it.
 pub const STOP_SLICE: Duration = Duration::from_millis(5);
+
+/// The largest `MCCL_RT_SPIN_US` accepted, µs.
+pub const SPIN_MAX_US: u64 = 1000;
+
+/// Parses a value of `MCCL_RT_SPIN_US`: whole µs, 0..=[`SPIN_MAX_US`].
+pub fn parse_spin_us(s: &str) -> Option<u64> {
+    s.trim().parse::<u64>().ok().filter(|&v| v <= SPIN_MAX_US)
+}
+
+/// The spin `MCCL_RT_SPIN_US` asks for, ns (0 when unset or not valid; the engine
+/// thread's set-up reports a bad value, see `engine::thread`).
+fn spin_from_env() -> u64 {
+    std::env::var("MCCL_RT_SPIN_US")
+        .ok()
+        .and_then(|v| parse_spin_us(&v))
+        .unwrap_or(0)
+        * 1000
+}
 
 thread_local! {
     /// Set on every engine thread (see [`Clock::set_engine_thread`]).
@@ -189,21 +208,31 @@ pub struct Clock {
     engine_thread: OnceCell<ThreadId>,
     /// Realtime: how late each tick started after its deadline.
     lateness: latency::LatencyHistogram,
+    /// Realtime: the engine wakes this long before each deadline and spins on the clock
+    /// up to it, ns (`MCCL_RT_SPIN_US`; at most half a period).
+    spin_ns: u64,
 }
 
 impl Clock {
-    /// A clock with the given mode and interpolation period.
+    /// A clock with the given mode and interpolation period. A realtime clock spins
+    /// before each deadline as `MCCL_RT_SPIN_US` asks (read now).
     pub fn new(mode: ClockMode, period: Duration) -> Clock {
-        Clock::with_source(mode, period, Source::Monotonic)
+        let spin = if mode == ClockMode::Realtime {
+            spin_from_env()
+        } else {
+            0
+        };
+        Clock::with_source(mode, period, Source::Monotonic, spin)
     }
 
-    fn with_source(mode: ClockMode, period: Duration, source: Source) -> Clock {
+    fn with_source(mode: ClockMode, period: Duration, source: Source, spin_ns: u64) -> Clock {
         let start_ns = AtomicU64::new(source.now_ns());
+        let period_ns = u64::try_from(period.as_nanos()).unwrap_or(u64::MAX).max(1);
         Clock {
             mode,
             period,
             start_ns,
-            period_ns: u64::try_from(period.as_nanos()).unwrap_or(u64::MAX).max(1),
+            period_ns,
             source,
             missed: AtomicU64::new(0),
             ticks: AtomicU64::new(0),
@@ -214,7 +243,13 @@ impl Clock {
             cv: Condvar::new(),
             engine_thread: OnceCell::new(),
             lateness: latency::LatencyHistogram::new(),
+            spin_ns: spin_ns.min(period_ns / 2),
         }
+    }
+
+    /// Realtime: how long before each deadline the engine stops sleeping and spins.
+    pub fn spin(&self) -> Duration {
+        Duration::from_nanos(self.spin_ns)
     }
 
     /// The mode.
@@ -306,9 +341,14 @@ impl Clock {
 
     /// Realtime: sleeps to the absolute deadline of the next tick on the monotonic clock,
     /// then counts how late it woke. No lock and no system call but the sleep; the
-    /// sleep is cut into slices of at most [`STOP_SLICE`] so that `stop` is seen.
+    /// sleep is cut into slices of at most [`STOP_SLICE`] so that `stop` is seen. With a
+    /// spin (`MCCL_RT_SPIN_US`) the sleep ends that long before the deadline and the
+    /// thread reads the clock (vDSO, no system call) until the deadline: a wake-up late
+    /// by less than the spin then costs nothing. The lateness is stamped by the read that
+    /// saw the deadline pass, before any other work.
     fn wait_realtime(&self) -> Next {
         let deadline = self.deadline_ns(self.ticks());
+        let wake = deadline.saturating_sub(self.spin_ns);
         let slice = u64::try_from(STOP_SLICE.as_nanos()).unwrap_or(u64::MAX);
         loop {
             if self.stop.load(Ordering::Acquire) {
@@ -323,8 +363,11 @@ impl Clock {
                 }
                 return Next::Tick;
             }
-            self.source
-                .sleep_until(deadline.min(now.saturating_add(slice)));
+            if now >= wake {
+                std::hint::spin_loop();
+                continue;
+            }
+            self.source.sleep_until(wake.min(now.saturating_add(slice)));
         }
     }
 
@@ -453,27 +496,37 @@ mod tests {
         })
     }
 
-    /// A scripted monotonic clock: time moves only when the test advances it or the
-    /// engine sleeps; a sleep wakes `overshoot` ns after the time asked (a kernel's
-    /// wake-up latency).
+    /// A scripted monotonic clock: time moves only when the test advances it, the
+    /// engine sleeps or (`per_read` > 0) reads it; a sleep wakes `overshoot` ns after
+    /// the time asked (a kernel's wake-up latency); a read returns the time and then
+    /// moves it on by `per_read` ns (what a spin on the clock sees).
     #[derive(Debug)]
     pub(super) struct FakeTime {
         now: AtomicU64,
         overshoot: u64,
+        per_read: u64,
         sleeps: AtomicU64,
+        reads: AtomicU64,
     }
 
     impl FakeTime {
         fn new(start: u64, overshoot: u64) -> FakeTime {
+            FakeTime::reading(start, overshoot, 0)
+        }
+
+        fn reading(start: u64, overshoot: u64, per_read: u64) -> FakeTime {
             FakeTime {
                 now: AtomicU64::new(start),
                 overshoot,
+                per_read,
                 sleeps: AtomicU64::new(0),
+                reads: AtomicU64::new(0),
             }
         }
 
         pub(super) fn now(&self) -> u64 {
-            self.now.load(Ordering::SeqCst)
+            self.reads.fetch_add(1, Ordering::SeqCst);
+            self.now.fetch_add(self.per_read, Ordering::SeqCst)
         }
 
         pub(super) fn sleep_until(&self, ns: u64) {
@@ -501,6 +554,7 @@ mod tests {
             ClockMode::Realtime,
             Duration::from_millis(1),
             Source::Fake(fake.clone()),
+            0,
         );
         for n in 0..600_000u64 {
             assert_eq!(clock.wait_next(), Next::Tick);
@@ -542,6 +596,7 @@ mod tests {
             ClockMode::Realtime,
             Duration::from_millis(1),
             Source::Fake(fake.clone()),
+            0,
         );
         fake.advance(30_000_000);
         clock.start_now();
@@ -560,6 +615,73 @@ mod tests {
         assert_eq!(clock.deadline_ns(100), 1_130_000_000);
     }
 
+    /// Runs ticks 0..=`n` on a 1 ms realtime clock over `fake` (each tick's work takes
+    /// 100 µs) and returns the clock.
+    fn run_fake(fake: &Arc<FakeTime>, spin_us: u64, n: u64) -> Clock {
+        let clock = Clock::with_source(
+            ClockMode::Realtime,
+            Duration::from_millis(1),
+            Source::Fake(fake.clone()),
+            spin_us * 1000,
+        );
+        for _ in 0..=n {
+            assert_eq!(clock.wait_next(), Next::Tick);
+            fake.advance(100_000);
+            clock.tick_done();
+        }
+        clock
+    }
+
+    #[test]
+    fn realtime_spin_absorbs_a_wake_up_late_by_less_than_the_spin() {
+        // Every sleep wakes 150 µs after the time asked; a clock read takes 1 µs. The
+        // clock's creation reads the time (start S), so tick 0, due at S, starts 1 µs
+        // late and ends at S + 102 µs. Without a spin, ticks 1..=1000 each start 150 µs
+        // late (the sleep went to the deadline D and woke at D + 150 µs).
+        let fake = Arc::new(FakeTime::reading(1_000_000_000, 150_000, 1_000));
+        let c = run_fake(&fake, 0, 1000);
+        assert_eq!(c.lateness().count(), 1001);
+        assert_eq!(c.lateness().count_between(128, 256), 1000);
+        assert_eq!(c.lateness().max_us(), 150.0);
+        // A 200 µs spin: tick n-1 ended at D - 898 µs (tick 0) or D - 899 µs (its start
+        // D - 1000 µs, one read, 100 µs of work); that read is before D - 200, so the
+        // engine sleeps once, to D - 200 µs, and wakes at D - 50 µs; the reads then see
+        // D - 50, D - 49, ..., D (51 reads): ticks 1..=1000 start on time.
+        let fake = Arc::new(FakeTime::reading(1_000_000_000, 150_000, 1_000));
+        let c = run_fake(&fake, 200, 1000);
+        assert_eq!(c.lateness().count(), 1001);
+        assert_eq!(c.lateness().count_between(0, 1), 1000);
+        assert_eq!(c.lateness().max_us(), 1.0, "tick 0");
+        assert_eq!(c.missed(), 0);
+        assert_eq!(fake.sleeps.load(Ordering::SeqCst), 1000);
+        // Reads: the creation and tick 0 one each; ticks 1..=1000 one before the sleep
+        // and 51 after it.
+        assert_eq!(fake.reads.load(Ordering::SeqCst), 2 + 1000 * 52);
+        // A wake-up later than the spin: 300 µs late, 200 of them spun away: 100 late.
+        let fake = Arc::new(FakeTime::reading(1_000_000_000, 300_000, 1_000));
+        let c = run_fake(&fake, 200, 1000);
+        assert_eq!(c.lateness().count_between(64, 128), 1000);
+        assert_eq!(c.lateness().max_us(), 100.0);
+        // The spin is at most half a period: 900 µs asked on a 1 ms clock gives 500.
+        let c = Clock::with_source(
+            ClockMode::Realtime,
+            Duration::from_millis(1),
+            Source::Fake(Arc::new(FakeTime::new(0, 0))),
+            900_000,
+        );
+        assert_eq!(c.spin(), Duration::from_micros(500));
+    }
+
+    #[test]
+    fn spin_values() {
+        assert_eq!(parse_spin_us("0"), Some(0));
+        assert_eq!(parse_spin_us(" 100 "), Some(100));
+        assert_eq!(parse_spin_us("1000"), Some(1000));
+        assert_eq!(parse_spin_us("1001"), None);
+        assert_eq!(parse_spin_us("-5"), None);
+        assert_eq!(parse_spin_us("fast"), None);
+    }
+
     #[test]
     fn realtime_sleeps_in_slices_so_stop_is_seen_promptly() {
         // A 10 s period: after tick 0 (due at the start) the engine sleeps towards 10 s
@@ -569,6 +691,7 @@ mod tests {
             ClockMode::Realtime,
             Duration::from_secs(10),
             Source::Fake(fake.clone()),
+            0,
         );
         assert_eq!(clock.wait_next(), Next::Tick);
         clock.tick_done();

@@ -6,6 +6,8 @@ use crate::error::{McclError, McclResult};
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM};
 
+pub mod legacy;
+
 /// Cards the library accepts (`MAX_CARD_NUM`).
 pub(crate) const CARDS: usize = c::MAX_CARD_NUM as usize;
 /// Channels (axes) per card and axes per group.
@@ -285,6 +287,20 @@ pub struct GroupDef {
     pub channels: [Option<ChannelIx>; AXES],
     /// Capacity of the group's motion command queue.
     pub queue_size: usize,
+    /// The unit of the lengths the program gives and reads in this group: `UNIT_MM`
+    /// (the mechanism parameters' own unit) or `UNIT_INCH` (`MCC_SetUnit`; see
+    /// [`unit_scale`]).
+    pub unit: i32,
+}
+
+/// Mechanism units (the unit of `dfPitch` and the work zone, taken to be mm) per unit of
+/// a group in `unit`: 25.4 for `UNIT_INCH`, else 1.
+pub fn unit_scale(unit: i32) -> f64 {
+    if unit == c::UNIT_INCH {
+        25.4
+    } else {
+        1.0
+    }
 }
 
 impl GroupDef {
@@ -318,6 +334,7 @@ impl GroupDef {
             card,
             channels,
             queue_size,
+            unit: c::UNIT_MM,
         })
     }
 
@@ -327,6 +344,7 @@ impl GroupDef {
             card: CardIx(0),
             channels: std::array::from_fn(|i| Some(ChannelIx(i))),
             queue_size: c::MOTION_QUEUE_SIZE as usize,
+            unit: c::UNIT_MM,
         }
     }
 }
@@ -347,6 +365,9 @@ pub struct Config {
     /// Compensation tables set per card and channel (`MCC_SetCompParam`), applied by
     /// `MCC_UpdateCompParam`.
     pub comp: Vec<[Option<crate::vendor::SYS_COMP_PARAM>; AXES]>,
+    /// The unit of each group slot (`MCC_SetUnit`); a group created or closed starts
+    /// over in `UNIT_MM`.
+    pub units: [i32; GROUPS],
 }
 
 /// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s. The manuals
@@ -362,11 +383,68 @@ impl Default for Config {
             groups: [None; GROUPS],
             sys_max_speed: DEFAULT_SYS_MAX_SPEED,
             comp: vec![[None; AXES]; CARDS],
+            units: [c::UNIT_MM; GROUPS],
         }
     }
 }
 
 impl Config {
+    /// `MCC_SetMacParam`: validated mechanism parameters for one channel, refused
+    /// (`PARAMETER_ERR`, nothing changed) when the channel's go-home offset would no
+    /// longer be a position it can count.
+    pub fn set_mac_param(&mut self, cd: CardIx, ch: ChannelIx, p: SYS_MAC_PARAM) -> McclResult<()> {
+        validate_mac_param(&p)?;
+        validate_home_config(&self.home[cd.0][ch.0], &p)?;
+        self.mac[cd.0][ch.0] = p;
+        Ok(())
+    }
+
+    /// `MCC_SetEncoderConfig`: a validated encoder configuration for one channel.
+    pub fn set_encoder_config(
+        &mut self,
+        cd: CardIx,
+        ch: ChannelIx,
+        e: SYS_ENCODER_CONFIG,
+    ) -> McclResult<()> {
+        validate_encoder_config(&e)?;
+        self.encoder[cd.0][ch.0] = e;
+        Ok(())
+    }
+
+    /// `MCC_SetHomeConfig`: go-home parameters for one channel, validated against the
+    /// channel's mechanism parameters as set.
+    pub fn set_home_config(
+        &mut self,
+        cd: CardIx,
+        ch: ChannelIx,
+        h: SYS_HOME_CONFIG,
+    ) -> McclResult<()> {
+        validate_home_config(&h, &self.mac[cd.0][ch.0])?;
+        self.home[cd.0][ch.0] = h;
+        Ok(())
+    }
+
+    /// `MCC_SetCompParam`: the compensation tables of one channel, applied at
+    /// `MCC_UpdateCompParam` (`wHome_No` above 255 is `PARAMETER_ERR`).
+    pub fn set_comp_param(
+        &mut self,
+        cd: CardIx,
+        ch: ChannelIx,
+        p: crate::vendor::SYS_COMP_PARAM,
+    ) -> McclResult<()> {
+        if p.wHome_No > 255 {
+            return Err(McclError::Parameter);
+        }
+        self.comp[cd.0][ch.0] = Some(p);
+        Ok(())
+    }
+
+    /// A feed speed as general motion uses it: at most the system maximum
+    /// (`MCC_SetSysMaxSpeed`).
+    pub fn feed_speed(&self, v: f64) -> f64 {
+        v.min(self.sys_max_speed)
+    }
+
     /// Puts a group into the lowest free slot and returns its index
     /// (`GROUP_PARAMETER_ERR` when all 96 are used).
     pub fn create_group(&mut self, def: GroupDef) -> McclResult<usize> {
@@ -376,6 +454,7 @@ impl Config {
             .position(Option::is_none)
             .ok_or(McclError::Group)?;
         self.groups[slot] = Some(def);
+        self.units[slot] = c::UNIT_MM;
         Ok(slot)
     }
 
@@ -387,11 +466,15 @@ impl Config {
             .enumerate()
             .filter_map(|(i, g)| g.map(|g| (i, g)))
             .collect();
-        if created.is_empty() {
+        let mut groups = if created.is_empty() {
             vec![(0, GroupDef::default_group())]
         } else {
             created
+        };
+        for (i, d) in &mut groups {
+            d.unit = self.units[*i];
         }
+        groups
     }
 }
 

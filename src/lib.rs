@@ -18,6 +18,8 @@ pub mod ffi;
 pub mod interrupt;
 pub mod machine;
 pub mod mc3b;
+#[cfg(feature = "panel")]
+pub mod panel;
 pub mod planner;
 pub mod sim;
 pub mod system;

@@ -34,6 +34,9 @@ pub struct Running {
     pub sim: crate::sim::config::SimConfig,
     /// The MC3B devices behind cards with an `mc3b_port` (closed after the engine).
     pub mc3b: Vec<crate::mc3b::backend::Device>,
+    /// The browser panel (`MCCL_PANEL`), stopped before the engine.
+    #[cfg(feature = "panel")]
+    pub panel: Option<crate::panel::Panel>,
 }
 
 /// Configuration plus the running card.
@@ -118,6 +121,8 @@ impl Turn {
         let was_running = old.is_some();
         let mut keep = Vec::new();
         if let Some(r) = old {
+            #[cfg(feature = "panel")]
+            drop(r.panel);
             let Running { engine, mc3b, .. } = r;
             keep.extend(engine.finish());
             // The MC3B ports close after the engine that used them stopped.
@@ -146,6 +151,11 @@ impl Drop for Turn {
 /// Runs `f` with the system locked.
 pub fn with<R>(f: impl FnOnce(&mut System) -> R) -> R {
     f(&mut SYSTEM.lock())
+}
+
+/// Runs `f` on the configuration the program sets (the system locked).
+pub fn config<R>(f: impl FnOnce(&mut Config) -> R) -> R {
+    f(&mut SYSTEM.lock().config)
 }
 
 /// The running engine's shared state (`INITIAL_MOTION_ERR` when the system is closed).
@@ -260,6 +270,12 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         }
     }
     attach_mc3b(engine.shared(), &mc3b);
+    #[cfg(feature = "panel")]
+    let panel = crate::panel::start_from_env(engine.shared(), &groups);
+    #[cfg(not(feature = "panel"))]
+    if std::env::var_os("MCCL_PANEL").is_some_and(|v| !v.is_empty() && v != "0") {
+        eprintln!("MCCL: this library was built without the panel: MCCL_PANEL is ignored");
+    }
     *ACTIVE.write() = Some(engine.shared().clone());
     debug_assert!(
         sys.running.is_none(),
@@ -275,6 +291,8 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         simulation: kind == InitKind::Simulation,
         sim,
         mc3b,
+        #[cfg(feature = "panel")]
+        panel,
     });
     Ok(())
 }
@@ -388,7 +406,10 @@ impl System {
             .filter(|&g| g < GROUPS)
             .ok_or(McclError::Group)?;
         match self.config.groups[slot].take() {
-            Some(_) => Ok(()),
+            Some(_) => {
+                self.config.units[slot] = crate::vendor::consts::UNIT_MM;
+                Ok(())
+            }
             None => Err(McclError::Group),
         }
     }
@@ -397,6 +418,7 @@ impl System {
     pub fn close_all_groups(&mut self) -> McclResult<()> {
         self.require_closed()?;
         self.config.groups = [None; GROUPS];
+        self.config.units = [crate::vendor::consts::UNIT_MM; GROUPS];
         Ok(())
     }
 
@@ -440,6 +462,12 @@ impl System {
         // The default group becomes an explicit one so the size survives the next init.
         self.config.groups[gi] = Some(def);
         Ok(())
+    }
+
+    /// `MCC_GetConvFactor`: pulses per user unit of a channel with the mechanism
+    /// parameters in effect ([`System::mac_in_effect`]).
+    pub fn conv_factor(&self, card: CardIx, ch: ChannelIx) -> f64 {
+        crate::config::conv_factor(&self.mac_in_effect(card, ch))
     }
 
     /// The mechanism parameters in effect for a channel (running: those applied at init

@@ -24,6 +24,7 @@ const LAYERS: &[&str] = &[
     // The MC3B protocol, device and backend: above the engine, whose groups reach its
     // executor only through the trait the engine defines (engine::group::external).
     "mc3b",
+    "panel",  // the browser panel (MCCL_PANEL): reads snapshots, works the simulated machine
     "system", // init and close, wiring
     "ffi",    // the C entry points
 ];

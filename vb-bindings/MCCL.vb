@@ -115,6 +115,58 @@ Public Structure HSKINT
 End Structure
 
 <StructLayout(LayoutKind.Sequential)>
+Public Structure HOME_CONFIG
+    Public wType As UShort
+    Public wApproachDir As UShort
+    Public wLeaveDir As UShort
+    Public wSensorMode As UShort
+    Public dfOffset As Double
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure SYS_ENCODER_CONFIG
+    Public wType As UShort
+    Public wAInverse As UShort
+    Public wBInverse As UShort
+    Public wCInverse As UShort
+    Public wABSwap As UShort
+    Public wInputRate As UShort
+    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=2)> Public wPaddle() As UShort
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure ENCODER_CONFIG
+    Public wType As UShort
+    Public wAInverse As UShort
+    Public wBInverse As UShort
+    Public wCInverse As UShort
+    Public wABSwap As UShort
+    Public wInputRate As UShort
+    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=2)> Public wPaddle() As UShort
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
+Public Structure SYS_MACH_PARAM
+    Public wPosToEncoderDir As UShort
+    Public wRPM As UShort
+    Public dwPPR As UInteger
+    Public dfPitch As Double
+    Public dfGearRatio As Double
+    Public dfHighLimit As Double
+    Public dfLowLimit As Double
+    Public dfHighLimitOffset As Double
+    Public dfLowLimitOffset As Double
+    Public wPulseMode As UShort
+    Public wPulseWidth As UShort
+    Public wCommandMode As UShort
+    Public wPaddle As UShort
+    Public stHome As HOME_CONFIG
+    Public stEncoder As SYS_ENCODER_CONFIG
+    Public wOverTravelUpSensorMode As UShort
+    Public wOverTravelDownSensorMode As UShort
+End Structure
+
+<StructLayout(LayoutKind.Sequential)>
 Public Structure SYS_COMP_PARAM
     Public dwInterval As UInteger
     Public wHome_No As UShort
@@ -152,17 +204,6 @@ Public Structure SYS_MAC_PARAM
     Public wPaddle As UShort
     Public wOverTravelUpSensorMode As UShort
     Public wOverTravelDownSensorMode As UShort
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure SYS_ENCODER_CONFIG
-    Public wType As UShort
-    Public wAInverse As UShort
-    Public wBInverse As UShort
-    Public wCInverse As UShort
-    Public wABSwap As UShort
-    Public wInputRate As UShort
-    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=2)> Public wPaddle() As UShort
 End Structure
 
 <StructLayout(LayoutKind.Sequential)>
@@ -207,17 +248,6 @@ Public Structure SYS_MAC_PARAM_EX
 End Structure
 
 <StructLayout(LayoutKind.Sequential)>
-Public Structure ENCODER_CONFIG
-    Public wType As UShort
-    Public wAInverse As UShort
-    Public wBInverse As UShort
-    Public wCInverse As UShort
-    Public wABSwap As UShort
-    Public wInputRate As UShort
-    <MarshalAs(UnmanagedType.ByValArray, SizeConst:=2)> Public wPaddle() As UShort
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
 Public Structure SYS_PULSE_CONFIG
     Public wType As UShort
     Public wAInverse As UShort
@@ -251,36 +281,6 @@ Public Structure SYS_HOME_CONFIG_EX
     Public dfEscapeTime As Double
     Public wStaticError As UShort
     Public wTolerance As UShort
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure HOME_CONFIG
-    Public wType As UShort
-    Public wApproachDir As UShort
-    Public wLeaveDir As UShort
-    Public wSensorMode As UShort
-    Public dfOffset As Double
-End Structure
-
-<StructLayout(LayoutKind.Sequential)>
-Public Structure SYS_MACH_PARAM
-    Public wPosToEncoderDir As UShort
-    Public wRPM As UShort
-    Public dwPPR As UInteger
-    Public dfPitch As Double
-    Public dfGearRatio As Double
-    Public dfHighLimit As Double
-    Public dfLowLimit As Double
-    Public dfHighLimitOffset As Double
-    Public dfLowLimitOffset As Double
-    Public wPulseMode As UShort
-    Public wPulseWidth As UShort
-    Public wCommandMode As UShort
-    Public wPaddle As UShort
-    Public stHome As HOME_CONFIG
-    Public stEncoder As SYS_ENCODER_CONFIG
-    Public wOverTravelUpSensorMode As UShort
-    Public wOverTravelDownSensorMode As UShort
 End Structure
 
 <StructLayout(LayoutKind.Sequential)>
@@ -602,6 +602,12 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetHSKRoutine")>
     Public Function MCC_SetHSKRoutine(ByVal pfnLIORoutine As HSKISR, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HostInterrupt")>
+    Public Function MCC_HostInterrupt(Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SlaveInterrupt")>
+    Public Function MCC_SlaveInterrupt(Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMacParam")>
     Public Function MCC_SetMacParam(ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -1622,8 +1628,44 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaZX_Y")>
     Public Function MCC_HelicaZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ConeXY_Z")>
+    Public Function MCC_ConeXY_Z(ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ConeYZ_X")>
+    Public Function MCC_ConeYZ_X(ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ConeZX_Y")>
+    Public Function MCC_ConeZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCycleInterruptRoutine")>
     Public Function MCC_SetCycleInterruptRoutine(ByVal pfnCycleIntRoutine As CYCLE_INTERRUPT_ISR) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMachParam")>
+    Public Function MCC_SetMachParam(ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetMachParam")>
+    Public Function MCC_GetMachParam(ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_UpdateMachParam")>
+    Public Function MCC_UpdateMachParam() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDACClockDivider")>
+    Public Function MCC_SetDACClockDivider(ByVal wDivider As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetDACUpdateRate")>
+    Public Function MCC_SetDACUpdateRate(ByVal dfUpdateRate As Double, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCClockDivider")>
+    Public Function MCC_SetADCClockDivider(ByVal wDivider As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetADCUpdateRate")>
+    Public Function MCC_SetADCUpdateRate(ByVal dfUpdateRate As Double, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOClockDivider")>
+    Public Function MCC_SetRIOClockDivider(ByVal wDivider As UShort, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetRIOUpdateRate")>
+    Public Function MCC_SetRIOUpdateRate(ByVal dfUpdateRate As Double, ByVal wSet As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosCheckTime")>
     Public Function MCC_SetInPosCheckTime(ByVal wCheckTime As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
@@ -1651,6 +1693,12 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableAccDecAfterIPO")>
     Public Function MCC_DisableAccDecAfterIPO(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetUnit")>
+    Public Function MCC_SetUnit(ByVal nUnitMode As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetUnit")>
+    Public Function MCC_GetUnit(Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableMovingAverage")>
     Public Function MCC_EnableMovingAverage(ByVal wGroupIndex As UShort) As Integer

@@ -372,6 +372,55 @@ Public Type HSKINT
     HANDSHAKE As Byte
 End Type
 
+Public Type HOME_CONFIG
+    wType As Integer
+    wApproachDir As Integer
+    wLeaveDir As Integer
+    wSensorMode As Integer
+    dfOffset As Double
+End Type
+
+Public Type SYS_ENCODER_CONFIG
+    wType As Integer
+    wAInverse As Integer
+    wBInverse As Integer
+    wCInverse As Integer
+    wABSwap As Integer
+    wInputRate As Integer
+    wPaddle(0 To 1) As Integer
+End Type
+
+Public Type ENCODER_CONFIG
+    wType As Integer
+    wAInverse As Integer
+    wBInverse As Integer
+    wCInverse As Integer
+    wABSwap As Integer
+    wInputRate As Integer
+    wPaddle(0 To 1) As Integer
+End Type
+
+Public Type SYS_MACH_PARAM
+    wPosToEncoderDir As Integer
+    wRPM As Integer
+    dwPPR As Long
+    dfPitch As Double
+    dfGearRatio As Double
+    dfHighLimit As Double
+    dfLowLimit As Double
+    dfHighLimitOffset As Double
+    dfLowLimitOffset As Double
+    wPulseMode As Integer
+    wPulseWidth As Integer
+    wCommandMode As Integer
+    wPaddle As Integer
+    stHome As HOME_CONFIG
+    stEncoder As SYS_ENCODER_CONFIG
+    wOverTravelUpSensorMode As Integer
+    wOverTravelDownSensorMode As Integer
+    MCCL_pad0(0 To 3) As Byte ' VB6 aligns to 4, C to 8
+End Type
+
 Public Type SYS_COMP_PARAM
     dwInterval As Long
     wHome_No As Integer
@@ -408,16 +457,6 @@ Public Type SYS_MAC_PARAM
     wOverTravelUpSensorMode As Integer
     wOverTravelDownSensorMode As Integer
     MCCL_pad0(0 To 3) As Byte ' VB6 aligns to 4, C to 8
-End Type
-
-Public Type SYS_ENCODER_CONFIG
-    wType As Integer
-    wAInverse As Integer
-    wBInverse As Integer
-    wCInverse As Integer
-    wABSwap As Integer
-    wInputRate As Integer
-    wPaddle(0 To 1) As Integer
 End Type
 
 Public Type SYS_HOME_CONFIG
@@ -459,16 +498,6 @@ Public Type SYS_MAC_PARAM_EX
     MCCL_pad0(0 To 3) As Byte ' VB6 aligns to 4, C to 8
 End Type
 
-Public Type ENCODER_CONFIG
-    wType As Integer
-    wAInverse As Integer
-    wBInverse As Integer
-    wCInverse As Integer
-    wABSwap As Integer
-    wInputRate As Integer
-    wPaddle(0 To 1) As Integer
-End Type
-
 Public Type SYS_PULSE_CONFIG
     wType As Integer
     wAInverse As Integer
@@ -503,35 +532,6 @@ Public Type SYS_HOME_CONFIG_EX
     MCCL_pad0(0 To 3) As Byte ' VB6 aligns to 4, C to 8
 End Type
 
-Public Type HOME_CONFIG
-    wType As Integer
-    wApproachDir As Integer
-    wLeaveDir As Integer
-    wSensorMode As Integer
-    dfOffset As Double
-End Type
-
-Public Type SYS_MACH_PARAM
-    wPosToEncoderDir As Integer
-    wRPM As Integer
-    dwPPR As Long
-    dfPitch As Double
-    dfGearRatio As Double
-    dfHighLimit As Double
-    dfLowLimit As Double
-    dfHighLimitOffset As Double
-    dfLowLimitOffset As Double
-    wPulseMode As Integer
-    wPulseWidth As Integer
-    wCommandMode As Integer
-    wPaddle As Integer
-    stHome As HOME_CONFIG
-    stEncoder As SYS_ENCODER_CONFIG
-    wOverTravelUpSensorMode As Integer
-    wOverTravelDownSensorMode As Integer
-    MCCL_pad0(0 To 3) As Byte ' VB6 aligns to 4, C to 8
-End Type
-
 Public Type SYS_GROUP_INFO
     nCardIndex As Long
     nChannel(0 To 7) As Long
@@ -561,6 +561,8 @@ Public Declare Function MCC_CloseGroup Lib "MCCLPCI_IMP.dll" (ByVal nGroupIndex 
 Public Declare Function MCC_CloseAllGroups Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_SetComposeAxis Lib "MCCLPCI_IMP.dll" (ByVal wAxesMask As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetHSKRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_HostInterrupt Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SlaveInterrupt Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetMacParam Lib "MCCLPCI_IMP.dll" (ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetMacParam Lib "MCCLPCI_IMP.dll" (ByRef pstMacParam As SYS_MAC_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetEncoderConfig Lib "MCCLPCI_IMP.dll" (ByRef pstEncoderConfig As SYS_ENCODER_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
@@ -887,7 +889,19 @@ Public Declare Function MCC_LineB Lib "MCCLPCI_IMP.dll" (ByVal dfB As Double, Op
 Public Declare Function MCC_HelicaXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_HelicaYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_HelicaZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ConeXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ConeYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_ConeZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetCycleInterruptRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnCycleIntRoutine As Long) As Long
+Public Declare Function MCC_SetMachParam Lib "MCCLPCI_IMP.dll" (ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_GetMachParam Lib "MCCLPCI_IMP.dll" (ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_UpdateMachParam Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_SetDACClockDivider Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetDACUpdateRate Lib "MCCLPCI_IMP.dll" (ByVal dfUpdateRate As Double, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCClockDivider Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetADCUpdateRate Lib "MCCLPCI_IMP.dll" (ByVal dfUpdateRate As Double, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetRIOClockDivider Lib "MCCLPCI_IMP.dll" (ByVal wDivider As Integer, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
+Public Declare Function MCC_SetRIOUpdateRate Lib "MCCLPCI_IMP.dll" (ByVal dfUpdateRate As Double, ByVal wSet As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SetInPosCheckTime Lib "MCCLPCI_IMP.dll" (ByVal wCheckTime As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetInPosStableTime Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByVal wTolerance0 As Integer, ByVal wTolerance1 As Integer, ByVal wTolerance2 As Integer, ByVal wTolerance3 As Integer, ByVal wTolerance4 As Integer, ByVal wTolerance5 As Integer, ByVal wTolerance6 As Integer, ByVal wTolerance7 As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
@@ -897,6 +911,8 @@ Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal w
 Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_EnableAccDecAfterIPO Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_DisableAccDecAfterIPO Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetUnit Lib "MCCLPCI_IMP.dll" (ByVal nUnitMode As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_GetUnit Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_EnableMovingAverage Lib "MCCLPCI_IMP.dll" (ByVal wGroupIndex As Integer) As Long
 Public Declare Function MCC_DisableMovingAverage Lib "MCCLPCI_IMP.dll" (ByVal wGroupIndex As Integer) As Long
 

@@ -5,8 +5,12 @@
 //!   outside the range reads as the nearest end. The converter is ideal: the value read is
 //!   the input voltage itself (as a float).
 //! - `ADC_MODE_FREE` (the default): after `MCC_StartADCConv` every enabled channel converts
-//!   once per tick (the input only changes at tick boundaries in the virtual card), until
-//!   `MCC_StopADCConv`. `ADC_MODE_SINGLE`: `MCC_StartADCConv` converts the single channel
+//!   once per scan, in the ticks in which a scan ends (at most once per tick: the input
+//!   only changes at tick boundaries in the virtual card), until `MCC_StopADCConv`. A scan
+//!   takes 16 ADC clocks per enabled channel at `MCC_SetADCClockDivider` system clocks
+//!   each (default 50: 8 µs per channel), or one period of `MCC_SetADCUpdateRate` if that
+//!   is longer ([`Cadence`]); by default every tick. Scans count from `MCC_StartADCConv`
+//!   or the last of these setters. `ADC_MODE_SINGLE`: `MCC_StartADCConv` converts the single channel
 //!   once, at once (the card needs ~8 µs, less than any tick), and its interrupts are
 //!   delivered after the next tick.
 //! - Comparator per channel on the 12-bit code of the channel's range:
@@ -17,6 +21,7 @@
 //! - Interrupts: `COMPn` (comparator of channel n, if enabled), `CONV` (a conversion
 //!   completed, if the conversion trigger is on), `TAG` (the tagged channel converted).
 
+use super::cadence::Cadence;
 use crate::config::AXES;
 use crate::error::{McclError, McclResult};
 use crate::interrupt::{Interrupt, Pending};
@@ -50,6 +55,13 @@ fn code(v: f32, conv_type: u16) -> u32 {
     (x as u32).min(max)
 }
 
+/// Serial clocks of one channel's conversion.
+pub const CONVERSION_BITS: u64 = 16;
+
+/// ADC clock divider before any `MCC_SetADCClockDivider`: 50, so one channel's
+/// conversion takes 16 × 50 × 10 ns = 8 µs and a scan of all eight 64 µs.
+pub const DEFAULT_DIVIDER: u16 = 50;
+
 /// The A/D converter of one card.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Adc {
@@ -70,6 +82,8 @@ pub struct Adc {
     tag_trigger: bool,
     /// Input of each channel.
     pub source: [AdcSource; AXES],
+    /// When free-running scans end (`MCC_SetADCClockDivider`, `MCC_SetADCUpdateRate`).
+    pub cadence: Cadence,
 }
 
 impl Default for Adc {
@@ -90,6 +104,7 @@ impl Default for Adc {
             tag: 0,
             tag_trigger: false,
             source: std::array::from_fn(AdcSource::Dac),
+            cadence: Cadence::new(DEFAULT_DIVIDER),
         }
     }
 }
@@ -235,6 +250,7 @@ impl Adc {
     pub fn start(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
         if self.mode == c::ADC_MODE_FREE {
             self.running = true;
+            self.cadence.restart();
         } else {
             let ch = self.single;
             self.convert(ch, inputs[ch], p);
@@ -247,9 +263,19 @@ impl Adc {
         self.running && self.channel_on.iter().any(|&x| x)
     }
 
-    /// One tick of free-running conversion with the inputs now.
-    pub fn tick(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
+    /// Serial bits of one scan: [`CONVERSION_BITS`] per enabled channel.
+    pub fn scan_bits(&self) -> u64 {
+        CONVERSION_BITS * self.channel_on.iter().filter(|&&on| on).count() as u64
+    }
+
+    /// One tick of `dt_ns` of free-running conversion with the inputs at its end: every
+    /// enabled channel converts if a scan ended in the tick (at most once per tick).
+    pub fn tick(&mut self, dt_ns: u64, inputs: &[f32; AXES], p: &mut Pending) {
         if !self.converting() {
+            return;
+        }
+        let bits = self.scan_bits();
+        if !self.cadence.advance(dt_ns, bits) {
             return;
         }
         for (ch, &v) in inputs.iter().enumerate() {
@@ -270,7 +296,7 @@ mod tests {
             .iter()
             .map(|&v| {
                 let mut p = Pending::default();
-                a.tick(&[v; AXES], &mut p);
+                a.tick(1_000_000, &[v; AXES], &mut p);
                 p.adc[0]
             })
             .collect()
@@ -319,23 +345,61 @@ mod tests {
         assert_eq!(a.set_comp_type(0, 3), Err(McclError::Parameter));
     }
 
+    /// Ticks (1 ms) in 1..=n in which a free-running scan converted (CONV raised).
+    fn scan_ticks(a: &mut Adc, n: u32) -> Vec<u32> {
+        (1..=n)
+            .filter(|_| {
+                let mut p = Pending::default();
+                a.tick(1_000_000, &[1.0; AXES], &mut p);
+                p.adc[8] == 1
+            })
+            .collect()
+    }
+
+    #[test]
+    fn free_running_scans_follow_divider_rate_and_enabled_channels() {
+        let mut a = Adc::default();
+        a.set_conv_trigger(true);
+        (0..4).for_each(|ch| a.set_channel(ch, true));
+        a.start(&[0.0; AXES], &mut Pending::default());
+        // Default: 4 channels x 16 bits x 50 clocks x 10 ns = 32 us: every tick.
+        assert_eq!(scan_ticks(&mut a, 3), [1, 2, 3]);
+        // Divider 12500: 4 x 16 x 12500 x 10 ns = 8 ms: ticks 8 and 16.
+        a.cadence.set_divider(12_500).unwrap();
+        assert_eq!(scan_ticks(&mut a, 16), [8, 16]);
+        // Two channels: 4 ms per scan. Counting restarts at MCC_StartADCConv.
+        a.set_channel(2, false);
+        a.set_channel(3, false);
+        scan_ticks(&mut a, 1);
+        a.start(&[0.0; AXES], &mut Pending::default());
+        assert_eq!(scan_ticks(&mut a, 9), [4, 8]);
+        // Back to divider 50 and 250 Hz: 4 ms, rate-bound; the input converted is the
+        // one at the scan's tick.
+        a.cadence.set_divider(50).unwrap();
+        a.cadence.set_update_rate(250.0).unwrap();
+        assert_eq!(scan_ticks(&mut a, 12), [4, 8, 12]);
+        let mut p = Pending::default();
+        a.tick(1_000_000, &[2.5; AXES], &mut p);
+        assert_eq!(a.input(0), 1.0, "no scan ended: the last value stays");
+    }
+
     #[test]
     fn ranges_single_mode_conv_and_tag() {
         let mut a = Adc::default();
         a.set_channel(3, true);
         let mut p = Pending::default();
-        a.tick(&[7.0; AXES], &mut p);
+        a.tick(1_000_000, &[7.0; AXES], &mut p);
         assert_eq!(a.input(3), 0.0, "not started");
         a.set_conv_trigger(true);
         a.set_tag_channel(3);
         a.set_tag_trigger(true);
         a.start(&[0.0; AXES], &mut p);
         assert_eq!(a.work_status(), 1);
-        a.tick(&[7.0; AXES], &mut p);
+        a.tick(1_000_000, &[7.0; AXES], &mut p);
         assert_eq!(a.input(3), 5.0, "bipolar clamps at 5 V");
         assert_eq!((p.adc[8], p.adc[9]), (1, 1));
         a.set_conv_type(3, c::ADC_TYPE_UNI_DIFF).unwrap();
-        a.tick(&[-1.0; AXES], &mut p);
+        a.tick(1_000_000, &[-1.0; AXES], &mut p);
         assert_eq!(a.input(3), 0.0, "unipolar clamps at 0 V");
         assert_eq!(a.set_conv_type(3, 4), Err(McclError::Parameter));
 
@@ -348,7 +412,7 @@ mod tests {
         assert_eq!(a.input(3), 0.0, "only the single channel");
         assert_eq!((p.adc[8], p.adc[9]), (1, 0));
         let mut q = Pending::default();
-        a.tick(&[3.0; AXES], &mut q);
+        a.tick(1_000_000, &[3.0; AXES], &mut q);
         assert!(q.is_empty(), "single mode: no conversion per tick");
         assert_eq!(a.set_mode(2), Err(McclError::Parameter));
     }

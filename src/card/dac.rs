@@ -5,7 +5,15 @@
 //! 0 V (the set values are kept and appear again at `MCC_StartDACConv`). In trigger mode
 //! a channel outputs its preset voltage when one of its sources fires
 //! ([`Dac::trigger`], called by the encoder compare of the channel in the source mask).
+//!
+//! Update timing ([`Cadence`], `MCC_SetDACClockDivider`, `MCC_SetDACUpdateRate`): a
+//! channel's output changes at most once per cycle (16 bits at the divider's system
+//! clocks, default 1.6 µs, or the update period if longer). A value written a cycle or
+//! more after the channel last changed appears at once; one written sooner waits for the
+//! cycle to end and appears at the end of the tick in which it ends (the latest value
+//! written meanwhile).
 
+use super::cadence::Cadence;
 use crate::config::AXES;
 use crate::error::{McclError, McclResult};
 
@@ -23,7 +31,24 @@ pub struct Dac {
     trig_value: [f32; AXES],
     trig_source: [u32; AXES],
     trig_mode: [bool; AXES],
+    /// How long one channel's update takes (`MCC_SetDACClockDivider`,
+    /// `MCC_SetDACUpdateRate`); only its cycle length is used.
+    pub cadence: Cadence,
+    /// The DAC's time since init, ns (advanced by [`Dac::tick`]).
+    now_ns: u64,
+    /// When each channel's output last changed.
+    last_update: [Option<u64>; AXES],
+    /// A value written less than a cycle after the channel's last update: it waits for
+    /// that cycle to end.
+    held: [Option<f32>; AXES],
 }
+
+/// Serial clocks of one channel's update.
+pub const UPDATE_BITS: u64 = 16;
+
+/// DAC clock divider before any `MCC_SetDACClockDivider`: 10, so a channel updates in
+/// 16 × 10 × 10 ns = 1.6 µs.
+pub const DEFAULT_DIVIDER: u16 = 10;
 
 impl Default for Dac {
     fn default() -> Dac {
@@ -33,6 +58,10 @@ impl Default for Dac {
             trig_value: [0.0; AXES],
             trig_source: [0; AXES],
             trig_mode: [false; AXES],
+            cadence: Cadence::new(DEFAULT_DIVIDER),
+            now_ns: 0,
+            last_update: [None; AXES],
+            held: [None; AXES],
         }
     }
 }
@@ -57,10 +86,60 @@ impl Dac {
         self.running
     }
 
-    /// `MCC_SetDACOutput` (channel checked by the caller).
+    /// `MCC_SetDACOutput` (channel checked by the caller): see [`Dac::write`].
     pub fn set_output(&mut self, ch: usize, v: f32) -> McclResult<()> {
-        self.value[ch] = check_voltage(v)?;
+        let v = check_voltage(v)?;
+        self.write(ch, v);
         Ok(())
+    }
+
+    /// How long one channel's update lasts, ns: 16 bits at the divider, or the update
+    /// period if that is longer.
+    pub fn cycle_ns(&self) -> u64 {
+        self.cadence.cycle_ns(UPDATE_BITS)
+    }
+
+    /// A new value for channel `ch`: it reaches the output at once when the channel's
+    /// last update is a cycle or more ago (or there was none), else when that cycle
+    /// ends — in the tick in which it ends, the latest value written meanwhile.
+    fn write(&mut self, ch: usize, v: f32) {
+        match self.last_update[ch] {
+            Some(t) if self.now_ns.saturating_sub(t) < self.cycle_ns() => {
+                self.held[ch] = Some(v);
+            }
+            _ => {
+                self.value[ch] = v;
+                self.last_update[ch] = Some(self.now_ns);
+                self.held[ch] = None;
+            }
+        }
+    }
+
+    /// Whether a written value waits for its channel's cycle to end.
+    pub fn holding(&self) -> bool {
+        self.held.iter().any(Option::is_some)
+    }
+
+    /// One tick of `dt_ns`: held values whose cycle ended by the tick's end reach the
+    /// output; the next cycle of that channel starts where the last one ended.
+    pub fn tick(&mut self, dt_ns: u64) {
+        self.now_ns = self.now_ns.saturating_add(dt_ns);
+        let period = self.cycle_ns();
+        for ch in 0..AXES {
+            if let (Some(v), Some(t)) = (self.held[ch], self.last_update[ch]) {
+                let due = t.saturating_add(period);
+                if due <= self.now_ns {
+                    self.value[ch] = v;
+                    self.last_update[ch] = Some(due);
+                    self.held[ch] = None;
+                }
+            }
+        }
+    }
+
+    /// `n` ticks of `dt_ns` with nothing held: only time moves.
+    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+        self.now_ns = self.now_ns.saturating_add(n.saturating_mul(dt_ns));
     }
 
     /// The voltage on channel `ch`'s output now (0 V while conversion is stopped).
@@ -105,7 +184,7 @@ impl Dac {
         };
         for ch in 0..AXES {
             if self.trig_mode[ch] && self.trig_source[ch] & bit != 0 {
-                self.value[ch] = self.trig_value[ch];
+                self.write(ch, self.trig_value[ch]);
             }
         }
     }
@@ -113,12 +192,56 @@ impl Dac {
     /// Watchdog reset: every output to 0 V.
     pub fn reset_outputs(&mut self) {
         self.value = [0.0; AXES];
+        self.held = [None; AXES];
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn outputs_change_at_most_once_per_cycle() {
+        let mut d = Dac::default();
+        // Default: a cycle of 16 x 10 x 10 ns = 1.6 us. The first write shows at once; a
+        // second one at the same instant waits 1.6 us, i.e. the end of the next tick.
+        d.set_output(0, 1.0).unwrap();
+        assert_eq!(d.output(0), 1.0);
+        d.set_output(0, 2.0).unwrap();
+        assert_eq!(d.output(0), 1.0, "held");
+        d.set_output(1, 3.0).unwrap();
+        assert_eq!(d.output(1), 3.0, "channels are independent");
+        d.tick(1_000_000);
+        assert_eq!(d.output(0), 2.0);
+        // 100 Hz (a 10 ms cycle) on a fresh DAC, 1 ms ticks, value k / 4 written at k ms
+        // (k = 0..29), then a tick. k = 0: no update yet, at once (last update 0 ms).
+        // k = 1..9 wait; the tick ending at 10 ms (k = 9) applies the latest, 9 / 4, and
+        // the next cycle runs from 10 ms: the tick ending at 20 ms (k = 19) applies
+        // 19 / 4, the one ending at 30 ms (k = 29) 29 / 4.
+        let mut d = Dac::default();
+        d.cadence.set_update_rate(100.0).unwrap();
+        assert_eq!(d.cycle_ns(), 10_000_000);
+        let mut seen = Vec::new();
+        for k in 0..30 {
+            d.set_output(0, k as f32 / 4.0).unwrap();
+            d.tick(1_000_000);
+            seen.push(d.output(0));
+        }
+        let mut want = vec![0.0; 9];
+        want.extend([2.25; 10]);
+        want.extend([4.75; 10]);
+        want.push(7.25);
+        assert_eq!(seen, want);
+        // Divider 65535: 16 x 65535 x 10 ns = 10.4856 ms, longer than 10 ms.
+        d.cadence.set_divider(65535).unwrap();
+        assert_eq!(d.cycle_ns(), 10_485_600);
+        // The watchdog's reset drops what waits.
+        d.set_output(0, 5.0).unwrap();
+        d.reset_outputs();
+        assert!(!d.holding());
+        (0..20).for_each(|_| d.tick(1_000_000));
+        assert_eq!(d.output(0), 0.0);
+    }
 
     #[test]
     fn output_range_stop_and_trigger() {

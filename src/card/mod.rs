@@ -8,7 +8,9 @@
 //! other way round; the system lock is never taken while peripherals are locked.
 
 pub mod adc;
+pub mod cadence;
 pub mod dac;
+pub mod handshake;
 pub mod rio;
 pub mod timer;
 
@@ -16,6 +18,7 @@ use crate::config::AXES;
 use crate::interrupt::{Interrupt, Pending};
 use adc::{Adc, AdcSource};
 use dac::Dac;
+use handshake::Handshake;
 use parking_lot::{Mutex, MutexGuard};
 use rio::Master;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -34,12 +37,15 @@ pub struct Peripherals {
     pub adc: Adc,
     /// The remote I/O masters.
     pub rio: Master,
+    /// The handshake with the host (`MCC_HostInterrupt`, `MCC_SlaveInterrupt`).
+    pub handshake: Handshake,
     /// Interrupt causes raised since the last delivery.
     pub pending: Pending,
 }
 
 impl Peripherals {
-    /// One tick of `dt_ns`: timer, watchdog, A/D conversion, remote I/O transfer. Returns
+    /// One tick of `dt_ns`: timer, watchdog, D/A updates, A/D conversion, remote I/O
+    /// transfer, handshake acknowledgements. Returns
     /// true when the watchdog expired; the card's outputs here are then reset already
     /// (DAC at 0 V, remote outputs at 0); the caller resets the rest of the card.
     pub fn tick(&mut self, dt_ns: u64) -> bool {
@@ -52,20 +58,25 @@ impl Peripherals {
             self.dac.reset_outputs();
             self.rio.reset_outputs();
         }
+        self.dac.tick(dt_ns);
         if self.adc.converting() {
             let inputs = self.adc_inputs();
-            self.adc.tick(&inputs, &mut self.pending);
+            self.adc.tick(dt_ns, &inputs, &mut self.pending);
         }
         self.rio.tick(dt_ns, &mut self.pending);
+        self.handshake.tick(&mut self.pending);
         reset
     }
 
-    /// Whether a tick now would only move the ARIO cycle timing: timer, watchdog and ADC
-    /// stopped, no cause pending, the remote I/O [idle](Master::idle).
+    /// Whether a tick now would only move time (the ARIO and RIO cycle timing, the DAC's
+    /// clock): timer, watchdog and ADC stopped, no handshake request and no DAC value
+    /// waiting, no cause pending, the remote I/O [idle](Master::idle).
     pub fn idle(&self) -> bool {
         !self.timer.enabled()
             && !self.watchdog.enabled()
             && !self.adc.converting()
+            && !self.handshake.waiting()
+            && !self.dac.holding()
             && self.pending.is_empty()
             && self.rio.idle()
     }
@@ -74,6 +85,7 @@ impl Peripherals {
     /// calls of [`Peripherals::tick`] do then (they return false and raise nothing).
     pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         self.rio.idle_ticks(n, dt_ns);
+        self.dac.idle_ticks(n, dt_ns);
     }
 
     /// The voltage at each ADC input now.
@@ -203,7 +215,7 @@ mod tests {
     fn change(p: &mut Peripherals, k: u64) {
         let set = (k / 16 % 2) as usize;
         let slave = (k / 32 % 4) as u16;
-        match k % 16 {
+        match k % 20 {
             0 => p.rio.ario_timing.set_update_rate(set, 300.0).unwrap(),
             1 => p.rio.ario_timing.set_update_rate(set, 1700.0).unwrap(),
             2 => p.rio.ario_timing.set_divider(set, 2000).unwrap(),
@@ -224,6 +236,10 @@ mod tests {
             14 => p.rio.ario[set]
                 .set_input_trigger((k % 8) as u16, true)
                 .unwrap(),
+            16 => p.dac.set_output((k >> 8) as usize % 8, 1.0).unwrap(),
+            17 => p.dac.cadence.set_update_rate(300.0).unwrap(),
+            18 => p.rio.rio_timing[set].set_update_rate(700.0).unwrap(),
+            19 => p.rio.rio_timing[set].set_divider(3000).unwrap(),
             _ => p
                 .rio
                 .set_slave_failed(true, set, usize::from(slave), k & 256 != 0),

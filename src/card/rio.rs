@@ -12,7 +12,10 @@
 //!   control (`MCC_EnableARIOSlaveControl`) is on.
 //!
 //! In a transfer a transmitting slave takes the master's outputs and the master latches
-//! the slave's inputs. RIO sets transfer once per tick. ARIO sets transfer once per cycle
+//! the slave's inputs. RIO sets transfer once per cycle of their [`Cadence`]: 32 bits per
+//! transmitting slave (at least one) at `MCC_SetRIOClockDivider` (default 10) system
+//! clocks per bit, or one period of `MCC_SetRIOUpdateRate` if that is longer: 3.2 to
+//! 12.8 µs by default, so every tick. ARIO sets transfer once per cycle
 //! ([`ArioTiming`]): a cycle lasts `n × (32 × divider + delay) × 10 ns` for `n`
 //! transmitting slaves (16 output and 16 input bits each at the system clock of 10 ns
 //! divided by `MCC_SetARIOClockDivider`, then the node-to-node delay of
@@ -28,6 +31,7 @@
 //! slave and transfer statuses read 0, and the transfer trigger fires. Its first good
 //! transfer clears the report. A failed master is reported at once.
 
+use super::cadence::Cadence;
 use crate::error::{McclError, McclResult};
 use crate::interrupt::{Interrupt, Pending};
 use crate::vendor::consts as c;
@@ -323,14 +327,14 @@ impl Default for ArioTiming {
 }
 
 impl ArioTiming {
-    /// `MCC_SetARIOUpdateRate`: `rate` updates per second at most (finite, > 0); the
-    /// period is rounded to whole ns (at least 1).
+    /// `MCC_SetARIOUpdateRate`: `rate` updates per second at most (finite, > 0, its
+    /// cycle `1 / rate` at most the longest time of [`crate::config::range::time_ms`],
+    /// so `rate` >= 2.33e-7 Hz); the period is rounded to whole ns (at least 1).
     pub fn set_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
         if !rate.is_finite() || rate <= 0.0 || set >= SETS {
             return Err(McclError::Parameter);
         }
-        // `as` saturates: a rate so low that the period exceeds u64 ns (584 years) waits
-        // that long.
+        crate::config::range::time_ms(1000.0 / rate)?;
         self.update_ns[set] = Some(((1e9 / rate).round() as u64).max(1));
         self.elapsed_ns[set] = 0;
         Ok(())
@@ -389,6 +393,15 @@ impl ArioTiming {
     }
 }
 
+/// RIO clock divider before any `MCC_SetRIOClockDivider`: 10, as the ARIO's.
+pub const RIO_DEFAULT_DIVIDER: u16 = 10;
+
+/// Serial bits of one RIO transfer cycle with the slaves in `transmitting`: 16 output and
+/// 16 input bits per transmitting slave, at least one slave's worth.
+pub fn rio_cycle_bits(transmitting: u32) -> u64 {
+    u64::from(transmitting.count_ones().max(1)) * ARIO_BITS_PER_SLAVE
+}
+
 /// The remote I/O of one card: RIO and ARIO masters, two sets each.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Master {
@@ -398,6 +411,9 @@ pub struct Master {
     pub ario: [Set<ARIO_SLAVES>; SETS],
     /// When the ARIO sets transfer.
     pub ario_timing: ArioTiming,
+    /// When each RIO set transfers (`MCC_SetRIOClockDivider`, `MCC_SetRIOUpdateRate`): a
+    /// cycle moves 32 bits per transmitting slave (at least one).
+    pub rio_timing: [Cadence; SETS],
 }
 
 impl Default for Master {
@@ -406,6 +422,7 @@ impl Default for Master {
             rio: std::array::from_fn(|_| Set::new(false)),
             ario: std::array::from_fn(|_| Set::new(true)),
             ario_timing: ArioTiming::default(),
+            rio_timing: [Cadence::new(RIO_DEFAULT_DIVIDER); SETS],
         }
     }
 }
@@ -424,7 +441,11 @@ impl Master {
     /// One tick of `dt_ns`: every RIO set transfers, each ARIO set if one of its cycles
     /// ended in the tick.
     pub fn tick(&mut self, dt_ns: u64, p: &mut Pending) {
-        self.rio.iter_mut().for_each(|s| s.transfer(p));
+        for (i, s) in self.rio.iter_mut().enumerate() {
+            if self.rio_timing[i].advance(dt_ns, rio_cycle_bits(s.transmitting())) {
+                s.transfer(p);
+            }
+        }
         for (i, s) in self.ario.iter_mut().enumerate() {
             if self.ario_timing.advance(i, dt_ns, s.transmitting()) {
                 s.transfer(p);
@@ -432,16 +453,19 @@ impl Master {
         }
     }
 
-    /// Whether a tick now would only move the ARIO cycle timing: every set's transfer
-    /// would change nothing ([`Set::transfer_idle`]).
+    /// Whether a tick now would only move the ARIO and RIO cycle timing: every set's
+    /// transfer would change nothing ([`Set::transfer_idle`]).
     pub fn idle(&self) -> bool {
         self.rio.iter().all(Set::transfer_idle) && self.ario.iter().all(Set::transfer_idle)
     }
 
     /// `n` ticks of `dt_ns` of an [idle](Master::idle) master: exactly what `n` calls of
-    /// [`Master::tick`] do then (the ARIO cycle timing moves on; the transfers would
-    /// change nothing).
+    /// [`Master::tick`] do then (the ARIO and RIO cycle timing moves on; the transfers
+    /// would change nothing).
     pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+        for (i, s) in self.rio.iter().enumerate() {
+            self.rio_timing[i].advance_n(n, dt_ns, rio_cycle_bits(s.transmitting()));
+        }
         for (i, s) in self.ario.iter().enumerate() {
             self.ario_timing.advance_n(i, n, dt_ns, s.transmitting());
         }
@@ -607,6 +631,42 @@ mod tests {
     }
 
     #[test]
+    fn rio_cycles_follow_rate_and_divider() {
+        let mut m = Master::default();
+        m.rio[1].control = true;
+        m.rio[1].set_slave_control(2, true).unwrap();
+        let transfers = |m: &mut Master, n: u16| -> Vec<u16> {
+            let mut at = Vec::new();
+            for t in 1..=n {
+                let v = m.rio[1].output(2).unwrap().wrapping_add(1);
+                m.rio[1].set_output(2, v).unwrap();
+                step(m);
+                if m.rio[1].input(2) == Ok(v) {
+                    at.push(t);
+                }
+            }
+            at
+        };
+        // Default: 1 slave x 32 bits x 10 clocks x 10 ns = 3.2 us: every tick.
+        assert_eq!(transfers(&mut m, 3), [1, 2, 3]);
+        // 300 Hz: 3.333333 ms (3333333 ns) from the call: cycles end at 3.33, 6.67,
+        // 10.0 ms (3 x 3333333 = 9999999 ns, in tick 10): ticks 4, 7, 10.
+        m.rio_timing[1].set_update_rate(300.0).unwrap();
+        assert_eq!(transfers(&mut m, 10), [4, 7, 10]);
+        // Two slaves at divider 6000: 2 x 32 x 6000 x 10 ns = 3.84 ms, longer than the
+        // 300 Hz period: cycles end at 3.84, 7.68, 11.52 ms: ticks 4, 8, 12.
+        m.rio[1].set_slave_control(0, true).unwrap();
+        m.rio_timing[1].set_divider(6000).unwrap();
+        assert_eq!(m.rio_timing[1].cycle_ns(rio_cycle_bits(0b101)), 3_840_000);
+        assert_eq!(transfers(&mut m, 12), [4, 8, 12]);
+        // Set 0 keeps its own default timing.
+        assert_eq!(
+            (m.rio_timing[0].divider, m.rio_timing[0].update_ns),
+            (RIO_DEFAULT_DIVIDER, None)
+        );
+    }
+
+    #[test]
     fn ario_cycles_follow_rate_divider_and_node_delay() {
         let mut m = Master::default();
         m.ario[0].set_slave_control(0, true).unwrap();
@@ -643,9 +703,17 @@ mod tests {
         );
         assert_eq!(m.ario_timing.set_divider(0, 0), Err(McclError::Parameter));
         assert_eq!(m.ario_timing, before);
-        // Extreme values saturate instead of overflowing.
-        m.ario_timing.set_update_rate(0, f64::MIN_POSITIVE).unwrap();
-        assert_eq!(m.ario_timing.cycle_ns(0, 1), u64::MAX);
+        // A cycle longer than the longest time (2^32 − 1 ms) is refused: 1000 / 2.3e-7 ms
+        // = 4.35e9 ms; 2.33e-7 Hz (4.29e9 ms) is the slowest whole-digit rate accepted.
+        for r in [f64::MIN_POSITIVE, 2.3e-7] {
+            assert_eq!(
+                m.ario_timing.set_update_rate(0, r),
+                Err(McclError::Parameter)
+            );
+        }
+        assert_eq!(m.ario_timing, before);
+        m.ario_timing.set_update_rate(0, 2.33e-7).unwrap();
+        // A very fast rate saturates at a period of 1 ns.
         m.ario_timing.set_update_rate(0, 1e300).unwrap();
         assert_eq!(m.ario_timing.update_ns[0], Some(1));
         assert!(ario_transfer_ticks(&mut m, 1).is_empty(), "bus-bound 5 ms");

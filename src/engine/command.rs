@@ -177,6 +177,19 @@ impl AxisMech {
             low: m.dfLowLimit,
         }
     }
+
+    /// The same facts for a group whose lengths are in units of `k` mechanism units
+    /// (`config::unit_scale`, `MCC_SetUnit`): k times the pulses per unit, speeds and
+    /// the work zone divided by k.
+    pub fn in_unit(self, k: f64) -> AxisMech {
+        AxisMech {
+            factor: self.factor * k,
+            safe_speed: self.safe_speed / k,
+            high: self.high / k,
+            low: self.low / k,
+            ..self
+        }
+    }
 }
 
 /// The motion settings of a group that queued commands capture (user manual §2.6).

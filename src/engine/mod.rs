@@ -26,6 +26,7 @@ pub mod snapshot;
 pub mod thread;
 mod tick;
 pub mod trace;
+pub mod view;
 
 pub use poll::SPIN_POLLS;
 pub use running::{on_retired_engine_thread, Engine};
@@ -42,4 +43,5 @@ pub fn axes_of(def: &GroupDef, mac: &MacTable) -> [AxisMech; AXES] {
         Some(ch) => AxisMech::new(&mac[def.card.0][ch.0], Some((def.card.0, ch.0))),
         None => AxisMech::new(&crate::config::default_mac_param(), None),
     })
+    .map(|a| a.in_unit(crate::config::unit_scale(def.unit)))
 }

@@ -81,6 +81,8 @@ pub struct Shared {
     pub(super) trace: Mutex<Option<trace::Trace>>,
     /// Whether `trace` is `Some` (read without its lock on every tick).
     pub(super) tracing: bool,
+    /// What an observer (the browser panel) sees beyond the snapshots (`view.rs`).
+    pub view: super::view::ViewCell,
 }
 
 /// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum` (ZH manual §2.6.5: 60).
@@ -144,6 +146,7 @@ impl Shared {
             mc3b_home_card: AtomicI32::new(-1),
             tracing: trace.is_some(),
             trace: Mutex::new(trace),
+            view: super::view::ViewCell::default(),
         }
     }
 

@@ -10,6 +10,10 @@
 //! * `MCCL_RT_LOCK=1`: the process's memory is locked (`mlockall(MCL_CURRENT |
 //!   MCL_FUTURE)`), so no page fault on the tick path waits for the disk. Process-wide and
 //!   kept after `MCC_CloseSystem`; `0` or unset: nothing.
+//! * `MCCL_RT_SPIN_US=N` (0..=1000): the engine thread stops sleeping N µs (at most half
+//!   a period) before each deadline and spins on the clock up to it. The clock reads it
+//!   when it is made ([`crate::clock::Clock::new`]); here it is only checked, so that a
+//!   bad value is reported with the others.
 //!
 //! A setting the system refuses (no permission, no such CPU) or a value that is not one
 //! of the above prints one line on stderr and is ignored: the engine runs with normal
@@ -26,6 +30,8 @@ pub struct RtSettings {
     pub cpu: Option<usize>,
     /// Lock the process's memory.
     pub lock: bool,
+    /// Spin before each deadline, µs (applied by the clock).
+    pub spin_us: Option<u64>,
 }
 
 /// One variable: `None` when unset or empty, else the value parsed by `parse`, or a
@@ -84,11 +90,19 @@ impl RtSettings {
             &mut msgs,
         )
         .unwrap_or(false);
+        let spin_us = var(
+            "MCCL_RT_SPIN_US",
+            get,
+            crate::clock::parse_spin_us,
+            "a spin of 0..1000 us",
+            &mut msgs,
+        );
         (
             RtSettings {
                 priority,
                 cpu,
                 lock,
+                spin_us,
             },
             msgs,
         )
@@ -202,13 +216,15 @@ mod tests {
             ("MCCL_RT_PRIORITY", "80"),
             ("MCCL_RT_CPU", "1"),
             ("MCCL_RT_LOCK", "1"),
+            ("MCCL_RT_SPIN_US", "50"),
         ]));
         assert_eq!(
             s,
             RtSettings {
                 priority: Some(80),
                 cpu: Some(1),
-                lock: true
+                lock: true,
+                spin_us: Some(50),
             }
         );
         assert!(m.is_empty());
@@ -216,9 +232,10 @@ mod tests {
             ("MCCL_RT_PRIORITY", "100"),
             ("MCCL_RT_CPU", "-1"),
             ("MCCL_RT_LOCK", "yes"),
+            ("MCCL_RT_SPIN_US", "5000"),
         ]));
         assert_eq!(s, RtSettings::default());
-        assert_eq!(m.len(), 3, "{m:?}");
+        assert_eq!(m.len(), 4, "{m:?}");
         assert!(m[0].contains("MCCL_RT_PRIORITY=\"100\""), "{m:?}");
         let (s, m) = RtSettings::parse(&env(&[("MCCL_RT_PRIORITY", "0"), ("MCCL_RT_LOCK", "0")]));
         assert_eq!(s, RtSettings::default());

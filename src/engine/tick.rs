@@ -126,6 +126,9 @@ impl Shared {
                 t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
             }
         }
+        if full {
+            self.publish_view(&machine, self.clock.last_of_run());
+        }
         drop(machine);
         drop(trace);
         (full, self.tick_peripherals(tick_ns(self.clock.period())))

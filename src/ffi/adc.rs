@@ -3,29 +3,29 @@
 //! channel of the same number unless set otherwise from Rust
 //! (`Peripherals::set_adc_source`). The routine is registered with `MCC_SetADCRoutine`.
 
-use super::{channel, with_card, Out};
+use super::{channel, with_card, write_out, Done};
 use crate::card::adc::Adc;
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
 
-fn card_op(
+fn card_op<D: Done>(
     wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::Peripherals) -> McclResult<()>,
+    f: impl FnOnce(&mut crate::card::Peripherals) -> D,
 ) -> McclResult<c_int> {
-    with_card(wCardIndex, f)?;
+    with_card(wCardIndex, |p| f(p).done())?;
     Ok(c::NO_ERR)
 }
 
-fn ch_op(
+fn ch_op<D: Done>(
     wChannel: WORD,
     wCardIndex: WORD,
-    f: impl FnOnce(&mut Adc, usize) -> McclResult<()>,
+    f: impl FnOnce(&mut Adc, usize) -> D,
 ) -> McclResult<c_int> {
     super::initialised()?;
     let ch = channel(wChannel)?.0;
-    with_card(wCardIndex, |p| f(&mut p.adc, ch))?;
+    with_card(wCardIndex, |p| f(&mut p.adc, ch).done())?;
     Ok(c::NO_ERR)
 }
 
@@ -41,11 +41,8 @@ unsafe fn ch_read<T>(
 ) -> McclResult<c_int> {
     super::initialised()?;
     let ch = channel(wChannel)?.0;
-    // SAFETY: NULL or writable, as this function's contract requires.
-    let p = unsafe { Out::new(p) }?;
-    let v = with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))?;
-    p.write(v);
-    Ok(c::NO_ERR)
+    // SAFETY: forwarded under this function's contract.
+    unsafe { write_out(p, || with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))) }
 }
 
 /// Sets a channel's conversion type: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` (−5..5 V) or
@@ -97,10 +94,7 @@ pub unsafe extern "C" fn MCC_GetADCInput(
 /// Chooses the channel `ADC_MODE_SINGLE` converts.
 #[no_mangle]
 pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
-        a.set_single_channel(ch);
-        Ok(())
-    }) }
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_single_channel(ch)) }
 }
 
 /// Writes 1 while conversion runs (free mode started), 0 otherwise (a single conversion
@@ -112,57 +106,43 @@ pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c
 pub unsafe extern "C" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         super::initialised()?;
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pwSTatus = unsafe { Out::new(pwSTatus) }?;
-        let s = with_card(wCardIndex, |p| Ok(p.adc.work_status()))?;
-        pwSTatus.write(s);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwSTatus, || {
+                with_card(wCardIndex, |p| Ok(p.adc.work_status()))
+            })
+        }
     }
 }
 
 /// Every completed conversion calls the ADC routine with `CONV` set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| {
-        p.adc.set_conv_trigger(true);
-        Ok(())
-    }) }
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_conv_trigger(true)) }
 }
 
 /// Completed conversions no longer call the ADC routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| {
-        p.adc.set_conv_trigger(false);
-        Ok(())
-    }) }
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_conv_trigger(false)) }
 }
 
 /// Chooses the tagged channel (one at a time).
 #[no_mangle]
 pub extern "C" fn MCC_SetADCTagChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
-        a.set_tag_channel(ch);
-        Ok(())
-    }) }
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_tag_channel(ch)) }
 }
 
 /// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| {
-        p.adc.set_tag_trigger(true);
-        Ok(())
-    }) }
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_tag_trigger(true)) }
 }
 
 /// Conversions of the tagged channel no longer call the ADC routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| {
-        p.adc.set_tag_trigger(false);
-        Ok(())
-    }) }
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_tag_trigger(false)) }
 }
 
 /// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
@@ -204,37 +184,25 @@ pub unsafe extern "C" fn MCC_GetADCCompValue(
 /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
-        a.set_comp_trigger(ch, true);
-        Ok(())
-    }) }
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, true)) }
 }
 
 /// The channel's comparator no longer calls the ADC routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
-        a.set_comp_trigger(ch, false);
-        Ok(())
-    }) }
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, false)) }
 }
 
 /// Lets a channel convert in free mode.
 #[no_mangle]
 pub extern "C" fn MCC_EnableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
-        a.set_channel(ch, true);
-        Ok(())
-    }) }
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, true)) }
 }
 
 /// Stops a channel converting in free mode.
 #[no_mangle]
 pub extern "C" fn MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| {
-        a.set_channel(ch, false);
-        Ok(())
-    }) }
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, false)) }
 }
 
 /// Starts conversion: free mode converts every enabled channel once per tick from the
@@ -242,17 +210,11 @@ pub extern "C" fn MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD) ->
 /// next tick).
 #[no_mangle]
 pub extern "C" fn MCC_StartADCConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| {
-        p.start_adc();
-        Ok(())
-    }) }
+    ffi_boundary! { card_op(wCardIndex, |p| p.start_adc()) }
 }
 
 /// Stops free-running conversion (the last values stay readable).
 #[no_mangle]
 pub extern "C" fn MCC_StopADCConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| {
-        p.adc.stop();
-        Ok(())
-    }) }
+    ffi_boundary! { card_op(wCardIndex, |p| p.adc.stop()) }
 }

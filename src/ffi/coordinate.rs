@@ -1,7 +1,7 @@
 //! Coordinate management (user manual §2.6.1, §2.6.5; vendor header "Coordinate
 //! Management").
 
-use super::{with_group, Out};
+use super::{axis_mask, index, snapshot_outs, with_group, write_outs};
 use crate::error::McclError;
 use crate::system;
 use crate::vendor::consts as c;
@@ -46,13 +46,15 @@ pub unsafe extern "C" fn MCC_GetCurPos(
 ) -> c_int {
     ffi_boundary! {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let shared = system::active()?;
-        shared.poll_position(wGroupIndex);
-        let s = shared.snapshot(wGroupIndex)?;
-        super::write_each(p, s.pos);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                let shared = system::active()?;
+                shared.poll_position(wGroupIndex);
+                let s = shared.snapshot(wGroupIndex)?;
+                Ok(s.pos)
+            })
+        }
     }
 }
 
@@ -75,11 +77,8 @@ pub unsafe extern "C" fn MCC_GetCurRefPos(
 ) -> c_int {
     ffi_boundary! {
         let p = [pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        super::write_each(p, s.ref_pos);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { snapshot_outs(p, wGroupIndex, |s| s.ref_pos) }
     }
 }
 
@@ -102,11 +101,8 @@ pub unsafe extern "C" fn MCC_GetPulsePos(
 ) -> c_int {
     ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        super::write_each(p, s.pulses.map(|v| v as c_long));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { snapshot_outs(p, wGroupIndex, |s| s.pulses.map(|v| v as c_long)) }
     }
 }
 
@@ -128,20 +124,8 @@ pub unsafe extern "C" fn MCC_GetPulsePosEx(
 ) -> c_int {
     ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        super::write_each(p, s.pulses);
-        Ok(c::NO_ERR)
-    }
-}
-
-fn axis_index(wAxis: WORD) -> Result<usize, McclError> {
-    let a = usize::from(wAxis);
-    if a < 8 {
-        Ok(a)
-    } else {
-        Err(McclError::Parameter)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { snapshot_outs(p, wGroupIndex, |s| s.pulses) }
     }
 }
 
@@ -150,7 +134,7 @@ fn axis_index(wAxis: WORD) -> Result<usize, McclError> {
 #[no_mangle]
 pub extern "C" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let a = axis_index(wAxis)?;
+        let a = index(wAxis, 8)?;
         with_group(wGroupIndex, |g| g.define_pos(a, 0.0)).map(|()| c::NO_ERR)
     }
 }
@@ -159,7 +143,7 @@ pub extern "C" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let a = axis_index(wAxis)?;
+        let a = index(wAxis, 8)?;
         let v = super::finite(dfPos)?;
         with_group(wGroupIndex, |g| g.define_pos(a, v)).map(|()| c::NO_ERR)
     }
@@ -171,9 +155,7 @@ pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c
 #[no_mangle]
 pub extern "C" fn MCC_DefinePosHere(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
-        if dwAxisMask & !0xFF != 0 {
-            return Err(McclError::Parameter);
-        }
+        axis_mask(dwAxisMask)?;
         with_group(wGroupIndex, |g| {
             if g.busy() {
                 return Err(McclError::NotFinished);

@@ -2,7 +2,7 @@
 //! Control"). A channel whose mechanism parameters in effect say `OCM_VOLTAGE` belongs
 //! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
 
-use super::{channel, with_card};
+use super::{channel, with_card, Done};
 use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
@@ -17,15 +17,22 @@ fn dac_channel(wChannel: WORD, wCardIndex: WORD) -> McclResult<usize> {
     Ok(ch)
 }
 
-fn on_channel(
+fn on_channel<D: Done>(
     wChannel: WORD,
     wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::dac::Dac, usize) -> McclResult<()>,
+    f: impl FnOnce(&mut crate::card::dac::Dac, usize) -> D,
 ) -> McclResult<c_int> {
     super::initialised()?;
     let ch = dac_channel(wChannel, wCardIndex)?;
-    with_card(wCardIndex, |p| f(&mut p.dac, ch))?;
+    with_card(wCardIndex, |p| f(&mut p.dac, ch).done())?;
     Ok(c::NO_ERR)
+}
+
+fn on_card(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::dac::Dac)) -> McclResult<c_int> {
+    with_card(wCardIndex, |p| {
+        f(&mut p.dac);
+        Ok(c::NO_ERR)
+    })
 }
 
 /// Outputs `fVoltage` (−10..10 V) on a DAC channel.
@@ -41,9 +48,7 @@ pub extern "C" fn MCC_SetDACTriggerOutput(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
-        d.set_trigger_output(ch, fVoltage)
-    }) }
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_output(ch, fVoltage)) }
 }
 
 /// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
@@ -54,49 +59,31 @@ pub extern "C" fn MCC_SetDACTriggerSource(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
-        d.set_trigger_source(ch, dwSource)
-    }) }
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_source(ch, dwSource)) }
 }
 
 /// Turns a channel's trigger mode on.
 #[no_mangle]
 pub extern "C" fn MCC_EnableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
-        d.set_trigger_mode(ch, true);
-        Ok(())
-    }) }
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, true)) }
 }
 
 /// Turns a channel's trigger mode off.
 #[no_mangle]
 pub extern "C" fn MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| {
-        d.set_trigger_mode(ch, false);
-        Ok(())
-    }) }
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, false)) }
 }
 
 /// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
 /// from `MCC_InitSystem` on.
 #[no_mangle]
 pub extern "C" fn MCC_StartDACConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_card(wCardIndex, |p| {
-            p.dac.set_running(true);
-            Ok(c::NO_ERR)
-        })
-    }
+    ffi_boundary! { on_card(wCardIndex, |d| d.set_running(true)) }
 }
 
 /// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
 /// kept).
 #[no_mangle]
 pub extern "C" fn MCC_StopDACConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_card(wCardIndex, |p| {
-            p.dac.set_running(false);
-            Ok(c::NO_ERR)
-        })
-    }
+    ffi_boundary! { on_card(wCardIndex, |d| d.set_running(false)) }
 }

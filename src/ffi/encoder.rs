@@ -2,8 +2,11 @@
 //! encoder follows the motor: one count per pulse at x4, half at x2, a quarter at x1,
 //! reversed by A/B swap or a single inverted phase, scaled by `MCC_SetENCGearRate`.
 
-use super::{channel, with_machine, with_machine_channel, Card, Channel, Out};
+use super::{
+    bits, channel, with_machine, with_machine_channel, word_count, write_out, Card, Channel,
+};
 use crate::error::{McclError, McclResult};
+use crate::machine::triggers::CompareTable;
 use crate::vendor::consts as c;
 use crate::vendor::DWORD;
 use crate::vendor::WORD;
@@ -20,11 +23,14 @@ pub unsafe extern "C" fn MCC_GetENCValue(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let plValue = unsafe { Out::new(plValue) }?;
-        let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))?;
-        plValue.write(v as c_long);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(plValue, || {
+                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+                    Ok(ch.encoder() as c_long)
+                })
+            })
+        }
     }
 }
 
@@ -39,11 +45,12 @@ pub unsafe extern "C" fn MCC_GetENCValueEx(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pllValue = unsafe { Out::new(pllValue) }?;
-        let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))?;
-        pllValue.write(v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pllValue, || {
+                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
+            })
+        }
     }
 }
 
@@ -79,9 +86,7 @@ pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardInd
             return Err(McclError::Parameter);
         }
         with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
-            let v = ch.encoder();
-            ch.input_rate = Some(wInputRate);
-            ch.set_encoder(v);
+            ch.set_input_rate(wInputRate);
             Ok(c::NO_ERR)
         })
     }
@@ -94,9 +99,7 @@ pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex
     ffi_boundary! {
         let r = crate::config::range::enc_gear(dfGearRate)?;
         with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
-            let v = ch.encoder();
-            ch.gear_rate = r;
-            ch.set_encoder(v);
+            ch.set_gear_rate(r);
             Ok(c::NO_ERR)
         })
     }
@@ -131,8 +134,7 @@ pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: W
             return Err(McclError::Parameter);
         }
         with_triggers(Card(wCardIndex), |t, _| {
-            t.latch_type[ch.0] = wType;
-            t.latch[ch.0] = None;
+            t.set_latch_type(ch.0, wType);
             Ok(c::NO_ERR)
         })
     }
@@ -145,12 +147,9 @@ pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: W
 pub extern "C" fn MCC_SetENCLatchSource(wSource: DWORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        if wSource & !0x00FF_FFFF != 0 {
-            return Err(McclError::Parameter);
-        }
+        bits(wSource, 0x00FF_FFFF)?;
         with_triggers(Card(wCardIndex), |t, _| {
-            t.latch_source[ch.0] = wSource;
-            t.latch[ch.0] = None;
+            t.set_latch_source(ch.0, wSource);
             Ok(c::NO_ERR)
         })
     }
@@ -168,11 +167,12 @@ pub unsafe extern "C" fn MCC_GetENCLatchValue(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let plLatchValue = unsafe { Out::new(plLatchValue) }?;
-        let v = with_triggers(Card(wCardIndex), |t, _| Ok(t.latch[ch.0].unwrap_or(0)))?;
-        plLatchValue.write(v as c_long);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(plLatchValue, || {
+                with_triggers(Card(wCardIndex), |t, _| Ok(t.latch_value(ch.0) as c_long))
+            })
+        }
     }
 }
 
@@ -209,26 +209,13 @@ pub unsafe extern "C" fn MCC_GetENCIndexStatus(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pwStatus = unsafe { Out::new(pwStatus) }?;
-        let v = with_triggers(Card(wCardIndex), |t, _| {
-            Ok(std::mem::take(&mut t.index_status[ch.0]))
-        })?;
-        pwStatus.write(WORD::from(v));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                with_triggers(Card(wCardIndex), |t, _| Ok(WORD::from(t.take_index_status(ch.0))))
+            })
+        }
     }
-}
-
-fn push_compare(
-    t: &mut crate::machine::triggers::CardTriggers,
-    ch: usize,
-    v: i64,
-) -> McclResult<()> {
-    if t.stock[ch].len() >= crate::machine::triggers::MAX_COMPARE_STOCK {
-        return Err(McclError::BufferFull);
-    }
-    t.stock[ch].push_back(v);
-    Ok(())
 }
 
 /// Adds a compare value to the channel's stock: when the count reaches it the encoder
@@ -242,7 +229,7 @@ pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex
         #[allow(clippy::useless_conversion)]
         let v = crate::config::range::enc_count(i64::from(lValue))?;
         with_triggers(Card(wCardIndex), |t, _| {
-            push_compare(t, ch.0, v).map(|()| c::NO_ERR)
+            t.push_compare(ch.0, v).map(|()| c::NO_ERR)
         })
     }
 }
@@ -264,18 +251,9 @@ pub extern "C" fn MCC_SetENCCompValueTab(
             crate::config::range::enc_count(i64::from(lEndValue))?,
             crate::config::range::enc_count(i64::from(lDeltaValue))?,
         );
-        if d == 0 || (b - a).signum() * d.signum() < 0 {
-            return Err(McclError::Parameter);
-        }
-        let n = (b - a) / d + 1;
+        let table = CompareTable::new(a, b, d)?;
         with_triggers(Card(wCardIndex), |t, _| {
-            if t.stock[ch.0].len() as i64 + n > crate::machine::triggers::MAX_COMPARE_STOCK as i64 {
-                return Err(McclError::BufferFull);
-            }
-            for k in 0..n {
-                t.stock[ch.0].push_back(a + k * d);
-            }
-            Ok(c::NO_ERR)
+            t.push_compare_table(ch.0, &table).map(|()| c::NO_ERR)
         })
     }
 }
@@ -292,13 +270,12 @@ pub unsafe extern "C" fn MCC_GetENCCompValue(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let lValue = unsafe { Out::new(lValue) }?;
-        let v = with_triggers(Card(wCardIndex), |t, _| {
-            Ok(t.stock[ch.0].front().copied().unwrap_or(0))
-        })?;
-        lValue.write(v as c_long);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(lValue, || {
+                with_triggers(Card(wCardIndex), |t, _| Ok(t.armed_compare(ch.0) as c_long))
+            })
+        }
     }
 }
 
@@ -314,21 +291,19 @@ pub unsafe extern "C" fn MCC_GetENCCompStockCount(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(wChannel)?;
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let wCount = unsafe { Out::new(wCount) }?;
-        let n = with_triggers(Card(wCardIndex), |t, _| Ok(t.stock_count(ch.0)))?;
-        wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(wCount, || {
+                with_triggers(Card(wCardIndex), |t, _| Ok(word_count(t.stock_count(ch.0))))
+            })
+        }
     }
 }
 
 fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let ch = channel(wChannel)?;
     with_triggers(Card(wCardIndex), |t, chans| {
-        if on && !t.comp_enabled[ch.0] {
-            t.rebase(chans);
-        }
-        t.comp_enabled[ch.0] = on;
+        t.set_compare_trigger(ch.0, on, chans);
         Ok(c::NO_ERR)
     })
 }
@@ -362,9 +337,7 @@ pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_i
 #[no_mangle]
 pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        if wCompareAxisMask > 0xFF {
-            return Err(McclError::Parameter);
-        }
+        bits(wCompareAxisMask, 0xFF)?;
         with_triggers(Card(wCardIndex), |t, _| {
             t.compare_mask = wCompareAxisMask;
             Ok(c::NO_ERR)

@@ -39,7 +39,7 @@ pub extern "C" fn MCC_Home(
         {
             return Err(McclError::Parameter);
         }
-        let cfgs = system::with(|s| s.config.home[cd.0]);
+        let cfgs = system::config(|c| c.home[cd.0]);
         let shared = system::active()?;
         let cd = shared.card(cd)?;
         shared.start_homing(cd, orders, &cfgs)?;

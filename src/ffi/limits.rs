@@ -2,8 +2,11 @@
 //! examples manual §19; vendor header "Software Over Travel Check & Hardware Limit Switch
 //! Check").
 
-use super::{card, channel, update_group, with_group, Out};
-use crate::error::McclError;
+use super::{
+    flag, index, update_group, with_group, with_machine_channel, write_out, write_outs, Card,
+    Channel,
+};
+use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -11,7 +14,7 @@ use std::os::raw::c_int;
 use std::sync::atomic::Ordering;
 
 /// Turns the hardware limit switch check on: `HLP_BIDIR` (0), `HLP_UNIDIR` (1),
-/// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); see the README for the rules.
+/// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); rules: docs/simulated-machine.md.
 #[no_mangle]
 pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
     ffi_boundary! {
@@ -31,14 +34,6 @@ pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
     ffi_boundary! {
         system::active()?.limit_check.store(-1, Ordering::Release);
         Ok(c::NO_ERR)
-    }
-}
-
-fn flag(v: c_int) -> Result<bool, McclError> {
-    match v {
-        0 => Ok(false),
-        1 => Ok(true),
-        _ => Err(McclError::Parameter),
     }
 }
 
@@ -89,40 +84,45 @@ pub unsafe extern "C" fn MCC_GetOverTravelCheck(
             pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3, pnOTCheck4, pnOTCheck5, pnOTCheck6,
             pnOTCheck7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))
+            })
+        }
     }
 }
 
-fn limit_status(
+/// A limit switch side from C: 0 (+) or 1 (−).
+fn side(wUpDown: WORD) -> McclResult<usize> {
+    index(wUpDown, 2)
+}
+
+/// Writes limit switch `wUpDown` of a channel, as it reads now or as latched.
+///
+/// # Safety
+/// `pwStatus` must be NULL or point to a writable WORD.
+unsafe fn limit_status(
     pwStatus: *mut WORD,
     wUpDown: WORD,
     wChannel: WORD,
     wCardIndex: WORD,
     latched: bool,
-) -> Result<c_int, McclError> {
-    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-    if wUpDown > 1 {
-        return Err(McclError::Parameter);
+) -> McclResult<c_int> {
+    let side = side(wUpDown)?;
+    // SAFETY: forwarded under this function's contract.
+    unsafe {
+        write_out(pwStatus, || {
+            let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |chan| {
+                Ok(if latched {
+                    chan.latched_limit(side)
+                } else {
+                    chan.limit_switch(side)
+                })
+            })?;
+            Ok(WORD::from(v))
+        })
     }
-    // SAFETY: NULL or writable, as this function's contract requires.
-    let pwStatus = unsafe { Out::new(pwStatus) }?;
-    let shared = system::active()?;
-    let cd = shared.card(cd)?;
-    let m = shared.machine.lock();
-    let chan = m.channel(cd, ch.0).ok_or(McclError::Parameter)?;
-    let v = if latched {
-        chan.latched[usize::from(wUpDown)]
-    } else if wUpDown == 0 {
-        chan.levels().plus
-    } else {
-        chan.levels().minus
-    };
-    pwStatus.write(WORD::from(v));
-    Ok(c::NO_ERR)
 }
 
 /// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
@@ -136,7 +136,10 @@ pub unsafe extern "C" fn MCC_GetLimitSwitchStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false) }
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false) }
+    }
 }
 
 /// Whether the limit switch has been active since the latch was last cleared.
@@ -150,7 +153,10 @@ pub unsafe extern "C" fn MCC_GetLatchedLimitSwitchStatus(
     wChannel: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true) }
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true) }
+    }
 }
 
 /// Clears the latched limit switch status (it latches again while the switch is active).
@@ -161,20 +167,11 @@ pub extern "C" fn MCC_ClearLatchedLimitSwitchStatus(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        if wUpDown > 1 {
-            return Err(McclError::Parameter);
-        }
-        let shared = system::active()?;
-        let cd = shared.card(cd)?;
-        let mut m = shared.machine.lock();
-        let chan = m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?;
-        let active = if wUpDown == 0 {
-            chan.levels().plus
-        } else {
-            chan.levels().minus
-        };
-        chan.latched[usize::from(wUpDown)] = active;
+        let side = side(wUpDown)?;
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |chan| {
+            chan.clear_latched_limit(side);
+            Ok(())
+        })?;
         Ok(c::NO_ERR)
     }
 }

@@ -3,9 +3,12 @@
 //! trigger-out by encoder compares. The virtual card keeps the state of each output; the
 //! simulated machine reads it.
 
-use super::{card, channel, with_card_triggers, Card, Out};
-use crate::error::McclResult;
-use crate::machine::triggers::TrigOutKind;
+use super::{
+    bits, card, channel, flag, index, with_card_triggers, with_machine, with_machine_channel,
+    word_count, write_out, Card,
+};
+use crate::error::{McclError, McclResult};
+use crate::machine::triggers::{TrigOutKind, TrigOutSetting};
 use crate::machine::FilterClock;
 use crate::system;
 use crate::vendor::consts as c;
@@ -64,22 +67,21 @@ pub extern "C" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetEmgcStopStatus(pwStatus: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pwStatus = unsafe { Out::new(pwStatus) }?;
-        let shared = system::active()?;
-        let cd = shared.card(card(wCardIndex)?)?;
-        let v = shared.machine.lock().emergency[cd];
-        pwStatus.write(WORD::from(v));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
+            })
+        }
     }
 }
 
 fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let ch = channel(Channel)?;
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    shared.machine.lock().settings[cd].set_led(ch.0, on);
-    Ok(c::NO_ERR)
+    with_machine(Card(wCardIndex), |m, cd| {
+        m.settings[cd].set_led(ch.0, on);
+        Ok(c::NO_ERR)
+    })
 }
 
 /// Turns a channel's LED output on.
@@ -107,22 +109,21 @@ pub unsafe extern "C" fn MCC_GetLedLightStatus(
 ) -> c_int {
     ffi_boundary! {
         let ch = channel(Channel)?;
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let Status = unsafe { Out::new(Status) }?;
-        let shared = system::active()?;
-        let cd = shared.card(card(wCardIndex)?)?;
-        let v = shared.machine.lock().led_lit(cd, ch.0);
-        Status.write(WORD::from(v));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(Status, || {
+                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.led_lit(cd, ch.0))))
+            })
+        }
     }
 }
 
 /// Keeps filter clock `k` of the card (any WORD: the manuals give no range).
 pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResult<c_int> {
-    let shared = system::active()?;
-    let cd = shared.card(card(wCardIndex)?)?;
-    shared.machine.lock().settings[cd].set_filter_clock(k, Value);
-    Ok(c::NO_ERR)
+    with_machine(Card(wCardIndex), |m, cd| {
+        m.settings[cd].set_filter_clock(k, Value);
+        Ok(c::NO_ERR)
+    })
 }
 
 /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
@@ -155,34 +156,26 @@ pub unsafe extern "C" fn MCC_GetHomeSensorStatus(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pwStatus = unsafe { Out::new(pwStatus) }?;
-        let mode = system::with(|s| s.config.home[cd.0][ch.0].wSensorMode);
-        let shared = system::active()?;
-        let cd = shared.card(cd)?;
-        let m = shared.machine.lock();
-        let v = m.cards[cd][ch.0].home_level(mode);
-        pwStatus.write(WORD::from(v));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                let mode = system::config(|c| c.home[cd.0][ch.0].wSensorMode);
+                with_machine_channel(super::Channel(wChannel), Card(wCardIndex), |chan| {
+                    Ok(WORD::from(chan.home_level(mode)))
+                })
+            })
+        }
     }
 }
 
-fn lio_point(wPoint: WORD) -> Result<usize, crate::error::McclError> {
-    let p = usize::from(wPoint);
-    if p < 24 {
-        Ok(p)
-    } else {
-        Err(crate::error::McclError::Parameter)
-    }
+/// A local input point (`LIO_LDI_OTP0..7`, `OTN0..7`, `HOME0..7`).
+fn lio_point(wPoint: WORD) -> McclResult<usize> {
+    index(wPoint, 24)
 }
 
-fn out_point(wPoint: WORD) -> Result<usize, crate::error::McclError> {
-    let p = usize::from(wPoint);
-    if p < 8 {
-        Ok(p)
-    } else {
-        Err(crate::error::McclError::Parameter)
-    }
+/// A trigger-out point: a local output or an LED (0..7).
+fn out_point(wPoint: WORD) -> McclResult<usize> {
+    index(wPoint, 8)
 }
 
 /// Trigger type of a local input (`LIO_LDI_OTP0..7`, `OTN0..7`, `HOME0..7`):
@@ -197,7 +190,7 @@ pub extern "C" fn MCC_SetLIOTriggerType(
     ffi_boundary! {
         let p = lio_point(wPoint)?;
         if wTriggerType > c::LIO_INT_LEVEL {
-            return Err(crate::error::McclError::Parameter);
+            return Err(McclError::Parameter);
         }
         with_card_triggers(Card(wCardIndex), |t| {
             t.lio_type[p] = wTriggerType;
@@ -226,20 +219,33 @@ pub extern "C" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int
     ffi_boundary! { lio_trigger(wPoint, wCardIndex, false) }
 }
 
+/// Compare sources from C: bit n is the compare of channel n (0..7).
+fn sources(w: WORD) -> McclResult<u16> {
+    bits(w, 0xFF)
+}
+
+/// Changes one setting of trigger-out point `wPoint` (0..7) of `kind`.
+fn trig_out(
+    kind: TrigOutKind,
+    wPoint: WORD,
+    wCardIndex: WORD,
+    s: TrigOutSetting,
+) -> McclResult<c_int> {
+    let p = out_point(wPoint)?;
+    with_card_triggers(Card(wCardIndex), |t| {
+        t.set_trig_out(kind, p, s);
+        Ok(c::NO_ERR)
+    })
+}
+
 /// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
 /// (1) or off (0): when a compare of its source fires, the output takes its trigger
 /// value for the trigger period, then returns.
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let p = out_point(wPoint)?;
-        if wEnable > 1 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_outs(TrigOutKind::Local)[p].enabled = wEnable == 1;
-            Ok(c::NO_ERR)
-        })
+        let s = TrigOutSetting::Enabled(flag(wEnable)?);
+        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
     }
 }
 
@@ -248,14 +254,8 @@ pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let p = out_point(wPoint)?;
-        if wValue > 1 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_outs(TrigOutKind::Local)[p].value = wValue == 1;
-            Ok(c::NO_ERR)
-        })
+        let s = TrigOutSetting::Value(flag(wValue)?);
+        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
     }
 }
 
@@ -267,9 +267,7 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        if dwBitMask > 0xFF {
-            return Err(crate::error::McclError::Parameter);
-        }
+        bits(dwBitMask, 0xFF)?;
         with_card_triggers(Card(wCardIndex), |t| {
             t.set_trig_out_values(dwBitMask, dwBitValue);
             Ok(c::NO_ERR)
@@ -281,14 +279,8 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let p = out_point(wPoint)?;
-        if wSource > 0xFF {
-            return Err(crate::error::McclError::Parameter);
-        }
-        with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_outs(TrigOutKind::Local)[p].source = wSource;
-            Ok(c::NO_ERR)
-        })
+        let s = TrigOutSetting::Source(sources(wSource)?);
+        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
     }
 }
 
@@ -312,14 +304,8 @@ pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
     ffi_boundary! {
         // Before init: INITIAL_MOTION_ERR whatever the arguments.
         super::initialised()?;
-        let p = out_point(wPoint)?;
-        if wEnable > 1 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_outs(TrigOutKind::Led)[p].enabled = wEnable == 1;
-            Ok(c::NO_ERR)
-        })
+        let s = TrigOutSetting::Enabled(flag(wEnable)?);
+        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
     }
 }
 
@@ -327,15 +313,10 @@ pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardInde
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
+        // Before init: INITIAL_MOTION_ERR whatever the arguments.
         super::initialised()?;
-        let p = out_point(wPoint)?;
-        if wOutput > 1 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_outs(TrigOutKind::Led)[p].value = wOutput == 1;
-            Ok(c::NO_ERR)
-        })
+        let s = TrigOutSetting::Value(flag(wOutput)?);
+        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
     }
 }
 
@@ -343,15 +324,10 @@ pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex
 #[no_mangle]
 pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
+        // Before init: INITIAL_MOTION_ERR whatever the arguments.
         super::initialised()?;
-        let p = out_point(wPoint)?;
-        if wSource > 0xFF {
-            return Err(crate::error::McclError::Parameter);
-        }
-        with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_outs(TrigOutKind::Led)[p].source = wSource;
-            Ok(c::NO_ERR)
-        })
+        let s = TrigOutSetting::Source(sources(wSource)?);
+        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
     }
 }
 
@@ -362,11 +338,12 @@ pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let wCount = unsafe { Out::new(wCount) }?;
-        let n = with_card_triggers(Card(wCardIndex), |t| Ok(t.lio_comp_stock_count()))?;
-        wCount.write(n.min(usize::from(WORD::MAX)) as WORD);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(wCount, || {
+                with_card_triggers(Card(wCardIndex), |t| Ok(word_count(t.lio_comp_stock_count())))
+            })
+        }
     }
 }
 

@@ -14,13 +14,17 @@ macro_rules! ffi_boundary {
 }
 
 pub mod adc;
+pub mod cone;
+pub mod converter_timing;
 pub mod coordinate;
 pub mod dac;
 pub mod encoder;
 pub mod filters;
+pub mod handshake;
 pub mod home;
 pub mod isr;
 pub mod jog;
+pub mod legacy_params;
 pub mod limits;
 pub mod local_io;
 pub mod motion;
@@ -32,9 +36,11 @@ pub mod status;
 pub mod system;
 pub mod timer;
 pub mod trajectory;
+pub mod units;
 
 use crate::config::{CardIx, ChannelIx};
 use crate::error::{McclError, McclResult};
+use crate::vendor::WORD;
 use std::os::raw::c_int;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -231,6 +237,103 @@ impl<T> Out<T> {
     }
 }
 
+/// Reads a channel's configuration struct from C (card, then channel, then NULL checked)
+/// and hands it to the core's setter, which validates it.
+///
+/// # Safety
+/// `p` must be NULL or point to a readable `T`.
+pub unsafe fn set_channel_config<T: Copy>(
+    p: *const T,
+    wChannel: WORD,
+    wCardIndex: WORD,
+    set: impl FnOnce(&mut crate::config::Config, CardIx, ChannelIx, T) -> McclResult<()>,
+) -> McclResult<c_int> {
+    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
+    // SAFETY: NULL is rejected; otherwise the caller passes a readable T.
+    let v = unsafe { read_in(p) }?;
+    crate::system::config(|c| set(c, cd, ch, v))?;
+    Ok(crate::vendor::consts::NO_ERR)
+}
+
+/// Writes a channel's configuration struct, as last set, to C (card, then channel, then
+/// NULL checked).
+///
+/// # Safety
+/// `p` must be NULL or point to memory writable as a `T`.
+pub unsafe fn get_channel_config<T: Copy>(
+    p: *mut T,
+    wChannel: WORD,
+    wCardIndex: WORD,
+    table: impl FnOnce(&crate::config::Config) -> &[[T; crate::config::AXES]; crate::config::CARDS],
+) -> McclResult<c_int> {
+    let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let out = unsafe { Out::new(p) }?;
+    out.write(crate::system::config(|c| table(c)[cd.0][ch.0]));
+    Ok(crate::vendor::consts::NO_ERR)
+}
+
+/// What a core setter returns: nothing (it cannot fail) or `McclResult<()>`; the
+/// accessors below take either.
+pub trait Done {
+    /// The setter's result.
+    fn done(self) -> McclResult<()>;
+}
+
+impl Done for () {
+    fn done(self) -> McclResult<()> {
+        Ok(())
+    }
+}
+
+impl Done for McclResult<()> {
+    fn done(self) -> McclResult<()> {
+        self
+    }
+}
+
+/// A getter with one output: `p` is checked (NULL refused with `PARAMETER_ERR`) before
+/// `get` runs, then what `get` returns is written; `NO_ERR`.
+///
+/// # Safety
+/// `p` must be NULL or point to memory writable as a `T` (alignment not needed).
+pub unsafe fn write_out<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<c_int> {
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let out = unsafe { Out::new(p) }?;
+    out.write(get()?);
+    Ok(crate::vendor::consts::NO_ERR)
+}
+
+/// A getter with `N` outputs (one per axis or channel): every pointer is checked (one
+/// NULL is refused with `PARAMETER_ERR`) before `get` runs, then what `get` returns is
+/// written; `NO_ERR`.
+///
+/// # Safety
+/// Every pointer of `p` must be NULL or point to memory writable as a `T`.
+pub unsafe fn write_outs<T, const N: usize>(
+    p: [*mut T; N],
+    get: impl FnOnce() -> McclResult<[T; N]>,
+) -> McclResult<c_int> {
+    // SAFETY: NULL or writable, as this function's contract requires.
+    let outs = unsafe { Out::each(p) }?;
+    write_each(outs, get()?);
+    Ok(crate::vendor::consts::NO_ERR)
+}
+
+/// Writes an array of running group `g`'s published snapshot (no engine lock; see
+/// `Shared::snapshot`) to its `N` outputs, checked first.
+///
+/// # Safety
+/// As [`write_outs`].
+pub unsafe fn snapshot_outs<T, const N: usize>(
+    p: [*mut T; N],
+    g: u16,
+    pick: impl FnOnce(crate::engine::snapshot::GroupSnapshot) -> [T; N],
+) -> McclResult<c_int> {
+    // SAFETY: forwarded under this function's contract.
+    unsafe { write_outs(p, || Ok(pick(crate::system::active()?.snapshot(g)?))) }
+}
+
 /// Writes `N` results through outputs made by [`Out::each`].
 pub fn write_each<T, const N: usize>(outs: [Out<T>; N], v: [T; N]) {
     for (o, x) in outs.into_iter().zip(v) {
@@ -338,6 +441,44 @@ pub fn shape_char(s: crate::planner::Shape) -> std::os::raw::c_char {
         crate::planner::Shape::T => b'T',
         crate::planner::Shape::S => b'S',
     }) as std::os::raw::c_char
+}
+
+/// A count as the vendor's `WORD` outputs report it: at most 65535.
+pub fn word_count(n: usize) -> crate::vendor::WORD {
+    n.min(usize::from(crate::vendor::WORD::MAX)) as crate::vendor::WORD
+}
+
+/// An axis mask from C: bits 0..7 (X..B); a higher bit is `PARAMETER_ERR`.
+pub fn axis_mask(dwAxisMask: crate::vendor::DWORD) -> McclResult<u32> {
+    bits(dwAxisMask, 0xFF)
+}
+
+/// A bit mask from C with no bit outside `allowed` (`PARAMETER_ERR` otherwise).
+pub fn bits<T: Into<u32> + Copy>(w: T, allowed: u32) -> McclResult<T> {
+    if w.into() & !allowed != 0 {
+        Err(McclError::Parameter)
+    } else {
+        Ok(w)
+    }
+}
+
+/// An index from C below `n`: a point, an axis, a side (`PARAMETER_ERR` otherwise).
+pub fn index(w: WORD, n: usize) -> McclResult<usize> {
+    let i = usize::from(w);
+    if i < n {
+        Ok(i)
+    } else {
+        Err(McclError::Parameter)
+    }
+}
+
+/// A switch from C: 1 on, 0 off (`PARAMETER_ERR` otherwise).
+pub fn flag(v: impl Into<i64>) -> McclResult<bool> {
+    match v.into() {
+        0 => Ok(false),
+        1 => Ok(true),
+        _ => Err(McclError::Parameter),
+    }
 }
 
 /// Checks that 8 numbers from C are finite.

@@ -1,7 +1,9 @@
 //! General motion: line, arc, circle and helix commands and their settings (user manual
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
-use super::{finite, finite8, queue, queue_curve, shape, shape_char, with_group, Out};
+use super::{
+    axis_mask, finite, finite8, queue, queue_curve, shape, shape_char, snapshot_outs, with_group,
+};
 use crate::error::{McclError, McclResult};
 use crate::planner::{Path, Plane};
 use crate::system;
@@ -11,20 +13,19 @@ use std::os::raw::{c_char, c_int};
 
 use crate::config::range::time_ms;
 
-fn mask(dwAxisMask: DWORD) -> McclResult<u32> {
-    if dwAxisMask & !0xFF != 0 {
-        Err(McclError::Parameter)
-    } else {
-        Ok(dwAxisMask)
-    }
-}
-
 fn direction(byCirDir: BYTE) -> McclResult<bool> {
     match i32::from(byCirDir) {
         c::CIR_CW => Ok(false),
         c::CIR_CCW => Ok(true),
         _ => Err(McclError::Parameter),
     }
+}
+
+/// A feed speed from C: in the speed range, then at most the system maximum
+/// (`MCC_SetSysMaxSpeed`).
+pub(super) fn feed_speed(v: f64) -> McclResult<f64> {
+    let v = crate::config::range::speed(v)?;
+    Ok(system::config(|c| c.feed_speed(v)))
 }
 
 /// Acceleration shape of general motion: 'T' (trapezoid) or 'S' (S-curve).
@@ -100,8 +101,7 @@ pub extern "C" fn MCC_GetDecTime(wGroupIndex: WORD) -> f64 {
 #[no_mangle]
 pub extern "C" fn MCC_SetFeedSpeed(dfFeedSpeed: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
-        let v = crate::config::range::speed(dfFeedSpeed)?;
-        let v = v.min(system::with(|s| s.config.sys_max_speed));
+        let v = feed_speed(dfFeedSpeed)?;
         with_group(wGroupIndex, |g| {
             g.settings.feed = v;
             Ok(v)
@@ -141,11 +141,8 @@ pub unsafe extern "C" fn MCC_GetSpeed(
         let p = [
             pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        super::write_each(p, s.vel);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { snapshot_outs(p, wGroupIndex, |s| s.vel) }
     }
 }
 
@@ -170,7 +167,7 @@ pub extern "C" fn MCC_GetPtPSpeed(wGroupIndex: WORD) -> f64 {
 
 fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
     let args = finite8(args)?;
-    let m = mask(m)?;
+    let m = axis_mask(m)?;
     queue(g, |ctx| {
         ctx.ptp(ctx.resolve(&args, m), ctx.settings.ptp_ratio, sync)
     })
@@ -271,7 +268,7 @@ pub extern "C" fn MCC_PtPB(dfB: f64, wGroupIndex: WORD) -> c_int {
 
 fn line(args: [f64; 8], g: WORD, m: DWORD) -> McclResult<c_int> {
     let args = finite8(args)?;
-    let m = mask(m)?;
+    let m = axis_mask(m)?;
     queue(g, |ctx| ctx.line(ctx.resolve(&args, m)))
 }
 

@@ -2,32 +2,35 @@
 //! gains (kept and reported: the simulated plant is set by the configuration), error
 //! counters, pulse speed and acceleration limits, tracking error, compensation.
 
-use super::{axis, card, channel, finite, update_group, with_group, with_machine, Card, Out};
+use super::{
+    axis, axis_mask, channel, finite, set_channel_config, update_group, with_group, with_machine,
+    write_out, write_outs, Card,
+};
+use crate::config::Config;
 use crate::error::{McclError, McclResult};
-use crate::machine::{PulseLimit, MAX_PULSE_LIMIT};
+use crate::machine::{Gain, Gains, PulseLimit, MAX_PULSE_LIMIT};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, SYS_COMP_PARAM, WORD};
 use std::os::raw::{c_char, c_int};
 
-fn set_gains(k: usize, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
-    if v.iter().any(|&g| g > 255) {
-        return Err(McclError::Parameter);
-    }
+fn set_gains(k: Gain, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
+    let g = Gains::new(v)?;
     with_machine(Card(wCardIndex), |m, cd| {
-        m.settings[cd].gains[k] = v;
+        m.settings[cd].set_gains(k, g);
         Ok(c::NO_ERR)
     })
 }
 
 /// # Safety
 /// Every pointer must be NULL or writable.
-unsafe fn get_gains(k: usize, p: [*mut WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
-    // SAFETY: NULL or writable, as this function's contract requires.
-    let p = unsafe { Out::each(p) }?;
-    let v = with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains[k]))?;
-    super::write_each(p, v);
-    Ok(c::NO_ERR)
+unsafe fn get_gains(k: Gain, p: [*mut WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
+    // SAFETY: forwarded under this function's contract.
+    unsafe {
+        write_outs(p, || {
+            with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains(k)))
+        })
+    }
 }
 
 /// Proportional gain per channel (0..255).
@@ -43,13 +46,10 @@ pub extern "C" fn MCC_SetPGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { set_gains(
-        0,
-        [
-            wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
-        ],
-        wCardIndex,
-    ) }
+    ffi_boundary! {
+        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
+        set_gains(Gain::P, v, wCardIndex)
+    }
 }
 
 /// Reads the proportional gains.
@@ -69,17 +69,10 @@ pub unsafe extern "C" fn MCC_GetPGain(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-        unsafe {
-            get_gains(
-                0,
-                [
-                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-                ],
-                wCardIndex,
-            )
-        }
-        }
+        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_gains(Gain::P, p, wCardIndex) }
+    }
 }
 
 /// Integral gain per channel (0..255).
@@ -95,13 +88,10 @@ pub extern "C" fn MCC_SetIGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { set_gains(
-        1,
-        [
-            wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
-        ],
-        wCardIndex,
-    ) }
+    ffi_boundary! {
+        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
+        set_gains(Gain::I, v, wCardIndex)
+    }
 }
 
 /// Reads the integral gains.
@@ -121,17 +111,10 @@ pub unsafe extern "C" fn MCC_GetIGain(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-        unsafe {
-            get_gains(
-                1,
-                [
-                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-                ],
-                wCardIndex,
-            )
-        }
-        }
+        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_gains(Gain::I, p, wCardIndex) }
+    }
 }
 
 /// Derivative gain per channel (0..255).
@@ -147,13 +130,10 @@ pub extern "C" fn MCC_SetDGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { set_gains(
-        2,
-        [
-            wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
-        ],
-        wCardIndex,
-    ) }
+    ffi_boundary! {
+        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
+        set_gains(Gain::D, v, wCardIndex)
+    }
 }
 
 /// Reads the derivative gains.
@@ -173,17 +153,10 @@ pub unsafe extern "C" fn MCC_GetDGain(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-        unsafe {
-            get_gains(
-                2,
-                [
-                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-                ],
-                wCardIndex,
-            )
-        }
-        }
+        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_gains(Gain::D, p, wCardIndex) }
+    }
 }
 
 /// Feed-forward gain per channel (0..255).
@@ -199,13 +172,10 @@ pub extern "C" fn MCC_SetFGain(
     wGain7: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { set_gains(
-        3,
-        [
-            wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7,
-        ],
-        wCardIndex,
-    ) }
+    ffi_boundary! {
+        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
+        set_gains(Gain::FeedForward, v, wCardIndex)
+    }
 }
 
 /// Reads the feed-forward gains.
@@ -225,17 +195,10 @@ pub unsafe extern "C" fn MCC_GetFGain(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-        unsafe {
-            get_gains(
-                3,
-                [
-                    pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7,
-                ],
-                wCardIndex,
-            )
-        }
-        }
+        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_gains(Gain::FeedForward, p, wCardIndex) }
+    }
 }
 
 fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
@@ -287,17 +250,18 @@ pub unsafe extern "C" fn MCC_GetErrorCount(
             pnErrCount6,
             pnErrCount7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_machine(Card(wCardIndex), |m, cd| {
-            Ok(std::array::from_fn(|ch| {
-                m.cards[cd][ch]
-                    .error_count()
-                    .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
-            }))
-        })?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_machine(Card(wCardIndex), |m, cd| {
+                    Ok(std::array::from_fn(|ch| {
+                        m.cards[cd][ch]
+                            .error_count()
+                            .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
+                    }))
+                })
+            })
+        }
     }
 }
 
@@ -371,13 +335,14 @@ pub unsafe extern "C" fn MCC_GetMaxPulseSpeed(
         let p = [
             pnSpeed0, pnSpeed1, pnSpeed2, pnSpeed3, pnSpeed4, pnSpeed5, pnSpeed6, pnSpeed7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_machine(Card(wCardIndex), |m, cd| {
-            Ok(m.pulse_limits(cd, PulseLimit::Speed))
-        })?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_machine(Card(wCardIndex), |m, cd| {
+                    Ok(m.pulse_limits(cd, PulseLimit::Speed))
+                })
+            })
+        }
     }
 }
 
@@ -434,13 +399,14 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
             pnPulseAcc6,
             pnPulseAcc7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_machine(Card(wCardIndex), |m, cd| {
-            Ok(m.pulse_limits(cd, PulseLimit::Acc))
-        })?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_machine(Card(wCardIndex), |m, cd| {
+                    Ok(m.pulse_limits(cd, PulseLimit::Acc))
+                })
+            })
+        }
     }
 }
 
@@ -449,9 +415,7 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
 #[no_mangle]
 pub extern "C" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
-        if dwAxisMask & !0xFF != 0 {
-            return Err(McclError::Parameter);
-        }
+        axis_mask(dwAxisMask)?;
         update_group(wGroupIndex, |g| g.track_mask |= dwAxisMask)
     }
 }
@@ -491,12 +455,14 @@ pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pdfLimit = unsafe { Out::new(pdfLimit) }?;
-        let a = axis(cAxis)?;
-        let v = with_group(wGroupIndex, |g| Ok(g.track_limit[a]))?;
-        pdfLimit.write(v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pdfLimit, || {
+                let a = axis(cAxis)?;
+                let v = with_group(wGroupIndex, |g| Ok(g.track_limit[a]))?;
+                Ok(v)
+            })
+        }
     }
 }
 
@@ -513,14 +479,8 @@ pub unsafe extern "C" fn MCC_SetCompParam(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL is refused; otherwise the caller passes a SYS_COMP_PARAM.
-        let p = unsafe { super::read_in(pstCompParam) }?;
-        if p.wHome_No > 255 {
-            return Err(McclError::Parameter);
-        }
-        system::with(|s| s.config.comp[cd.0][ch.0] = Some(p));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param) }
     }
 }
 
@@ -528,16 +488,8 @@ pub unsafe extern "C" fn MCC_SetCompParam(
 #[no_mangle]
 pub extern "C" fn MCC_UpdateCompParam() -> c_int {
     ffi_boundary! {
-        let comp = system::with(|s| s.config.comp.clone());
-        let shared = system::active()?;
-        let mut m = shared.machine.lock();
-        for (cd, chans) in m.cards.iter_mut().enumerate() {
-            for (ch, chan) in chans.iter_mut().enumerate() {
-                if let Some(p) = &comp[cd][ch] {
-                    chan.set_compensation(p);
-                }
-            }
-        }
+        let comp = system::config(|c| c.comp.clone());
+        system::active()?.machine.lock().apply_compensation(&comp);
         Ok(c::NO_ERR)
     }
 }
@@ -575,9 +527,7 @@ pub extern "C" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -
 }
 
 fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> McclResult<c_int> {
-    if dwAxisMask & !0xFF != 0 {
-        return Err(McclError::Parameter);
-    }
+    axis_mask(dwAxisMask)?;
     super::queue(wGroupIndex, |ctx| {
         Ok(ctx.marker(crate::engine::command::Plan::InPos(on, dwAxisMask)))
     })
@@ -660,11 +610,12 @@ pub unsafe extern "C" fn MCC_GetInPosToleranceEx(
             pdfTolerance6,
             pdfTolerance7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))
+            })
+        }
     }
 }
 
@@ -689,11 +640,12 @@ pub unsafe extern "C" fn MCC_GetInPosStatus(
         let p = [
             pbyInPos0, pbyInPos1, pbyInPos2, pbyInPos3, pbyInPos4, pbyInPos5, pbyInPos6, pbyInPos7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.inpos_status()))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.inpos_status()))
+            })
+        }
     }
 }
 
@@ -776,16 +728,17 @@ pub unsafe extern "C" fn MCC_GetInPosTolerance(
             pwTolerance6,
             pwTolerance7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| {
-            Ok(std::array::from_fn(|i| {
-                (g.inpos.tolerance[i] * g.axes[i].factor.abs())
-                    .round()
-                    .min(f64::from(WORD::MAX)) as WORD
-            }))
-        })?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| {
+                    Ok(std::array::from_fn(|i| {
+                        (g.inpos.tolerance[i] * g.axes[i].factor.abs())
+                            .round()
+                            .min(f64::from(WORD::MAX)) as WORD
+                    }))
+                })
+            })
+        }
     }
 }

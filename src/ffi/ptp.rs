@@ -1,9 +1,8 @@
 //! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; vendor header
 //! "Point-to-Point Motion").
 
-use super::{shape, shape_char, with_group, Out};
+use super::{shape, shape_char, with_group, write_outs};
 use crate::error::McclError;
-use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::{c_char, c_int};
 
@@ -63,11 +62,12 @@ pub unsafe extern "C" fn MCC_GetPtPAccType(
             pcAccType0, pcAccType1, pcAccType2, pcAccType3, pcAccType4, pcAccType5, pcAccType6,
             pcAccType7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)))
+            })
+        }
     }
 }
 
@@ -113,11 +113,12 @@ pub unsafe extern "C" fn MCC_GetPtPDecType(
             pcDecType0, pcDecType1, pcDecType2, pcDecType3, pcDecType4, pcDecType5, pcDecType6,
             pcDecType7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)))
+            })
+        }
     }
 }
 
@@ -170,11 +171,12 @@ pub unsafe extern "C" fn MCC_GetPtPAccTime(
             pdfAccTime6,
             pdfAccTime7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms))
+            })
+        }
     }
 }
 
@@ -227,10 +229,11 @@ pub unsafe extern "C" fn MCC_GetPtPDecTime(
             pdfDecTime6,
             pdfDecTime7,
         ];
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let p = unsafe { Out::each(p) }?;
-        let v = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms))?;
-        super::write_each(p, v);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms))
+            })
+        }
     }
 }

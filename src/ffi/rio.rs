@@ -8,21 +8,33 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::{finite, with_card, Out};
-use crate::card::rio::{set_ix, Set, ARIO_SLAVES, RIO_PORTS};
+use super::{with_card, write_out, Done};
+use crate::card::rio::{set_ix, Master, Set, ARIO_SLAVES, RIO_PORTS, SETS};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
+
+/// Runs `f` on set `wSet` of the card's RIO (`pick` = `Master::rio`) or ARIO
+/// (`Master::ario`) sets: `INITIAL_MOTION_ERR` before init whatever the arguments, then
+/// `PARAMETER_ERR` for a bad set or card.
+fn on_set<const N: usize, R>(
+    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    wSet: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut Set<N>) -> McclResult<R>,
+) -> McclResult<R> {
+    super::initialised()?;
+    let s = set_ix(wSet)?;
+    with_card(wCardIndex, |p| f(&mut pick(&mut p.rio)[s]))
+}
 
 fn rio<R>(
     wSet: WORD,
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<RIO_PORTS>) -> McclResult<R>,
 ) -> McclResult<R> {
-    super::initialised()?;
-    let s = set_ix(wSet)?;
-    with_card(wCardIndex, |p| f(&mut p.rio.rio[s]))
+    on_set(|m| &mut m.rio, wSet, wCardIndex, f)
 }
 
 fn ario<R>(
@@ -30,14 +42,27 @@ fn ario<R>(
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> McclResult<R>,
 ) -> McclResult<R> {
-    super::initialised()?;
-    let s = set_ix(wSet)?;
-    with_card(wCardIndex, |p| f(&mut p.rio.ario[s]))
+    on_set(|m| &mut m.ario, wSet, wCardIndex, f)
 }
 
-/// Runs a setter; `NO_ERR` on success.
-fn done(r: McclResult<()>) -> McclResult<c_int> {
-    r.map(|()| c::NO_ERR)
+/// Runs setter `f` on a RIO set (see [`rio`]); `NO_ERR`.
+fn rio_set<D: Done>(
+    wSet: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut Set<RIO_PORTS>) -> D,
+) -> McclResult<c_int> {
+    rio(wSet, wCardIndex, |s| f(s).done())?;
+    Ok(c::NO_ERR)
+}
+
+/// Runs setter `f` on an ARIO set (see [`ario`]); `NO_ERR`.
+fn ario_set<D: Done>(
+    wSet: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> D,
+) -> McclResult<c_int> {
+    ario(wSet, wCardIndex, |s| f(s).done())?;
+    Ok(c::NO_ERR)
 }
 
 /// Writes a value read by `get` to `p` (checked first).
@@ -46,11 +71,8 @@ fn done(r: McclResult<()>) -> McclResult<c_int> {
 /// `p` must be NULL or point to a writable T.
 unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<c_int> {
     super::initialised()?;
-    // SAFETY: NULL or writable, as this function's contract requires.
-    let p = unsafe { Out::new(p) }?;
-    let v = get()?;
-    p.write(v);
-    Ok(c::NO_ERR)
+    // SAFETY: forwarded under this function's contract.
+    unsafe { write_out(p, get) }
 }
 
 // ---- RIO ----
@@ -58,39 +80,25 @@ unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<
 /// Starts data transfer of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.control = true;
-            Ok(())
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.control = true) }
 }
 
 /// Stops data transfer of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.control = false;
-            Ok(())
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.control = false) }
 }
 
 /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { done(rio(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true))) }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true)) }
 }
 
 /// Stops data transfer with one slave of a RIO set.
 #[no_mangle]
 pub extern "C" fn MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_slave_control(wSlave, false)
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, false)) }
 }
 
 /// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
@@ -104,8 +112,9 @@ pub unsafe extern "C" fn MCC_GetRIOTransStatus(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) }
+    }
 }
 
 /// Master status of a RIO set: 1 normal, 0 error.
@@ -120,11 +129,8 @@ pub unsafe extern "C" fn MCC_GetRIOMasterStatus(
 ) -> c_int {
     ffi_boundary! {
         // SAFETY: forwarded under this function's contract.
-        unsafe {
-        read(pwStatus, || {
-            rio(wSet, wCardIndex, |s| Ok(s.master_status()))
-        })
-    } }
+        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.master_status()))) }
+    }
 }
 
 /// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
@@ -138,8 +144,9 @@ pub unsafe extern "C" fn MCC_GetRIOSlaveStatus(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) }
+    }
 }
 
 /// Failed transmitting slaves of a RIO set, bit n = slave n.
@@ -153,8 +160,9 @@ pub unsafe extern "C" fn MCC_GetRIOSlaveFail(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) }
+    }
 }
 
 /// The 16 inputs of a RIO port (bit n = input n), as last transferred.
@@ -169,8 +177,9 @@ pub unsafe extern "C" fn MCC_GetRIOInputValue(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) }
+    }
 }
 
 /// Sets the 16 outputs of a RIO port (sent at the next transfer).
@@ -181,7 +190,7 @@ pub extern "C" fn MCC_SetRIOOutputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { done(rio(wSet, wCardIndex, |s| s.set_output(wPort, wValue))) }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
 }
 
 /// The 16 outputs set for a RIO port.
@@ -196,21 +205,17 @@ pub unsafe extern "C" fn MCC_GetRIOOutputValue(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) }
+    }
 }
 
 /// Consecutive failed transfers a slave of the RIO set may have before the set reports
 /// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
-/// first failed transfer, 5 the sixth. Undocumented by the vendor; see the README.
+/// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
 #[no_mangle]
 pub extern "C" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_tolerance(wTime);
-            Ok(())
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_tolerance(wTime)) }
 }
 
 /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
@@ -222,11 +227,7 @@ pub extern "C" fn MCC_SetRIOTriggerType(
     wDigitalInput: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_trigger_type(wDigitalInput, wType)
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType)) }
 }
 
 /// An edge of the digital input calls the RIO routine with `RDIn` set.
@@ -236,11 +237,7 @@ pub extern "C" fn MCC_EnableRIOInputTrigger(
     wDigitalInput: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_input_trigger(wDigitalInput, true)
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, true)) }
 }
 
 /// The digital input no longer calls the RIO routine.
@@ -250,44 +247,31 @@ pub extern "C" fn MCC_DisableRIOInputTrigger(
     wDigitalInput: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_input_trigger(wDigitalInput, false)
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, false)) }
 }
 
 /// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
 /// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
 #[no_mangle]
 pub extern "C" fn MCC_EnableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_trans_trigger(true);
-            Ok(())
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(true)) }
 }
 
 /// Transfer errors no longer call the RIO routine.
 #[no_mangle]
 pub extern "C" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(rio(wSet, wCardIndex, |s| {
-            s.set_trans_trigger(false);
-            Ok(())
-        }))
-    }
+    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(false)) }
 }
 
 // ---- ARIO ----
 
-fn ario_timing(
+fn ario_timing<D: Done>(
     wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> McclResult<()>,
+    f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> D,
 ) -> McclResult<c_int> {
     super::initialised()?;
-    done(with_card(wCardIndex, |p| f(&mut p.rio.ario_timing)))
+    with_card(wCardIndex, |p| f(&mut p.rio.ario_timing).done())?;
+    Ok(c::NO_ERR)
 }
 
 /// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
@@ -298,14 +282,8 @@ fn ario_timing(
 pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         super::initialised()?;
-        let r = finite(dfUpdateRate)?;
-        // The cycle lasts 1 / r: at most the longest time (r >= 2.33e-7 Hz).
-        if r <= 0.0 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        crate::config::range::time_ms(1000.0 / r)?;
         let s = set_ix(wSet)?;
-        ario_timing(wCardIndex, |t| t.set_update_rate(s, r))
+        ario_timing(wCardIndex, |t| t.set_update_rate(s, dfUpdateRate))
     }
 }
 
@@ -325,32 +303,19 @@ pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex
 /// of the card. The cycle count restarts at the call.
 #[no_mangle]
 pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        ario_timing(wCardIndex, |t| {
-            t.set_node_delay(dwDelay);
-            Ok(())
-        })
-    }
+    ffi_boundary! { ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay)) }
 }
 
 /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
 #[no_mangle]
 pub extern "C" fn MCC_EnableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(ario(wSet, wCardIndex, |s| {
-            s.set_slave_control(wSlave, true)
-        }))
-    }
+    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true)) }
 }
 
 /// Stops data transfer with an ARIO slave.
 #[no_mangle]
 pub extern "C" fn MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        done(ario(wSet, wCardIndex, |s| {
-            s.set_slave_control(wSlave, false)
-        }))
-    }
+    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, false)) }
 }
 
 /// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
@@ -365,11 +330,8 @@ pub unsafe extern "C" fn MCC_GetARIOTransStatus(
 ) -> c_int {
     ffi_boundary! {
         // SAFETY: forwarded under this function's contract.
-        unsafe {
-        read(pwStatus, || {
-            ario(wSet, wCardIndex, |s| Ok(s.trans_status()))
-        })
-    } }
+        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.trans_status()))) }
+    }
 }
 
 /// ARIO master status: 1 normal, 0 error.
@@ -384,11 +346,8 @@ pub unsafe extern "C" fn MCC_GetARIOMasterStatus(
 ) -> c_int {
     ffi_boundary! {
         // SAFETY: forwarded under this function's contract.
-        unsafe {
-        read(pwStatus, || {
-            ario(wSet, wCardIndex, |s| Ok(s.master_status()))
-        })
-    } }
+        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.master_status()))) }
+    }
 }
 
 /// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
@@ -403,11 +362,8 @@ pub unsafe extern "C" fn MCC_GetARIOSlaveStatus(
 ) -> c_int {
     ffi_boundary! {
         // SAFETY: forwarded under this function's contract.
-        unsafe {
-        read(pwStatus, || {
-            ario(wSet, wCardIndex, |s| Ok(s.slave_status()))
-        })
-    } }
+        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_status()))) }
+    }
 }
 
 /// Failed transmitting ARIO slaves, bit n = slave n.
@@ -421,8 +377,9 @@ pub unsafe extern "C" fn MCC_GetARIOSlaveFail(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) }
+    }
 }
 
 /// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
@@ -437,8 +394,9 @@ pub unsafe extern "C" fn MCC_GetARIOInputValue(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) }
+    }
 }
 
 /// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
@@ -449,7 +407,7 @@ pub extern "C" fn MCC_SetARIOOutputValue(
     wPort: WORD,
     wCardIndex: WORD,
 ) -> c_int {
-    ffi_boundary! { done(ario(wSet, wCardIndex, |s| s.set_output(wPort, wValue))) }
+    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
 }
 
 /// The 16 outputs set for ARIO slave `wPort`.
@@ -464,6 +422,7 @@ pub unsafe extern "C" fn MCC_GetARIOOutputValue(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) } }
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) }
+    }
 }

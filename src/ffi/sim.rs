@@ -3,7 +3,9 @@
 //! move a sensor, read what the card outputs and where the motor is. Every call checks
 //! its arguments like the vendor functions.
 
-use super::{card, channel, finite, with_machine_channel, Card, Channel, Out};
+use super::{
+    card, channel, finite, with_machine, with_machine_channel, write_out, Card, Channel, Out,
+};
 use crate::error::McclError;
 use crate::machine::Sensor;
 use crate::system;
@@ -80,14 +82,7 @@ pub extern "C" fn MCCL_SimPlaceSensor(
         if s == Sensor::Home && a > b {
             return Err(McclError::Parameter);
         }
-        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
-            // A sensor where the channel could never count to is refused.
-            let f = ch.factor();
-            crate::config::range::position(a, f)?;
-            crate::config::range::position(b, f)?;
-            ch.place(s, a, b);
-            Ok(())
-        })?;
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| ch.place_sensor(s, a, b))?;
         Ok(c::NO_ERR)
     }
 }
@@ -99,10 +94,10 @@ pub extern "C" fn MCCL_SimSetEmergencyStop(wCardIndex: WORD, nLevel: c_int) -> c
         if nLevel != 0 && nLevel != 1 {
             return Err(McclError::Parameter);
         }
-        let shared = system::active()?;
-        let cd = shared.card(card(wCardIndex)?)?;
-        shared.machine.lock().emergency[cd] = nLevel == 1;
-        Ok(c::NO_ERR)
+        with_machine(Card(wCardIndex), |m, cd| {
+            m.emergency[cd] = nLevel == 1;
+            Ok(c::NO_ERR)
+        })
     }
 }
 
@@ -120,25 +115,23 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pnValue = unsafe { Out::new(pnValue) }?;
-        let shared = system::active()?;
-        let cd = shared.card(cd)?;
-        let v = match nOutput {
-            MCCL_SIM_OUT_SERVO => {
-                // A trigger-out on the point overrides it while active (1 = servo off).
-                let trig = shared.machine.lock().triggers[cd].trig_level[ch.0];
-                match trig {
-                    Some(off) => !off,
-                    None => shared.servo_on[cd].load(Ordering::Acquire) >> ch.0 & 1 == 1,
-                }
-            }
-            MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
-            MCCL_SIM_OUT_LED => shared.machine.lock().led_lit(cd, ch.0),
-            _ => return Err(McclError::Parameter),
-        };
-        pnValue.write(c_int::from(v));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pnValue, || {
+                let shared = system::active()?;
+                let cd = shared.card(cd)?;
+                let v = match nOutput {
+                    MCCL_SIM_OUT_SERVO => {
+                        let bits = shared.servo_on[cd].load(Ordering::Acquire);
+                        shared.machine.lock().servo_output(cd, ch.0, bits)
+                    }
+                    MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
+                    MCCL_SIM_OUT_LED => shared.machine.lock().led_lit(cd, ch.0),
+                    _ => return Err(McclError::Parameter),
+                };
+                Ok(c_int::from(v))
+            })
+        }
     }
 }
 
@@ -174,12 +167,8 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
 #[no_mangle]
 pub unsafe extern "C" fn MCCL_SimGetTime(pdfMs: *mut f64) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pdfMs = unsafe { Out::new(pdfMs) }?;
-        let shared = system::active()?;
-        let ms = shared.clock.now_ns() as f64 / 1e6;
-        pdfMs.write(ms);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_out(pdfMs, || Ok(system::active()?.clock.now_ns() as f64 / 1e6)) }
     }
 }
 
@@ -254,11 +243,8 @@ fn stats_of(
 #[no_mangle]
 pub unsafe extern "C" fn MCCL_SimGetClockStats(pstStats: *mut MCCL_CLOCK_STATS) -> c_int {
     ffi_boundary! {
-        // SAFETY: the caller passes NULL (refused here) or a writable struct.
-        let pstStats = unsafe { Out::new(pstStats) }?;
-        let shared = system::active()?;
-        pstStats.write(clock_stats(&shared.clock));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_out(pstStats, || Ok(clock_stats(&system::active()?.clock))) }
     }
 }
 

@@ -1,6 +1,6 @@
 //! Motion status (user manual §2.6.5; vendor header "Motion Status").
 
-use super::Out;
+use super::write_out;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -35,11 +35,13 @@ pub unsafe extern "C" fn MCC_GetCurCommand(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pstCurCommand = unsafe { Out::new(pstCurCommand) }?;
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        pstCurCommand.write(s.cmd);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pstCurCommand, || {
+                let s = system::active()?.snapshot(wGroupIndex)?;
+                Ok(s.cmd)
+            })
+        }
     }
 }
 
@@ -50,11 +52,13 @@ pub unsafe extern "C" fn MCC_GetCurCommand(
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetCommandCount(pnCmdCount: *mut c_int, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pnCmdCount = unsafe { Out::new(pnCmdCount) }?;
-        let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
-        pnCmdCount.write(c_int::try_from(n).unwrap_or(c_int::MAX));
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pnCmdCount, || {
+                let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
+                Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
+            })
+        }
     }
 }
 
@@ -93,11 +97,13 @@ pub extern "C" fn MCC_SetCommandIndex(
 #[no_mangle]
 pub unsafe extern "C" fn MCC_GetCommandIndex(wIndex: *mut WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let wIndex = unsafe { Out::new(wIndex) }?;
-        let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
-        wIndex.write(n as WORD);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(wIndex, || {
+                let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
+                Ok(n as WORD)
+            })
+        }
     }
 }
 
@@ -140,21 +146,23 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
 ) -> c_int {
     ffi_boundary! {
         let (cd, ch) = (super::card(wCardIndex)?, super::channel(wChannel)?);
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pwStockCount = unsafe { Out::new(pwStockCount) }?;
-        let shared = system::active()?;
-        shared.card(cd)?;
-        let moving = shared.channel_moving(cd.0, ch.0);
-        let depth = shared
-            .max_pulse_stock
-            .load(std::sync::atomic::Ordering::Relaxed);
-        let n = if moving {
-            depth.min(u32::from(WORD::MAX)) as WORD
-        } else {
-            0
-        };
-        pwStockCount.write(n);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStockCount, || {
+                let shared = system::active()?;
+                shared.card(cd)?;
+                let moving = shared.channel_moving(cd.0, ch.0);
+                let depth = shared
+                    .max_pulse_stock
+                    .load(std::sync::atomic::Ordering::Relaxed);
+                let n = if moving {
+                    depth.min(u32::from(WORD::MAX)) as WORD
+                } else {
+                    0
+                };
+                Ok(n)
+            })
+        }
     }
 }
 

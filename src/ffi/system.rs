@@ -1,7 +1,7 @@
 //! System management (user manual §2.4–2.5; vendor header "System Management").
 
-use super::{card, channel, read_in, Out};
-use crate::config::{self, GroupDef};
+use super::{card, channel, get_channel_config, set_channel_config};
+use crate::config::{self, Config, GroupDef};
 use crate::error::McclError;
 use crate::error::McclResult;
 use crate::system::{self, InitKind};
@@ -45,7 +45,7 @@ pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
 pub extern "C" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
     ffi_boundary! {
         let v = config::range::speed(dfMaxSpeed)?;
-        system::with(|s| s.config.sys_max_speed = v);
+        system::config(|c| c.sys_max_speed = v);
         Ok(c::NO_ERR)
     }
 }
@@ -53,7 +53,7 @@ pub extern "C" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
 /// The upper limit of the general-motion feed speed (UU/s).
 #[no_mangle]
 pub extern "C" fn MCC_GetSysMaxSpeed() -> f64 {
-    ffi_boundary! { Ok(system::with(|s| s.config.sys_max_speed)) }
+    ffi_boundary! { Ok(system::config(|c| c.sys_max_speed)) }
 }
 
 /// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
@@ -69,16 +69,8 @@ pub unsafe extern "C" fn MCC_SetMacParam(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL is rejected; otherwise the caller passes a SYS_MAC_PARAM.
-        let p = unsafe { read_in(pstMacParam) }?;
-        config::validate_mac_param(&p)?;
-        system::with(|s| {
-            // The channel's go-home offset must stay a position it can count.
-            config::validate_home_config(&s.config.home[cd.0][ch.0], &p)?;
-            s.config.mac[cd.0][ch.0] = p;
-            Ok(c::NO_ERR)
-        })
+        // SAFETY: forwarded under this function's contract.
+        unsafe { set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param) }
     }
 }
 
@@ -94,12 +86,8 @@ pub unsafe extern "C" fn MCC_GetMacParam(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pstMacParam = unsafe { Out::new(pstMacParam) }?;
-        let p = system::with(|s| s.config.mac[cd.0][ch.0]);
-        pstMacParam.write(p);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac) }
     }
 }
 
@@ -115,12 +103,10 @@ pub unsafe extern "C" fn MCC_SetEncoderConfig(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL is rejected; otherwise the caller passes a SYS_ENCODER_CONFIG.
-        let e = unsafe { read_in(pstEncoderConfig) }?;
-        config::validate_encoder_config(&e)?;
-        system::with(|s| s.config.encoder[cd.0][ch.0] = e);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config)
+        }
     }
 }
 
@@ -136,12 +122,8 @@ pub unsafe extern "C" fn MCC_GetEncoderConfig(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pstEncoderConfig = unsafe { Out::new(pstEncoderConfig) }?;
-        let e = system::with(|s| s.config.encoder[cd.0][ch.0]);
-        pstEncoderConfig.write(e);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder) }
     }
 }
 
@@ -157,14 +139,8 @@ pub unsafe extern "C" fn MCC_SetHomeConfig(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL is rejected; otherwise the caller passes a SYS_HOME_CONFIG.
-        let h = unsafe { read_in(pstHomeConfig) }?;
-        system::with(|s| {
-            config::validate_home_config(&h, &s.config.mac[cd.0][ch.0])?;
-            s.config.home[cd.0][ch.0] = h;
-            Ok(c::NO_ERR)
-        })
+        // SAFETY: forwarded under this function's contract.
+        unsafe { set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config) }
     }
 }
 
@@ -180,12 +156,8 @@ pub unsafe extern "C" fn MCC_GetHomeConfig(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        // SAFETY: NULL or writable, as this function's contract requires.
-        let pstHomeConfig = unsafe { Out::new(pstHomeConfig) }?;
-        let h = system::with(|s| s.config.home[cd.0][ch.0]);
-        pstHomeConfig.write(h);
-        Ok(c::NO_ERR)
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home) }
     }
 }
 
@@ -384,9 +356,7 @@ pub extern "C" fn MCC_UpdateParam() -> c_int {
 pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
     ffi_boundary! {
         let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
-        Ok(config::conv_factor(&system::with(|s| {
-            s.mac_in_effect(cd, ch)
-        })))
+        Ok(system::with(|s| s.conv_factor(cd, ch)))
     }
 }
 

@@ -1,28 +1,26 @@
 //! Timer and watchdog (user manual §2.13; examples manual §31–32; vendor header "Timer &
 //! Watch Dog Control"). Units: the timer counts system clocks of 10 ns; the watchdog
-//! counts timer periods (see `crate::card::timer` and the README).
+//! counts timer periods (see `crate::card::timer` and docs/compatibility.md).
 
-use super::with_card;
+use super::{with_card, Done};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
 
-fn on(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::Peripherals)) -> McclResult<c_int> {
-    with_card(wCardIndex, |p| {
-        f(p);
-        Ok(c::NO_ERR)
-    })
+fn on<D: Done>(
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut crate::card::Peripherals) -> D,
+) -> McclResult<c_int> {
+    with_card(wCardIndex, |p| f(p).done())?;
+    Ok(c::NO_ERR)
 }
 
 /// Sets the timer's period in system clocks of 10 ns (1..=2^32-1; 0 is `PARAMETER_ERR`).
 /// Counting restarts. Before any call the period is 100 (1 µs).
 #[no_mangle]
 pub extern "C" fn MCC_SetTimer(dwValue: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_card(wCardIndex, |p| p.timer.set_period(dwValue))?;
-        Ok(c::NO_ERR)
-    }
+    ffi_boundary! { on(wCardIndex, |p| p.timer.set_period(dwValue)) }
 }
 
 /// Starts the timer (counting from 0).
@@ -54,19 +52,13 @@ pub extern "C" fn MCC_DisableTimerTrigger(wCardIndex: WORD) -> c_int {
 /// default 1 µs, microseconds.
 #[no_mangle]
 pub extern "C" fn MCC_SetWatchDogTimer(wValue: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_card(wCardIndex, |p| p.watchdog.set_compare(wValue))?;
-        Ok(c::NO_ERR)
-    }
+    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_compare(wValue)) }
 }
 
 /// Sets the length of the watchdog's reset signal in system clocks (1..=2^32-1).
 #[no_mangle]
 pub extern "C" fn MCC_SetWatchDogResetPeriod(dwValue: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_card(wCardIndex, |p| p.watchdog.set_reset_period(dwValue))?;
-        Ok(c::NO_ERR)
-    }
+    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_reset_period(dwValue)) }
 }
 
 /// Starts the watchdog (counting from 0). It counts while the timer runs; when the count

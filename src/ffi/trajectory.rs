@@ -19,6 +19,7 @@ pub extern "C" fn MCC_TimeDelay(dwTime: DWORD) {
 }
 
 use super::{queue, with_group};
+use crate::card::rio::{set_ix, ARIO_SLAVES, RIO_PORTS};
 use crate::engine::command::Plan;
 use crate::error::McclError;
 use crate::vendor::consts as c;
@@ -202,8 +203,7 @@ pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
 #[no_mangle]
 pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
-        let v = crate::config::range::speed(dfSpeed)?;
-        let v = v.min(system::with(|s| s.config.sys_max_speed));
+        let v = super::motion::feed_speed(dfSpeed)?;
         with_group(wGroupIndex, |g| {
             g.change_feed_speed(v);
             Ok(v)
@@ -213,6 +213,31 @@ pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
 
 fn queue_output(wGroupIndex: WORD, o: crate::engine::command::Output) -> McclResult<c_int> {
     queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Output(o))))
+}
+
+/// Queues a change of the outputs of RIO port (`ario` false: set 0..1, port 0..3) or
+/// ARIO slave (`ario` true: slave 0..31 in `wPort`) `wPort` of set `wSet`.
+fn queue_remote(
+    ario: bool,
+    wBitMask: WORD,
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wGroupIndex: WORD,
+) -> McclResult<c_int> {
+    let ports = if ario { ARIO_SLAVES } else { RIO_PORTS };
+    set_ix(wSet)?;
+    if usize::from(wPort) >= ports {
+        return Err(McclError::Parameter);
+    }
+    let o = crate::engine::command::Output::Remote {
+        ario,
+        set: wSet,
+        port: wPort,
+        mask: wBitMask,
+        value: wValue,
+    };
+    queue_output(wGroupIndex, o)
 }
 
 /// Queues a change of the card's local outputs (points 0..7, the servo-on outputs): the
@@ -225,17 +250,13 @@ pub extern "C" fn MCC_QueueLIOOutputValue(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-    if wBitMask > 0xFF {
-            return Err(crate::error::McclError::Parameter);
-        }
-        queue_output(
-            wGroupIndex,
-            crate::engine::command::Output::Local {
-                mask: wBitMask,
-                value: wValue,
-            },
-        )
-        }
+        super::bits(wBitMask, 0xFF)?;
+        let o = crate::engine::command::Output::Local {
+            mask: wBitMask,
+            value: wValue,
+        };
+        queue_output(wGroupIndex, o)
+    }
 }
 
 /// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
@@ -248,21 +269,7 @@ pub extern "C" fn MCC_QueueRIOOutputValue(
     wPort: WORD,
     wGroupIndex: WORD,
 ) -> c_int {
-    ffi_boundary! {
-    if wSet > 1 || wPort > 3 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        queue_output(
-            wGroupIndex,
-            crate::engine::command::Output::Remote {
-                ario: false,
-                set: wSet,
-                port: wPort,
-                mask: wBitMask,
-                value: wValue,
-            },
-        )
-        }
+    ffi_boundary! { queue_remote(false, wBitMask, wValue, wSet, wPort, wGroupIndex) }
 }
 
 /// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
@@ -275,19 +282,5 @@ pub extern "C" fn MCC_QueueARIOOutputValue(
     wPort: WORD,
     wGroupIndex: WORD,
 ) -> c_int {
-    ffi_boundary! {
-    if wSet > 1 || wPort > 31 {
-            return Err(crate::error::McclError::Parameter);
-        }
-        queue_output(
-            wGroupIndex,
-            crate::engine::command::Output::Remote {
-                ario: true,
-                set: wSet,
-                port: wPort,
-                mask: wBitMask,
-                value: wValue,
-            },
-        )
-        }
+    ffi_boundary! { queue_remote(true, wBitMask, wValue, wSet, wPort, wGroupIndex) }
 }

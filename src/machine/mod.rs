@@ -9,6 +9,7 @@ pub mod compensation;
 pub mod triggers;
 
 use crate::config::{encoder_multiplier, AXES};
+use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
 use compensation::Compensation;
@@ -329,6 +330,22 @@ impl Channel {
         self.enc_offset = v - self.raw_count();
     }
 
+    /// `MCC_SetENCInputRate`: counts per encoder cycle (1, 2 or 4; 3 also means x4);
+    /// the count keeps its value at the change.
+    pub fn set_input_rate(&mut self, rate: u16) {
+        let v = self.encoder();
+        self.input_rate = Some(rate);
+        self.set_encoder(v);
+    }
+
+    /// `MCC_SetENCGearRate`: counts per motor pulse at x4; the count keeps its value at
+    /// the change.
+    pub fn set_gear_rate(&mut self, r: f64) {
+        let v = self.encoder();
+        self.gear_rate = r;
+        self.set_encoder(v);
+    }
+
     /// New mechanism and encoder parameters (`MCC_UpdateParam`).
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
         let count = self.encoder();
@@ -351,6 +368,17 @@ impl Channel {
         self.update_sensors();
     }
 
+    /// `MCCL_SimPlaceSensor`: [`Channel::place`], refused (`PARAMETER_ERR`, nothing
+    /// changed) where the channel could never count to: `from` and `to` must be
+    /// positions of the channel ([`crate::config::range::position`]).
+    pub fn place_sensor(&mut self, s: Sensor, from: f64, to: f64) -> McclResult<()> {
+        let f = self.factor();
+        crate::config::range::position(from, f)?;
+        crate::config::range::position(to, f)?;
+        self.place(s, from, to);
+        Ok(())
+    }
+
     /// Moves a sensor: the home region, or a limit switch's position (`from`).
     pub fn place(&mut self, s: Sensor, from: f64, to: f64) {
         match s {
@@ -364,6 +392,26 @@ impl Channel {
     /// Sensor inputs after the program's wiring setting (NO/NC/unused).
     pub fn levels(&self) -> SensorLevels {
         self.levels
+    }
+
+    /// Limit switch `side` (0: +, 1: −) as the wiring setting reads it now.
+    pub fn limit_switch(&self, side: usize) -> bool {
+        if side == 0 {
+            self.levels.plus
+        } else {
+            self.levels.minus
+        }
+    }
+
+    /// Whether limit switch `side` has been active since its latch was last cleared.
+    pub fn latched_limit(&self, side: usize) -> bool {
+        self.latched[side]
+    }
+
+    /// Clears the latch of limit switch `side`; it latches again at once while the
+    /// switch is active.
+    pub fn clear_latched_limit(&mut self, side: usize) {
+        self.latched[side] = self.limit_switch(side);
     }
 
     /// Sensor inputs of the previous step (for edge detection).
@@ -538,6 +586,33 @@ pub struct CardSettings {
     pub error_threshold: [(u16, u16); AXES],
 }
 
+/// A loop gain of a card's channels (index in [`CardSettings::gains`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Gain {
+    /// Proportional (`MCC_SetPGain`).
+    P = 0,
+    /// Integral (`MCC_SetIGain`).
+    I = 1,
+    /// Derivative (`MCC_SetDGain`).
+    D = 2,
+    /// Feed-forward (`MCC_SetFGain`).
+    FeedForward = 3,
+}
+
+/// One gain for each of a card's 8 channels, each 0..255.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Gains([u16; AXES]);
+
+impl Gains {
+    /// The gains `v` (`PARAMETER_ERR` when one is above 255).
+    pub fn new(v: [u16; AXES]) -> McclResult<Gains> {
+        if v.iter().any(|&g| g > 255) {
+            return Err(crate::error::McclError::Parameter);
+        }
+        Ok(Gains(v))
+    }
+}
+
 /// An input filter clock of a card (index in [`CardSettings::filters`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FilterClock {
@@ -552,6 +627,17 @@ pub enum FilterClock {
 }
 
 impl CardSettings {
+    /// Keeps gain `k` of every channel (kept and reported: the simulated plant is set by
+    /// the configuration).
+    pub fn set_gains(&mut self, k: Gain, g: Gains) {
+        self.gains[k as usize] = g.0;
+    }
+
+    /// Gain `k` of every channel.
+    pub fn gains(&self, k: Gain) -> [u16; AXES] {
+        self.gains[k as usize]
+    }
+
     /// Keeps filter clock `k` (any value: the manuals give no range).
     pub fn set_filter_clock(&mut self, k: FilterClock, value: u16) {
         self.filters[k as usize] = value;
@@ -626,6 +712,32 @@ impl Machine {
             .get(cd)
             .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
             .unwrap_or(own)
+    }
+
+    /// `MCC_UpdateCompParam`: every channel with a compensation table set in `comp`
+    /// (per card, per channel) takes it; the others keep theirs.
+    pub fn apply_compensation(&mut self, comp: &[[Option<SYS_COMP_PARAM>; AXES]]) {
+        for (chans, tables) in self.cards.iter_mut().zip(comp) {
+            for (chan, p) in chans.iter_mut().zip(tables) {
+                if let Some(p) = p {
+                    chan.set_compensation(p);
+                }
+            }
+        }
+    }
+
+    /// The servo-on output of channel `ch` of card `cd` (`servo_on`: the card's servo-on
+    /// bits, bit n channel n): while a trigger-out holds the point, its trigger value
+    /// (1 = servo off) overrides it.
+    pub fn servo_output(&self, cd: usize, ch: usize, servo_on: u32) -> bool {
+        match self
+            .triggers
+            .get(cd)
+            .and_then(|t| t.trig_level.get(ch).copied().flatten())
+        {
+            Some(off) => !off,
+            None => servo_on >> ch & 1 == 1,
+        }
     }
 
     /// A machine for `n` cards from the parameters in effect and the specs.

@@ -6,6 +6,7 @@
 
 use super::{Channel, SensorLevels};
 use crate::config::AXES;
+use crate::error::{McclError, McclResult};
 use crate::interrupt::Interrupt;
 use crate::vendor::consts as c;
 use std::collections::VecDeque;
@@ -81,7 +82,28 @@ pub enum TrigOutKind {
     Led,
 }
 
+/// One setting of a trigger-out point (`MCC_SetLIOTrigOut*`, `MCC_SetLedTrigOut*`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TrigOutSetting {
+    /// Trigger-out on or off.
+    Enabled(bool),
+    /// The value the point takes while triggered.
+    Value(bool),
+    /// The compares (bit n: channel n) that trigger the point.
+    Source(u16),
+}
+
 impl CardTriggers {
+    /// Changes one setting of trigger-out point `point` (0..7) of `kind`.
+    pub fn set_trig_out(&mut self, kind: TrigOutKind, point: usize, s: TrigOutSetting) {
+        let o = &mut self.trig_outs(kind)[point];
+        match s {
+            TrigOutSetting::Enabled(on) => o.enabled = on,
+            TrigOutSetting::Value(v) => o.value = v,
+            TrigOutSetting::Source(src) => o.source = src,
+        }
+    }
+
     /// The trigger-out settings of `kind`'s points.
     pub fn trig_outs(&mut self, kind: TrigOutKind) -> &mut [TrigOut; AXES] {
         match kind {
@@ -123,6 +145,90 @@ impl CardTriggers {
         for ch in (0..AXES).filter(|ch| src & (1 << ch) != 0) {
             self.stock[ch].clear();
         }
+    }
+}
+
+/// The compare values start, start + delta, ... up to end (inclusive) of
+/// `MCC_SetENCCompValueTab`: a delta of 0, or one pointing away from end, is refused
+/// (`PARAMETER_ERR`).
+#[derive(Debug, Clone, Copy)]
+pub struct CompareTable {
+    start: i64,
+    delta: i64,
+    count: i64,
+}
+
+impl CompareTable {
+    /// The table from `start` to `end` in steps of `delta` (counts already in range).
+    pub fn new(start: i64, end: i64, delta: i64) -> McclResult<CompareTable> {
+        if delta == 0 || (end - start).signum() * delta.signum() < 0 {
+            return Err(McclError::Parameter);
+        }
+        Ok(CompareTable {
+            start,
+            delta,
+            count: (end - start) / delta + 1,
+        })
+    }
+}
+
+impl CardTriggers {
+    /// `MCC_SetENCLatchType`: sets channel `ch`'s latch type and re-arms its latch.
+    pub fn set_latch_type(&mut self, ch: usize, t: u16) {
+        self.latch_type[ch] = t;
+        self.latch[ch] = None;
+    }
+
+    /// `MCC_SetENCLatchSource`: sets channel `ch`'s latch sources and re-arms its latch.
+    pub fn set_latch_source(&mut self, ch: usize, src: u32) {
+        self.latch_source[ch] = src;
+        self.latch[ch] = None;
+    }
+
+    /// The latched count of channel `ch` (0 until something was latched).
+    pub fn latch_value(&self, ch: usize) -> i64 {
+        self.latch[ch].unwrap_or(0)
+    }
+
+    /// Whether an index pulse of channel `ch` passed since the last read; the read
+    /// clears it.
+    pub fn take_index_status(&mut self, ch: usize) -> bool {
+        std::mem::take(&mut self.index_status[ch])
+    }
+
+    /// Adds compare value `v` to channel `ch`'s stock (`BUFFER_FULL_ERR` when full).
+    pub fn push_compare(&mut self, ch: usize, v: i64) -> McclResult<()> {
+        if self.stock[ch].len() >= MAX_COMPARE_STOCK {
+            return Err(McclError::BufferFull);
+        }
+        self.stock[ch].push_back(v);
+        Ok(())
+    }
+
+    /// Adds every value of `t` to channel `ch`'s stock, or none (`BUFFER_FULL_ERR`) when
+    /// they do not all fit.
+    pub fn push_compare_table(&mut self, ch: usize, t: &CompareTable) -> McclResult<()> {
+        if self.stock[ch].len() as i64 + t.count > MAX_COMPARE_STOCK as i64 {
+            return Err(McclError::BufferFull);
+        }
+        for k in 0..t.count {
+            self.stock[ch].push_back(t.start + k * t.delta);
+        }
+        Ok(())
+    }
+
+    /// The armed compare value of channel `ch` (0 when its stock is empty).
+    pub fn armed_compare(&self, ch: usize) -> i64 {
+        self.stock[ch].front().copied().unwrap_or(0)
+    }
+
+    /// Turns channel `ch`'s compare trigger on or off; turning it on rebases the
+    /// reference counts on `chans`, so values already passed do not fire.
+    pub fn set_compare_trigger(&mut self, ch: usize, on: bool, chans: &[Channel; AXES]) {
+        if on && !self.comp_enabled[ch] {
+            self.rebase(chans);
+        }
+        self.comp_enabled[ch] = on;
     }
 }
 
@@ -393,6 +499,40 @@ mod tests {
                 default_encoder_config(),
             )
         })
+    }
+
+    #[test]
+    fn compare_table_is_all_or_nothing() {
+        // 0, 3, 6, 9: (10 - 0) / 3 + 1 = 4 values; 10 itself is not reached.
+        let mut t = CardTriggers::default();
+        t.push_compare_table(1, &CompareTable::new(0, 10, 3).unwrap())
+            .unwrap();
+        assert_eq!(t.stock[1].iter().copied().collect::<Vec<_>>(), [0, 3, 6, 9]);
+        assert_eq!(t.armed_compare(1), 0);
+        // Downwards with a negative delta: 5, 3, 1.
+        t.push_compare_table(2, &CompareTable::new(5, 0, -2).unwrap())
+            .unwrap();
+        assert_eq!(t.stock[2].iter().copied().collect::<Vec<_>>(), [5, 3, 1]);
+        // A zero delta, or one pointing away from the end, is refused.
+        assert_eq!(
+            CompareTable::new(0, 10, 0).unwrap_err(),
+            McclError::Parameter
+        );
+        assert_eq!(
+            CompareTable::new(0, 10, -1).unwrap_err(),
+            McclError::Parameter
+        );
+        // One value over the stock's size: nothing is added. The stock of channel 1
+        // holds 4, so MAX - 3 more values (0..=MAX - 4) would make MAX + 1.
+        let n = MAX_COMPARE_STOCK as i64 - 3;
+        let big = CompareTable::new(0, n - 1, 1).unwrap();
+        assert_eq!(t.push_compare_table(1, &big), Err(McclError::BufferFull));
+        assert_eq!(t.stock_count(1), 4);
+        // MAX - 4 values fill it exactly.
+        let fits = CompareTable::new(0, n - 2, 1).unwrap();
+        t.push_compare_table(1, &fits).unwrap();
+        assert_eq!(t.stock_count(1), MAX_COMPARE_STOCK);
+        assert_eq!(t.push_compare(1, 7), Err(McclError::BufferFull));
     }
 
     #[test]

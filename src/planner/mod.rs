@@ -22,6 +22,7 @@
 mod axis1d;
 mod blend;
 pub mod compose;
+mod cone;
 mod path;
 mod profile;
 mod ptp;
@@ -32,6 +33,7 @@ mod tests;
 
 pub use axis1d::Axis1D;
 pub use blend::{blended_position, blended_velocity, PathMove};
+pub use cone::ConeSeg;
 pub use path::{ArcSeg, LineSeg, Path, Plane};
 pub use profile::Profile;
 pub use ptp::{ptp_axis_speed, PtpMove};

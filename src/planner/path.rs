@@ -1,6 +1,7 @@
 //! Geometry of general-motion segments (line, arc, circle, helix), each
 //! parameterised by the path length the feed speed applies to.
 
+use super::cone::ConeSeg;
 use super::{check_all_finite, check_finite, Axes, PlanError, NUM_AXES};
 use std::f64::consts::TAU;
 
@@ -86,6 +87,8 @@ pub enum Path {
     Arc(ArcSeg),
     /// Helix (`MCC_Helical*`): an arc whose normal axis moves linearly with angle.
     Helix(ArcSeg),
+    /// Conical helix (`MCC_Cone*`): a helix whose radius changes linearly with angle.
+    Cone(ConeSeg),
 }
 
 fn sub3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
@@ -424,6 +427,25 @@ impl Path {
         Ok(Path::Helix(seg))
     }
 
+    /// Conical helix (`MCC_ConeXY_Z(cx, cy, pos, pitch, rate, dir)` etc.): from `start`
+    /// about `center` until the normal axis reaches `end_n`, `|end_n − start_n| / |pitch|`
+    /// turns, counter-clockwise when `ccw`, the radius changing by `center_rate` per
+    /// turn; see [`ConeSeg`].
+    ///
+    /// Errors: `BadArc` for a start on the center, `BadParameter` for a zero pitch, a
+    /// radius that would fall below 0, NaN/inf.
+    pub fn cone(
+        plane: Plane,
+        start: &Axes,
+        center: [f64; 2],
+        end_n: f64,
+        pitch: f64,
+        center_rate: f64,
+        ccw: bool,
+    ) -> Result<Path, PlanError> {
+        ConeSeg::new(plane, start, center, end_n, pitch, center_rate, ccw).map(Path::Cone)
+    }
+
     /// Helix ending at normal-axis position `end_n` (the obsolete
     /// `MCC_HelicaXY_Z(cx, cy, pos, pitch, dir)`): it turns `|end_n − start_n| / |pitch|`
     /// turns, counter-clockwise when `ccw`, and ends exactly at `end_n`.
@@ -459,6 +481,7 @@ impl Path {
         match self {
             Path::Line(l) => (&l.start, &l.end, l.length),
             Path::Arc(a) | Path::Helix(a) => (&a.start, &a.end, a.length),
+            Path::Cone(c) => (c.start(), c.end(), c.length()),
         }
     }
 
@@ -484,6 +507,9 @@ impl Path {
     /// the circle's reach along the axis (exact for a full circle). Used to refuse paths
     /// that leave the counters' range.
     pub fn extent(&self) -> [(f64, f64); NUM_AXES] {
+        if let Path::Cone(c) = self {
+            return c.extent();
+        }
         let (start, end, _) = self.common();
         let mut e: [(f64, f64); NUM_AXES] =
             std::array::from_fn(|i| (start[i].min(end[i]), start[i].max(end[i])));
@@ -504,6 +530,7 @@ impl Path {
         match self {
             Path::Line(_) => None,
             Path::Arc(a) | Path::Helix(a) => Some(a.sweep >= 0.0),
+            Path::Cone(c) => Some(c.sweep() >= 0.0),
         }
     }
 
@@ -520,6 +547,7 @@ impl Path {
         let f = s / len;
         let mut p = [0.0; NUM_AXES];
         match self {
+            Path::Cone(c) => return c.point(s),
             Path::Line(l) => {
                 for i in 0..NUM_AXES {
                     p[i] = start[i] + l.delta[i] * f;
@@ -553,8 +581,10 @@ impl Path {
     /// aux axes get `Δaux/length`. Per-axis speed is `v·direction(s)`.
     /// All zeros for a zero-length path.
     pub fn direction(&self, s: f64) -> Axes {
-        if let Path::Line(l) = self {
-            return l.dir;
+        match self {
+            Path::Line(l) => return l.dir,
+            Path::Cone(c) => return c.direction(s),
+            _ => {}
         }
         let (start, end, len) = self.common();
         let mut d = [0.0; NUM_AXES];

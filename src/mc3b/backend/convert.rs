@@ -181,12 +181,27 @@ pub fn sagitta(radius: f64, sweep: f64, n: usize) -> f64 {
 
 /// The end points of the straight moves a path becomes: a line is one move to its end;
 /// an arc, circle or helix is cut into [`chord_count`] chords of equal angle (sagitta at
-/// most `tol` UU), the last one ending exactly at the path's end.
+/// most `tol` UU), a cone into chords of equal path length counted on its smallest
+/// radius, the last one ending exactly at the path's end.
 pub fn chord_points(path: &Path, tol: f64) -> Vec<Axes> {
     match path {
         Path::Line(_) => vec![path.end()],
-        Path::Arc(a) | Path::Helix(a) => {
-            let n = chord_count(a.radius(), a.sweep(), tol);
+        Path::Arc(_) | Path::Helix(_) | Path::Cone(_) => {
+            let n = match path {
+                Path::Cone(c) => {
+                    // Chords of equal path length: their sagitta is largest where the
+                    // radius is smallest, so count them on a circle of that radius (at
+                    // least `tol`) covering the path's length, and keep the 90° rule.
+                    let r_min = c.min_radius().max(tol);
+                    chord_count(c.max_radius(), c.sweep(), tol).max(chord_count(
+                        r_min,
+                        path.length() / r_min,
+                        tol,
+                    ))
+                }
+                Path::Arc(a) | Path::Helix(a) => chord_count(a.radius(), a.sweep(), tol),
+                Path::Line(_) => 1,
+            };
             let len = path.length();
             (1..=n)
                 .map(|j| {

@@ -110,7 +110,7 @@ impl Executor {
                     acc_ms: cmd.acc_ms,
                     dec_ms: cmd.dec_ms,
                 },
-                Path::Arc(_) | Path::Helix(_) => SegKind::Chord {
+                Path::Arc(_) | Path::Helix(_) | Path::Cone(_) => SegKind::Chord {
                     feed: cmd.info_feed,
                 },
             }),

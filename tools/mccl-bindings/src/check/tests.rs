@@ -196,11 +196,12 @@ fn cs_swapped_struct_fields() {
         "SYS_HOME_CONFIG.dfAccTime: element Float(8), C has Int(4)",
     );
     assert_reports(&r, "SYS_HOME_CONFIG.nPaddel1: offset 16, C has 12");
-    // Two same-width fields swapped: only the names tell.
-    let text = generated(Lang::CSharp, &h).replacen(
-        "    public ushort wPosToEncoderDir;\n    public ushort wRPM;",
-        "    public ushort wRPM;\n    public ushort wPosToEncoderDir;",
-        1,
+    // Two same-width fields swapped: only the names tell. (Anchored on the struct's
+    // name: SYS_MACH_PARAM starts with the same two fields.)
+    let text = replace_once(
+        &generated(Lang::CSharp, &h),
+        "public struct SYS_MAC_PARAM\n{\n    public ushort wPosToEncoderDir;\n    public ushort wRPM;",
+        "public struct SYS_MAC_PARAM\n{\n    public ushort wRPM;\n    public ushort wPosToEncoderDir;",
     );
     let r = run(Lang::CSharp, &text, &h, &exports_of(&h));
     assert_reports(&r, "SYS_MAC_PARAM: field 1 is wRPM, C has wPosToEncoderDir");

@@ -1,0 +1,102 @@
+//! Timing of the D/A and A/D converters and the RIO sets (vendor header, "Obsolete
+//! functions"; the manuals do not describe them): a clock divider (system clocks of 10 ns
+//! per serial bit) and an update rate (Hz, the least time between cycles), read as the
+//! ARIO setters are ([`crate::card::cadence`], docs/undocumented-functions.md).
+
+use super::{finite, initialised, with_card};
+use crate::card::cadence::Cadence;
+use crate::card::rio::set_ix;
+use crate::error::{McclError, McclResult};
+use crate::vendor::consts as c;
+use crate::vendor::WORD;
+use std::os::raw::c_int;
+
+/// A checked update rate: finite, > 0, its period `1 / rate` at most the longest time of
+/// "Ranges" (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it.
+fn rate(r: f64) -> McclResult<f64> {
+    let r = finite(r)?;
+    if r <= 0.0 {
+        return Err(McclError::Parameter);
+    }
+    crate::config::range::time_ms(1000.0 / r)?;
+    Ok(r)
+}
+
+/// Runs `f` on the cadence `pick` chooses on card `wCardIndex` (`INITIAL_MOTION_ERR`
+/// before init, `PARAMETER_ERR` for a card not initialised).
+fn on_cadence(
+    wCardIndex: WORD,
+    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
+    f: impl FnOnce(&mut Cadence) -> McclResult<()>,
+) -> McclResult<c_int> {
+    with_card(wCardIndex, |p| f(pick(p)))?;
+    Ok(c::NO_ERR)
+}
+
+/// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
+/// update (16 bits) lasts `16 × wDivider × 10 ns`, and its output changes at most once
+/// per update.
+#[no_mangle]
+pub extern "C" fn MCC_SetDACClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        initialised()?;
+        on_cadence(wCardIndex, |p| &mut p.dac.cadence, |t| t.set_divider(wDivider))
+    }
+}
+
+/// At most `dfUpdateRate` updates per second (Hz, > 0) on each D/A channel: a value
+/// written sooner than `1 / rate` after the channel's last change waits for it.
+#[no_mangle]
+pub extern "C" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        initialised()?;
+        let r = rate(dfUpdateRate)?;
+        on_cadence(wCardIndex, |p| &mut p.dac.cadence, |t| t.set_update_rate(r))
+    }
+}
+
+/// A/D clock: one conversion clock every `wDivider` system clocks (1..65535, default
+/// 50); a free-running scan lasts `16 × enabled channels × wDivider × 10 ns`. The scan
+/// count restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetADCClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        initialised()?;
+        on_cadence(wCardIndex, |p| &mut p.adc.cadence, |t| t.set_divider(wDivider))
+    }
+}
+
+/// At most `dfUpdateRate` free-running scans per second (Hz, > 0). The scan count
+/// restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetADCUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        initialised()?;
+        let r = rate(dfUpdateRate)?;
+        on_cadence(wCardIndex, |p| &mut p.adc.cadence, |t| t.set_update_rate(r))
+    }
+}
+
+/// Serial clock of a RIO set: one bit every `wDivider` system clocks (1..65535, default
+/// 10); a transfer cycle lasts `32 × transmitting slaves (at least 1) × wDivider × 10 ns`.
+/// The cycle count restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetRIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        initialised()?;
+        let s = set_ix(wSet)?;
+        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_divider(wDivider))
+    }
+}
+
+/// At most `dfUpdateRate` transfer cycles per second (Hz, > 0) for a RIO set. The cycle
+/// count restarts at the call.
+#[no_mangle]
+pub extern "C" fn MCC_SetRIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        initialised()?;
+        let r = rate(dfUpdateRate)?;
+        let s = set_ix(wSet)?;
+        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_update_rate(r))
+    }
+}
