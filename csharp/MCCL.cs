@@ -623,6 +623,10 @@ public static class MCCL
     [return: MarshalAs(UnmanagedType.Bool)]
     public delegate bool INFINITE_INTERPOLATION(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, double arg5, double arg6, ref double arg7, IntPtr arg8, [MarshalAs(UnmanagedType.Bool)] ref bool arg9);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void CYCLE_INTERRUPT_ISR();
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate int INTERP(int nGroup, int nCommandIndex, int nTimeIndex, IntPtr pvBuffer);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void LIOISR(ref LIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void ENCISR(ref ENCINT value);
@@ -636,8 +640,6 @@ public static class MCCL
     public delegate void RIOISR(ref RIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void HSKISR(ref HSKINT value);
-    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
-    public delegate void CYCLE_INTERRUPT_ISR();
 
     // C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
     private static readonly bool NativeLongIs64 = IntPtr.Size == 8 && Environment.OSVersion.Platform != PlatformID.Win32NT;
@@ -655,6 +657,8 @@ public static class MCCL
     public static extern int MCC_CloseGroup(int nGroupIndex);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CloseAllGroups")]
     public static extern int MCC_CloseAllGroups();
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetComposeAxis")]
+    public static extern int MCC_SetComposeAxis(ushort wAxesMask, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetHSKRoutine")]
     public static extern int MCC_SetHSKRoutine(HSKISR pfnLIORoutine, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HostInterrupt")]
@@ -673,6 +677,10 @@ public static class MCCL
     public static extern int MCC_UpdateParam();
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetConvFactor")]
     public static extern double MCC_GetConvFactor(ushort wChannel, ushort wCardIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetReverseInterpRoutine")]
+    public static extern int MCC_SetReverseInterpRoutine(INTERP pfnForwardReverse, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableReverseInterp")]
+    public static extern int MCC_EnableReverseInterp([MarshalAs(UnmanagedType.Bool)] bool bEnableReverse, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCmdQueueSize")]
     public static extern int MCC_SetCmdQueueSize(int nSize, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetCmdQueueSize")]
@@ -1394,6 +1402,8 @@ public static class MCCL
     public static extern int MCC_ConeYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ConeZX_Y")]
     public static extern int MCC_ConeZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCycleInterruptRoutine")]
+    public static extern int MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMachParam")]
     public static extern int MCC_SetMachParam(ref SYS_MACH_PARAM pstMachParam, ushort wChannel, ushort wCardIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetMachParam")]
@@ -1426,10 +1436,18 @@ public static class MCCL
     public static extern double MCC_GetOverSpeed(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ChangeFeedSpeed")]
     public static extern double MCC_ChangeFeedSpeed(double dfSpeed, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableAccDecAfterIPO")]
+    public static extern int MCC_EnableAccDecAfterIPO(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableAccDecAfterIPO")]
+    public static extern int MCC_DisableAccDecAfterIPO(ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetUnit")]
     public static extern int MCC_SetUnit(int nUnitMode, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetUnit")]
     public static extern int MCC_GetUnit(ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_EnableMovingAverage")]
+    public static extern int MCC_EnableMovingAverage(ushort wGroupIndex);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_DisableMovingAverage")]
+    public static extern int MCC_DisableMovingAverage(ushort wGroupIndex);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CustomMotionEx")]
     public static extern int MCC_CustomMotionEx(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, CUSTOM_BLENDING_START pfnBlendingStart, CUSTOM_BLENDING pfnBlending, CUSTOM_BLENDING_END pfnBlendingEnd, IntPtr pvBuffer, [MarshalAs(UnmanagedType.Bool)] bool bOverrideMotion = false, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CustomMotion")]

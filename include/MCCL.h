@@ -152,6 +152,10 @@ typedef BOOL (MCC_CALLBACK *INFINITE_INTERPOLATION)(int, int, int, const double*
 
 typedef CUSTOM_CLEANUP INFINITE_CLEANUP;
 
+typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
+
+typedef int (MCC_CALLBACK *INTERP)(int nGroup, int nCommandIndex, int nTimeIndex, void *pvBuffer);
+
 typedef struct {
   BYTE OTP0;
   BYTE OTP1;
@@ -415,8 +419,6 @@ typedef struct {
   int32_t nGroupUsed[96];
   SYS_GROUP_INFO stGroupInfo[96];
 } SYS_GROUP_CONFIG;
-
-typedef void (MCC_CALLBACK *CYCLE_INTERRUPT_ISR)(void);
 
 #define OCM_PULSE 0
 

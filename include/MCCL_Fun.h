@@ -38,6 +38,7 @@ MCC_API int MCC_CALL MCC_CreateGroup(int xMapToCh, int yMapToCh, int zMapToCh, i
 MCC_API int MCC_CALL MCC_CreateGroupEx(int xMapToCh, int yMapToCh, int zMapToCh, int uMapToCh, int vMapToCh, int wMapToCh, int aMapToCh, int bMapToCh, int nCardIndex, int nMotionQueueSize MCC_DEFAULT(MOTION_QUEUE_SIZE));
 MCC_API int MCC_CALL MCC_CloseGroup(int nGroupIndex);
 MCC_API int MCC_CALL MCC_CloseAllGroups(void);
+MCC_API int MCC_CALL MCC_SetComposeAxis(WORD wAxesMask, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetHSKRoutine(HSKISR pfnLIORoutine, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_HostInterrupt(WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SlaveInterrupt(WORD wCardIndex MCC_DEFAULT(0));
@@ -47,6 +48,8 @@ MCC_API int MCC_CALL MCC_SetEncoderConfig(SYS_ENCODER_CONFIG *pstEncoderConfig, 
 MCC_API int MCC_CALL MCC_GetEncoderConfig(SYS_ENCODER_CONFIG *pstEncoderConfig, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_UpdateParam(void);
 MCC_API double MCC_CALL MCC_GetConvFactor(WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetReverseInterpRoutine(INTERP pfnForwardReverse, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableReverseInterp(BOOL bEnableReverse, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetCmdQueueSize(int nSize, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetCmdQueueSize(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_InitSystem(int nInterpolateTime, SYS_CARD_CONFIG *pstCardConfig, WORD wCardNo);
@@ -372,6 +375,7 @@ MCC_API int MCC_CALL MCC_ConeYZ_X(double dfCY, double dfCZ, double dfPos, double
 MCC_API int MCC_CALL MCC_ConeZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, double CenterRate, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2) */
+MCC_API int MCC_CALL MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
 MCC_API int MCC_CALL MCC_SetMachParam(SYS_MACH_PARAM *pstMachParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetMachParam(SYS_MACH_PARAM *pstMachParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_UpdateMachParam(void);
@@ -388,8 +392,12 @@ MCC_API int MCC_CALL MCC_GetInPosTolerance(WORD *pwTolerance0, WORD *pwTolerance
 MCC_API double MCC_CALL MCC_SetOverSpeed(double dfRate, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_GetOverSpeed(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API double MCC_CALL MCC_ChangeFeedSpeed(double dfSpeed, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableAccDecAfterIPO(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_DisableAccDecAfterIPO(WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_SetUnit(int nUnitMode, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_GetUnit(WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_EnableMovingAverage(WORD wGroupIndex);
+MCC_API int MCC_CALL MCC_DisableMovingAverage(WORD wGroupIndex);
 MCC_API int MCC_CALL MCC_CustomMotionEx(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, CUSTOM_BLENDING_START pfnBlendingStart, CUSTOM_BLENDING pfnBlending, CUSTOM_BLENDING_END pfnBlendingEnd, void *pvBuffer, BOOL bOverrideMotion MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
 MCC_API int MCC_CALL MCC_CustomMotion(CUSTOM_START_MOTION pfnStartMotion, CUSTOM_INTERPOLATION pfnInterpolation, CUSTOM_CLEANUP pfnCleanUp, void *pvBuffer, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
 MCC_API int MCC_CALL MCC_InfiniteMotion(INFINITE_START_MOTION pfnStartMotion, INFINITE_INTERPOLATION pfnInterpolation, INFINITE_CLEANUP pfnCleanUp, void *pvBuffer, BOOL bOverrideMotion, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));

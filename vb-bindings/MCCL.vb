@@ -574,6 +574,10 @@ Public Module MCCL
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Function INFINITE_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByVal arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr, <MarshalAs(UnmanagedType.Bool)> ByRef arg9 As Boolean) As Boolean
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub CYCLE_INTERRUPT_ISR()
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function INTERP(ByVal nGroup As Integer, ByVal nCommandIndex As Integer, ByVal nTimeIndex As Integer, ByVal pvBuffer As IntPtr) As Integer
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub LIOISR(ByRef value As LIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub ENCISR(ByRef value As ENCINT)
@@ -587,8 +591,6 @@ Public Module MCCL
     Public Delegate Sub RIOISR(ByRef value As RIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub HSKISR(ByRef value As HSKINT)
-    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Sub CYCLE_INTERRUPT_ISR()
 
     ' C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
     Private ReadOnly NativeLongIs64 As Boolean = IntPtr.Size = 8 AndAlso Environment.OSVersion.Platform <> PlatformID.Win32NT
@@ -608,6 +610,9 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CloseAllGroups")>
     Public Function MCC_CloseAllGroups() As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetComposeAxis")>
+    Public Function MCC_SetComposeAxis(ByVal wAxesMask As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetHSKRoutine")>
     Public Function MCC_SetHSKRoutine(ByVal pfnLIORoutine As HSKISR, Optional ByVal wCardIndex As UShort = 0) As Integer
@@ -635,6 +640,12 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetConvFactor")>
     Public Function MCC_GetConvFactor(ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Double
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetReverseInterpRoutine")>
+    Public Function MCC_SetReverseInterpRoutine(ByVal pfnForwardReverse As INTERP, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableReverseInterp")>
+    Public Function MCC_EnableReverseInterp(<MarshalAs(UnmanagedType.Bool)> ByVal bEnableReverse As Boolean, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCmdQueueSize")>
     Public Function MCC_SetCmdQueueSize(ByVal nSize As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
@@ -1640,6 +1651,9 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ConeZX_Y")>
     Public Function MCC_ConeZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCycleInterruptRoutine")>
+    Public Function MCC_SetCycleInterruptRoutine(ByVal pfnCycleIntRoutine As CYCLE_INTERRUPT_ISR) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetMachParam")>
     Public Function MCC_SetMachParam(ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As UShort, Optional ByVal wCardIndex As UShort = 0) As Integer
     End Function
@@ -1688,11 +1702,23 @@ Public Module MCCL
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ChangeFeedSpeed")>
     Public Function MCC_ChangeFeedSpeed(ByVal dfSpeed As Double, Optional ByVal wGroupIndex As UShort = 0) As Double
     End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableAccDecAfterIPO")>
+    Public Function MCC_EnableAccDecAfterIPO(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableAccDecAfterIPO")>
+    Public Function MCC_DisableAccDecAfterIPO(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetUnit")>
     Public Function MCC_SetUnit(ByVal nUnitMode As Integer, Optional ByVal wGroupIndex As UShort = 0) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_GetUnit")>
     Public Function MCC_GetUnit(Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_EnableMovingAverage")>
+    Public Function MCC_EnableMovingAverage(ByVal wGroupIndex As UShort) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_DisableMovingAverage")>
+    Public Function MCC_DisableMovingAverage(ByVal wGroupIndex As UShort) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CustomMotionEx")>
     Public Function MCC_CustomMotionEx(ByVal pfnStartMotion As CUSTOM_START_MOTION, ByVal pfnInterpolation As CUSTOM_INTERPOLATION, ByVal pfnCleanUp As CUSTOM_CLEANUP, ByVal pfnBlendingStart As CUSTOM_BLENDING_START, ByVal pfnBlending As CUSTOM_BLENDING, ByVal pfnBlendingEnd As CUSTOM_BLENDING_END, ByVal pvBuffer As IntPtr, <MarshalAs(UnmanagedType.Bool)> Optional ByVal bOverrideMotion As Boolean = False, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer

@@ -550,6 +550,8 @@ End Type
 ' CUSTOM_BLENDING: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Float(8), Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
 ' CUSTOM_BLENDING_END: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
 ' INFINITE_INTERPOLATION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Float(8), Float(8), Ptr(Float(8)), Ptr(Void), Ptr(Bool)), passed as AddressOf MyIsr
+' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
+' INTERP: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
 ' LIOISR: Sub MyIsr(ByRef value As LIOINT), passed as AddressOf MyIsr
 ' ENCISR: Sub MyIsr(ByRef value As ENCINT), passed as AddressOf MyIsr
 ' PCLISR: Sub MyIsr(ByRef value As PCLINT), passed as AddressOf MyIsr
@@ -557,7 +559,6 @@ End Type
 ' TMRISR: Sub MyIsr(ByRef value As TMRINT), passed as AddressOf MyIsr
 ' RIOISR: Sub MyIsr(ByRef value As RIOINT), passed as AddressOf MyIsr
 ' HSKISR: Sub MyIsr(ByRef value As HSKINT), passed as AddressOf MyIsr
-' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
 
 ' ---- System Management ----
 Public Declare Sub MCC_GetVersion Lib "MCCLPCI_IMP.dll" (ByVal strVersion As String)
@@ -565,6 +566,7 @@ Public Declare Function MCC_CreateGroup Lib "MCCLPCI_IMP.dll" (ByVal xMapToCh As
 Public Declare Function MCC_CreateGroupEx Lib "MCCLPCI_IMP.dll" (ByVal xMapToCh As Long, ByVal yMapToCh As Long, ByVal zMapToCh As Long, ByVal uMapToCh As Long, ByVal vMapToCh As Long, ByVal wMapToCh As Long, ByVal aMapToCh As Long, ByVal bMapToCh As Long, ByVal nCardIndex As Long, Optional ByVal nMotionQueueSize As Long = MOTION_QUEUE_SIZE) As Long
 Public Declare Function MCC_CloseGroup Lib "MCCLPCI_IMP.dll" (ByVal nGroupIndex As Long) As Long
 Public Declare Function MCC_CloseAllGroups Lib "MCCLPCI_IMP.dll" () As Long
+Public Declare Function MCC_SetComposeAxis Lib "MCCLPCI_IMP.dll" (ByVal wAxesMask As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetHSKRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnLIORoutine As Long, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_HostInterrupt Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_SlaveInterrupt Lib "MCCLPCI_IMP.dll" (Optional ByVal wCardIndex As Integer = 0) As Long
@@ -574,6 +576,8 @@ Public Declare Function MCC_SetEncoderConfig Lib "MCCLPCI_IMP.dll" (ByRef pstEnc
 Public Declare Function MCC_GetEncoderConfig Lib "MCCLPCI_IMP.dll" (ByRef pstEncoderConfig As SYS_ENCODER_CONFIG, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_UpdateParam Lib "MCCLPCI_IMP.dll" () As Long
 Public Declare Function MCC_GetConvFactor Lib "MCCLPCI_IMP.dll" (ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Double
+Public Declare Function MCC_SetReverseInterpRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnForwardReverse As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableReverseInterp Lib "MCCLPCI_IMP.dll" (ByVal bEnableReverse As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetCmdQueueSize Lib "MCCLPCI_IMP.dll" (ByVal nSize As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetCmdQueueSize Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_InitSystem Lib "MCCLPCI_IMP.dll" (ByVal nInterpolateTime As Long, ByRef pstCardConfig As SYS_CARD_CONFIG, ByVal wCardNo As Integer) As Long
@@ -895,6 +899,7 @@ Public Declare Function MCC_HelicaZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Doub
 Public Declare Function MCC_ConeXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_ConeYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_ConeZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_SetCycleInterruptRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnCycleIntRoutine As Long) As Long
 Public Declare Function MCC_SetMachParam Lib "MCCLPCI_IMP.dll" (ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetMachParam Lib "MCCLPCI_IMP.dll" (ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_UpdateMachParam Lib "MCCLPCI_IMP.dll" () As Long
@@ -911,8 +916,12 @@ Public Declare Function MCC_GetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByRef pwTol
 Public Declare Function MCC_SetOverSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfRate As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_GetOverSpeed Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Double
 Public Declare Function MCC_ChangeFeedSpeed Lib "MCCLPCI_IMP.dll" (ByVal dfSpeed As Double, Optional ByVal wGroupIndex As Integer = 0) As Double
+Public Declare Function MCC_EnableAccDecAfterIPO Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_DisableAccDecAfterIPO Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetUnit Lib "MCCLPCI_IMP.dll" (ByVal nUnitMode As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetUnit Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_EnableMovingAverage Lib "MCCLPCI_IMP.dll" (ByVal wGroupIndex As Integer) As Long
+Public Declare Function MCC_DisableMovingAverage Lib "MCCLPCI_IMP.dll" (ByVal wGroupIndex As Integer) As Long
 Public Declare Function MCC_CustomMotionEx Lib "MCCLPCI_IMP.dll" (ByVal pfnStartMotion As Long, ByVal pfnInterpolation As Long, ByVal pfnCleanUp As Long, ByVal pfnBlendingStart As Long, ByVal pfnBlending As Long, ByVal pfnBlendingEnd As Long, ByRef pvBuffer As Any, Optional ByVal bOverrideMotion As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
 Public Declare Function MCC_CustomMotion Lib "MCCLPCI_IMP.dll" (ByVal pfnStartMotion As Long, ByVal pfnInterpolation As Long, ByVal pfnCleanUp As Long, ByRef pvBuffer As Any, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
 Public Declare Function MCC_InfiniteMotion Lib "MCCLPCI_IMP.dll" (ByVal pfnStartMotion As Long, ByVal pfnInterpolation As Long, ByVal pfnCleanUp As Long, ByRef pvBuffer As Any, ByVal bOverrideMotion As Long, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long

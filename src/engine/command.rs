@@ -222,6 +222,11 @@ pub struct Settings {
     pub ptp_dec_ms: Axes,
     /// Absolute (true) or incremental coordinates.
     pub absolute: bool,
+    /// The axes that compose a line's path speed (`MCC_SetComposeAxis`; X|Y|Z).
+    pub compose: u32,
+    /// `MCC_EnableAccDecAfterIPO`: general motion is interpolated at the feed speed
+    /// without acc/dec; the group's output filter accelerates and decelerates.
+    pub acc_after_ipo: bool,
 }
 
 /// General-motion feed speed before `MCC_SetFeedSpeed` (UU/s). The manuals give none.
@@ -245,6 +250,8 @@ impl Default for Settings {
             ptp_acc_ms: [DEFAULT_ACC_DEC_MS; AXES],
             ptp_dec_ms: [DEFAULT_ACC_DEC_MS; AXES],
             absolute: true,
+            compose: crate::planner::compose::XYZ_MASK,
+            acc_after_ipo: false,
         }
     }
 }
@@ -331,15 +338,15 @@ impl Ctx<'_> {
 
     fn general(&self, path: Path, ctype: i32) -> McclResult<Command> {
         let s = self.settings;
-        let profile = Profile::new(
-            path.length(),
-            s.feed,
-            s.acc_ms / 1000.0,
-            s.dec_ms / 1000.0,
-            s.acc,
-            s.dec,
-        )
-        .map_err(plan_err)?;
+        // After-interpolation acc/dec: the interpolation runs at the feed speed from the
+        // first period to the last; the group's filter makes the ramps.
+        let (acc_s, dec_s) = if s.acc_after_ipo {
+            (0.0, 0.0)
+        } else {
+            (s.acc_ms / 1000.0, s.dec_ms / 1000.0)
+        };
+        let profile =
+            Profile::new(path.length(), s.feed, acc_s, dec_s, s.acc, s.dec).map_err(plan_err)?;
         self.check_reach(&path.extent(), profile.duration())?;
         let target = path.end();
         Ok(Command {
@@ -355,7 +362,10 @@ impl Ctx<'_> {
 
     /// A linear move to `target` (already resolved).
     pub fn line(&self, target: Axes) -> McclResult<Command> {
-        let path = Path::try_line(&self.from, &target).map_err(plan_err)?;
+        let mut path = Path::try_line(&self.from, &target).map_err(plan_err)?;
+        if self.settings.compose != crate::planner::compose::XYZ_MASK {
+            path = crate::planner::compose::line(&self.from, &target, self.settings.compose);
+        }
         self.general(path, ctype::LINE)
     }
 

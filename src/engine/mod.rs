@@ -16,6 +16,7 @@
 
 pub mod command;
 pub mod custom;
+pub mod cycle;
 pub mod group;
 pub mod homing;
 pub mod isr;

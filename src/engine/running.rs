@@ -147,6 +147,7 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
                 // tick, run here without any lock.
                 shared.custom_stage();
                 shared.isr.deliver(&interrupts, &shared.clock);
+                shared.call_cycle_routines();
                 shared.clock.tick_done();
             }
         }

@@ -62,6 +62,8 @@ pub struct Shared {
     pub periph: Vec<crate::card::PeriphCell>,
     /// The interrupt routines registered per card (`isr`).
     pub isr: isr::IsrTable,
+    /// The per-period routines (`cycle`).
+    pub cycle: super::cycle::CycleRoutines,
     /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
     pub(super) homing: Mutex<Option<homing::Homing>>,
     /// `MCC_GetGoHomeStatus`: [`homing::HOME_BUSY`], [`homing::HOME_DONE`] or
@@ -135,6 +137,7 @@ impl Shared {
                 .map(|_| crate::card::PeriphCell::new(tick_ns(period)))
                 .collect(),
             isr: isr::IsrTable::new(cards),
+            cycle: Default::default(),
             homing: Mutex::new(None),
             home_status: AtomicI32::new(homing::HOME_NONE),
             home_poll: AtomicU64::new(u64::MAX),

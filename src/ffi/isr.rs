@@ -20,7 +20,7 @@ fn register(kind: Kind, f: usize, wCardIndex: WORD) -> McclResult<c_int> {
     // Routines run between ticks and may read positions: publish every tick then.
     shared
         .live_snapshots
-        .store(shared.isr.any(), std::sync::atomic::Ordering::Relaxed);
+        .store(shared.routines_any(), std::sync::atomic::Ordering::Relaxed);
     Ok(c::NO_ERR)
 }
 

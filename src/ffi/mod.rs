@@ -20,6 +20,7 @@ pub mod coordinate;
 pub mod custom;
 pub mod dac;
 pub mod encoder;
+pub mod filters;
 pub mod handshake;
 pub mod home;
 pub mod isr;

@@ -21,6 +21,7 @@
 
 mod axis1d;
 mod blend;
+pub mod compose;
 mod cone;
 mod path;
 mod profile;

@@ -217,6 +217,12 @@ impl Path {
         } else {
             aux_travel(start, end)
         };
+        Path::line_with_length(start, end, length)
+    }
+
+    /// Straight line from `start` to `end` whose path length (what the feed speed is
+    /// measured along) is `length` (`super::compose`: the composing axes).
+    pub fn line_with_length(start: &Axes, end: &Axes, length: f64) -> Path {
         let delta: Axes = std::array::from_fn(|i| end[i] - start[i]);
         let dir = if length <= 0.0 {
             [0.0; NUM_AXES]

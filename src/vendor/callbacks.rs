@@ -115,3 +115,13 @@ pub type CUSTOM_BLENDING_END = Option<
         *mut std::os::raw::c_void,
     ) -> super::BOOL,
 >;
+/// Reverse interpolation routine: `(group, command index, time index, buffer)` ->
+/// > 0 forward, < 0 backward, 0 pause (`MCC_SetReverseInterpRoutine`).
+pub type INTERP = Option<
+    unsafe extern "C" fn(
+        nGroup: std::os::raw::c_int,
+        nCommandIndex: std::os::raw::c_int,
+        nTimeIndex: std::os::raw::c_int,
+        pvBuffer: *mut std::os::raw::c_void,
+    ) -> std::os::raw::c_int,
+>;

@@ -66,6 +66,9 @@ impl GroupState {
         if self.external.is_some() {
             return self.tick_external(dt);
         }
+        if self.post.is_some() {
+            return self.tick_post(dt);
+        }
         // Software over-travel compares with the position before the tick (only needed,
         // and so only copied, when a check is on).
         let before = (self.ot_check != [false; AXES]).then_some(self.pos);

@@ -33,6 +33,7 @@ mod execution;
 pub mod external;
 mod homing;
 mod inpos;
+mod post;
 mod queue;
 mod rate;
 mod status;
@@ -41,6 +42,7 @@ use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
+pub use post::{MAX_FILTER_PERIODS, MOVING_AVERAGE_TAPS, REVERSE_HISTORY};
 use queue::CommandIndex;
 use rate::{Mode, RateState};
 
@@ -116,6 +118,9 @@ pub struct GroupState {
     pub trace_notes: Option<Vec<super::trace::Note>>,
     /// Custom commands started and not cleaned up yet (`custom.rs`).
     custom: custom::CustomSide,
+    /// After-interpolation filters and reverse interpolation (`post.rs`); `None` until
+    /// the program uses one.
+    post: Option<Box<post::Post>>,
 }
 
 impl GroupState {
@@ -160,6 +165,7 @@ impl GroupState {
             homing: 0,
             trace_notes: None,
             custom: custom::CustomSide::default(),
+            post: None,
         }
     }
 
@@ -248,7 +254,7 @@ impl GroupState {
 
     /// Velocity per axis (UU/s).
     pub fn vel(&self) -> Axes {
-        self.vel
+        self.out_vel()
     }
 
     /// The current position (user coordinates).

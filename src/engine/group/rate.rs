@@ -132,6 +132,7 @@ impl GroupState {
         self.note_stopped();
         self.running.clear();
         self.queue.clear();
+        self.post_stopped();
         self.base = self.pos;
         self.queue_end = self.pos;
         self.vel = [0.0; AXES];

@@ -18,7 +18,8 @@ impl GroupState {
         let active = !self.running.is_empty()
             || !self.queue.is_empty()
             || self.inpos_wait.is_some_and(|w| w.blocks())
-            || self.external.as_ref().is_some_and(|x| x.active());
+            || self.external.as_ref().is_some_and(|x| x.active())
+            || self.post_active();
         self.status = if !active && self.mode != Mode::Aborting {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
                 self.mode = Mode::Normal;
@@ -55,11 +56,19 @@ impl GroupState {
     /// Pulse position of axis `i`: round(reference position x pulses per UU), halves away
     /// from zero.
     pub fn pulses(&self, i: usize) -> i64 {
-        round_pulses((self.pos[i] + self.offset[i]) * self.axes[i].factor)
+        let pos = if self.post.is_some() {
+            self.out_pos()[i]
+        } else {
+            self.pos[i]
+        };
+        round_pulses((pos + self.offset[i]) * self.axes[i].factor)
     }
 
     /// The part of the published state that changes every tick.
     pub fn motion(&self) -> Motion {
+        if self.post.is_some() || self.settings.compose != crate::planner::compose::XYZ_MASK {
+            return self.post_motion();
+        }
         Motion {
             status: self.status,
             pos: self.pos,
