@@ -49,6 +49,8 @@ pub enum Plan {
     InPos(bool, u32),
     /// Queued output change (`MCC_Queue*OutputValue`), made when the queue reaches it.
     Output(Output),
+    /// A joint move of a kinematic group (`MCC_PtP_V6`, `super::kinematics`).
+    Joint(Box<super::kinematics::JointMove>),
 }
 
 /// An output a queued command sets: the bits of `mask` take those of `value`.
@@ -93,6 +95,8 @@ pub struct Command {
     pub dec_ms: f64,
     /// The plan.
     pub plan: Plan,
+    /// The posture a V6 command hands to the kinematics (`None`: the group's stays).
+    pub posture: Option<u32>,
 }
 
 impl Command {
@@ -102,13 +106,14 @@ impl Command {
             Plan::Path(m) => m.duration(),
             Plan::Ptp(p) => p.duration(),
             Plan::Delay(s) => *s,
+            Plan::Joint(j) => j.duration(),
             Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => 0.0,
         }
     }
 
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
-        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_))
+        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_) | Plan::Joint(_))
     }
 
     /// Position and velocity (per unit of the command's own time) at time `t`.
@@ -117,6 +122,7 @@ impl Command {
         match &self.plan {
             Plan::Path(m) => m.sample(t),
             Plan::Ptp(p) => p.sample(t),
+            Plan::Joint(j) => (j.cart_at(t), [0.0; AXES]),
             _ => (self.target, [0.0; AXES]),
         }
     }
@@ -136,6 +142,7 @@ impl Command {
         match &self.plan {
             Plan::Path(m) => m.path.start(),
             Plan::Ptp(p) => p.start(),
+            Plan::Joint(j) => j.cart_start,
             _ => self.target,
         }
     }
@@ -332,6 +339,7 @@ impl Ctx<'_> {
             acc_ms: s.acc_ms,
             dec_ms: s.dec_ms,
             plan: Plan::Path(PathMove { path, profile }),
+            posture: None,
         })
     }
 
@@ -375,6 +383,7 @@ impl Ctx<'_> {
             acc_ms: s.ptp_acc_ms[0],
             dec_ms: s.ptp_dec_ms[0],
             plan: Plan::Ptp(mv),
+            posture: None,
         })
     }
 
@@ -388,6 +397,7 @@ impl Ctx<'_> {
             acc_ms: 0.0,
             dec_ms: 0.0,
             plan: Plan::Delay(ms / 1000.0),
+            posture: None,
         }
     }
 
@@ -409,6 +419,7 @@ impl Ctx<'_> {
             acc_ms: 0.0,
             dec_ms: 0.0,
             plan,
+            posture: None,
         }
     }
 }

@@ -17,6 +17,7 @@ pub mod command;
 pub mod group;
 pub mod homing;
 pub mod isr;
+pub mod kinematics;
 mod poll;
 mod running;
 pub mod safety;

@@ -51,7 +51,9 @@ pub unsafe extern "C" fn MCC_GetCurPos(
         let shared = system::active()?;
         shared.poll_position(wGroupIndex);
         let s = shared.snapshot(wGroupIndex)?;
-        super::write_each(p, s.pos);
+        // A kinematic group: the forward kinematics of its joints.
+        let pos = super::kinematics::cur_pos(wGroupIndex)?.unwrap_or(s.pos);
+        super::write_each(p, pos);
         Ok(c::NO_ERR)
     }
 }
@@ -105,7 +107,8 @@ pub unsafe extern "C" fn MCC_GetPulsePos(
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        super::write_each(p, s.pulses.map(|v| v as c_long));
+        let pulses = super::kinematics::joint_pulses(wGroupIndex)?.unwrap_or(s.pulses);
+        super::write_each(p, pulses.map(|v| v as c_long));
         Ok(c::NO_ERR)
     }
 }
@@ -131,7 +134,8 @@ pub unsafe extern "C" fn MCC_GetPulsePosEx(
         // SAFETY: NULL or writable, as this function's contract requires.
         let p = unsafe { Out::each(p) }?;
         let s = system::active()?.snapshot(wGroupIndex)?;
-        super::write_each(p, s.pulses);
+        let pulses = super::kinematics::joint_pulses(wGroupIndex)?.unwrap_or(s.pulses);
+        super::write_each(p, pulses);
         Ok(c::NO_ERR)
     }
 }

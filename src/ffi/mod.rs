@@ -20,6 +20,7 @@ pub mod encoder;
 pub mod home;
 pub mod isr;
 pub mod jog;
+pub mod kinematics;
 pub mod limits;
 pub mod local_io;
 pub mod motion;

@@ -11,7 +11,7 @@ use std::os::raw::{c_char, c_int};
 
 use crate::config::range::time_ms;
 
-fn mask(dwAxisMask: DWORD) -> McclResult<u32> {
+pub(super) fn mask(dwAxisMask: DWORD) -> McclResult<u32> {
     if dwAxisMask & !0xFF != 0 {
         Err(McclError::Parameter)
     } else {
@@ -19,7 +19,7 @@ fn mask(dwAxisMask: DWORD) -> McclResult<u32> {
     }
 }
 
-fn direction(byCirDir: BYTE) -> McclResult<bool> {
+pub(super) fn direction(byCirDir: BYTE) -> McclResult<bool> {
     match i32::from(byCirDir) {
         c::CIR_CW => Ok(false),
         c::CIR_CCW => Ok(true),

@@ -31,6 +31,7 @@ mod execution;
 pub mod external;
 mod homing;
 mod inpos;
+pub mod kinematics;
 mod queue;
 mod rate;
 mod status;
@@ -112,6 +113,9 @@ pub struct GroupState {
     homing: u32,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
     pub trace_notes: Option<Vec<super::trace::Note>>,
+    /// Robot kinematics (`MCC_SetKinematicTrans`, `kinematics.rs`): the channels carry
+    /// joints, the commands and positions are Cartesian.
+    kin: Option<Box<kinematics::Kinematics>>,
 }
 
 impl GroupState {
@@ -155,6 +159,7 @@ impl GroupState {
             external: None,
             homing: 0,
             trace_notes: None,
+            kin: None,
         }
     }
 
@@ -258,7 +263,7 @@ impl GroupState {
     /// `value` must be a position of the axis, `config::range::position`).
     pub fn define_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
         crate::config::range::position(value, self.axes[axis].factor)?;
-        if self.busy() {
+        if self.busy() || self.kin.is_some() {
             return Err(McclError::NotFinished);
         }
         let shift = value - self.pos[axis];
@@ -272,7 +277,7 @@ impl GroupState {
     /// `MCC_DefinePosHere`: the command position of axis `i` becomes the position the card
     /// has output (its pulse count in UU); only when stopped.
     pub fn sync_to_output(&mut self, i: usize) -> McclResult<()> {
-        if self.busy() {
+        if self.busy() || self.kin.is_some() {
             return Err(McclError::NotFinished);
         }
         let f = self.axes[i].factor;

@@ -55,6 +55,9 @@ impl GroupState {
     /// Pulse position of axis `i`: round(reference position x pulses per UU), halves away
     /// from zero.
     pub fn pulses(&self, i: usize) -> i64 {
+        if let Some(p) = self.kinematics_pulses(i) {
+            return p;
+        }
         round_pulses((self.pos[i] + self.offset[i]) * self.axes[i].factor)
     }
 

@@ -353,7 +353,9 @@ impl ExternalExecutor for Executor {
             return Err(McclError::AbortNotFinished);
         }
         let points = match &cmd.plan {
-            Plan::Blend(true) | Plan::InPos(true, _) => return Err(McclError::NotAccepted),
+            Plan::Blend(true) | Plan::InPos(true, _) | Plan::Joint(_) => {
+                return Err(McclError::NotAccepted)
+            }
             Plan::Path(m) => backend::chord_points(&m.path, chord_tolerance(axes)),
             Plan::Ptp(_) => vec![cmd.target],
             _ => return Ok(()),

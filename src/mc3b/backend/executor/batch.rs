@@ -102,7 +102,8 @@ impl Executor {
     pub(super) fn peek(&self, host: &dyn Host) -> Option<Next> {
         let cmd = host.front()?;
         Some(match &cmd.plan {
-            Plan::Blend(_) | Plan::InPos(..) => Next::Switch,
+            // A joint move (kinematic groups only) is refused on an MC3B when queued.
+            Plan::Blend(_) | Plan::InPos(..) | Plan::Joint(_) => Next::Switch,
             Plan::Output(_) => Next::Output,
             Plan::Path(m) => Next::Path(match m.path {
                 Path::Line(_) => SegKind::Line {
