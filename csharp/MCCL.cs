@@ -618,6 +618,16 @@ public static class MCCL
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void HSKISR(ref HSKINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool FWDKINEFUN(int nGroup, int nSynAxisNum, IntPtr pdfFrom, IntPtr pdfTo, ref uint dwPosture, IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool INVKINEFUN(int nGroup, int nSynAxisNum, IntPtr pdfFrom, IntPtr pdfPrevResult, IntPtr pdfTo, ref uint dwPosture, IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void INIT_EXTENSION(IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void PRE_PROCESS_MOTION_COMMAND(int nGroup, int nSynAxisNum, IntPtr pdfCurCPos, IntPtr pdfTgtCPos, IntPtr pdfOffset, IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void CYCLE_INTERRUPT_ISR();
 
     // C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
@@ -1365,6 +1375,28 @@ public static class MCCL
     public static extern int MCC_HelicaYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_HelicaZX_Y")]
     public static extern int MCC_HelicaZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, byte byCirDir, ushort wGroupIndex = 0);
+
+    // ---- Special functions only for Robot Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetKinematicTrans")]
+    public static extern int MCC_SetKinematicTrans(FWDKINEFUN pfnFwdKinematics, INVKINEFUN pfnInvKinematics, uint dwExtensionSize, INIT_EXTENSION pfnInitExtension, int nGroup = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPreProcessMotionCommandCallback")]
+    public static extern int MCC_SetPreProcessMotionCommandCallback(PRE_PROCESS_MOTION_COMMAND pfnPreProcMotionCmd, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtP_V6")]
+    public static extern int MCC_PtP_V6(double j0, double j1, double j2, double j3, double j4, double j5, double j6, double j7, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Line_V6")]
+    public static extern int MCC_Line_V6(double x, double y, double z, double rx, double ry, double rz, double a, double b, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Arc_V6")]
+    public static extern int MCC_Arc_V6(double x0, double y0, double z0, double x1, double y1, double z1, double rx, double ry, double rz, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcTheta_V6")]
+    public static extern int MCC_ArcTheta_V6(double cx, double cy, double cz, double nv0, double nv1, double nv2, double theta, double rx, double ry, double rz, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleXY_V6")]
+    public static extern int MCC_CircleXY_V6(double cx, double cy, double rx, double ry, double rz, byte byCirDir, uint posture = 0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleYZ_V6")]
+    public static extern int MCC_CircleYZ_V6(double cy, double cz, double rx, double ry, double rz, byte byCirDir, uint posture = 0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleZX_V6")]
+    public static extern int MCC_CircleZX_V6(double cz, double cx, double rx, double ry, double rz, byte byCirDir, uint posture = 0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Circle_V6")]
+    public static extern int MCC_Circle_V6(double x0, double y0, double z0, double x1, double y1, double z1, double rx, double ry, double rz, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetInPosCheckTime")]
     public static extern int MCC_SetInPosCheckTime(ushort wCheckTime, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_GetInPosStableTime")]

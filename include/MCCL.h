@@ -243,6 +243,16 @@ typedef struct {
 
 typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
+typedef int BOOL;
+
+typedef BOOL (MCC_CALLBACK *FWDKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, double *pdfTo, DWORD *dwPosture, void *pvExtension);
+
+typedef BOOL (MCC_CALLBACK *INVKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, const double *pdfPrevResult, double *pdfTo, DWORD *dwPosture, void *pvExtension);
+
+typedef void (MCC_CALLBACK *INIT_EXTENSION)(void *pvExtension);
+
+typedef void (MCC_CALLBACK *PRE_PROCESS_MOTION_COMMAND)(int nGroup, int nSynAxisNum, const double *pdfCurCPos, const double *pdfTgtCPos, double *pdfOffset, void *pvExtension);
+
 typedef struct {
   DWORD dwInterval;
   WORD wHome_No;
@@ -261,8 +271,6 @@ typedef struct {
   int32_t nMotionPhase;
   int32_t nCommandIndex_LD;
 } COMMAND_INFO;
-
-typedef int BOOL;
 
 typedef struct {
   WORD wPosToEncoderDir;

@@ -574,6 +574,14 @@ Public Module MCCL
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub HSKISR(ByRef value As HSKINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function FWDKINEFUN(ByVal nGroup As Integer, ByVal nSynAxisNum As Integer, ByVal pdfFrom As IntPtr, ByVal pdfTo As IntPtr, ByRef dwPosture As UInteger, ByVal pvExtension As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function INVKINEFUN(ByVal nGroup As Integer, ByVal nSynAxisNum As Integer, ByVal pdfFrom As IntPtr, ByVal pdfPrevResult As IntPtr, ByVal pdfTo As IntPtr, ByRef dwPosture As UInteger, ByVal pvExtension As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub INIT_EXTENSION(ByVal pvExtension As IntPtr)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub PRE_PROCESS_MOTION_COMMAND(ByVal nGroup As Integer, ByVal nSynAxisNum As Integer, ByVal pdfCurCPos As IntPtr, ByVal pdfTgtCPos As IntPtr, ByVal pdfOffset As IntPtr, ByVal pvExtension As IntPtr)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub CYCLE_INTERRUPT_ISR()
 
     ' C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
@@ -1610,6 +1618,38 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_HelicaZX_Y")>
     Public Function MCC_HelicaZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Special functions only for Robot Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetKinematicTrans")>
+    Public Function MCC_SetKinematicTrans(ByVal pfnFwdKinematics As FWDKINEFUN, ByVal pfnInvKinematics As INVKINEFUN, ByVal dwExtensionSize As UInteger, ByVal pfnInitExtension As INIT_EXTENSION, Optional ByVal nGroup As Integer = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPreProcessMotionCommandCallback")>
+    Public Function MCC_SetPreProcessMotionCommandCallback(ByVal pfnPreProcMotionCmd As PRE_PROCESS_MOTION_COMMAND, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtP_V6")>
+    Public Function MCC_PtP_V6(ByVal j0 As Double, ByVal j1 As Double, ByVal j2 As Double, ByVal j3 As Double, ByVal j4 As Double, ByVal j5 As Double, ByVal j6 As Double, ByVal j7 As Double, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Line_V6")>
+    Public Function MCC_Line_V6(ByVal x As Double, ByVal y As Double, ByVal z As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal a As Double, ByVal b As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Arc_V6")>
+    Public Function MCC_Arc_V6(ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcTheta_V6")>
+    Public Function MCC_ArcTheta_V6(ByVal cx As Double, ByVal cy As Double, ByVal cz As Double, ByVal nv0 As Double, ByVal nv1 As Double, ByVal nv2 As Double, ByVal theta As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleXY_V6")>
+    Public Function MCC_CircleXY_V6(ByVal cx As Double, ByVal cy As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleYZ_V6")>
+    Public Function MCC_CircleYZ_V6(ByVal cy As Double, ByVal cz As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleZX_V6")>
+    Public Function MCC_CircleZX_V6(ByVal cz As Double, ByVal cx As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Circle_V6")>
+    Public Function MCC_Circle_V6(ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetInPosCheckTime")>
     Public Function MCC_SetInPosCheckTime(ByVal wCheckTime As UShort, Optional ByVal wGroupIndex As UShort = 0) As Integer

@@ -550,6 +550,10 @@ End Type
 ' TMRISR: Sub MyIsr(ByRef value As TMRINT), passed as AddressOf MyIsr
 ' RIOISR: Sub MyIsr(ByRef value As RIOINT), passed as AddressOf MyIsr
 ' HSKISR: Sub MyIsr(ByRef value As HSKINT), passed as AddressOf MyIsr
+' FWDKINEFUN: Function MyIsr(ByVal nGroup As Long, ByVal nSynAxisNum As Long, ByVal pdfFrom As Long, ByVal pdfTo As Long, ByRef dwPosture As Long, ByVal pvExtension As Long) As Long, passed as AddressOf MyIsr
+' INVKINEFUN: Function MyIsr(ByVal nGroup As Long, ByVal nSynAxisNum As Long, ByVal pdfFrom As Long, ByVal pdfPrevResult As Long, ByVal pdfTo As Long, ByRef dwPosture As Long, ByVal pvExtension As Long) As Long, passed as AddressOf MyIsr
+' INIT_EXTENSION: Sub MyIsr(ByVal pvExtension As Long), passed as AddressOf MyIsr
+' PRE_PROCESS_MOTION_COMMAND: Sub MyIsr(ByVal nGroup As Long, ByVal nSynAxisNum As Long, ByVal pdfCurCPos As Long, ByVal pdfTgtCPos As Long, ByVal pdfOffset As Long, ByVal pvExtension As Long), passed as AddressOf MyIsr
 ' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
 
 ' ---- System Management ----
@@ -883,6 +887,18 @@ Public Declare Function MCC_LineB Lib "MCCLPCI_IMP.dll" (ByVal dfB As Double, Op
 Public Declare Function MCC_HelicaXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_HelicaYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_HelicaZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+
+' ---- Special functions only for Robot Control ----
+Public Declare Function MCC_SetKinematicTrans Lib "MCCLPCI_IMP.dll" (ByVal pfnFwdKinematics As Long, ByVal pfnInvKinematics As Long, ByVal dwExtensionSize As Long, ByVal pfnInitExtension As Long, Optional ByVal nGroup As Long = 0) As Long
+Public Declare Function MCC_SetPreProcessMotionCommandCallback Lib "MCCLPCI_IMP.dll" (ByVal pfnPreProcMotionCmd As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtP_V6 Lib "MCCLPCI_IMP.dll" (ByVal j0 As Double, ByVal j1 As Double, ByVal j2 As Double, ByVal j3 As Double, ByVal j4 As Double, ByVal j5 As Double, ByVal j6 As Double, ByVal j7 As Double, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_Line_V6 Lib "MCCLPCI_IMP.dll" (ByVal x As Double, ByVal y As Double, ByVal z As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal a As Double, ByVal b As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_Arc_V6 Lib "MCCLPCI_IMP.dll" (ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_ArcTheta_V6 Lib "MCCLPCI_IMP.dll" (ByVal cx As Double, ByVal cy As Double, ByVal cz As Double, ByVal nv0 As Double, ByVal nv1 As Double, ByVal nv2 As Double, ByVal theta As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_CircleXY_V6 Lib "MCCLPCI_IMP.dll" (ByVal cx As Double, ByVal cy As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleYZ_V6 Lib "MCCLPCI_IMP.dll" (ByVal cy As Double, ByVal cz As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleZX_V6 Lib "MCCLPCI_IMP.dll" (ByVal cz As Double, ByVal cx As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_Circle_V6 Lib "MCCLPCI_IMP.dll" (ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
 Public Declare Function MCC_SetInPosCheckTime Lib "MCCLPCI_IMP.dll" (ByVal wCheckTime As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_GetInPosStableTime Lib "MCCLPCI_IMP.dll" (Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_SetInPosTolerance Lib "MCCLPCI_IMP.dll" (ByVal wTolerance0 As Integer, ByVal wTolerance1 As Integer, ByVal wTolerance2 As Integer, ByVal wTolerance3 As Integer, ByVal wTolerance4 As Integer, ByVal wTolerance5 As Integer, ByVal wTolerance6 As Integer, ByVal wTolerance7 As Integer, Optional ByVal wGroupIndex As Integer = 0) As Long

@@ -74,12 +74,27 @@ struct Func {
     codes: Codes,
 }
 
+/// A callback typedef: `RET (CONV *NAME)(ARGS)`.
+struct CbSig {
+    /// Calling-convention macro text.
+    conv: String,
+    /// The pointee of a routine's one argument (`LIOINT`), `void` for none; for a
+    /// callback with several arguments, its whole parameter list.
+    arg: String,
+    /// Return type.
+    ret: String,
+    /// Several (or named) arguments (`int nGroup, const double *p, ...`): the routine
+    /// declares them as written, hands none to the runtime, and returns 1 (`TRUE`) if
+    /// it returns anything.
+    several: bool,
+}
+
 #[derive(Default)]
 struct Model {
     aliases: BTreeMap<String, String>,
     structs: BTreeMap<String, Vec<Decl>>,
-    /// Callback typedef name -> (calling-convention macro text, argument type or "void").
-    callbacks: BTreeMap<String, (String, String)>,
+    /// Callback typedef name -> its signature.
+    callbacks: BTreeMap<String, CbSig>,
     funcs: Vec<Func>,
     headers: Vec<String>,
     /// Integer macros (`#define NAME 16`), for array lengths given by name.
@@ -251,6 +266,7 @@ impl Model {
     fn typedef(&mut self, file: &str, stmt: &str) -> Result<(), String> {
         let t = &stmt["typedef ".len()..];
         if let Some(star) = t.find('(') {
+            let ret = t[..star].trim().to_string();
             let inner_end = t[star..].find(')').ok_or("bad callback typedef")? + star;
             let inner = &t[star + 1..inner_end];
             let (conv, nm) = inner.split_once('*').ok_or("bad callback typedef")?;
@@ -258,12 +274,30 @@ impl Model {
                 .trim()
                 .trim_start_matches('(')
                 .trim_end_matches(')');
-            if args.contains(',') {
-                return Err(format!("{file}: callback `{stmt}` takes several arguments"));
+            // A named parameter (`void *pvExtension`) is declared as written too.
+            let named = args
+                .rsplit_once('*')
+                .is_some_and(|(_, n)| !n.trim().is_empty());
+            let several = args.contains(',') || named;
+            if !several && ret != "void" {
+                return Err(format!(
+                    "{file}: callback `{stmt}`: one argument and a result"
+                ));
             }
-            let arg = args.replace('*', "").trim().to_string();
-            self.callbacks
-                .insert(nm.trim().to_string(), (conv.trim().to_string(), arg));
+            let arg = if several {
+                args.trim().to_string()
+            } else {
+                args.replace('*', "").trim().to_string()
+            };
+            self.callbacks.insert(
+                nm.trim().to_string(),
+                CbSig {
+                    conv: conv.trim().to_string(),
+                    arg,
+                    ret,
+                    several,
+                },
+            );
         } else {
             let toks: Vec<&str> = t.split_whitespace().collect();
             if let Some((n, ty)) = toks.split_last() {
@@ -667,7 +701,22 @@ fn gen(m: &Model) -> Result<String, String> {
         .enumerate()
         .map(|(i, k)| (k, i))
         .collect();
-    for (i, (name, (conv, arg))) in m.callbacks.iter().enumerate() {
+    for (i, (name, cb)) in m.callbacks.iter().enumerate() {
+        let (conv, arg) = (&cb.conv, &cb.arg);
+        if cb.several {
+            let ret = if cb.ret == "void" {
+                String::new()
+            } else {
+                "\n    return 1;".to_string()
+            };
+            let _ = writeln!(
+                o,
+                "\nstatic {} {conv} fz_cb_{}({arg})\n{{\n    fz_routine({i}, NULL, 0);{ret}\n}}",
+                cb.ret,
+                c_ident(name)
+            );
+            continue;
+        }
         let (sig, size) = if arg == "void" || arg.is_empty() {
             ("void".to_string(), "0".to_string())
         } else {
@@ -681,7 +730,8 @@ fn gen(m: &Model) -> Result<String, String> {
         );
     }
     let _ = writeln!(o, "\nconst fz_cb_t fz_cbs[] = {{");
-    for (name, (_, arg)) in &m.callbacks {
+    for (name, cb) in &m.callbacks {
+        let arg = if cb.several { "void" } else { cb.arg.as_str() };
         let setters = m
             .funcs
             .iter()
