@@ -100,11 +100,15 @@ pub extern "C" fn MCC_SetPreProcessMotionCommandCallback(
 }
 
 /// For `MCC_GetCurPos` on a kinematic group: the forward kinematics of the joints the
-/// channels carry, called with no lock held; `None` for a group that is not kinematic.
+/// channels carry, called with no lock held; `None` for a group that is not kinematic
+/// (without taking its lock while no group of the system is kinematic).
 /// A failing forward kinematics stops the group with 0xF105 and the read fails with
 /// `COMMAND_NOTACCEPTED_ERR`.
 pub(super) fn cur_pos(g: WORD) -> McclResult<Option<Axes>> {
     let shared = system::active()?;
+    if !shared.kinematics_on.load(Ordering::Acquire) {
+        return Ok(None);
+    }
     let Some((fns, joints, mut posture, generation)) = shared.group(g)?.kinematics_reading() else {
         return Ok(None);
     };

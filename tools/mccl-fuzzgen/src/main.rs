@@ -709,9 +709,20 @@ fn gen(m: &Model) -> Result<String, String> {
             } else {
                 "\n    return 1;".to_string()
             };
+            // The arguments are declared and not used.
+            let unused: String = arg
+                .split(',')
+                .filter_map(|a| {
+                    a.replace('*', " ")
+                        .split_whitespace()
+                        .last()
+                        .map(str::to_string)
+                })
+                .map(|n| format!("\n    (void){n};"))
+                .collect();
             let _ = writeln!(
                 o,
-                "\nstatic {} {conv} fz_cb_{}({arg})\n{{\n    fz_routine({i}, NULL, 0);{ret}\n}}",
+                "\nstatic {} {conv} fz_cb_{}({arg})\n{{{unused}\n    fz_routine({i}, NULL, 0);{ret}\n}}",
                 cb.ret,
                 c_ident(name)
             );
