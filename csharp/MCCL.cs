@@ -604,24 +604,24 @@ public static class MCCL
 
     // ---- Callback types (keep the delegate instance alive while registered) ----
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
-    public delegate double CUSTOM_START_MOTION(int arg0, int arg1, int arg2, [MarshalAs(UnmanagedType.Bool)] bool arg3, ref double arg4, IntPtr arg5);
+    public delegate double CUSTOM_START_MOTION(int arg0, int arg1, int arg2, [MarshalAs(UnmanagedType.Bool)] bool arg3, IntPtr arg4, IntPtr arg5);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     [return: MarshalAs(UnmanagedType.Bool)]
-    public delegate bool CUSTOM_INTERPOLATION(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, double arg5, double arg6, ref double arg7, IntPtr arg8);
+    public delegate bool CUSTOM_INTERPOLATION(int arg0, int arg1, int arg2, IntPtr arg3, IntPtr arg4, double arg5, double arg6, IntPtr arg7, IntPtr arg8);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void CUSTOM_CLEANUP(int arg0, int arg1, IntPtr arg2);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     [return: MarshalAs(UnmanagedType.Bool)]
-    public delegate bool CUSTOM_BLENDING_START(int arg0, int arg1, int arg2, [MarshalAs(UnmanagedType.Bool)] bool arg3, ref double arg4, ref double arg5, ref double arg6, ref double arg7, ref double arg8, ref double arg9, ref double arg10, double arg11, IntPtr arg12);
+    public delegate bool CUSTOM_BLENDING_START(int arg0, int arg1, int arg2, [MarshalAs(UnmanagedType.Bool)] bool arg3, IntPtr arg4, IntPtr arg5, IntPtr arg6, IntPtr arg7, IntPtr arg8, IntPtr arg9, IntPtr arg10, double arg11, IntPtr arg12);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     [return: MarshalAs(UnmanagedType.Bool)]
-    public delegate bool CUSTOM_BLENDING(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, ref double arg5, double arg6, ref double arg7, IntPtr arg8);
+    public delegate bool CUSTOM_BLENDING(int arg0, int arg1, int arg2, IntPtr arg3, IntPtr arg4, IntPtr arg5, double arg6, IntPtr arg7, IntPtr arg8);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     [return: MarshalAs(UnmanagedType.Bool)]
     public delegate bool CUSTOM_BLENDING_END(int arg0, int arg1, IntPtr arg2);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     [return: MarshalAs(UnmanagedType.Bool)]
-    public delegate bool INFINITE_INTERPOLATION(int arg0, int arg1, int arg2, ref double arg3, ref double arg4, double arg5, double arg6, ref double arg7, IntPtr arg8, [MarshalAs(UnmanagedType.Bool)] ref bool arg9);
+    public delegate bool INFINITE_INTERPOLATION(int arg0, int arg1, int arg2, IntPtr arg3, IntPtr arg4, double arg5, double arg6, IntPtr arg7, IntPtr arg8, [MarshalAs(UnmanagedType.Bool)] ref bool arg9);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void CYCLE_INTERRUPT_ISR();
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
@@ -640,6 +640,16 @@ public static class MCCL
     public delegate void RIOISR(ref RIOINT value);
     [UnmanagedFunctionPointer(CallingConvention.Winapi)]
     public delegate void HSKISR(ref HSKINT value);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool FWDKINEFUN(int nGroup, int nSynAxisNum, IntPtr pdfFrom, IntPtr pdfTo, ref uint dwPosture, IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    [return: MarshalAs(UnmanagedType.Bool)]
+    public delegate bool INVKINEFUN(int nGroup, int nSynAxisNum, IntPtr pdfFrom, IntPtr pdfPrevResult, IntPtr pdfTo, ref uint dwPosture, IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void INIT_EXTENSION(IntPtr pvExtension);
+    [UnmanagedFunctionPointer(CallingConvention.Winapi)]
+    public delegate void PRE_PROCESS_MOTION_COMMAND(int nGroup, int nSynAxisNum, IntPtr pdfCurCPos, IntPtr pdfTgtCPos, IntPtr pdfOffset, IntPtr pvExtension);
 
     // C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
     private static readonly bool NativeLongIs64 = IntPtr.Size == 8 && Environment.OSVersion.Platform != PlatformID.Win32NT;
@@ -1402,6 +1412,28 @@ public static class MCCL
     public static extern int MCC_ConeYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ConeZX_Y")]
     public static extern int MCC_ConeZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, double CenterRate, byte byCirDir, ushort wGroupIndex = 0);
+
+    // ---- Special functions only for Robot Control ----
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetKinematicTrans")]
+    public static extern int MCC_SetKinematicTrans(FWDKINEFUN pfnFwdKinematics, INVKINEFUN pfnInvKinematics, uint dwExtensionSize, INIT_EXTENSION pfnInitExtension, int nGroup = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetPreProcessMotionCommandCallback")]
+    public static extern int MCC_SetPreProcessMotionCommandCallback(PRE_PROCESS_MOTION_COMMAND pfnPreProcMotionCmd, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_PtP_V6")]
+    public static extern int MCC_PtP_V6(double j0, double j1, double j2, double j3, double j4, double j5, double j6, double j7, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Line_V6")]
+    public static extern int MCC_Line_V6(double x, double y, double z, double rx, double ry, double rz, double a, double b, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Arc_V6")]
+    public static extern int MCC_Arc_V6(double x0, double y0, double z0, double x1, double y1, double z1, double rx, double ry, double rz, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_ArcTheta_V6")]
+    public static extern int MCC_ArcTheta_V6(double cx, double cy, double cz, double nv0, double nv1, double nv2, double theta, double rx, double ry, double rz, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleXY_V6")]
+    public static extern int MCC_CircleXY_V6(double cx, double cy, double rx, double ry, double rz, byte byCirDir, uint posture = 0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleYZ_V6")]
+    public static extern int MCC_CircleYZ_V6(double cy, double cz, double rx, double ry, double rz, byte byCirDir, uint posture = 0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_CircleZX_V6")]
+    public static extern int MCC_CircleZX_V6(double cz, double cx, double rx, double ry, double rz, byte byCirDir, uint posture = 0, ushort wGroupIndex = 0);
+    [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_Circle_V6")]
+    public static extern int MCC_Circle_V6(double x0, double y0, double z0, double x1, double y1, double z1, double rx, double ry, double rz, uint posture = 0, ushort wGroupIndex = 0, uint dwAxisMask = IMP_AXIS_ALL);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetCycleInterruptRoutine")]
     public static extern int MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
     [DllImport("MCCLPCI_IMP.dll", EntryPoint = "MCC_SetMachParam")]

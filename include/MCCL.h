@@ -267,6 +267,14 @@ typedef struct {
 
 typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
+typedef BOOL (MCC_CALLBACK *FWDKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, double *pdfTo, DWORD *dwPosture, void *pvExtension);
+
+typedef BOOL (MCC_CALLBACK *INVKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, const double *pdfPrevResult, double *pdfTo, DWORD *dwPosture, void *pvExtension);
+
+typedef void (MCC_CALLBACK *INIT_EXTENSION)(void *pvExtension);
+
+typedef void (MCC_CALLBACK *PRE_PROCESS_MOTION_COMMAND)(int nGroup, int nSynAxisNum, const double *pdfCurCPos, const double *pdfTgtCPos, double *pdfOffset, void *pvExtension);
+
 typedef struct {
   WORD wType;
   WORD wApproachDir;

@@ -374,6 +374,18 @@ MCC_API int MCC_CALL MCC_ConeXY_Z(double dfCX, double dfCY, double dfPos, double
 MCC_API int MCC_CALL MCC_ConeYZ_X(double dfCY, double dfCZ, double dfPos, double dfPitch, double CenterRate, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 MCC_API int MCC_CALL MCC_ConeZX_Y(double dfCZ, double dfCX, double dfPos, double dfPitch, double CenterRate, BYTE byCirDir, WORD wGroupIndex MCC_DEFAULT(0));
 
+/* Special functions only for Robot Control */
+MCC_API int MCC_CALL MCC_SetKinematicTrans(FWDKINEFUN pfnFwdKinematics, INVKINEFUN pfnInvKinematics, DWORD dwExtensionSize MCC_DEFAULT(0), INIT_EXTENSION pfnInitExtension MCC_DEFAULT(0), int nGroup MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_SetPreProcessMotionCommandCallback(PRE_PROCESS_MOTION_COMMAND pfnPreProcMotionCmd, WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_PtP_V6(double j0, double j1, double j2, double j3, double j4, double j5, double j6, double j7, WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_Line_V6(double x, double y, double z, double rx, double ry, double rz, double a, double b, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_Arc_V6(double x0, double y0, double z0, double x1, double y1, double z1, double rx, double ry, double rz, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_ArcTheta_V6(double cx, double cy, double cz, double nv0, double nv1, double nv2, double theta, double rx, double ry, double rz, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+MCC_API int MCC_CALL MCC_CircleXY_V6(double cx, double cy, double rx, double ry, double rz, BYTE byCirDir, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleYZ_V6(double cy, double cz, double rx, double ry, double rz, BYTE byCirDir, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_CircleZX_V6(double cz, double cx, double rx, double ry, double rz, BYTE byCirDir, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0));
+MCC_API int MCC_CALL MCC_Circle_V6(double x0, double y0, double z0, double x1, double y1, double z1, double rx, double ry, double rz, DWORD posture MCC_DEFAULT(0), WORD wGroupIndex MCC_DEFAULT(0), DWORD dwAxisMask MCC_DEFAULT(IMP_AXIS_ALL));
+
 /* Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2) */
 MCC_API int MCC_CALL MCC_SetCycleInterruptRoutine(CYCLE_INTERRUPT_ISR pfnCycleIntRoutine);
 MCC_API int MCC_CALL MCC_SetMachParam(SYS_MACH_PARAM *pstMachParam, WORD wChannel, WORD wCardIndex MCC_DEFAULT(0));

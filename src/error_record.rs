@@ -12,6 +12,11 @@ pub enum ErrorRecord {
     WatchdogReset,
     /// A bad arc or circle command (0xF104).
     BadArc,
+    /// The forward kinematics of a kinematic group failed (0xF105).
+    ForwardKinematics,
+    /// The inverse kinematics of a kinematic group failed: the Cartesian point is
+    /// unreachable (0xF106).
+    InverseKinematics,
     /// More pulses in a period than the pulse-speed limit (0xF203).
     PulseSpeed,
     /// A pulse-rate change over the pulse-acceleration limit (0xF204).
@@ -43,6 +48,8 @@ impl ErrorRecord {
             ErrorRecord::EmergencyStop => 0xF102,
             ErrorRecord::WatchdogReset => 0xF103,
             ErrorRecord::BadArc => 0xF104,
+            ErrorRecord::ForwardKinematics => 0xF105,
+            ErrorRecord::InverseKinematics => 0xF106,
             ErrorRecord::PulseSpeed => 0xF203,
             ErrorRecord::PulseAcc => 0xF204,
             ErrorRecord::OverTravel(axis) => 0xF301 + axis as i32,
@@ -64,6 +71,8 @@ mod tests {
     #[test]
     fn codes_are_the_documented_values() {
         assert_eq!(EmergencyStop.code(), 0xF102);
+        assert_eq!(ForwardKinematics.code(), 0xF105);
+        assert_eq!(InverseKinematics.code(), 0xF106);
         assert_eq!(OverTravel(0).code(), 0xF301);
         assert_eq!(OverTravel(7).code(), 0xF308);
         assert_eq!(Limit(2).code(), 0xF703);

@@ -560,19 +560,19 @@ Public Module MCCL
 
     ' ---- Callback types (keep the delegate instance alive while registered) ----
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Function CUSTOM_START_MOTION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, <MarshalAs(UnmanagedType.Bool)> ByVal arg3 As Boolean, ByRef arg4 As Double, ByVal arg5 As IntPtr) As Double
+    Public Delegate Function CUSTOM_START_MOTION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, <MarshalAs(UnmanagedType.Bool)> ByVal arg3 As Boolean, ByVal arg4 As IntPtr, ByVal arg5 As IntPtr) As Double
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Function CUSTOM_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByVal arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr) As Boolean
+    Public Delegate Function CUSTOM_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByVal arg3 As IntPtr, ByVal arg4 As IntPtr, ByVal arg5 As Double, ByVal arg6 As Double, ByVal arg7 As IntPtr, ByVal arg8 As IntPtr) As Boolean
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub CUSTOM_CLEANUP(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As IntPtr)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Function CUSTOM_BLENDING_START(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, <MarshalAs(UnmanagedType.Bool)> ByVal arg3 As Boolean, ByRef arg4 As Double, ByRef arg5 As Double, ByRef arg6 As Double, ByRef arg7 As Double, ByRef arg8 As Double, ByRef arg9 As Double, ByRef arg10 As Double, ByVal arg11 As Double, ByVal arg12 As IntPtr) As Boolean
+    Public Delegate Function CUSTOM_BLENDING_START(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, <MarshalAs(UnmanagedType.Bool)> ByVal arg3 As Boolean, ByVal arg4 As IntPtr, ByVal arg5 As IntPtr, ByVal arg6 As IntPtr, ByVal arg7 As IntPtr, ByVal arg8 As IntPtr, ByVal arg9 As IntPtr, ByVal arg10 As IntPtr, ByVal arg11 As Double, ByVal arg12 As IntPtr) As Boolean
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Function CUSTOM_BLENDING(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByRef arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr) As Boolean
+    Public Delegate Function CUSTOM_BLENDING(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByVal arg3 As IntPtr, ByVal arg4 As IntPtr, ByVal arg5 As IntPtr, ByVal arg6 As Double, ByVal arg7 As IntPtr, ByVal arg8 As IntPtr) As Boolean
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Function CUSTOM_BLENDING_END(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As IntPtr) As Boolean
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
-    Public Delegate Function INFINITE_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByRef arg3 As Double, ByRef arg4 As Double, ByVal arg5 As Double, ByVal arg6 As Double, ByRef arg7 As Double, ByVal arg8 As IntPtr, <MarshalAs(UnmanagedType.Bool)> ByRef arg9 As Boolean) As Boolean
+    Public Delegate Function INFINITE_INTERPOLATION(ByVal arg0 As Integer, ByVal arg1 As Integer, ByVal arg2 As Integer, ByVal arg3 As IntPtr, ByVal arg4 As IntPtr, ByVal arg5 As Double, ByVal arg6 As Double, ByVal arg7 As IntPtr, ByVal arg8 As IntPtr, <MarshalAs(UnmanagedType.Bool)> ByRef arg9 As Boolean) As Boolean
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub CYCLE_INTERRUPT_ISR()
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
@@ -591,6 +591,14 @@ Public Module MCCL
     Public Delegate Sub RIOISR(ByRef value As RIOINT)
     <UnmanagedFunctionPointer(CallingConvention.Winapi)>
     Public Delegate Sub HSKISR(ByRef value As HSKINT)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function FWDKINEFUN(ByVal nGroup As Integer, ByVal nSynAxisNum As Integer, ByVal pdfFrom As IntPtr, ByVal pdfTo As IntPtr, ByRef dwPosture As UInteger, ByVal pvExtension As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Function INVKINEFUN(ByVal nGroup As Integer, ByVal nSynAxisNum As Integer, ByVal pdfFrom As IntPtr, ByVal pdfPrevResult As IntPtr, ByVal pdfTo As IntPtr, ByRef dwPosture As UInteger, ByVal pvExtension As IntPtr) As Boolean
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub INIT_EXTENSION(ByVal pvExtension As IntPtr)
+    <UnmanagedFunctionPointer(CallingConvention.Winapi)>
+    Public Delegate Sub PRE_PROCESS_MOTION_COMMAND(ByVal nGroup As Integer, ByVal nSynAxisNum As Integer, ByVal pdfCurCPos As IntPtr, ByVal pdfTgtCPos As IntPtr, ByVal pdfOffset As IntPtr, ByVal pvExtension As IntPtr)
 
     ' C long is 8 bytes on LP64 Unix and 4 on Windows (and on 32-bit systems).
     Private ReadOnly NativeLongIs64 As Boolean = IntPtr.Size = 8 AndAlso Environment.OSVersion.Platform <> PlatformID.Win32NT
@@ -1650,6 +1658,38 @@ Public Module MCCL
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ConeZX_Y")>
     Public Function MCC_ConeZX_Y(ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+
+    ' ---- Special functions only for Robot Control ----
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetKinematicTrans")>
+    Public Function MCC_SetKinematicTrans(ByVal pfnFwdKinematics As FWDKINEFUN, ByVal pfnInvKinematics As INVKINEFUN, ByVal dwExtensionSize As UInteger, ByVal pfnInitExtension As INIT_EXTENSION, Optional ByVal nGroup As Integer = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetPreProcessMotionCommandCallback")>
+    Public Function MCC_SetPreProcessMotionCommandCallback(ByVal pfnPreProcMotionCmd As PRE_PROCESS_MOTION_COMMAND, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_PtP_V6")>
+    Public Function MCC_PtP_V6(ByVal j0 As Double, ByVal j1 As Double, ByVal j2 As Double, ByVal j3 As Double, ByVal j4 As Double, ByVal j5 As Double, ByVal j6 As Double, ByVal j7 As Double, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Line_V6")>
+    Public Function MCC_Line_V6(ByVal x As Double, ByVal y As Double, ByVal z As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal a As Double, ByVal b As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Arc_V6")>
+    Public Function MCC_Arc_V6(ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_ArcTheta_V6")>
+    Public Function MCC_ArcTheta_V6(ByVal cx As Double, ByVal cy As Double, ByVal cz As Double, ByVal nv0 As Double, ByVal nv1 As Double, ByVal nv2 As Double, ByVal theta As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleXY_V6")>
+    Public Function MCC_CircleXY_V6(ByVal cx As Double, ByVal cy As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleYZ_V6")>
+    Public Function MCC_CircleYZ_V6(ByVal cy As Double, ByVal cz As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_CircleZX_V6")>
+    Public Function MCC_CircleZX_V6(ByVal cz As Double, ByVal cx As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0) As Integer
+    End Function
+    <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_Circle_V6")>
+    Public Function MCC_Circle_V6(ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As UInteger = 0, Optional ByVal wGroupIndex As UShort = 0, Optional ByVal dwAxisMask As UInteger = IMP_AXIS_ALL) As Integer
     End Function
     <DllImport("MCCLPCI_IMP.dll", EntryPoint:="MCC_SetCycleInterruptRoutine")>
     Public Function MCC_SetCycleInterruptRoutine(ByVal pfnCycleIntRoutine As CYCLE_INTERRUPT_ISR) As Integer

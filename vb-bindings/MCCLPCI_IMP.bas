@@ -543,15 +543,15 @@ Public Type SYS_GROUP_CONFIG
 End Type
 
 ' ---- Callbacks ----
-' CUSTOM_START_MOTION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Bool, Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
-' CUSTOM_INTERPOLATION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Float(8), Float(8), Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
-' CUSTOM_CLEANUP: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
-' CUSTOM_BLENDING_START: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Bool, Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Float(8), Ptr(Void)), passed as AddressOf MyIsr
-' CUSTOM_BLENDING: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Ptr(Float(8)), Float(8), Ptr(Float(8)), Ptr(Void)), passed as AddressOf MyIsr
-' CUSTOM_BLENDING_END: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
-' INFINITE_INTERPOLATION: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Float(8)), Ptr(Float(8)), Float(8), Float(8), Ptr(Float(8)), Ptr(Void), Ptr(Bool)), passed as AddressOf MyIsr
+' CUSTOM_START_MOTION: Function MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long, ByVal arg3 As Long, ByVal arg4 As Long, ByVal arg5 As Long) As Double, passed as AddressOf MyIsr
+' CUSTOM_INTERPOLATION: Function MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long, ByVal arg3 As Long, ByVal arg4 As Long, ByVal arg5 As Double, ByVal arg6 As Double, ByVal arg7 As Long, ByVal arg8 As Long) As Long, passed as AddressOf MyIsr
+' CUSTOM_CLEANUP: Sub MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long), passed as AddressOf MyIsr
+' CUSTOM_BLENDING_START: Function MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long, ByVal arg3 As Long, ByVal arg4 As Long, ByVal arg5 As Long, ByVal arg6 As Long, ByVal arg7 As Long, ByVal arg8 As Long, ByVal arg9 As Long, ByVal arg10 As Long, ByVal arg11 As Double, ByVal arg12 As Long) As Long, passed as AddressOf MyIsr
+' CUSTOM_BLENDING: Function MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long, ByVal arg3 As Long, ByVal arg4 As Long, ByVal arg5 As Long, ByVal arg6 As Double, ByVal arg7 As Long, ByVal arg8 As Long) As Long, passed as AddressOf MyIsr
+' CUSTOM_BLENDING_END: Function MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long) As Long, passed as AddressOf MyIsr
+' INFINITE_INTERPOLATION: Function MyIsr(ByVal arg0 As Long, ByVal arg1 As Long, ByVal arg2 As Long, ByVal arg3 As Long, ByVal arg4 As Long, ByVal arg5 As Double, ByVal arg6 As Double, ByVal arg7 As Long, ByVal arg8 As Long, ByRef arg9 As Long) As Long, passed as AddressOf MyIsr
 ' CYCLE_INTERRUPT_ISR: Sub MyIsr(), passed as AddressOf MyIsr
-' INTERP: Sub MyIsr(Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Int { bytes: 4, signed: true }, Ptr(Void)), passed as AddressOf MyIsr
+' INTERP: Function MyIsr(ByVal nGroup As Long, ByVal nCommandIndex As Long, ByVal nTimeIndex As Long, ByVal pvBuffer As Long) As Long, passed as AddressOf MyIsr
 ' LIOISR: Sub MyIsr(ByRef value As LIOINT), passed as AddressOf MyIsr
 ' ENCISR: Sub MyIsr(ByRef value As ENCINT), passed as AddressOf MyIsr
 ' PCLISR: Sub MyIsr(ByRef value As PCLINT), passed as AddressOf MyIsr
@@ -559,6 +559,10 @@ End Type
 ' TMRISR: Sub MyIsr(ByRef value As TMRINT), passed as AddressOf MyIsr
 ' RIOISR: Sub MyIsr(ByRef value As RIOINT), passed as AddressOf MyIsr
 ' HSKISR: Sub MyIsr(ByRef value As HSKINT), passed as AddressOf MyIsr
+' FWDKINEFUN: Function MyIsr(ByVal nGroup As Long, ByVal nSynAxisNum As Long, ByVal pdfFrom As Long, ByVal pdfTo As Long, ByRef dwPosture As Long, ByVal pvExtension As Long) As Long, passed as AddressOf MyIsr
+' INVKINEFUN: Function MyIsr(ByVal nGroup As Long, ByVal nSynAxisNum As Long, ByVal pdfFrom As Long, ByVal pdfPrevResult As Long, ByVal pdfTo As Long, ByRef dwPosture As Long, ByVal pvExtension As Long) As Long, passed as AddressOf MyIsr
+' INIT_EXTENSION: Sub MyIsr(ByVal pvExtension As Long), passed as AddressOf MyIsr
+' PRE_PROCESS_MOTION_COMMAND: Sub MyIsr(ByVal nGroup As Long, ByVal nSynAxisNum As Long, ByVal pdfCurCPos As Long, ByVal pdfTgtCPos As Long, ByVal pdfOffset As Long, ByVal pvExtension As Long), passed as AddressOf MyIsr
 
 ' ---- System Management ----
 Public Declare Sub MCC_GetVersion Lib "MCCLPCI_IMP.dll" (ByVal strVersion As String)
@@ -899,6 +903,18 @@ Public Declare Function MCC_HelicaZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Doub
 Public Declare Function MCC_ConeXY_Z Lib "MCCLPCI_IMP.dll" (ByVal dfCX As Double, ByVal dfCY As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_ConeYZ_X Lib "MCCLPCI_IMP.dll" (ByVal dfCY As Double, ByVal dfCZ As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
 Public Declare Function MCC_ConeZX_Y Lib "MCCLPCI_IMP.dll" (ByVal dfCZ As Double, ByVal dfCX As Double, ByVal dfPos As Double, ByVal dfPitch As Double, ByVal CenterRate As Double, ByVal byCirDir As Byte, Optional ByVal wGroupIndex As Integer = 0) As Long
+
+' ---- Special functions only for Robot Control ----
+Public Declare Function MCC_SetKinematicTrans Lib "MCCLPCI_IMP.dll" (ByVal pfnFwdKinematics As Long, ByVal pfnInvKinematics As Long, ByVal dwExtensionSize As Long, ByVal pfnInitExtension As Long, Optional ByVal nGroup As Long = 0) As Long
+Public Declare Function MCC_SetPreProcessMotionCommandCallback Lib "MCCLPCI_IMP.dll" (ByVal pfnPreProcMotionCmd As Long, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_PtP_V6 Lib "MCCLPCI_IMP.dll" (ByVal j0 As Double, ByVal j1 As Double, ByVal j2 As Double, ByVal j3 As Double, ByVal j4 As Double, ByVal j5 As Double, ByVal j6 As Double, ByVal j7 As Double, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_Line_V6 Lib "MCCLPCI_IMP.dll" (ByVal x As Double, ByVal y As Double, ByVal z As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal a As Double, ByVal b As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_Arc_V6 Lib "MCCLPCI_IMP.dll" (ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_ArcTheta_V6 Lib "MCCLPCI_IMP.dll" (ByVal cx As Double, ByVal cy As Double, ByVal cz As Double, ByVal nv0 As Double, ByVal nv1 As Double, ByVal nv2 As Double, ByVal theta As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
+Public Declare Function MCC_CircleXY_V6 Lib "MCCLPCI_IMP.dll" (ByVal cx As Double, ByVal cy As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleYZ_V6 Lib "MCCLPCI_IMP.dll" (ByVal cy As Double, ByVal cz As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_CircleZX_V6 Lib "MCCLPCI_IMP.dll" (ByVal cz As Double, ByVal cx As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, ByVal byCirDir As Byte, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0) As Long
+Public Declare Function MCC_Circle_V6 Lib "MCCLPCI_IMP.dll" (ByVal x0 As Double, ByVal y0 As Double, ByVal z0 As Double, ByVal x1 As Double, ByVal y1 As Double, ByVal z1 As Double, ByVal rx As Double, ByVal ry As Double, ByVal rz As Double, Optional ByVal posture As Long = 0, Optional ByVal wGroupIndex As Integer = 0, Optional ByVal dwAxisMask As Long = IMP_AXIS_ALL) As Long
 Public Declare Function MCC_SetCycleInterruptRoutine Lib "MCCLPCI_IMP.dll" (ByVal pfnCycleIntRoutine As Long) As Long
 Public Declare Function MCC_SetMachParam Lib "MCCLPCI_IMP.dll" (ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long
 Public Declare Function MCC_GetMachParam Lib "MCCLPCI_IMP.dll" (ByRef pstMachParam As SYS_MACH_PARAM, ByVal wChannel As Integer, Optional ByVal wCardIndex As Integer = 0) As Long

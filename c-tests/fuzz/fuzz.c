@@ -524,6 +524,15 @@ static int fz_find(const char *name)
 
 static SYS_CARD_CONFIG good_cards[MAX_CARD_NUM];
 
+/* The fuzzer's routine of callback type `name` (NULL if there is none). */
+static void (*routine_named(const char *name))(void)
+{
+    for (int i = 0; i < fz_ncbs; i++)
+        if (strcmp(fz_cbs[i].name, name) == 0)
+            return fz_cbs[i].fn;
+    return NULL;
+}
+
 static void init_good(fz_t *z)
 {
     FZ_DO(z, "MCC_InitSystem", "1, {IMP_III}, 1", MCC_InitSystem(1, good_cards, 1));
@@ -533,9 +542,10 @@ static void init_good(fz_t *z)
  * a sane machine, all routines registered, timer (TMR), ADC conversions (ADC), a home
  * sensor forced on and off (LIO), index pulses and a compare value passed (ENC), an
  * error-count threshold below the lag of channel 0 during a move (PCL), a looped-back
- * remote output toggled (RIO). HSK: nothing in the library raises the handshake cause
- * (Interrupt::Handshake is never raised in src/), so the HSK routine is registered but
- * cannot be delivered; it is excluded from --require-routines. */
+ * remote output toggled (RIO), a robot group's move (kinematics, pre-process). HSK:
+ * nothing in the library raises the handshake cause (Interrupt::Handshake is never raised
+ * in src/), so the HSK routine is registered but cannot be delivered; it is excluded from
+ * --require-routines. */
 static void arm(fz_t *z)
 {
     SYS_MAC_PARAM mac;
@@ -558,6 +568,8 @@ static void arm(fz_t *z)
         FZ_DO(z, "MCC_SetMacParam", "&sane, ch, 0", MCC_SetMacParam(&mac, ch, 0));
     FZ_DO(z, "MCC_CloseAllGroups", "", MCC_CloseAllGroups());
     FZ_DO(z, "MCC_CreateGroup", "0..7, card 0", MCC_CreateGroup(0, 1, 2, 3, 4, 5, 6, 7, 0));
+    /* Group 1: a robot on channel 7 (B), below. */
+    FZ_DO(z, "MCC_CreateGroup", "B on 7, card 0", MCC_CreateGroup(-1, -1, -1, -1, -1, -1, -1, 7, 0));
     int ok = MCC_GetMotionStatus(0); /* not counted: the status before init */
     (void)ok;
     init_good(z);
@@ -590,6 +602,18 @@ static void arm(fz_t *z)
     FZ_DO(z, "MCC_SetRIOOutputValue", "0, 0, 0, 0", MCC_SetRIOOutputValue(0, 0, 0, 0));
     FZ_DO_REAL(z, "MCC_SetFeedSpeed", "100, 0", MCC_SetFeedSpeed(100, 0));
     FZ_DO(z, "MCC_Line", "35, 0.., 0, ALL", MCC_Line(35, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL));
+    /* Group 1 becomes a robot with the fuzzer's routines as its kinematics (their
+     * joints stay where they are: channel 7 stays at 0, as group 0 commands it) and
+     * pre-process routine, which runs when its Cartesian move starts. */
+    FZ_DO(z, "MCC_SetKinematicTrans", "fz routines, 64, fz routine, 1",
+          MCC_SetKinematicTrans((FWDKINEFUN)routine_named("FWDKINEFUN"),
+                                (INVKINEFUN)routine_named("INVKINEFUN"), 64,
+                                (INIT_EXTENSION)routine_named("INIT_EXTENSION"), 1));
+    FZ_DO(z, "MCC_SetPreProcessMotionCommandCallback", "fz routine, 1",
+          MCC_SetPreProcessMotionCommandCallback(
+              (PRE_PROCESS_MOTION_COMMAND)routine_named("PRE_PROCESS_MOTION_COMMAND"), 1));
+    FZ_DO(z, "MCC_Line_V6", "0.., b 1, posture 0, 1, ALL",
+          MCC_Line_V6(0, 0, 0, 0, 0, 0, 0, 1, 0, 1, IMP_AXIS_ALL));
     FZ_DO_VOID(z, "MCC_TimeDelay", "40", MCC_TimeDelay(40));
 }
 

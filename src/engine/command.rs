@@ -51,6 +51,8 @@ pub enum Plan {
     Output(Output),
     /// Custom motion: the program's callbacks give the path (`group/custom.rs`).
     Custom(super::group::custom::CustomMove),
+    /// A joint move of a kinematic group (`MCC_PtP_V6`, `super::kinematics`).
+    Joint(Box<super::kinematics::JointMove>),
 }
 
 /// An output a queued command sets: the bits of `mask` take those of `value`.
@@ -95,6 +97,8 @@ pub struct Command {
     pub dec_ms: f64,
     /// The plan.
     pub plan: Plan,
+    /// The posture a V6 command hands to the kinematics (`None`: the group's stays).
+    pub posture: Option<u32>,
 }
 
 impl Command {
@@ -105,13 +109,17 @@ impl Command {
             Plan::Ptp(p) => p.duration(),
             Plan::Delay(s) => *s,
             Plan::Custom(m) => m.duration(),
+            Plan::Joint(j) => j.duration(),
             Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => 0.0,
         }
     }
 
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
-        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_))
+        matches!(
+            self.plan,
+            Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_) | Plan::Joint(_)
+        )
     }
 
     /// Position and velocity (per unit of the command's own time) at time `t`.
@@ -121,6 +129,7 @@ impl Command {
             Plan::Path(m) => m.sample(t),
             Plan::Ptp(p) => p.sample(t),
             Plan::Custom(m) => m.sample(),
+            Plan::Joint(j) => (j.cart_at(t), [0.0; AXES]),
             _ => (self.target, [0.0; AXES]),
         }
     }
@@ -141,6 +150,7 @@ impl Command {
             Plan::Path(m) => m.path.start(),
             Plan::Ptp(p) => p.start(),
             Plan::Custom(m) => m.start,
+            Plan::Joint(j) => j.cart_start,
             _ => self.target,
         }
     }
@@ -357,6 +367,7 @@ impl Ctx<'_> {
             acc_ms: s.acc_ms,
             dec_ms: s.dec_ms,
             plan: Plan::Path(PathMove { path, profile }),
+            posture: None,
         })
     }
 
@@ -403,6 +414,7 @@ impl Ctx<'_> {
             acc_ms: s.ptp_acc_ms[0],
             dec_ms: s.ptp_dec_ms[0],
             plan: Plan::Ptp(mv),
+            posture: None,
         })
     }
 
@@ -416,6 +428,7 @@ impl Ctx<'_> {
             acc_ms: 0.0,
             dec_ms: 0.0,
             plan: Plan::Delay(ms / 1000.0),
+            posture: None,
         }
     }
 
@@ -437,6 +450,7 @@ impl Ctx<'_> {
             acc_ms: 0.0,
             dec_ms: 0.0,
             plan,
+            posture: None,
         }
     }
 }

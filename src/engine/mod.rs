@@ -20,6 +20,7 @@ pub mod cycle;
 pub mod group;
 pub mod homing;
 pub mod isr;
+pub mod kinematics;
 mod poll;
 mod running;
 pub mod safety;

@@ -136,6 +136,8 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
             }
             Next::Tick => {
                 let (published, interrupts) = shared.tick_or_recover();
+                // The program's kinematics for the next tick, without any lock.
+                shared.kinematics_stage();
                 shared.check_watch();
                 if !published {
                     shared.end_of_run();

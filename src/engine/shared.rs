@@ -52,6 +52,8 @@ pub struct Shared {
     /// Publish snapshots on every tick even under a virtual clock (set while code runs on
     /// the engine thread between ticks, i.e. interrupt callbacks are registered).
     pub live_snapshots: AtomicBool,
+    /// A group is kinematic: the engine runs the kinematics stage after each tick.
+    pub kinematics_on: AtomicBool,
     /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
     pub servo_on: Vec<AtomicU32>,
     /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
@@ -130,6 +132,7 @@ impl Shared {
             limit_check: AtomicI32::new(-1),
             dry_run: AtomicBool::new(false),
             live_snapshots: AtomicBool::new(false),
+            kinematics_on: AtomicBool::new(false),
             servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
             pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
             max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),

@@ -52,6 +52,7 @@ impl Shared {
         for (n, g) in self.groups.iter().enumerate() {
             let mut g = g.lock();
             g.tick(dt);
+            g.kinematics_apply();
             crate::fault::point("group tick");
             if let Some(h) = &homed {
                 apply_homing(&mut g, h);

@@ -52,7 +52,8 @@ pub unsafe extern "C" fn MCC_GetCurPos(
                 let shared = system::active()?;
                 shared.poll_position(wGroupIndex);
                 let s = shared.snapshot(wGroupIndex)?;
-                Ok(s.pos)
+                // A kinematic group: the forward kinematics of its joints.
+                Ok(super::kinematics::cur_pos(wGroupIndex)?.unwrap_or(s.pos))
             })
         }
     }
@@ -102,7 +103,14 @@ pub unsafe extern "C" fn MCC_GetPulsePos(
     ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
         // SAFETY: forwarded under this function's contract.
-        unsafe { snapshot_outs(p, wGroupIndex, |s| s.pulses.map(|v| v as c_long)) }
+        unsafe {
+            write_outs(p, || {
+                let s = system::active()?.snapshot(wGroupIndex)?;
+                // A kinematic group: its joints' pulses.
+                let pulses = super::kinematics::joint_pulses(wGroupIndex)?.unwrap_or(s.pulses);
+                Ok(pulses.map(|v| v as c_long))
+            })
+        }
     }
 }
 
@@ -125,7 +133,13 @@ pub unsafe extern "C" fn MCC_GetPulsePosEx(
     ffi_boundary! {
         let p = [plX, plY, plZ, plU, plV, plW, plA, plB];
         // SAFETY: forwarded under this function's contract.
-        unsafe { snapshot_outs(p, wGroupIndex, |s| s.pulses) }
+        unsafe {
+            write_outs(p, || {
+                let s = system::active()?.snapshot(wGroupIndex)?;
+                // A kinematic group: its joints' pulses.
+                Ok(super::kinematics::joint_pulses(wGroupIndex)?.unwrap_or(s.pulses))
+            })
+        }
     }
 }
 

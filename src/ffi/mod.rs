@@ -25,6 +25,7 @@ pub mod handshake;
 pub mod home;
 pub mod isr;
 pub mod jog;
+pub mod kinematics;
 pub mod legacy_params;
 pub mod limits;
 pub mod local_io;

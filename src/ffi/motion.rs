@@ -13,7 +13,7 @@ use std::os::raw::{c_char, c_int};
 
 use crate::config::range::time_ms;
 
-fn direction(byCirDir: BYTE) -> McclResult<bool> {
+pub(super) fn direction(byCirDir: BYTE) -> McclResult<bool> {
     match i32::from(byCirDir) {
         c::CIR_CW => Ok(false),
         c::CIR_CCW => Ok(true),

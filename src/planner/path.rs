@@ -5,6 +5,8 @@ use super::cone::ConeSeg;
 use super::{check_all_finite, check_finite, Axes, PlanError, NUM_AXES};
 use std::f64::consts::TAU;
 
+mod v6;
+
 /// Number of X/Y/Z axes (the ones that define general-motion path length).
 const XYZ: usize = 3;
 

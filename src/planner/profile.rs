@@ -190,6 +190,11 @@ impl Profile {
         })
     }
 
+    /// The acceleration and deceleration shapes it was planned with.
+    pub fn shapes(&self) -> (Shape, Shape) {
+        (self.acc.shape, self.dec.shape)
+    }
+
     /// Total time of the move (seconds).
     pub fn duration(&self) -> f64 {
         self.duration

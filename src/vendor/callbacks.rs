@@ -125,3 +125,42 @@ pub type INTERP = Option<
         pvBuffer: *mut std::os::raw::c_void,
     ) -> std::os::raw::c_int,
 >;
+/// Initialises a kinematic group's extension buffer once (`MCC_SetKinematicTrans`).
+pub type INIT_EXTENSION = Option<unsafe extern "C" fn(pvExtension: *mut std::ffi::c_void)>;
+/// Forward kinematics: joints (`pdfFrom`) to the Cartesian position (`pdfTo`); `FALSE`
+/// when it has none. The vendor's C++ `DWORD&` posture is a `DWORD*` (the same ABI).
+pub type FWDKINEFUN = Option<
+    unsafe extern "C" fn(
+        nGroup: std::os::raw::c_int,
+        nSynAxisNum: std::os::raw::c_int,
+        pdfFrom: *const f64,
+        pdfTo: *mut f64,
+        dwPosture: *mut super::DWORD,
+        pvExtension: *mut std::ffi::c_void,
+    ) -> super::BOOL,
+>;
+/// Inverse kinematics: a Cartesian position (`pdfFrom`) to joints (`pdfTo`), given the
+/// previous joints (`pdfPrevResult`); `FALSE` when unreachable.
+pub type INVKINEFUN = Option<
+    unsafe extern "C" fn(
+        nGroup: std::os::raw::c_int,
+        nSynAxisNum: std::os::raw::c_int,
+        pdfFrom: *const f64,
+        pdfPrevResult: *const f64,
+        pdfTo: *mut f64,
+        dwPosture: *mut super::DWORD,
+        pvExtension: *mut std::ffi::c_void,
+    ) -> super::BOOL,
+>;
+/// Called when a kinematic group takes a command from its queue: the current and target
+/// Cartesian positions; the offset written to `pdfOffset` is added to the target.
+pub type PRE_PROCESS_MOTION_COMMAND = Option<
+    unsafe extern "C" fn(
+        nGroup: std::os::raw::c_int,
+        nSynAxisNum: std::os::raw::c_int,
+        pdfCurCPos: *const f64,
+        pdfTgtCPos: *const f64,
+        pdfOffset: *mut f64,
+        pvExtension: *mut std::ffi::c_void,
+    ),
+>;

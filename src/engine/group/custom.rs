@@ -96,6 +96,7 @@ pub fn command(ctx: &Ctx<'_>, spec: Arc<CustomSpec>) -> Command {
             dec: s.dec,
             run: Run::default(),
         }),
+        posture: None,
     }
 }
 
@@ -110,6 +111,9 @@ fn translate(cmd: &mut Command, d: &Axes) {
             }
         }
         Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => {}
+        // A joint move (MCC_PtP_V6) goes to the joints it names, wherever the curve ended:
+        // neither it nor its target moves.
+        Plan::Joint(_) => return,
     }
     for (t, d) in cmd.target.iter_mut().zip(d) {
         *t += d;

@@ -98,6 +98,7 @@ impl GroupState {
     }
 
     pub(super) fn start(&mut self, cmd: Command, tau: f64) {
+        let cmd = self.kinematics_start(cmd);
         if cmd.is_motion() {
             self.inpos_status = [0; AXES];
         }

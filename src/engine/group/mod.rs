@@ -33,6 +33,7 @@ mod execution;
 pub mod external;
 mod homing;
 mod inpos;
+pub mod kinematics;
 mod post;
 mod queue;
 mod rate;
@@ -121,6 +122,9 @@ pub struct GroupState {
     /// After-interpolation filters and reverse interpolation (`post.rs`); `None` until
     /// the program uses one.
     post: Option<Box<post::Post>>,
+    /// Robot kinematics (`MCC_SetKinematicTrans`, `kinematics.rs`): the channels carry
+    /// joints, the commands and positions are Cartesian.
+    kin: Option<Box<kinematics::Kinematics>>,
 }
 
 impl GroupState {
@@ -166,6 +170,7 @@ impl GroupState {
             trace_notes: None,
             custom: custom::CustomSide::default(),
             post: None,
+            kin: None,
         }
     }
 
@@ -271,7 +276,7 @@ impl GroupState {
     /// `value` must be a position of the axis, `config::range::position`).
     pub fn define_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
         crate::config::range::position(value, self.axes[axis].factor)?;
-        if self.busy() {
+        if self.busy() || self.kin.is_some() {
             return Err(McclError::NotFinished);
         }
         let shift = value - self.pos[axis];
@@ -285,7 +290,7 @@ impl GroupState {
     /// `MCC_DefinePosHere`: the command position of axis `i` becomes the position the card
     /// has output (its pulse count in UU); only when stopped.
     pub fn sync_to_output(&mut self, i: usize) -> McclResult<()> {
-        if self.busy() {
+        if self.busy() || self.kin.is_some() {
             return Err(McclError::NotFinished);
         }
         let f = self.axes[i].factor;

@@ -130,6 +130,7 @@ impl GroupState {
             && matches!(self.mode, Mode::Normal)
             && (!self.single_block || self.single_block_credit)
             && !self.inpos_wait.is_some_and(|w| w.blocks())
+            && self.kinematics_ready()
     }
 
     /// Pops queued switches that are now reached; returns the next motion/delay command.

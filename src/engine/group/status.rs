@@ -56,6 +56,9 @@ impl GroupState {
     /// Pulse position of axis `i`: round(reference position x pulses per UU), halves away
     /// from zero.
     pub fn pulses(&self, i: usize) -> i64 {
+        if let Some(p) = self.kinematics_pulses(i) {
+            return p;
+        }
         let pos = if self.post.is_some() {
             self.out_pos()[i]
         } else {

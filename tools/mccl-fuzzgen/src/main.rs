@@ -74,25 +74,27 @@ struct Func {
     codes: Codes,
 }
 
-/// A callback type.
-struct CbType {
-    /// The calling-convention macro text.
+/// A callback typedef: `RET (CONV *NAME)(ARGS)`.
+struct CbSig {
+    /// Calling-convention macro text.
     conv: String,
-    /// An interrupt routine's argument struct, or "void"; "(command)" for the callbacks
-    /// of a queued command (custom motion), which take several arguments.
+    /// The pointee of a routine's one argument (`LIOINT`), `void` for none; for a
+    /// callback with several arguments, its whole parameter list.
     arg: String,
-    /// The return type.
+    /// Return type.
     ret: String,
-    /// A command callback's parameter types (empty for an interrupt routine).
-    params: Vec<String>,
+    /// Several (or named) arguments (`int nGroup, const double *p, ...`): the routine
+    /// declares them as written, hands none to the runtime, and returns 1 (`TRUE`) if
+    /// it returns anything.
+    several: bool,
 }
 
 #[derive(Default)]
 struct Model {
     aliases: BTreeMap<String, String>,
     structs: BTreeMap<String, Vec<Decl>>,
-    /// Callback typedef name -> its calling convention, argument and return.
-    callbacks: BTreeMap<String, CbType>,
+    /// Callback typedef name -> its signature.
+    callbacks: BTreeMap<String, CbSig>,
     funcs: Vec<Func>,
     headers: Vec<String>,
     /// Integer macros (`#define NAME 16`), for array lengths given by name.
@@ -264,34 +266,36 @@ impl Model {
     fn typedef(&mut self, file: &str, stmt: &str) -> Result<(), String> {
         let t = &stmt["typedef ".len()..];
         if let Some(star) = t.find('(') {
-            let inner_end = t[star..]
-                .find(')')
-                .ok_or_else(|| format!("{file}: bad callback typedef `{stmt}`"))?
-                + star;
+            let ret = t[..star].trim().to_string();
+            let inner_end = t[star..].find(')').ok_or("bad callback typedef")? + star;
             let inner = &t[star + 1..inner_end];
-            let (conv, nm) = inner
-                .split_once('*')
-                .ok_or_else(|| format!("{file}: bad callback typedef `{stmt}`"))?;
+            let (conv, nm) = inner.split_once('*').ok_or("bad callback typedef")?;
             let args = t[inner_end + 1..]
                 .trim()
                 .trim_start_matches('(')
                 .trim_end_matches(')');
-            let ret = t[..star].trim().to_string();
-            // A routine takes one struct pointer (or nothing); a queued command's callback
-            // (custom motion) several arguments and may return a value.
-            let (arg, params) = if args.contains(',') {
-                let params = args.split(',').map(|a| a.trim().to_string()).collect();
-                ("(command)".to_string(), params)
+            // A named parameter (`void *pvExtension`) is declared as written too.
+            let named = args
+                .rsplit_once('*')
+                .is_some_and(|(_, n)| !n.trim().is_empty());
+            let several = args.contains(',') || named;
+            if !several && ret != "void" {
+                return Err(format!(
+                    "{file}: callback `{stmt}`: one argument and a result"
+                ));
+            }
+            let arg = if several {
+                args.trim().to_string()
             } else {
-                (args.replace('*', "").trim().to_string(), Vec::new())
+                args.replace('*', "").trim().to_string()
             };
             self.callbacks.insert(
                 nm.trim().to_string(),
-                CbType {
+                CbSig {
                     conv: conv.trim().to_string(),
                     arg,
                     ret,
-                    params,
+                    several,
                 },
             );
         } else {
@@ -699,29 +703,28 @@ fn gen(m: &Model) -> Result<String, String> {
         .collect();
     for (i, (name, cb)) in m.callbacks.iter().enumerate() {
         let (conv, arg) = (&cb.conv, &cb.arg);
-        if !cb.params.is_empty() {
-            // A command callback counts its call and returns 0 (FALSE, or a total
-            // distance of 0): the command ends at once.
-            let sig: Vec<String> = cb
-                .params
-                .iter()
-                .enumerate()
-                .map(|(k, t)| format!("{t} a{k}"))
-                .collect();
-            let unused: String = (0..cb.params.len())
-                .map(|k| format!(" (void)a{k};"))
-                .collect();
+        if cb.several {
             let ret = if cb.ret == "void" {
                 String::new()
             } else {
-                format!("\n    return ({})0;", cb.ret)
+                "\n    return 1;".to_string()
             };
+            // The arguments are declared and not used.
+            let unused: String = arg
+                .split(',')
+                .filter_map(|a| {
+                    a.replace('*', " ")
+                        .split_whitespace()
+                        .last()
+                        .map(str::to_string)
+                })
+                .map(|n| format!("\n    (void){n};"))
+                .collect();
             let _ = writeln!(
                 o,
-                "\nstatic {} {conv} fz_cb_{}({})\n{{\n   {unused}\n    fz_routine({i}, NULL, 0);{ret}\n}}",
+                "\nstatic {} {conv} fz_cb_{}({arg})\n{{{unused}\n    fz_routine({i}, NULL, 0);{ret}\n}}",
                 cb.ret,
-                c_ident(name),
-                sig.join(", ")
+                c_ident(name)
             );
             continue;
         }
@@ -739,7 +742,7 @@ fn gen(m: &Model) -> Result<String, String> {
     }
     let _ = writeln!(o, "\nconst fz_cb_t fz_cbs[] = {{");
     for (name, cb) in &m.callbacks {
-        let arg = &cb.arg;
+        let arg = if cb.several { "void" } else { cb.arg.as_str() };
         let setters = m
             .funcs
             .iter()
@@ -753,7 +756,7 @@ fn gen(m: &Model) -> Result<String, String> {
             o,
             "    {{\"{name}\", \"{arg}\", (void (*)(void))fz_cb_{}, {setters}, {}}},",
             c_ident(name),
-            i32::from(!cb.params.is_empty())
+            i32::from(cb.several)
         );
     }
     let _ = writeln!(o, "}};\nconst int fz_ncbs = {};", m.callbacks.len());

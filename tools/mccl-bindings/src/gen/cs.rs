@@ -150,10 +150,7 @@ using System.Text;
             .params
             .iter()
             .map(|p| {
-                let q = Param {
-                    name: cb_param_name(p, cb.params.len()),
-                    ..p.clone()
-                };
+                let q = cb_param(p, cb.params.len());
                 cs_param(&q, LongAs::Int, false)
             })
             .collect::<Result<_, _>>()?;

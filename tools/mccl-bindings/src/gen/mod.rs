@@ -241,6 +241,22 @@ pub(super) fn vbnet_name(n: &str) -> String {
 
 /// Callback parameters the header leaves unnamed are called `value` (as vendor files do)
 /// when alone, `argN` otherwise.
+/// A callback's parameter as the bindings declare it: named for the reader (see
+/// [`cb_param_name`]), and a pointer to doubles (the callbacks get arrays of the group's
+/// axes) as a plain pointer: a `ref double` would reach only the first element, an
+/// `IntPtr` is read and written whole with `Marshal.Copy`.
+pub(super) fn cb_param(p: &Param, n: usize) -> Param {
+    let ty = match &p.ty {
+        CType::Ptr(i) if matches!(i.as_ref(), CType::Float(_)) => CType::Ptr(Box::new(CType::Void)),
+        t => t.clone(),
+    };
+    Param {
+        name: cb_param_name(p, n),
+        ty,
+        ..p.clone()
+    }
+}
+
 pub(super) fn cb_param_name(p: &Param, n: usize) -> String {
     if p.name.starts_with("arg") && n == 1 {
         "value".into()

@@ -150,19 +150,25 @@ Option Explicit
         let ps: Vec<String> = cb
             .params
             .iter()
-            .map(|p| match &p.ty {
-                CType::Ptr(i) => match i.as_ref() {
-                    CType::Struct(s) => {
-                        format!("ByRef {} As {s}", cb_param_name(p, cb.params.len()))
+            .map(|p| {
+                let q = cb_param(p, cb.params.len());
+                match &q.ty {
+                    // An address (VB6 is 32-bit): read with CopyMemory.
+                    CType::Ptr(i) if matches!(i.as_ref(), CType::Void) => {
+                        Ok(format!("ByVal {} As Long", vb6_name(&q.name)))
                     }
-                    _ => format!("{:?}", p.ty),
-                },
-                _ => format!("{:?}", p.ty),
+                    _ => vb6_param(&q),
+                }
             })
-            .collect();
+            .collect::<Result<_, _>>()?;
+        let (kind, ret) = if cb.ret == CType::Void {
+            ("Sub", String::new())
+        } else {
+            ("Function", format!(" As {}", vb6_scalar(&cb.ret)?))
+        };
         let _ = writeln!(
             o,
-            "' {}: Sub MyIsr({}), passed as AddressOf MyIsr",
+            "' {}: {kind} MyIsr({}){ret}, passed as AddressOf MyIsr",
             cb.name,
             ps.join(", ")
         );

@@ -118,10 +118,7 @@ Imports System.Text
             .params
             .iter()
             .map(|p| {
-                let q = Param {
-                    name: cb_param_name(p, cb.params.len()),
-                    ..p.clone()
-                };
+                let q = cb_param(p, cb.params.len());
                 vbnet_param(&q, LongAs::Int, false)
             })
             .collect::<Result<_, _>>()?;

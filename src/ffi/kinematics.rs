@@ -1,0 +1,490 @@
+//! Robot kinematics (vendor header, IMP-3 B/C variants): `MCC_SetKinematicTrans`, the
+//! pre-process callback, and the V6 motion commands. How a kinematic group runs is in
+//! [`crate::engine::kinematics`]; what each function does and why is in
+//! docs/compatibility.md, "Robot kinematics".
+
+use super::motion::direction;
+use super::{finite, finite8, with_group, ERR_BAD_ARC};
+use crate::engine::command::{Command, Ctx};
+use crate::engine::group::kinematics::joint_command;
+use crate::engine::group::GroupState;
+use crate::engine::kinematics::{init_extension, Extension, JointMove, KinFns};
+use crate::error::{McclError, McclResult};
+use crate::planner::{Axes, Path, PlanError, Plane, PtpMove};
+use crate::system;
+use crate::vendor::consts as c;
+use crate::vendor::{
+    BYTE, DWORD, FWDKINEFUN, INIT_EXTENSION, INVKINEFUN, PRE_PROCESS_MOTION_COMMAND, WORD,
+};
+use std::os::raw::c_int;
+use std::sync::atomic::Ordering;
+use std::sync::Arc;
+
+/// The group index of an `int nGroup` (`GROUP_PARAMETER_ERR` when negative or too big).
+fn group_of(n: c_int) -> McclResult<u16> {
+    u16::try_from(n).map_err(|_| McclError::Group)
+}
+
+fn set_kinematic_trans(
+    fwd: FWDKINEFUN,
+    inv: INVKINEFUN,
+    size: DWORD,
+    init: INIT_EXTENSION,
+    n: c_int,
+) -> McclResult<c_int> {
+    if fwd.is_none() || inv.is_none() {
+        return Err(McclError::Parameter);
+    }
+    let g = group_of(n)?;
+    let shared = system::active()?;
+    let joints = {
+        let grp = shared.group(g)?;
+        if grp.busy() {
+            return Err(McclError::NotFinished);
+        }
+        grp.current_joints()
+    };
+    let ext = Arc::new(Extension::new(u64::from(size))?);
+    // The program's code runs with no lock held.
+    init_extension(init, &ext);
+    let fns = KinFns { fwd, inv, ext };
+    let mut posture: DWORD = 0;
+    let cart = fns
+        .forward(usize::from(g), &joints, &mut posture)
+        .ok_or(McclError::NotAccepted)?;
+    let mut grp = shared.group(g)?;
+    grp.set_kinematics(fns, joints, cart, posture)?;
+    shared.kinematics_on.store(true, Ordering::Release);
+    shared.publish(&mut grp);
+    Ok(c::NO_ERR)
+}
+
+/// Makes group `nGroup` a kinematic group: its commands and positions are Cartesian (X,
+/// Y, Z, RX, RY, RZ in the axes X..W, two aux axes in A and B), its channels carry the
+/// joints `pfnInvKinematics` computes every tick. A zeroed extension of
+/// `dwExtensionSize` bytes (at most 16 MiB) goes to every kinematics call;
+/// `pfnInitExtension` (may be NULL) is called on it once, here. Only while the group
+/// stands still; its joints stay where they are and its Cartesian position becomes
+/// `pfnFwdKinematics` of them.
+#[no_mangle]
+pub extern "C" fn MCC_SetKinematicTrans(
+    pfnFwdKinematics: FWDKINEFUN,
+    pfnInvKinematics: INVKINEFUN,
+    dwExtensionSize: DWORD,
+    pfnInitExtension: INIT_EXTENSION,
+    nGroup: c_int,
+) -> c_int {
+    ffi_boundary! { set_kinematic_trans(
+        pfnFwdKinematics,
+        pfnInvKinematics,
+        dwExtensionSize,
+        pfnInitExtension,
+        nGroup,
+    ) }
+}
+
+/// Registers (or with NULL removes) the callback a kinematic group calls, on the engine
+/// thread without any lock, before it starts each Cartesian move: with the current and
+/// the target Cartesian position; the offset it writes is added to the target.
+#[no_mangle]
+pub extern "C" fn MCC_SetPreProcessMotionCommandCallback(
+    pfnPreProcMotionCmd: PRE_PROCESS_MOTION_COMMAND,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        with_group(wGroupIndex, |g| {
+            g.set_preprocess(pfnPreProcMotionCmd)?;
+            Ok(c::NO_ERR)
+        })
+    }
+}
+
+/// For `MCC_GetCurPos` on a kinematic group: the forward kinematics of the joints the
+/// channels carry, called with no lock held; `None` for a group that is not kinematic
+/// (without taking its lock while no group of the system is kinematic).
+/// A failing forward kinematics stops the group with 0xF105 and the read fails with
+/// `COMMAND_NOTACCEPTED_ERR`.
+pub(super) fn cur_pos(g: WORD) -> McclResult<Option<Axes>> {
+    let shared = system::active()?;
+    if !shared.kinematics_on.load(Ordering::Acquire) {
+        return Ok(None);
+    }
+    let Some((fns, joints, mut posture, generation)) = shared.group(g)?.kinematics_reading() else {
+        return Ok(None);
+    };
+    match fns.forward(usize::from(g), &joints, &mut posture) {
+        Some(cart) => Ok(Some(cart)),
+        None => {
+            let mut grp = shared.group(g)?;
+            grp.forward_failed(generation);
+            shared.publish(&mut grp);
+            Err(McclError::NotAccepted)
+        }
+    }
+}
+
+/// For `MCC_GetPulsePos` on a kinematic group: its joints' pulses (the published
+/// snapshot derives pulses from the Cartesian position); `None` for another group. Takes
+/// the group's lock only while some group of the system is kinematic.
+pub(super) fn joint_pulses(g: WORD) -> McclResult<Option<[i64; 8]>> {
+    let shared = system::active()?;
+    if !shared.kinematics_on.load(Ordering::Acquire) {
+        return Ok(None);
+    }
+    let pulses = shared.group(g)?.kinematics_joint_pulses();
+    Ok(pulses)
+}
+
+/// Queues a V6 command: `plan` builds it from the context, the posture goes with it.
+fn queue_v6(
+    g: WORD,
+    posture: DWORD,
+    plan: impl FnOnce(&Ctx<'_>) -> McclResult<Command>,
+) -> McclResult<c_int> {
+    with_group(g, |grp| {
+        let mut cmd = plan(&grp.ctx())?;
+        cmd.posture = Some(posture);
+        grp.enqueue(cmd)
+    })
+}
+
+/// Queues a V6 arc or circle; a degenerate one records 0xF104, as `MCC_Arc*` do.
+fn queue_v6_curve(
+    g: WORD,
+    posture: DWORD,
+    plan: impl FnOnce(&Ctx<'_>) -> Result<Path, PlanError>,
+) -> McclResult<c_int> {
+    with_group(g, |grp| {
+        let path = match plan(&grp.ctx()) {
+            Ok(p) => p,
+            Err(PlanError::BadArc) => {
+                grp.set_error(ERR_BAD_ARC);
+                return Err(McclError::Parameter);
+            }
+            Err(_) => return Err(McclError::Parameter),
+        };
+        let mut cmd = grp.ctx().curve(path, false)?;
+        cmd.posture = Some(posture);
+        grp.enqueue(cmd)
+    })
+}
+
+/// The aux-axis ends of a V6 curve: RX, RY, RZ (the axes U, V, W) go to their resolved
+/// values where `m` has their bit (all when `m` is `None`), A and B stay.
+fn orientation(ctx: &Ctx<'_>, r: [f64; 3], m: Option<u32>) -> [f64; 5] {
+    std::array::from_fn(|k| {
+        let i = 3 + k;
+        if k < 3 && m.is_none_or(|m| m & (1 << i) != 0) {
+            ctx.resolve_axis(i, r[k])
+        } else {
+            ctx.from[i]
+        }
+    })
+}
+
+/// Checks three numbers from C are finite.
+fn finite3(v: [f64; 3]) -> McclResult<[f64; 3]> {
+    Ok([finite(v[0])?, finite(v[1])?, finite(v[2])?])
+}
+
+/// A 3-D point of a V6 command, resolved (incremental: from the end of the queue).
+fn point3(ctx: &Ctx<'_>, p: [f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|i| ctx.resolve_axis(i, p[i]))
+}
+
+/// Checks the points a curve names and its orientation ends against the ranges.
+fn check_curve(ctx: &Ctx<'_>, pts: &[[f64; 3]], aux: &[f64; 5]) -> Result<(), PlanError> {
+    let mut all: Vec<(usize, f64)> = pts
+        .iter()
+        .flat_map(|p| (0..3).map(move |i| (i, p[i])))
+        .collect();
+    all.extend(aux.iter().enumerate().map(|(k, v)| (3 + k, *v)));
+    ctx.check_points(&all)
+}
+
+/// Moves the tool point in a straight line to (x, y, z) with the orientation (rx, ry,
+/// rz) and the aux axes (a, b) interpolated linearly, component by component, at the
+/// feed speed (over X/Y/Z) with the group's acc/dec; `posture` goes to the kinematics.
+/// Axes outside `dwAxisMask` keep their position.
+#[no_mangle]
+pub extern "C" fn MCC_Line_V6(
+    x: f64,
+    y: f64,
+    z: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    a: f64,
+    b: f64,
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let args = finite8([x, y, z, rx, ry, rz, a, b])?;
+        let m = super::axis_mask(dwAxisMask)?;
+        queue_v6(wGroupIndex, posture, |ctx| ctx.line(ctx.resolve(&args, m)))
+    }
+}
+
+/// 3-D arc from the current point through (x0, y0, z0) to (x1, y1, z1), the orientation
+/// going linearly to (rx, ry, rz) (components outside `dwAxisMask` stay).
+#[no_mangle]
+pub extern "C" fn MCC_Arc_V6(
+    x0: f64,
+    y0: f64,
+    z0: f64,
+    x1: f64,
+    y1: f64,
+    z1: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let (via, end, r) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?, finite3([rx, ry, rz])?);
+        let m = super::axis_mask(dwAxisMask)?;
+        queue_v6_curve(wGroupIndex, posture, |ctx| {
+            let (via, end) = (point3(ctx, via), point3(ctx, end));
+            let aux = orientation(ctx, r, Some(m));
+            check_curve(ctx, &[via, end], &aux)?;
+            Path::arc_3pt_xyz(&ctx.from, via, end, Some(aux))
+        })
+    }
+}
+
+/// Arc of `theta` degrees (> 0 counter-clockwise seen from the tip of the normal) about
+/// the axis through (cx, cy, cz) along (nv0, nv1, nv2); the orientation goes linearly
+/// to (rx, ry, rz).
+#[no_mangle]
+pub extern "C" fn MCC_ArcTheta_V6(
+    cx: f64,
+    cy: f64,
+    cz: f64,
+    nv0: f64,
+    nv1: f64,
+    nv2: f64,
+    theta: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let (center, normal) = (finite3([cx, cy, cz])?, finite3([nv0, nv1, nv2])?);
+        let (theta, r) = (finite(theta)?, finite3([rx, ry, rz])?);
+        let m = super::axis_mask(dwAxisMask)?;
+        queue_v6_curve(wGroupIndex, posture, |ctx| {
+            let center = point3(ctx, center);
+            let aux = orientation(ctx, r, Some(m));
+            check_curve(ctx, &[center], &aux)?;
+            Path::arc_about_axis(&ctx.from, center, normal, theta, Some(aux))
+        })
+    }
+}
+
+/// Full circle from the current point through (x0, y0, z0) and (x1, y1, z1) back to
+/// it; the orientation goes linearly to (rx, ry, rz) over the turn.
+#[no_mangle]
+pub extern "C" fn MCC_Circle_V6(
+    x0: f64,
+    y0: f64,
+    z0: f64,
+    x1: f64,
+    y1: f64,
+    z1: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let (p1, p2, r) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?, finite3([rx, ry, rz])?);
+        let m = super::axis_mask(dwAxisMask)?;
+        queue_v6_curve(wGroupIndex, posture, |ctx| {
+            let (p1, p2) = (point3(ctx, p1), point3(ctx, p2));
+            let aux = orientation(ctx, r, Some(m));
+            check_curve(ctx, &[p1, p2], &aux)?;
+            Path::circle_3pt_xyz(&ctx.from, p1, p2, Some(aux))
+        })
+    }
+}
+
+fn circle_plane(
+    plane: Plane,
+    c2: [f64; 2],
+    r: [f64; 3],
+    dir: BYTE,
+    posture: DWORD,
+    g: WORD,
+) -> McclResult<c_int> {
+    let c2 = [finite(c2[0])?, finite(c2[1])?];
+    let r = finite3(r)?;
+    let ccw = direction(dir)?;
+    queue_v6_curve(g, posture, |ctx| {
+        let center = ctx.resolve_plane(plane, c2);
+        let aux = orientation(ctx, r, None);
+        let (ia, ib, n) = plane.axes();
+        let mut p = [0.0; 3];
+        p[ia] = center[0];
+        p[ib] = center[1];
+        p[n] = ctx.from[n];
+        check_curve(ctx, &[p], &aux)?;
+        Path::circle(plane, &ctx.from, center, ccw, Some(aux))
+    })
+}
+
+/// Full circle about (cx, cy) in the XY plane (`CIR_CW`/`CIR_CCW` seen from +Z); the
+/// orientation goes linearly to (rx, ry, rz) over the turn.
+#[no_mangle]
+pub extern "C" fn MCC_CircleXY_V6(
+    cx: f64,
+    cy: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    byCirDir: BYTE,
+    posture: DWORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { circle_plane(Plane::XY, [cx, cy], [rx, ry, rz], byCirDir, posture, wGroupIndex) }
+}
+
+/// [`MCC_CircleXY_V6`] in the YZ plane about (cy, cz), seen from +X.
+#[no_mangle]
+pub extern "C" fn MCC_CircleYZ_V6(
+    cy: f64,
+    cz: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    byCirDir: BYTE,
+    posture: DWORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { circle_plane(Plane::YZ, [cy, cz], [rx, ry, rz], byCirDir, posture, wGroupIndex) }
+}
+
+/// [`MCC_CircleXY_V6`] in the ZX plane about (cz, cx), seen from +Y.
+#[no_mangle]
+pub extern "C" fn MCC_CircleZX_V6(
+    cz: f64,
+    cx: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    byCirDir: BYTE,
+    posture: DWORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { circle_plane(Plane::ZX, [cz, cx], [rx, ry, rz], byCirDir, posture, wGroupIndex) }
+}
+
+/// What `MCC_PtP_V6` reads under the group's lock before the forward kinematics.
+struct JointPlan {
+    fns: KinFns,
+    posture: DWORD,
+    queue_end: Axes,
+    mv: JointMove,
+    ratio: f64,
+    acc_ms: f64,
+    dec_ms: f64,
+}
+
+fn joint_plan(g: &GroupState, args: &Axes, m: u32) -> McclResult<JointPlan> {
+    let (fns, _, posture, _) = g.kinematics_reading().ok_or(McclError::NotAccepted)?;
+    let s = &g.settings;
+    let base = if m == 0xFF && s.absolute {
+        None
+    } else {
+        Some(g.queue_end_joints().ok_or(McclError::NotFinished)?)
+    };
+    let target: Axes = std::array::from_fn(|i| match base {
+        Some(b) if m & (1 << i) == 0 => b[i],
+        Some(b) if !s.absolute => b[i] + args[i],
+        _ => args[i],
+    });
+    for (x, a) in target.iter().zip(&g.axes) {
+        crate::config::range::position(*x, a.factor)?;
+    }
+    let ratio = s.ptp_ratio;
+    let speed: Axes = std::array::from_fn(|i| g.axes[i].safe_speed * ratio / 100.0);
+    let queue_end = g.ctx().from;
+    let mv = JointMove {
+        target,
+        cart_start: queue_end,
+        cart_end: queue_end,
+        speed,
+        acc: s.ptp_acc_ms.map(|ms| ms / 1000.0),
+        dec: s.ptp_dec_ms.map(|ms| ms / 1000.0),
+        acc_shape: s.ptp_acc,
+        dec_shape: s.ptp_dec,
+        planned: None,
+    };
+    // The numbers are checked here (the move is planned again where it starts).
+    let from = base.unwrap_or(target);
+    let trial: Result<PtpMove, PlanError> = mv.plan(&from);
+    trial.map_err(|_| McclError::Parameter)?;
+    Ok(JointPlan {
+        fns,
+        posture,
+        queue_end,
+        mv,
+        ratio,
+        acc_ms: s.ptp_acc_ms[0],
+        dec_ms: s.ptp_dec_ms[0],
+    })
+}
+
+fn ptp_v6(args: Axes, g: WORD, m: DWORD) -> McclResult<c_int> {
+    let args = finite8(args)?;
+    let m = super::axis_mask(m)?;
+    let shared = system::active()?;
+    let mut p = joint_plan(&*shared.group(g)?, &args, m)?;
+    // The Cartesian end, computed with no lock held.
+    let cart = p
+        .fns
+        .forward(usize::from(g), &p.mv.target, &mut p.posture)
+        .ok_or(McclError::Parameter)?;
+    p.mv.cart_end = cart;
+    with_group(g, |grp| {
+        if grp.ctx().from != p.queue_end || !grp.is_kinematic() {
+            // Another thread queued meanwhile: the joint move would start elsewhere.
+            return Err(McclError::NotFinished);
+        }
+        let pts: Vec<(usize, f64)> = cart.iter().copied().enumerate().collect();
+        grp.ctx()
+            .check_points(&pts)
+            .map_err(|_| McclError::Parameter)?;
+        let target = p.mv.target;
+        let cmd = joint_command(p.mv, p.ratio, p.acc_ms, p.dec_ms);
+        grp.enqueue_joint_move(cmd, target)
+    })
+}
+
+/// Moves the joints of a kinematic group point-to-point to (j0..j7), all starting and
+/// ending together, with the group's PtP speed ratio and acc/dec settings (per joint:
+/// the speeds and limits of the channels they run on). Joints outside `dwAxisMask` keep
+/// their position. `COMMAND_NOTACCEPTED_ERR` on a group that is not kinematic.
+#[no_mangle]
+pub extern "C" fn MCC_PtP_V6(
+    j0: f64,
+    j1: f64,
+    j2: f64,
+    j3: f64,
+    j4: f64,
+    j5: f64,
+    j6: f64,
+    j7: f64,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! { ptp_v6([j0, j1, j2, j3, j4, j5, j6, j7], wGroupIndex, dwAxisMask) }
+}
