@@ -709,22 +709,22 @@ fn gen(m: &Model) -> Result<String, String> {
             } else {
                 "\n    return 1;".to_string()
             };
-            // The arguments are declared and not used.
-            let unused: String = arg
+            // Every parameter gets a name of ours (the header may name them or not) and
+            // is marked unused.
+            let params: Vec<String> = arg
                 .split(',')
-                .filter_map(|a| {
-                    a.replace('*', " ")
-                        .split_whitespace()
-                        .last()
-                        .map(str::to_string)
-                })
-                .map(|n| format!("\n    (void){n};"))
+                .enumerate()
+                .map(|(k, a)| format!("{} a{k}", param_type(a)))
+                .collect();
+            let unused: String = (0..params.len())
+                .map(|k| format!("\n    (void)a{k};"))
                 .collect();
             let _ = writeln!(
                 o,
-                "\nstatic {} {conv} fz_cb_{}({arg})\n{{{unused}\n    fz_routine({i}, NULL, 0);{ret}\n}}",
+                "\nstatic {} {conv} fz_cb_{}({})\n{{{unused}\n    fz_routine({i}, NULL, 0);{ret}\n}}",
                 cb.ret,
-                c_ident(name)
+                c_ident(name),
+                params.join(", ")
             );
             continue;
         }
@@ -977,4 +977,44 @@ fn main() -> ExitCode {
         m.headers.len()
     );
     ExitCode::SUCCESS
+}
+
+/// The type of one C parameter, without its name if it has one: `const double *pdfFrom`
+/// gives `const double *`, `const double*` stays. A parameter is named when its last
+/// token is neither `*` nor a type word (a C keyword or an all-capitals typedef).
+fn param_type(p: &str) -> String {
+    let spaced = p.replace('*', " * ");
+    let toks: Vec<&str> = spaced.split_whitespace().collect();
+    let is_type = |t: &str| {
+        t == "*"
+            || matches!(
+                t,
+                "int" | "double" | "void" | "char" | "long" | "short" | "unsigned" | "float"
+            )
+            || t.chars()
+                .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+    };
+    match toks.split_last() {
+        Some((last, rest)) if !is_type(last) && !rest.is_empty() => rest.join(" "),
+        _ => toks.join(" "),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::param_type;
+
+    /// Named and unnamed parameters of the vendor's callback typedefs (INTERP and
+    /// FWDKINEFUN name theirs, the custom-motion ones do not).
+    #[test]
+    fn parameter_types_drop_only_names() {
+        assert_eq!(param_type("int nGroup"), "int");
+        assert_eq!(param_type("const double *pdfFrom"), "const double *");
+        assert_eq!(param_type("DWORD *dwPosture"), "DWORD *");
+        assert_eq!(param_type("BOOL* AbortThisCommand"), "BOOL *");
+        assert_eq!(param_type("const double*"), "const double *");
+        assert_eq!(param_type("int"), "int");
+        assert_eq!(param_type("void*"), "void *");
+        assert_eq!(param_type("unsigned long"), "unsigned long");
+    }
 }
