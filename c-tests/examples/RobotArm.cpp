@@ -26,7 +26,12 @@
 //   5. a target out of reach (L1 + L2 = 350) stops the group with 0xF106, the joints stay
 //   6. with a tool offset of +10 mm in Y from the pre-process callback, MCC_Line_V6 to
 //      (200, 0) ends at (200, 10)
+//   7. a custom curve on the robot (MCC_CustomMotion): a circle of radius 20 mm about
+//      (180, 10), given by arc length in the callbacks; every Cartesian point the
+//      kinematics got lies on it (within 1e-9 of its 125.66 mm), and the tool ends where
+//      it started, (200, 10)
 #include "MotionSys.h"
+#include <algorithm>
 #include <mutex>
 #include <vector>
 
@@ -112,6 +117,30 @@ BOOL MCC_CALLBACK InvKine(int, int, const double *pdfFrom, const double *, doubl
 void MCC_CALLBACK ToolOffset(int, int, const double *, const double *, double *pdfOffset, void *)
 {
     pdfOffset[1] = g_dfToolOffsetY;
+}
+
+// ---- A custom curve (the integrator's own geometry): a circle of radius kR whose
+// centre lies kR in -X of where the curve starts, parameterised by arc length.
+const double kR = 20.0;
+int g_nCurveCleanups = 0;
+
+double MCC_CALLBACK CurveStart(int, int, int, BOOL, const double *, void *)
+{
+    return 2.0 * 3.14159265358979323846 * kR; // total distance, mm
+}
+
+BOOL MCC_CALLBACK CurveInterp(int, int, int, const double *, const double *, double dfCurDist,
+                              double, double *pdfNextPosOffset, void *)
+{
+    double th = dfCurDist / kR;
+    pdfNextPosOffset[0] = kR * cos(th) - kR; // offsets from the start point
+    pdfNextPosOffset[1] = kR * sin(th);
+    return 1;
+}
+
+void MCC_CALLBACK CurveCleanup(int, int, void *)
+{
+    g_nCurveCleanups++;
 }
 
 std::vector<std::vector<double> > TakePoints()
@@ -217,6 +246,23 @@ int main()
     CHECK(MCC_Line_V6(200, 0, 50, 0, 0, 0, 0, 0, 0, g) >= 0);
     WaitStop(g);
     PrintPos(g, "After MCC_Line_V6 to (200, 0) with a +10 mm Y tool offset");
+    CheckPosXYZ(g, 200, 10, 50);
+
+    // 7. A custom curve on the robot: the library's own speed profile over the distance
+    //    CurveStart returns, the geometry from CurveInterp, the joints from InvKine.
+    g_dfToolOffsetY = 0.0;
+    TakePoints();
+    CHECK(MCC_CustomMotion(CurveStart, CurveInterp, CurveCleanup, NULL, g) >= 0);
+    WaitStop(g);
+    PrintPos(g, "After MCC_CustomMotion (a 20 mm circle about (180, 10))");
+    pts = TakePoints();
+    CHECK(pts.size() > 100);
+    dfWorst = 0.0;
+    for (size_t k = 0; k < pts.size(); k++)
+        dfWorst = std::max(dfWorst, fabs(hypot(pts[k][0] - 180.0, pts[k][1] - 10.0) - kR));
+    printf("custom curve: %zu points, worst distance from the circle %.3g mm\n", pts.size(), dfWorst);
+    CHECK(dfWorst <= 1e-9 * 2.0 * 3.14159265358979323846 * kR);
+    CHECK_EQ(g_nCurveCleanups, 1);
     CheckPosXYZ(g, 200, 10, 50);
 
     Close();
