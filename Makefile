@@ -33,6 +33,7 @@ test: build
 bench:
 	cargo bench --bench engine
 	cargo bench --bench realtime
+	cargo bench --bench tick_floor
 
 # Regenerate include/*.h from the Rust sources (commit the result).
 headers:
