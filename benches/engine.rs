@@ -223,11 +223,7 @@ fn panel_cost() {
         std::env::remove_var("MCCL_PANEL");
         start_all_moving(5000.0);
         best[1] = best[1].min(tick_cpu_us());
-        let url = MCCLPCI_IMP::panel::url().expect("panel");
-        let (addr, token) = url
-            .strip_prefix("http://")
-            .and_then(|r| r.split_once("/?token="))
-            .unwrap();
+        let (addr, token) = panel_addr_token();
         let mut s = std::net::TcpStream::connect(addr).unwrap();
         write!(s, "GET /api/events?token={token} HTTP/1.1\r\n\r\n").unwrap();
         let (tx, rx) = std::sync::mpsc::channel::<()>();
