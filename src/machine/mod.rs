@@ -125,18 +125,17 @@ impl IndexCell {
 }
 
 /// One channel of the card and the motor, encoder and sensors behind it.
+///
+/// `repr(C)` with the fields every step reads and writes first, together, and the
+/// settings only setters and status calls read after them.
 #[derive(Debug, Clone)]
+#[repr(C)]
 pub struct Channel {
-    /// Simulation configuration.
-    pub spec: ChannelSpec,
-    mac: SYS_MAC_PARAM,
-    enc: SYS_ENCODER_CONFIG,
-    /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
-    pub input_rate: Option<u16>,
-    /// `MCC_SetENCGearRate`.
-    pub gear_rate: f64,
     /// Pulses the program commanded (before compensation).
     cmd: i64,
+    /// The command for the coming step, set during a tick by the group (or homing)
+    /// driving the channel ([`Channel::command`]); `None`: the channel holds `cmd`.
+    commanded: Option<i64>,
     /// Pulses output (command + compensation).
     out: i64,
     prev_out: i64,
@@ -145,34 +144,45 @@ pub struct Channel {
     actual: f64,
     /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
     base: f64,
-    /// Encoder count = raw count + `enc_offset`.
-    enc_offset: i64,
-    /// Compensation tables in effect.
-    pub comp: Compensation,
-    /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
-    /// the fields every step uses).
-    comp_param: Box<SYS_COMP_PARAM>,
-    forced: [Option<bool>; 3],
-    /// Physical sensor levels (before the program's wiring setting).
-    raw: [bool; 3],
     /// Index pulses passed in the last step.
     pub index_events: u32,
-    /// The last index pulse passed, as a raw count.
-    pub last_index_count: Option<i64>,
     /// Motor positions (pulses, machine frame) at the start and end of the last step.
     last_move: (f64, f64),
     /// The index interval of the last position looked up (`index_interval`).
     cell: Option<IndexCell>,
+    levels: SensorLevels,
+    prev_levels: SensorLevels,
+    /// Levels at the end of the last step: a level forced between steps shows as an edge.
+    step_levels: SensorLevels,
+    forced: [Option<bool>; 3],
+    /// `mac.dwPPR`, kept here with the fields every step reads (the index grid needs it
+    /// and `mac` is out of the way, see the type's documentation).
+    ppr: u32,
+    /// Compensation tables in effect.
+    pub comp: Compensation,
+    /// Simulation configuration.
+    pub spec: ChannelSpec,
+    mac: SYS_MAC_PARAM,
+    enc: SYS_ENCODER_CONFIG,
+    /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
+    pub input_rate: Option<u16>,
+    /// `MCC_SetENCGearRate`.
+    pub gear_rate: f64,
+    /// Encoder count = raw count + `enc_offset`.
+    enc_offset: i64,
+    /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
+    /// the fields every step uses).
+    comp_param: Box<SYS_COMP_PARAM>,
+    /// Physical sensor levels (before the program's wiring setting).
+    raw: [bool; 3],
+    /// The last index pulse passed, as a raw count.
+    pub last_index_count: Option<i64>,
     /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
     pub latched: [bool; 2],
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`, 1..32767).
     pub max_speed: i32,
     /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
     pub max_acc: i32,
-    levels: SensorLevels,
-    prev_levels: SensorLevels,
-    /// Levels at the end of the last step: a level forced between steps shows as an edge.
-    step_levels: SensorLevels,
 }
 
 impl Channel {
@@ -185,6 +195,7 @@ impl Channel {
             input_rate: None,
             gear_rate: 1.0,
             cmd: 0,
+            commanded: None,
             out: 0,
             prev_out: 0,
             prev_delta: 0,
@@ -194,6 +205,7 @@ impl Channel {
             comp: Compensation::default(),
             comp_param: Box::new(compensation::off()),
             forced: [None; 3],
+            ppr: mac.dwPPR,
             raw: [false; 3],
             index_events: 0,
             last_index_count: None,
@@ -350,6 +362,7 @@ impl Channel {
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
         let count = self.encoder();
         self.mac = mac;
+        self.ppr = mac.dwPPR;
         self.enc = enc;
         self.input_rate = None;
         self.set_encoder(count);
@@ -467,7 +480,7 @@ impl Channel {
     }
 
     fn index_grid(&self) -> (i64, i64) {
-        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
+        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.ppr).max(1));
         (spacing, i64::from(self.spec.index_phase))
     }
 
@@ -492,6 +505,19 @@ impl Channel {
 
     /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
     /// (ideal or lagging), the encoder and sensors follow the motor.
+    /// Sets the pulses the coming [`Channel::step_commanded`] moves to (the last call in
+    /// a tick wins).
+    pub fn command(&mut self, pulses: i64) {
+        self.commanded = Some(pulses);
+    }
+
+    /// One step of `dt` seconds to the pulses set by [`Channel::command`] this tick, or
+    /// holding the last command when none was set.
+    pub fn step_commanded(&mut self, dt: f64) {
+        let cmd = self.commanded.take().unwrap_or(self.cmd);
+        self.step(cmd, dt);
+    }
+
     pub fn step(&mut self, cmd: i64, dt: f64) {
         self.prev_levels = self.step_levels;
         let d_prev = self.out - self.prev_out;

@@ -48,14 +48,17 @@ pub struct CardTriggers {
     /// How long a triggered output holds its value, ns.
     pub trig_period_ns: u64,
     /// Until when each triggered output holds (virtual ns).
-    pub trig_until: [Option<u128>; AXES],
+    trig_until: [Option<u128>; AXES],
     /// Output levels driven by trigger-out (bit per point), `None` where not driven.
     pub trig_level: [Option<bool>; AXES],
     /// LED trigger-out per LED point (`MCC_SetLedTrigOut*`; value true: lit). The LEDs
     /// share the trigger period.
     pub led_trig_out: [TrigOut; AXES],
     /// Until when each triggered LED holds (virtual ns).
-    pub led_trig_until: [Option<u128>; AXES],
+    led_trig_until: [Option<u128>; AXES],
+    /// Whether any of `trig_until` or `led_trig_until` is set (kept by the tick, which
+    /// alone sets and clears them), so that [`CardTriggers::armed`] need not scan them.
+    timed_outputs: bool,
     /// LED levels driven by trigger-out, `None` where not driven.
     pub led_trig_level: [Option<bool>; AXES],
     prev_count: [i64; AXES],
@@ -252,6 +255,7 @@ impl Default for CardTriggers {
             trig_level: [None; AXES],
             led_trig_out: [TrigOut::default(); AXES],
             led_trig_until: [None; AXES],
+            timed_outputs: false,
             led_trig_level: [None; AXES],
             prev_count: [0; AXES],
             prev_over: [(false, false); AXES],
@@ -333,8 +337,7 @@ impl CardTriggers {
             || self.lio_enabled != [false; 24]
             || self.latch_source != [0; AXES]
             || *thresholds != [(0, 0); AXES]
-            || self.trig_until.iter().any(Option::is_some)
-            || self.led_trig_until.iter().any(Option::is_some)
+            || self.timed_outputs
     }
 
     /// [`CardTriggers::tick`] for a card with nothing armed: only the index status
@@ -480,6 +483,11 @@ impl CardTriggers {
             now_ns,
             period,
         );
+        self.timed_outputs = self
+            .trig_until
+            .iter()
+            .chain(&self.led_trig_until)
+            .any(Option::is_some);
         self.prev_count = counts;
         out
     }
