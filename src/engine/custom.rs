@@ -192,12 +192,14 @@ impl Shared {
             return;
         }
         let dt = self.clock.period().as_secs_f64();
-        for g in &self.groups {
+        for n in 0..self.group_count() {
             if self.clock.stopped() {
                 return;
             }
             let batch = {
-                let mut g = g.lock();
+                let Some(mut g) = self.nth_group(n) else {
+                    return;
+                };
                 let batch = g.custom_batch(dt);
                 if batch.call.is_some() {
                     // Status calls from the callback read what the group shows now (a
@@ -206,7 +208,7 @@ impl Shared {
                 }
                 batch
             };
-            self.run_batch(g, batch, dt);
+            self.run_batch(n, batch, dt);
         }
     }
 
@@ -215,9 +217,11 @@ impl Shared {
         if LIVE.load(Ordering::Acquire) == 0 {
             return;
         }
-        for g in &self.groups {
+        for n in 0..self.group_count() {
             let (group, specs) = {
-                let mut g = g.lock();
+                let Some(mut g) = self.nth_group(n) else {
+                    return;
+                };
                 (g.index, g.custom_take_all())
             };
             for (idx, spec) in specs {
@@ -226,12 +230,9 @@ impl Shared {
         }
     }
 
-    fn run_batch(
-        &self,
-        g: &parking_lot::Mutex<super::group::GroupState>,
-        batch: CustomBatch,
-        dt: f64,
-    ) {
+    /// Runs the callbacks `batch` asks for, for the group at position `n`, locking the
+    /// group only between them.
+    fn run_batch(&self, n: usize, batch: CustomBatch, dt: f64) {
         let group = batch.group;
         for (idx, spec) in &batch.cleanups {
             cleanup(group, *idx, spec);
@@ -256,7 +257,9 @@ impl Shared {
                     )
                 }
             });
-            call = g.lock().custom_begin(spec.id, tot, dt);
+            call = self
+                .nth_group(n)
+                .and_then(|mut g| g.custom_begin(spec.id, tot, dt));
         }
         if let Some(Call::BlendStart {
             spec,
@@ -269,7 +272,9 @@ impl Shared {
                 return;
             }
             let accepted = blending_start(group, index, &spec, &start, interval);
-            call = g.lock().custom_blending(spec.id, accepted, dt);
+            call = self
+                .nth_group(n)
+                .and_then(|mut g| g.custom_blending(spec.id, accepted, dt));
         }
         if let Some(Call::Interp {
             spec,
@@ -334,9 +339,9 @@ impl Shared {
                     }
                 }
             });
-            let blend_end = g
-                .lock()
-                .custom_apply(spec.id, ok != 0, abort != 0, &next, step);
+            let blend_end = self
+                .nth_group(n)
+                .is_some_and(|mut g| g.custom_apply(spec.id, ok != 0, abort != 0, &next, step));
             if blend_end {
                 if let Some(f) = spec.blending.and_then(|b| b.end) {
                     // SAFETY: a non-NULL CUSTOM_BLENDING_END of the program; the buffer is

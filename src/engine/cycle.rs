@@ -59,11 +59,11 @@ impl Shared {
     /// Calls the routines of the module documentation. Call with no lock held.
     pub(super) fn call_cycle_routines(&self) {
         if self.cycle.reverse.load(Ordering::Acquire) {
-            for g in &self.groups {
+            for n in 0..self.group_count() {
                 if self.clock.stopped() {
                     return;
                 }
-                let due = g.lock().take_reverse_call();
+                let due = self.nth_group(n).and_then(|mut g| g.take_reverse_call());
                 if let Some((f, group, cmd, time)) = due {
                     // SAFETY: `f` was stored from a non-null `INTERP`, a C function with
                     // this signature; the buffer argument is NULL (the registration has
@@ -72,7 +72,9 @@ impl Shared {
                         let f = std::mem::transmute::<usize, RawInterp>(f);
                         f(group, cmd, time, std::ptr::null_mut())
                     };
-                    g.lock().set_reverse_decision(r);
+                    if let Some(mut g) = self.nth_group(n) {
+                        g.set_reverse_decision(r);
+                    }
                 }
             }
         }

@@ -241,13 +241,14 @@ impl Shared {
         if !self.kinematics_on.load(Ordering::Acquire) {
             return;
         }
-        for g in &self.groups {
-            let job = g.lock().kinematics_job();
+        for n in 0..self.group_count() {
+            let job = self.nth_group(n).and_then(|mut g| g.kinematics_job());
             let Some(job) = job else { continue };
             let done = job.call();
-            let mut g = g.lock();
-            g.kinematics_done(done);
-            self.publish(&mut g);
+            if let Some(mut g) = self.nth_group(n) {
+                g.kinematics_done(done);
+                self.publish(&mut g);
+            }
         }
     }
 }

@@ -2,7 +2,7 @@
 //! clock, tick, deliver the routines), stopping and joining it.
 
 use super::shared::Shared;
-use super::{thread, trace};
+use super::{isr, thread, trace};
 use crate::clock::{ClockMode, Next};
 use crate::config::{GroupDef, MacTable};
 use crate::machine::Machine;
@@ -128,6 +128,8 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
     shared.clock.start_now();
     let _ = ready.send(());
     drop(ready);
+    // The interrupts each tick collects, reused from tick to tick.
+    let mut interrupts = isr::Collected::new();
     loop {
         match shared.clock.wait_next() {
             Next::Stop => {
@@ -135,7 +137,7 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
                 return;
             }
             Next::Tick => {
-                let (published, interrupts) = shared.tick_or_recover();
+                let published = shared.tick_or_recover(&mut interrupts);
                 // The program's kinematics for the next tick, without any lock.
                 shared.kinematics_stage();
                 shared.check_watch();

@@ -4,7 +4,7 @@
 
 use super::group::GroupState;
 use super::shared::Shared;
-use crate::config::{AXES, GROUPS};
+use crate::config::AXES;
 use crate::error_record::ErrorRecord;
 use crate::machine::Machine;
 use std::sync::atomic::Ordering;
@@ -96,23 +96,16 @@ impl Shared {
     /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
     /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
     /// group at once (its queue is dropped).
-    pub(super) fn safety(
-        &self,
-        machine: &Machine,
-        full: bool,
-        dt: f64,
-        own_checks: &[bool; GROUPS],
-    ) {
+    pub(super) fn safety(&self, machine: &Machine, groups: &mut [GroupState], full: bool, dt: f64) {
         let limit_mode = self.limit_check.load(Ordering::Relaxed);
         // Checks every moving group needs; otherwise only groups with checks of their own
         // (tracking error, in-position) are looked at again.
         let global =
             limit_mode >= 0 || machine.emergency.iter().any(|&e| e) || machine.pulse_limits_set;
-        for (n, g) in self.groups.iter().enumerate() {
-            if !global && !own_checks[n] {
+        for g in groups.iter_mut() {
+            if !global && !g.has_safety_checks() {
                 continue;
             }
-            let mut g = g.lock();
             if (!g.busy() && !g.has_safety_checks()) || g.homing() != 0 {
                 // Homing watches its own limit switches and emergency stop.
                 continue;
@@ -127,15 +120,15 @@ impl Shared {
                 });
                 g.check_inpos(&errs, dt);
                 if full {
-                    self.publish(&mut g);
+                    self.publish(g);
                 } else {
                     self.status[g.index].store(g.status(), Ordering::Release);
                 }
             }
-            if let Some(code) = check(&g, machine, limit_mode) {
+            if let Some(code) = check(g, machine, limit_mode) {
                 g.stop_for(code.record);
                 if full {
-                    self.publish(&mut g);
+                    self.publish(g);
                 } else {
                     self.status[g.index].store(g.status(), Ordering::Release);
                 }

@@ -12,7 +12,7 @@ use crate::clock::{Clock, ClockMode};
 use crate::config::{GroupDef, MacTable, AXES, CARDS, GROUPS};
 use crate::error::{McclError, McclResult};
 use crate::machine::Machine;
-use parking_lot::{Mutex, MutexGuard};
+use parking_lot::{MappedMutexGuard, Mutex, MutexGuard};
 use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, Ordering};
 use std::time::Duration;
 
@@ -23,8 +23,12 @@ pub struct Shared {
     pub clock: Clock,
     /// Group slot -> position in `groups`.
     pub(super) slots: [Option<usize>; GROUPS],
-    /// The running groups.
-    pub(super) groups: Vec<Mutex<GroupState>>,
+    /// The running groups, behind one lock: the tick visits every group every period,
+    /// and one lock for all costs the engine one atomic operation per tick instead of one
+    /// per group (a locked instruction drains the store buffer: two per group were a
+    /// fifth of the tick at 48 groups, issue #18). A program thread holds it only to
+    /// queue or change one group, as it held that group's lock before.
+    pub(super) groups: Mutex<Vec<GroupState>>,
     /// Per position in `groups`: the axes whose pulses command their channel, one bit each.
     /// Several groups may map the same channel; the tick sends it the pulses of the last
     /// axis (in group order, then axis order) mapping it, so the others need none computed.
@@ -107,12 +111,12 @@ impl Shared {
         let mut gs = Vec::with_capacity(groups.len());
         for (n, (i, d)) in groups.iter().enumerate() {
             slots[*i] = Some(n);
-            gs.push(Mutex::new(GroupState::new(*i, *d, axes_of(d, mac))));
+            gs.push(GroupState::new(*i, *d, axes_of(d, mac)));
         }
         let mut trace = trace;
         if let Some(t) = trace.as_mut() {
-            for g in &gs {
-                t.start_group(&mut g.lock(), mac, &machine);
+            for g in &mut gs {
+                t.start_group(g, mac, &machine);
             }
         }
         let commanding = commanding_axes(&gs);
@@ -125,7 +129,7 @@ impl Shared {
                 .collect(),
             status: (0..GROUPS).map(|_| AtomicI32::new(-1)).collect(),
             watch: (AtomicI32::new(-1), AtomicI32::new(0)),
-            groups: gs,
+            groups: Mutex::new(gs),
             snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
             cards: machine.cards.len(),
             machine: Mutex::new(machine),
@@ -153,15 +157,28 @@ impl Shared {
         }
     }
 
-    /// Locks group `g` (`GROUP_PARAMETER_ERR` when no such group runs).
-    pub fn group(&self, g: u16) -> McclResult<MutexGuard<'_, GroupState>> {
+    /// Locks group `g` (`GROUP_PARAMETER_ERR` when no such group runs). The groups share
+    /// one lock (see [`Shared::groups`]): never call this while holding a group.
+    pub fn group(&self, g: u16) -> McclResult<MappedMutexGuard<'_, GroupState>> {
         let slot = self
             .slots
             .get(usize::from(g))
             .copied()
             .flatten()
             .ok_or(McclError::Group)?;
-        Ok(self.groups[slot].lock())
+        MutexGuard::try_map(self.groups.lock(), |gs| gs.get_mut(slot)).map_err(|_| McclError::Group)
+    }
+
+    /// Number of running groups (positions 0.. in the groups' lock).
+    pub(super) fn group_count(&self) -> usize {
+        self.commanding.len()
+    }
+
+    /// Locks the group at position `n` of the running groups (not its slot): for the
+    /// engine's stages, which visit every group one at a time and release the lock
+    /// around the program's callbacks.
+    pub(super) fn nth_group(&self, n: usize) -> Option<MappedMutexGuard<'_, GroupState>> {
+        MutexGuard::try_map(self.groups.lock(), |gs| gs.get_mut(n)).ok()
     }
 
     /// Marks `card` as an MC3B (its groups run on the device).
@@ -188,10 +205,8 @@ impl Shared {
     /// pulse counters of its channels.
     pub fn publish(&self, g: &mut GroupState) {
         let cell = &self.snaps[g.index];
-        let info = g.info();
-        if g.published_info().as_ref() != Some(&info) {
-            cell.store_info(&info);
-            *g.published_info() = Some(info);
+        if g.info_changed() {
+            cell.store_info(&g.info());
         }
         let motion = g.motion();
         cell.store_motion(&motion);
@@ -209,8 +224,7 @@ impl Shared {
 
     /// Whether a group driving channel `ch` of `card` is moving.
     pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
-        self.groups.iter().any(|g| {
-            let g = g.lock();
+        self.groups.lock().iter().any(|g| {
             g.status() == crate::vendor::consts::GMS_RUNNING
                 && g.axes.iter().any(|a| a.channel == Some((card, ch)))
         })
@@ -218,10 +232,9 @@ impl Shared {
 
     /// Every running group, locked one at a time.
     pub fn for_each_group(&self, mut f: impl FnMut(&mut GroupState)) {
-        for g in &self.groups {
-            let mut g = g.lock();
-            f(&mut g);
-            self.publish(&mut g);
+        for g in self.groups.lock().iter_mut() {
+            f(g);
+            self.publish(g);
         }
     }
 
@@ -243,10 +256,10 @@ impl Shared {
 
 /// [`Shared::commanding`] for `groups`: per group, the axes that are the last (in group
 /// order, then axis order) to map their channel.
-fn commanding_axes(groups: &[Mutex<GroupState>]) -> Vec<u32> {
+fn commanding_axes(groups: &[GroupState]) -> Vec<u32> {
     let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
     for (n, g) in groups.iter().enumerate() {
-        for (i, ax) in g.lock().axes.iter().enumerate() {
+        for (i, ax) in g.axes.iter().enumerate() {
             if let Some((card, ch)) = ax.channel {
                 if let Some(c) = last.get_mut(card) {
                     c[ch] = Some((n, i));

@@ -5,7 +5,7 @@
 use super::homing::control::apply_homing;
 use super::shared::Shared;
 use super::{command, isr, snapshot};
-use crate::config::{AXES, CARDS, GROUPS};
+use crate::config::AXES;
 use std::sync::atomic::Ordering;
 use std::time::Duration;
 
@@ -18,12 +18,13 @@ impl Shared {
     /// state instead of a dead engine thread: every group stops where it stands, drops
     /// its queue and records [`safety::ERR_INTERNAL`]; the clock goes on. The locks the
     /// tick held were released while unwinding (parking_lot locks do not poison).
-    pub(super) fn tick_or_recover(&self) -> (bool, isr::Collected) {
-        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick())) {
-            Ok(done) => done,
+    pub(super) fn tick_or_recover(&self, interrupts: &mut isr::Collected) -> bool {
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick(interrupts))) {
+            Ok(published) => published,
             Err(_) => {
                 self.stop_all_for_internal_error();
-                (true, isr::Collected::default())
+                interrupts.clear();
+                true
             }
         }
     }
@@ -34,8 +35,9 @@ impl Shared {
     /// `live_snapshots` is set (callbacks registered). Under a virtual clock the program
     /// is waiting while ticks run, so a long run publishes every [`PUBLISH_EVERY`] ticks
     /// and at its last tick (see [`Shared::end_of_run`]); statuses are published every
-    /// tick. Returns whether it published everything, and the interrupts to deliver.
-    fn tick(&self) -> (bool, isr::Collected) {
+    /// tick. Returns whether it published everything; the interrupts to deliver are
+    /// left in `interrupts`.
+    fn tick(&self, interrupts: &mut isr::Collected) -> bool {
         let dt = self.clock.period().as_secs_f64();
         let n = self.clock.ticks();
         let t_ns = self.running_tick_end_ns();
@@ -43,19 +45,20 @@ impl Shared {
             || self.live_snapshots.load(Ordering::Relaxed)
             || n % PUBLISH_EVERY == 0
             || self.clock.last_of_run();
-        let mut trace = self.trace.lock();
+        // The trace's lock only while tracing: an uncontended lock is still two atomic
+        // operations a tick.
+        let mut trace_guard = self.tracing.then(|| self.trace.lock());
+        let mut trace = trace_guard.as_mut().and_then(|t| t.as_mut());
         let mut machine = self.machine.lock();
         let dry = self.dry_run.load(Ordering::Relaxed);
-        let mut cmds = [[None::<i64>; AXES]; CARDS];
-        let mut own_checks = [false; GROUPS];
         let homed = self.tick_homing(&mut machine, dt);
-        for (n, g) in self.groups.iter().enumerate() {
-            let mut g = g.lock();
+        let mut groups = self.groups.lock();
+        for (n, g) in groups.iter_mut().enumerate() {
             g.tick(dt);
             g.kinematics_apply();
             crate::fault::point("group tick");
             if let Some(h) = &homed {
-                apply_homing(&mut g, h);
+                apply_homing(g, h);
             }
             if let Some(status) = g.take_home_result() {
                 // A go home on an MC3B ended.
@@ -63,7 +66,6 @@ impl Shared {
                 self.mc3b_home_card.store(-1, Ordering::Release);
                 g.end_homing();
             }
-            own_checks[n] = g.has_safety_checks();
             if g.has_outputs() {
                 let outputs = g.take_outputs();
                 self.make_outputs(g.def.card.0, &outputs);
@@ -75,34 +77,36 @@ impl Shared {
                     let i = axes.trailing_zeros() as usize;
                     axes &= axes - 1;
                     if let Some((card, ch)) = g.axes[i].channel {
-                        cmds[card][ch] = Some(g.pulses(i));
+                        if let Some(chan) = machine.channel_mut(card, ch) {
+                            chan.command(g.pulses(i));
+                        }
                     }
                 }
             }
             if full {
-                self.publish(&mut g);
+                self.publish(g);
             } else {
                 self.status[g.index].store(g.status(), Ordering::Release);
             }
-            if let Some(t) = trace.as_mut() {
-                t.row(t_ns, &g);
-                t.group_events(t_ns, &mut g);
+            if let Some(t) = trace.as_deref_mut() {
+                t.row(t_ns, g);
+                t.group_events(t_ns, g);
             }
         }
         if let Some(h) = &homed {
             // The homed channels get the homing's position, grouped or not, dry run or not.
             for (ch, a) in h.axes.iter().enumerate() {
-                if let (Some((x, _)), Some(chan)) = (a.pos, machine.channel(h.card, ch)) {
-                    cmds[h.card][ch] = Some(snapshot::round_pulses(x * chan.factor()));
+                if let (Some((x, _)), Some(chan)) = (a.pos, machine.channel_mut(h.card, ch)) {
+                    let p = snapshot::round_pulses(x * chan.factor());
+                    chan.command(p);
                 }
             }
         }
         let now_ns = t_ns;
         let m = &mut *machine;
         for (card, chans) in m.cards.iter_mut().enumerate() {
-            for (ch, chan) in chans.iter_mut().enumerate() {
-                let cmd = cmds[card][ch].unwrap_or_else(|| chan.command_pulses());
-                chan.step(cmd, dt);
+            for chan in chans.iter_mut() {
+                chan.step_commanded(dt);
             }
             let thresholds = m.settings[card].error_threshold;
             if m.triggers[card].tick_idle(chans, &thresholds) {
@@ -120,19 +124,21 @@ impl Shared {
                 }
             }
         }
-        self.safety(&machine, full, dt, &own_checks);
-        if let Some(t) = trace.as_mut() {
+        self.safety(&machine, &mut groups, full, dt);
+        if let Some(t) = trace {
             t.machine_events(t_ns, &machine);
             if let Some(h) = &homed {
                 t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
             }
         }
         if full {
-            self.publish_view(&machine, self.clock.last_of_run());
+            self.publish_view(&machine, &groups, self.clock.last_of_run());
         }
+        drop(groups);
         drop(machine);
-        drop(trace);
-        (full, self.tick_peripherals(tick_ns(self.clock.period())))
+        drop(trace_guard);
+        self.tick_peripherals(tick_ns(self.clock.period()), interrupts);
+        full
     }
 
     /// After a tick that did not publish everything: if it ended the run (the waiting

@@ -10,7 +10,6 @@
 //! Without an observer the tick only loads one atomic flag.
 
 use crate::config::{AXES, GROUPS};
-use crate::error::McclError;
 use crate::machine::Machine;
 use parking_lot::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -120,7 +119,12 @@ impl ViewCell {
 
 impl super::Shared {
     /// At the end of a tick (machine locked by the caller): copies the view when due.
-    pub(super) fn publish_view(&self, machine: &Machine, last_of_run: bool) {
+    pub(super) fn publish_view(
+        &self,
+        machine: &Machine,
+        running: &[super::group::GroupState],
+        last_of_run: bool,
+    ) {
         if !self.view.due(last_of_run) {
             return;
         }
@@ -128,14 +132,8 @@ impl super::Shared {
             .map(|cd| self.card_view(machine, cd))
             .collect();
         let mut groups = vec![None; GROUPS];
-        for (slot, g) in groups.iter_mut().enumerate() {
-            let Ok(st) = u16::try_from(slot)
-                .map_err(|_| McclError::Group)
-                .and_then(|s| self.group(s))
-            else {
-                continue;
-            };
-            {
+        for st in running {
+            if let Some(g) = groups.get_mut(st.index) {
                 *g = Some(GroupView {
                     override_pct: st.override_pct,
                     inpos: st.inpos_status(),

@@ -8,6 +8,7 @@ use crate::config::AXES;
 use crate::engine::command::{Command, Plan};
 use crate::engine::trace::Note;
 use crate::planner::Axes;
+use crate::vendor::consts as c;
 
 /// Converts between real time within a tick and a command's own time: general and PtP
 /// motion run at the group's rate, delays in real time (paused while held).
@@ -69,6 +70,9 @@ impl GroupState {
         if self.post.is_some() {
             return self.tick_post(dt);
         }
+        if self.tick_cruising(dt) {
+            return;
+        }
         // Software over-travel compares with the position before the tick (only needed,
         // and so only copied, when a check is on).
         let before = (self.ot_check != [false; AXES]).then_some(self.pos);
@@ -97,6 +101,51 @@ impl GroupState {
         self.update_status();
     }
 
+    /// The tick of a group in the middle of one general or PtP command at a steady rate
+    /// (no ramp, not held or aborting, no over-travel check, kinematics or filters): only
+    /// the command's own time advances and the position is sampled. Returns false, having
+    /// changed nothing, when the tick may do more (start, blend, end or retire a command,
+    /// ramp the rate); [`GroupState::tick`] then runs in full. The arithmetic is that of
+    /// the full tick, operation for operation, so the positions are the same to the bit.
+    fn tick_cruising(&mut self, dt: f64) -> bool {
+        if self.homing != 0
+            || self.kin.is_some()
+            || self.mode != Mode::Normal
+            || self.rate.ramp.is_some()
+            || self.running.len() != 1
+            || self.ot_check != [false; AXES]
+        {
+            return false;
+        }
+        let dtau = self.rate.value * dt;
+        let r = &self.running[0];
+        // `TickClock::own_time(dt, ..)` of a general or PtP command: dt / dt x dtau, and
+        // dt / dt is exactly 1 for the (finite, positive) period.
+        let tau = r.tau + if dt > 0.0 { dtau } else { 0.0 };
+        match &r.cmd.plan {
+            // What `settle` and `try_blend` would act on: the end of the command, and
+            // with blending on, the start of its deceleration.
+            Plan::Path(m) => {
+                if tau >= m.duration() - TIME_EPS
+                    || (self.blend_on && tau >= m.decel_start() - TIME_EPS)
+                {
+                    return false;
+                }
+            }
+            Plan::Ptp(p) => {
+                if tau >= p.duration() - TIME_EPS {
+                    return false;
+                }
+            }
+            _ => return false,
+        }
+        self.running[0].tau = tau;
+        self.compute_pos_vel();
+        // What `update_status` finds for a group running a motion command.
+        self.status = c::GMS_RUNNING;
+        true
+    }
+
     pub(super) fn start(&mut self, cmd: Command, tau: f64) {
         let cmd = self.kinematics_start(cmd);
         if cmd.is_motion() {
@@ -108,6 +157,7 @@ impl GroupState {
                 self.retarget_rate();
             }
         }
+        self.starts = self.starts.wrapping_add(1);
         self.cmd_index.ld = self.cmd_index.ld.wrapping_add(1);
         self.cmd_index.last_started = Some((cmd.index, self.cmd_index.ld));
         self.note(Note::Start {

@@ -1,6 +1,7 @@
 //! What the group shows: its motion status, the published motion and info parts, the
 //! pulses of its axes.
 
+use super::execution::Running;
 use super::GroupState;
 use super::Mode;
 use crate::engine::command::Plan;
@@ -55,6 +56,7 @@ impl GroupState {
 
     /// Pulse position of axis `i`: round(reference position x pulses per UU), halves away
     /// from zero.
+    #[inline]
     pub fn pulses(&self, i: usize) -> i64 {
         if let Some(p) = self.kinematics_pulses(i) {
             return p;
@@ -88,29 +90,14 @@ impl GroupState {
             ..Default::default()
         };
         if let Some(r) = self.running.back() {
-            let phase = match &r.cmd.plan {
-                Plan::Path(m) => {
-                    if r.tau < m.profile.acc_time().min(m.decel_start()) {
-                        0
-                    } else if r.tau < m.decel_start() {
-                        1
-                    } else {
-                        2
-                    }
-                }
-                _ => 1,
-            };
             cmd = COMMAND_INFO {
                 nType: r.cmd.ctype,
                 nCommandIndex: r.cmd.index,
-                dfFeedSpeed: match r.cmd.plan {
-                    Plan::Delay(s) => ((s - r.tau) * 1000.0).max(0.0),
-                    _ => r.cmd.info_feed,
-                },
+                dfFeedSpeed: info_feed(r),
                 dfPos: r.cmd.target,
                 dfAcctime: r.cmd.acc_ms,
                 dfDectime: r.cmd.dec_ms,
-                nMotionPhase: phase,
+                nMotionPhase: motion_phase(r),
                 nCommandIndex_LD: self.cmd_index.last_started.map_or(0, |l| l.1),
             };
         }
@@ -123,13 +110,77 @@ impl GroupState {
         }
     }
 
+    /// What [`GroupState::info`] depends on that can change while the group runs: equal
+    /// keys mean equal infos, so publishing compares these few words instead of building
+    /// and comparing the whole info every tick. The rest of the info changes only with a
+    /// command start (counted by `starts`) or a reset (which publishes afresh).
+    pub(super) fn info_key(&self) -> InfoKey {
+        let back = self.running.back();
+        InfoKey {
+            error: self.error,
+            queued: self.queue.len(),
+            starts: self.starts,
+            running: back.is_some(),
+            phase: back.map_or(0, motion_phase),
+            feed: back.map_or(0, |r| info_feed(r).to_bits()),
+            // Custom motion moves its command's end while it runs.
+            target: back.map_or([0.0; crate::config::AXES], |r| r.cmd.target),
+            offset: self.offset,
+        }
+    }
+
     /// The whole published state (as readers see it).
     pub fn snapshot(&self) -> GroupSnapshot {
         GroupSnapshot::from_parts(&self.motion(), &self.info())
     }
 
-    /// The info part last published, so an unchanged one is not stored again.
-    pub fn published_info(&mut self) -> &mut Option<Info> {
-        &mut self.published_info
+    /// Whether the info part changed since it was last published ([`GroupState::info_key`]);
+    /// if so, it counts as published from now on.
+    pub fn info_changed(&mut self) -> bool {
+        let key = self.info_key();
+        if self.published_key == Some(key) {
+            return false;
+        }
+        self.published_key = Some(key);
+        true
+    }
+}
+
+/// [`GroupState::info_key`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct InfoKey {
+    error: i32,
+    queued: usize,
+    starts: u64,
+    running: bool,
+    phase: i32,
+    feed: u64,
+    target: crate::planner::Axes,
+    offset: crate::planner::Axes,
+}
+
+/// `COMMAND_INFO.nMotionPhase` of a running command: 0 accelerating, 1 at speed, 2
+/// decelerating (general motion; 1 for the others).
+fn motion_phase(r: &Running) -> i32 {
+    match &r.cmd.plan {
+        Plan::Path(m) => {
+            if r.tau < m.profile.acc_time().min(m.decel_start()) {
+                0
+            } else if r.tau < m.decel_start() {
+                1
+            } else {
+                2
+            }
+        }
+        _ => 1,
+    }
+}
+
+/// `COMMAND_INFO.dfFeedSpeed` of a running command: its feed, or what is left of a delay
+/// (ms).
+fn info_feed(r: &Running) -> f64 {
+    match r.cmd.plan {
+        Plan::Delay(s) => ((s - r.tau) * 1000.0).max(0.0),
+        _ => r.cmd.info_feed,
     }
 }

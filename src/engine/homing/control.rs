@@ -46,24 +46,25 @@ impl Shared {
         };
         // Every group driving a homed channel must be idle; mark them, undo on failure.
         let mut marked: Vec<usize> = Vec::new();
-        for (n, g) in self.groups.iter().enumerate() {
-            let mut g = g.lock();
-            let mask = axes_of(&g);
+        let mut groups = self.groups.lock();
+        for n in 0..groups.len() {
+            let g = &mut groups[n];
+            let mask = axes_of(g);
             if mask == 0 {
                 continue;
             }
             if let Err(e) = g.begin_homing(mask) {
-                drop(g);
                 for &m in &marked {
-                    let mut g = self.groups[m].lock();
+                    let g = &mut groups[m];
                     g.end_homing();
-                    self.publish(&mut g);
+                    self.publish(g);
                 }
                 return Err(e);
             }
-            self.publish(&mut g);
+            self.publish(g);
             marked.push(n);
         }
+        drop(groups);
         if chan_mask == 0 {
             self.home_status.store(homing::HOME_DONE, Ordering::Release);
         } else {
@@ -92,13 +93,12 @@ impl Shared {
             self.home_status.store(homing::HOME_DONE, Ordering::Release);
             return Ok(());
         }
-        for g in &self.groups {
-            let mut g = g.lock();
+        for g in self.groups.lock().iter_mut() {
             if g.def.card.0 != card || !g.is_external() {
                 continue;
             }
             g.begin_external_home(&orders, cfgs)?;
-            self.publish(&mut g);
+            self.publish(g);
             self.mc3b_home_card
                 .store(i32::try_from(card).unwrap_or(-1), Ordering::Release);
             self.home_status.store(homing::HOME_BUSY, Ordering::Release);
