@@ -125,7 +125,34 @@ fn measure(groups: u16) -> (f64, f64, f64) {
     (median(&mut e), median(&mut l), median(&mut f))
 }
 
+/// `MCCL_TICK_FLOOR_PROFILE=<groups>[,live]`: only the engine, `groups` groups for
+/// 200,000 ticks (with a snapshot published every tick with `,live`), to run under a
+/// profiler (`perf record`); prints the time per tick.
+fn profile(spec: &str) {
+    let (n, live) = match spec.split_once(',') {
+        Some((n, l)) => (n, l == "live"),
+        None => (spec, false),
+    };
+    let groups: u16 = n
+        .trim()
+        .parse()
+        .expect("MCCL_TICK_FLOOR_PROFILE=<groups>[,live]");
+    start(groups);
+    let shared = MCCLPCI_IMP::system::active().expect("running system");
+    shared
+        .live_snapshots
+        .store(live, std::sync::atomic::Ordering::Relaxed);
+    let t = Instant::now();
+    MCC_TimeDelay(200_000);
+    let us = t.elapsed().as_secs_f64() / 200_000.0 * 1e6;
+    MCC_CloseSystem();
+    println!("profile: {groups} groups, live {live}: engine {us:.3} us per tick");
+}
+
 fn main() {
+    if let Ok(spec) = std::env::var("MCCL_TICK_FLOOR_PROFILE") {
+        return profile(&spec);
+    }
     let (e48, l48, f48) = measure(48);
     let (e1, l1, f1) = measure(1);
     println!("tick cost (median of 7 alternating rounds of {TICKS} ticks):");
