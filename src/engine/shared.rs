@@ -206,7 +206,17 @@ impl Shared {
     pub fn publish(&self, g: &mut GroupState) {
         let cell = &self.snaps[g.index];
         if g.info_changed() {
-            cell.store_info(&g.info());
+            let info = g.info();
+            cell.store_info(&info);
+            #[cfg(debug_assertions)]
+            {
+                g.published_info = Some(info);
+            }
+        } else {
+            // An unchanged key must mean an unchanged info (a writer that forgot
+            // `info_touched` would leave readers with a stale info).
+            #[cfg(debug_assertions)]
+            debug_assert_eq!(g.published_info, Some(g.info()), "group {}", g.index);
         }
         let motion = g.motion();
         cell.store_motion(&motion);

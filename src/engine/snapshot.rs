@@ -38,8 +38,10 @@ pub struct Motion {
     pub pos: Axes,
     /// Velocity per axis (UU/s).
     pub vel: Axes,
-    /// Tangential (path) speed (UU/s).
-    pub path_speed: f64,
+    /// The axes whose speeds compose the path speed (`MCC_SetComposeAxis`; X/Y/Z by
+    /// default): the path speed is derived from `vel` when read
+    /// ([`crate::planner::compose::composed_speed`]), not computed on every tick.
+    pub compose: u32,
 }
 
 /// The part of a snapshot that changes when commands start, end or are queued.
@@ -78,7 +80,7 @@ impl GroupSnapshot {
             ref_pos: std::array::from_fn(|k| m.pos[k] + i.offset[k]),
             pulses: std::array::from_fn(|k| round_pulses((m.pos[k] + i.offset[k]) * i.factor[k])),
             vel: m.vel,
-            path_speed: m.path_speed,
+            path_speed: crate::planner::compose::composed_speed(&m.vel, m.compose),
             cmd: i.cmd,
         }
     }
@@ -94,7 +96,7 @@ fn motion_words(m: &Motion) -> [u64; MOTION_WORDS] {
         w[1 + k] = m.pos[k].to_bits();
         w[9 + k] = m.vel[k].to_bits();
     }
-    w[17] = m.path_speed.to_bits();
+    w[17] = u64::from(m.compose);
     w
 }
 
@@ -103,7 +105,7 @@ fn motion_from(w: &[u64; MOTION_WORDS]) -> Motion {
         status: w[0] as u32 as i32,
         pos: std::array::from_fn(|k| f64::from_bits(w[1 + k])),
         vel: std::array::from_fn(|k| f64::from_bits(w[9 + k])),
-        path_speed: f64::from_bits(w[17]),
+        compose: w[17] as u32,
     }
 }
 
@@ -239,7 +241,7 @@ mod tests {
     fn round_trip() {
         let mut m = Motion {
             status: 2,
-            path_speed: 12.5,
+            compose: 0b1011,
             ..Default::default()
         };
         m.pos[3] = -1.25;

@@ -15,7 +15,16 @@ pub const XYZ_MASK: u32 = 0b111;
 /// (bit i = axis i): `sqrt(Σ_{i in mask} d_i²)`, or, when that is 0, the longest
 /// `|d_i|` of the axes outside the mask (0 for a line that does not move).
 pub fn composed_length(start: &Axes, end: &Axes, mask: u32) -> f64 {
-    let d: Axes = std::array::from_fn(|i| end[i] - start[i]);
+    composed_norm(&std::array::from_fn(|i| end[i] - start[i]), mask)
+}
+
+/// The path (tangential) speed of axis velocities `vel` composed over `mask`, by the
+/// rule of [`composed_length`]: what `MCC_GetCurFeedSpeed` reports.
+pub fn composed_speed(vel: &Axes, mask: u32) -> f64 {
+    composed_norm(vel, mask)
+}
+
+fn composed_norm(d: &Axes, mask: u32) -> f64 {
     let inside = (0..d.len())
         .filter(|&i| mask & (1 << i) != 0)
         .map(|i| d[i] * d[i])

@@ -241,6 +241,7 @@ impl GroupState {
                     r.cmd.target = pos;
                 }
             }
+            self.info_touched();
             self.custom.started.push((index, spec.clone()));
             batch.call = Some(Call::Start {
                 spec,
@@ -403,6 +404,7 @@ impl GroupState {
                     r.cmd.target = target;
                 }
             }
+            self.info_touched();
             // Later commands were planned from where this one started (its end was not
             // known): they move with it, translated by its displacement, and so does the
             // queue's end.

@@ -288,6 +288,7 @@ impl Host for GroupState {
 
     fn zero_offset(&mut self, i: usize) {
         self.offset[i] = 0.0;
+        self.info_touched();
     }
 
     fn set_pos(&mut self, pos: Axes) {

@@ -37,6 +37,7 @@ impl GroupState {
     /// Axis `i` reached its working home: its position, reference and pulses read 0.
     pub fn home_zero_axis(&mut self, i: usize) {
         self.offset[i] = 0.0;
+        self.info_touched();
         self.set_homing_axis(i, 0.0, 0.0);
     }
 

@@ -217,6 +217,7 @@ impl GroupState {
             pre_done: None,
         }));
         self.offset = [0.0; AXES];
+        self.info_touched();
         self.pos = cart;
         self.base = cart;
         self.queue_end = cart;

@@ -82,6 +82,11 @@ pub struct GroupState {
     pub index: usize,
     /// Commands started since the group was made (the info key's command identity).
     starts: u64,
+    /// Changes of the info the key does not see by itself ([`GroupState::info_touched`]).
+    info_touched: u64,
+    /// The info last published, kept in test builds to check the key against it.
+    #[cfg(debug_assertions)]
+    pub(crate) published_info: Option<super::snapshot::Info>,
     /// Set when the group's commands run outside the card (an MC3B: `external`).
     external: Option<Box<dyn ExternalExecutor>>,
     /// After-interpolation filters and reverse interpolation (`post.rs`); `None` until
@@ -167,6 +172,9 @@ impl GroupState {
             status: c::GMS_STOP,
             published_key: None,
             starts: 0,
+            info_touched: 0,
+            #[cfg(debug_assertions)]
+            published_info: None,
             ot_check: [false; AXES],
             track_mask: 0,
             track_limit: [f64::INFINITY; AXES],
@@ -290,6 +298,7 @@ impl GroupState {
         }
         let shift = value - self.pos[axis];
         self.offset[axis] -= shift;
+        self.info_touched();
         self.pos[axis] = value;
         self.base[axis] = value;
         self.queue_end[axis] = value;

@@ -385,25 +385,11 @@ impl GroupState {
     #[cold]
     #[inline(never)]
     pub(super) fn post_motion(&self) -> crate::engine::snapshot::Motion {
-        let vel = self.out_vel();
-        let mask = self.settings.compose;
-        let inside = (0..AXES)
-            .filter(|&i| mask & (1 << i) != 0)
-            .map(|i| vel[i] * vel[i])
-            .sum::<f64>()
-            .sqrt();
-        let path_speed = if inside > 0.0 {
-            inside
-        } else {
-            (0..AXES)
-                .filter(|&i| mask & (1 << i) == 0)
-                .fold(0.0f64, |m, i| m.max(vel[i].abs()))
-        };
         crate::engine::snapshot::Motion {
             status: self.status,
             pos: self.out_pos(),
-            vel,
-            path_speed,
+            vel: self.out_vel(),
+            compose: self.settings.compose,
         }
     }
 }

@@ -44,16 +44,6 @@ impl GroupState {
         };
     }
 
-    /// Tangential speed: the X/Y/Z speed, or the fastest aux axis when X/Y/Z stand still.
-    fn path_speed(&self) -> f64 {
-        let xyz = (self.vel[0].powi(2) + self.vel[1].powi(2) + self.vel[2].powi(2)).sqrt();
-        if xyz > 0.0 {
-            xyz
-        } else {
-            self.vel[3..].iter().fold(0.0f64, |m, v| m.max(v.abs()))
-        }
-    }
-
     /// Pulse position of axis `i`: round(reference position x pulses per UU), halves away
     /// from zero.
     #[inline]
@@ -78,7 +68,7 @@ impl GroupState {
             status: self.status,
             pos: self.pos,
             vel: self.vel,
-            path_speed: self.path_speed(),
+            compose: crate::planner::compose::XYZ_MASK,
         }
     }
 
@@ -123,10 +113,16 @@ impl GroupState {
             running: back.is_some(),
             phase: back.map_or(0, motion_phase),
             feed: back.map_or(0, |r| info_feed(r).to_bits()),
-            // Custom motion moves its command's end while it runs.
-            target: back.map_or([0.0; crate::config::AXES], |r| r.cmd.target),
-            offset: self.offset,
+            touched: self.info_touched,
         }
+    }
+
+    /// Records a change of what the info shows that is not one of the key's own words:
+    /// the running command's end (custom motion) or the offset between user and
+    /// reference positions. Every writer of those calls it; test builds check after
+    /// every publication that an unchanged key really means an unchanged info.
+    pub(super) fn info_touched(&mut self) {
+        self.info_touched = self.info_touched.wrapping_add(1);
     }
 
     /// The whole published state (as readers see it).
@@ -155,8 +151,7 @@ pub(super) struct InfoKey {
     running: bool,
     phase: i32,
     feed: u64,
-    target: crate::planner::Axes,
-    offset: crate::planner::Axes,
+    touched: u64,
 }
 
 /// `COMMAND_INFO.nMotionPhase` of a running command: 0 accelerating, 1 at speed, 2
