@@ -92,13 +92,11 @@ fn floor_i64(x: f64) -> i64 {
 /// from them overflows).
 const CELL_LIMIT: i64 = 1 << 52;
 
-/// The index interval `k` of the last position looked up on a grid (`spacing`, `phase`),
-/// and its bounds as motor positions: every `x` in `lo <= x < hi` has
-/// `(floor(x) - phase).div_euclid(spacing) == k`.
+/// The index interval `k` of the last position looked up on the channel's grid
+/// (`spacing`, `phase`; a new grid drops the cell), and its bounds as motor positions:
+/// every `x` in `lo <= x < hi` has `(floor(x) - phase).div_euclid(spacing) == k`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct IndexCell {
-    spacing: i64,
-    phase: i64,
     k: i64,
     lo: f64,
     hi: f64,
@@ -110,8 +108,6 @@ impl IndexCell {
         let lo = k.checked_mul(spacing)?.checked_add(phase)?;
         let hi = lo.checked_add(spacing)?;
         (lo > -CELL_LIMIT && hi < CELL_LIMIT).then_some(IndexCell {
-            spacing,
-            phase,
             k,
             lo: lo as f64,
             hi: hi as f64,
@@ -119,8 +115,8 @@ impl IndexCell {
     }
 
     /// Whether `x` is inside (false for NaN).
-    fn holds(&self, x: f64, spacing: i64, phase: i64) -> bool {
-        self.spacing == spacing && self.phase == phase && x >= self.lo && x < self.hi
+    fn holds(&self, x: f64) -> bool {
+        x >= self.lo && x < self.hi
     }
 }
 
@@ -155,13 +151,16 @@ pub struct Channel {
     /// Levels at the end of the last step: a level forced between steps shows as an edge.
     step_levels: SensorLevels,
     forced: [Option<bool>; 3],
-    /// `mac.dwPPR`, kept here with the fields every step reads (the index grid needs it
-    /// and `mac` is out of the way, see the type's documentation).
-    ppr: u32,
+    /// The index grid (spacing, phase) in x4 counts, from `spec` and `mac.dwPPR`, kept
+    /// with the fields every step reads ([`Channel::refresh_grid`]).
+    grid: (i64, i64),
+    /// Whether a sensor is placed or forced: only then do the levels follow the motor
+    /// ([`Channel::refresh_sensors`]).
+    sensors: bool,
     /// Compensation tables in effect.
     pub comp: Compensation,
     /// Simulation configuration.
-    pub spec: ChannelSpec,
+    spec: ChannelSpec,
     mac: SYS_MAC_PARAM,
     enc: SYS_ENCODER_CONFIG,
     /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
@@ -205,7 +204,8 @@ impl Channel {
             comp: Compensation::default(),
             comp_param: Box::new(compensation::off()),
             forced: [None; 3],
-            ppr: mac.dwPPR,
+            grid: (1, 0),
+            sensors: false,
             raw: [false; 3],
             index_events: 0,
             last_index_count: None,
@@ -218,6 +218,8 @@ impl Channel {
             prev_levels: SensorLevels::default(),
             step_levels: SensorLevels::default(),
         };
+        ch.refresh_grid();
+        ch.refresh_sensors();
         ch.update_sensors();
         ch.prev_levels = ch.levels;
         ch.step_levels = ch.levels;
@@ -362,8 +364,8 @@ impl Channel {
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
         let count = self.encoder();
         self.mac = mac;
-        self.ppr = mac.dwPPR;
         self.enc = enc;
+        self.refresh_grid();
         self.input_rate = None;
         self.set_encoder(count);
         self.update_sensors();
@@ -378,6 +380,7 @@ impl Channel {
     /// Forces a sensor's physical level (`Some`) or lets the position decide (`None`).
     pub fn force(&mut self, s: Sensor, level: Option<bool>) {
         self.forced[s as usize] = level;
+        self.refresh_sensors();
         self.update_sensors();
     }
 
@@ -399,6 +402,7 @@ impl Channel {
             Sensor::LimitPlus => self.spec.limit_plus = Some(from),
             Sensor::LimitMinus => self.spec.limit_minus = Some(from),
         }
+        self.refresh_sensors();
         self.update_sensors();
     }
 
@@ -480,8 +484,36 @@ impl Channel {
     }
 
     fn index_grid(&self) -> (i64, i64) {
-        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.ppr).max(1));
-        (spacing, i64::from(self.spec.index_phase))
+        self.grid
+    }
+
+    /// Recomputes the index grid after `spec` or `mac` changed; a new grid drops the
+    /// cached index interval.
+    fn refresh_grid(&mut self) {
+        let spacing = i64::from(self.spec.index_spacing.unwrap_or(self.mac.dwPPR).max(1));
+        self.set_grid((spacing, i64::from(self.spec.index_phase)));
+    }
+
+    /// Index grid `(spacing, phase)`; a new one drops the cached index interval.
+    fn set_grid(&mut self, grid: (i64, i64)) {
+        if grid != self.grid {
+            self.grid = grid;
+            self.cell = None;
+        }
+    }
+
+    /// Recomputes [`Channel::sensors`] after a sensor was placed or forced.
+    fn refresh_sensors(&mut self) {
+        self.sensors = self.spec.home.is_some()
+            || self.spec.limit_plus.is_some()
+            || self.spec.limit_minus.is_some()
+            || self.forced.iter().any(Option::is_some);
+    }
+
+    /// The plant: a first-order lag of `lag_s` seconds, or ideal (`None`) — what a
+    /// `[plant]` table of the simulation configuration sets.
+    pub fn set_plant_lag(&mut self, lag_s: Option<f64>) {
+        self.spec.lag_s = lag_s;
     }
 
     /// The `n`th (from 0) index pulse the motor passed in the last step, in the pulse
@@ -503,8 +535,6 @@ impl Channel {
         Some(idx * spacing + phase - self.base as i64)
     }
 
-    /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
-    /// (ideal or lagging), the encoder and sensors follow the motor.
     /// Sets the pulses the coming [`Channel::step_commanded`] moves to (the last call in
     /// a tick wins).
     pub fn command(&mut self, pulses: i64) {
@@ -518,6 +548,8 @@ impl Channel {
         self.step(cmd, dt);
     }
 
+    /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
+    /// (ideal or lagging), the encoder and sensors follow the motor.
     pub fn step(&mut self, cmd: i64, dt: f64) {
         self.prev_levels = self.step_levels;
         let d_prev = self.out - self.prev_out;
@@ -537,11 +569,7 @@ impl Channel {
         };
         self.count_index(before + self.base, self.actual + self.base);
         // Sensors only change with position if there are any (or one is forced).
-        if self.spec.home.is_some()
-            || self.spec.limit_plus.is_some()
-            || self.spec.limit_minus.is_some()
-            || self.forced.iter().any(Option::is_some)
-        {
+        if self.sensors {
             self.update_sensors();
         }
         self.step_levels = self.levels;
@@ -553,12 +581,14 @@ impl Channel {
         self.update_sensors();
     }
 
-    /// `(floor(x) - phase).div_euclid(spacing)`: the index interval of motor position `x`.
+    /// `(floor(x) - phase).div_euclid(spacing)` on the channel's grid: the index interval
+    /// of motor position `x`.
     /// A motor that stays within the interval of the last lookup (nearly every step: index
     /// pulses are a motor turn apart) gets it by two comparisons: with integer bounds
     /// `lo <= x < hi` means `lo <= floor(x) <= hi - 1`.
-    fn index_interval(&mut self, x: f64, spacing: i64, phase: i64) -> i64 {
-        if let Some(c) = self.cell.filter(|c| c.holds(x, spacing, phase)) {
+    fn index_interval(&mut self, x: f64) -> i64 {
+        let (spacing, phase) = self.grid;
+        if let Some(c) = self.cell.filter(|c| c.holds(x)) {
             return c.k;
         }
         let k = (floor_i64(x) - phase).div_euclid(spacing);
@@ -572,21 +602,15 @@ impl Channel {
         if from == to {
             return;
         }
-        // Index pulses in x4 counts of the motor position: one count per pulse.
-        let (spacing, phase) = self.index_grid();
         // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
         // between pulses rounds down to the pulse it has passed.
-        if self
-            .cell
-            .is_some_and(|c| c.holds(from, spacing, phase) && c.holds(to, spacing, phase))
-        {
+        if self.cell.is_some_and(|c| c.holds(from) && c.holds(to)) {
             // Both ends in one interval: no index pulse passed.
             return;
         }
-        let (a, b) = (
-            self.index_interval(from, spacing, phase),
-            self.index_interval(to, spacing, phase),
-        );
+        // Index pulses in x4 counts of the motor position: one count per pulse.
+        let (spacing, phase) = self.index_grid();
+        let (a, b) = (self.index_interval(from), self.index_interval(to));
         if a != b {
             self.index_events = u32::try_from((a - b).unsigned_abs()).unwrap_or(u32::MAX);
             // Moving up the last index passed is the highest, moving down the lowest.
@@ -808,6 +832,24 @@ mod tests {
     }
 
     #[test]
+    fn new_mechanism_parameters_count_index_pulses_on_the_new_grid() {
+        // dwPPR 500: index pulses at counts 0, 500, ...; a motor at 10 sits in [0, 500).
+        let mut c = ch(ChannelSpec::default());
+        c.step(10, 0.001);
+        assert_eq!(c.index_events, 0);
+        // dwPPR 4: index pulses at 0, 4, 8, 12, ...; 10 -> 13 passes the one at 12. The
+        // interval cached on the old grid, [0, 500), holds both ends and must not be used.
+        let mac = SYS_MAC_PARAM {
+            dwPPR: 4,
+            ..default_mac_param()
+        };
+        c.set_params(mac, default_encoder_config());
+        c.step(13, 0.001);
+        assert_eq!(c.index_events, 1);
+        assert_eq!(c.last_index_count, Some(12));
+    }
+
+    #[test]
     fn ideal_encoder_counts_one_per_pulse_at_x4() {
         let mut c = ch(ChannelSpec::default());
         c.step(1234, 0.001);
@@ -932,8 +974,9 @@ mod tests {
                 2 => (1, 0),
                 _ => (4096, 7),
             };
+            c.set_grid((spacing, phase));
             assert_eq!(
-                c.index_interval(x, spacing, phase),
+                c.index_interval(x),
                 (x.floor() as i64 - phase).div_euclid(spacing),
                 "x {x}, spacing {spacing}, phase {phase}"
             );
@@ -951,9 +994,10 @@ mod tests {
             499.999,
             500.0,
         ] {
+            c.set_grid((500, 3));
             for _ in 0..2 {
                 assert_eq!(
-                    c.index_interval(x, 500, 3),
+                    c.index_interval(x),
                     (x.floor() as i64 - 3).div_euclid(500),
                     "{x}"
                 );
