@@ -60,23 +60,57 @@ fn start(groups: u16) {
     MCC_TimeDelay(400); // past the acceleration: the groups cruise from here on
 }
 
-/// Engine wall time per tick, µs, with or without a snapshot published every tick.
-fn engine_tick_us(live: bool) -> f64 {
+/// CPU time the engine thread (named `mccl-engine`) has used, ns (`/proc` schedstat).
+fn engine_cpu_ns() -> u64 {
+    for e in std::fs::read_dir("/proc/self/task")
+        .expect("/proc")
+        .flatten()
+    {
+        let comm = std::fs::read_to_string(e.path().join("comm")).unwrap_or_default();
+        if comm.trim() == "mccl-engine" {
+            let st = std::fs::read_to_string(e.path().join("schedstat")).unwrap_or_default();
+            return st
+                .split(' ')
+                .next()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(0);
+        }
+    }
+    panic!("no mccl-engine thread")
+}
+
+/// CPU time the calling thread has used, ns.
+fn thread_cpu_ns() -> u64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: a valid timespec to write; CLOCK_THREAD_CPUTIME_ID exists on Linux.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    u64::try_from(ts.tv_sec).unwrap_or(0) * 1_000_000_000 + u64::try_from(ts.tv_nsec).unwrap_or(0)
+}
+
+/// Engine time per tick, µs, with or without a snapshot published every tick: (wall,
+/// CPU time of the engine thread).
+fn engine_tick_us(live: bool) -> (f64, f64) {
     let shared = MCCLPCI_IMP::system::active().expect("running system");
     shared
         .live_snapshots
         .store(live, std::sync::atomic::Ordering::Relaxed);
+    let c = engine_cpu_ns();
     let t = Instant::now();
     MCC_TimeDelay(TICKS);
     let us = t.elapsed().as_secs_f64() / f64::from(TICKS) * 1e6;
+    let cpu = (engine_cpu_ns() - c) as f64 / f64::from(TICKS) / 1e3;
     shared
         .live_snapshots
         .store(false, std::sync::atomic::Ordering::Relaxed);
-    us
+    (us, cpu)
 }
 
-/// Floor wall time per tick, µs: `groups` moves of 8 axes sampled and rounded to pulses.
-fn floor_tick_us(groups: usize, t0: f64) -> f64 {
+/// Floor time per tick, µs: `groups` moves of 8 axes sampled and rounded to pulses:
+/// (wall, CPU time of this thread).
+fn floor_tick_us(groups: usize, t0: f64) -> (f64, f64) {
     let start = [0.0; 8];
     let end = [LEN; 8];
     let moves: Vec<PathMove> = (0..groups)
@@ -88,6 +122,7 @@ fn floor_tick_us(groups: usize, t0: f64) -> f64 {
     let mut pos = [0.0; 8];
     let mut vel = [0.0; 8];
     let mut pulses = vec![[0i64; 8]; groups];
+    let c = thread_cpu_ns();
     let t = Instant::now();
     for k in 0..TICKS {
         let tk = t0 + f64::from(k) * 1e-3;
@@ -100,7 +135,9 @@ fn floor_tick_us(groups: usize, t0: f64) -> f64 {
         black_box(&mut pulses);
         black_box(&vel);
     }
-    t.elapsed().as_secs_f64() / f64::from(TICKS) * 1e6
+    let wall = t.elapsed().as_secs_f64() / f64::from(TICKS) * 1e6;
+    let cpu = (thread_cpu_ns() - c) as f64 / f64::from(TICKS) / 1e3;
+    (wall, cpu)
 }
 
 fn median(v: &mut [f64]) -> f64 {
@@ -108,21 +145,48 @@ fn median(v: &mut [f64]) -> f64 {
     v[v.len() / 2]
 }
 
-/// (engine, engine publishing every tick, floor), medians over 7 alternating rounds.
-fn measure(groups: u16) -> (f64, f64, f64) {
-    let (mut e, mut l, mut f) = (Vec::new(), Vec::new(), Vec::new());
+/// Medians over 7 alternating rounds of one way of timing (wall or CPU), µs per tick.
+#[derive(Debug, Clone, Copy)]
+struct Costs {
+    engine: f64,
+    publishing: f64,
+    floor: f64,
+}
+
+/// The costs of `groups` groups: (wall time, CPU time), medians over 7 alternating
+/// rounds.
+fn measure(groups: u16) -> (Costs, Costs) {
+    let mut v: [Vec<f64>; 6] = Default::default();
     start(groups);
     for round in 0..7 {
-        e.push(engine_tick_us(false));
-        f.push(floor_tick_us(usize::from(groups), 1.0 + f64::from(round)));
-        l.push(engine_tick_us(true));
+        let (w, c) = engine_tick_us(false);
+        v[0].push(w);
+        v[3].push(c);
+        let (w, c) = floor_tick_us(usize::from(groups), 1.0 + f64::from(round));
+        v[2].push(w);
+        v[5].push(c);
+        let (w, c) = engine_tick_us(true);
+        v[1].push(w);
+        v[4].push(c);
     }
     assert!(
         (0..groups).all(|g| MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus(g) == GMS_RUNNING),
         "every group still moving during the measurement"
     );
     MCC_CloseSystem();
-    (median(&mut e), median(&mut l), median(&mut f))
+    let [a, b, c, d, e, f] = v.map(|mut x| median(&mut x));
+    (
+        Costs {
+            engine: a,
+            publishing: b,
+            floor: c,
+        },
+        Costs {
+            engine: d,
+            publishing: e,
+            floor: f,
+        },
+    )
 }
 
 /// `MCCL_TICK_FLOOR_PROFILE=<groups>[,live]`: only the engine, `groups` groups for
@@ -153,30 +217,40 @@ fn main() {
     if let Ok(spec) = std::env::var("MCCL_TICK_FLOOR_PROFILE") {
         return profile(&spec);
     }
-    let (e48, l48, f48) = measure(48);
-    let (e1, l1, f1) = measure(1);
-    println!("tick cost (median of 7 alternating rounds of {TICKS} ticks):");
-    println!(
-        "  48 groups x 8 axes: engine {e48:.2} us, publishing every tick {l48:.2} us (+{:.0} %), floor {f48:.3} us",
-        (l48 / e48 - 1.0) * 100.0
-    );
-    println!(
-        "  1 group x 8 axes:   engine {e1:.3} us, publishing every tick {l1:.3} us (+{:.0} %), floor {f1:.4} us",
-        (l1 / e1 - 1.0) * 100.0
-    );
+    let (wall48, cpu48) = measure(48);
+    let (wall1, cpu1) = measure(1);
+    println!("tick cost, CPU time of the thread that runs it (median of 7 alternating rounds of {TICKS} ticks):");
+    for (name, c) in [("48 groups x 8 axes", cpu48), ("1 group x 8 axes  ", cpu1)] {
+        println!(
+            "  {name}: engine {:.3} us, publishing every tick {:.3} us (+{:.0} %), floor {:.4} us",
+            c.engine,
+            c.publishing,
+            (c.publishing / c.engine - 1.0) * 100.0,
+            c.floor
+        );
+    }
     println!(
         "engine/floor ratio: 48 groups {:.2}, 1 group {:.2} (targets <= 1.5, <= 3)",
-        e48 / f48,
-        e1 / f1
+        cpu48.engine / cpu48.floor,
+        cpu1.engine / cpu1.floor
     );
     println!(
-        "engine/floor ratio publishing every tick: 48 groups {:.2}, 1 group {:.2} (publishing target: <= 30 % more than the engine)",
-        l48 / f48,
-        l1 / f1
+        "engine/floor ratio publishing every tick: 48 groups {:.2}, 1 group {:.2} (publishing adds {:.0} %, {:.0} %; target <= 30 %)",
+        cpu48.publishing / cpu48.floor,
+        cpu1.publishing / cpu1.floor,
+        (cpu48.publishing / cpu48.engine - 1.0) * 100.0,
+        (cpu1.publishing / cpu1.engine - 1.0) * 100.0
     );
     println!(
-        "fast clock: {:.0}x real time at 48 groups, {:.0}x at 1 group (1 ms ticks; for information)",
-        1e3 / e48,
-        1e3 / e1
+        "wall time: engine/floor 48 groups {:.2}, 1 group {:.2}; publishing {:.2}, {:.2}",
+        wall48.engine / wall48.floor,
+        wall1.engine / wall1.floor,
+        wall48.publishing / wall48.floor,
+        wall1.publishing / wall1.floor
+    );
+    println!(
+        "fast clock: {:.0}x real time at 48 groups, {:.0}x at 1 group (1 ms ticks, wall time; for information)",
+        1e3 / wall48.engine,
+        1e3 / wall1.engine
     );
 }
