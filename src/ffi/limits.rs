@@ -3,8 +3,7 @@
 //! Check").
 
 use super::{
-    flag, index, update_group, with_group, with_machine_channel, write_out, write_outs, Card,
-    Channel,
+    flag, index, update_group, with_group, with_machine_channel, write_out, Card, Channel,
 };
 use crate::error::{McclError, McclResult};
 use crate::system;
@@ -37,60 +36,30 @@ pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
     }
 }
 
-/// Software over-travel check per axis (1 on, 0 off): an axis never goes past its
-/// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
-#[no_mangle]
-pub extern "C" fn MCC_SetOverTravelCheck(
-    nOTCheck0: c_int,
-    nOTCheck1: c_int,
-    nOTCheck2: c_int,
-    nOTCheck3: c_int,
-    nOTCheck4: c_int,
-    nOTCheck5: c_int,
-    nOTCheck6: c_int,
-    nOTCheck7: c_int,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [
-            nOTCheck0, nOTCheck1, nOTCheck2, nOTCheck3, nOTCheck4, nOTCheck5, nOTCheck6, nOTCheck7,
-        ];
-        let mut f = [false; 8];
-        for (o, x) in f.iter_mut().zip(v) {
-            *o = flag(x)?;
-        }
-        update_group(wGroupIndex, |g| g.ot_check = f)
+/// Sets the software over-travel check of group `g` per axis (1 on, 0 off).
+fn set_over_travel_check(v: [c_int; 8], g: WORD) -> McclResult<c_int> {
+    let mut f = [false; 8];
+    for (o, x) in f.iter_mut().zip(v) {
+        *o = flag(x)?;
     }
+    update_group(g, |g| g.ot_check = f)
 }
 
-/// Reads the over-travel check per axis (1 on, 0 off).
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetOverTravelCheck(
-    pnOTCheck0: *mut c_int,
-    pnOTCheck1: *mut c_int,
-    pnOTCheck2: *mut c_int,
-    pnOTCheck3: *mut c_int,
-    pnOTCheck4: *mut c_int,
-    pnOTCheck5: *mut c_int,
-    pnOTCheck6: *mut c_int,
-    pnOTCheck7: *mut c_int,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3, pnOTCheck4, pnOTCheck5, pnOTCheck6,
-            pnOTCheck7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))
-            })
-        }
-    }
+per_axis_setters! {
+    /// Software over-travel check per axis (1 on, 0 off): an axis never goes past its
+    /// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
+    MCC_SetOverTravelCheck(
+        nOTCheck0, nOTCheck1, nOTCheck2, nOTCheck3,
+        nOTCheck4, nOTCheck5, nOTCheck6, nOTCheck7: c_int; wGroupIndex
+    ) = |v| set_over_travel_check(v, wGroupIndex);
+}
+
+per_axis_getters! {
+    /// Reads the over-travel check per axis (1 on, 0 off).
+    MCC_GetOverTravelCheck(
+        pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3,
+        pnOTCheck4, pnOTCheck5, pnOTCheck6, pnOTCheck7: c_int; wGroupIndex
+    ) = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)));
 }
 
 /// A limit switch side from C: 0 (+) or 1 (−).

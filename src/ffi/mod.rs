@@ -13,6 +13,45 @@ macro_rules! ffi_boundary {
     };
 }
 
+/// Declares entry points that take one value per axis or channel:
+/// `$name(v0, ..., v7, $ix)` gathers the values into the array `$v` and returns `$body`
+/// (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).
+macro_rules! per_axis_setters {
+    ($($(#[$doc:meta])* $name:ident($($p:ident),+: $t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($($p: $t,)+ $ix: $crate::vendor::WORD) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                let $v = [$($p),+];
+                $body
+            }
+        }
+    )*};
+}
+
+/// Declares entry points that write one value per axis or channel:
+/// `$name(p0, ..., p7, $ix)` checks every pointer (one NULL is refused with
+/// `PARAMETER_ERR` and nothing is written), then writes what `$get` returns (a
+/// `McclResult<[T; 8]>`, with the group or card index `$ix` in scope).
+macro_rules! per_axis_getters {
+    ($($(#[$doc:meta])* $name:ident($($p:ident),+: $t:ty; $ix:ident) = $get:expr;)*) => {$(
+        $(#[$doc])*
+        ///
+        /// # Safety
+        /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+        #[no_mangle]
+        pub unsafe extern "C" fn $name(
+            $($p: *mut $t,)+
+            $ix: $crate::vendor::WORD,
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                // SAFETY: forwarded under this function's contract.
+                unsafe { $crate::ffi::write_outs([$($p),+], || $get) }
+            }
+        }
+    )*};
+}
+
 pub mod adc;
 pub mod cone;
 pub mod converter_timing;
@@ -322,18 +361,9 @@ pub unsafe fn write_outs<T, const N: usize>(
     Ok(crate::vendor::consts::NO_ERR)
 }
 
-/// Writes an array of running group `g`'s published snapshot (no engine lock; see
-/// `Shared::snapshot`) to its `N` outputs, checked first.
-///
-/// # Safety
-/// As [`write_outs`].
-pub unsafe fn snapshot_outs<T, const N: usize>(
-    p: [*mut T; N],
-    g: u16,
-    pick: impl FnOnce(crate::engine::snapshot::GroupSnapshot) -> [T; N],
-) -> McclResult<c_int> {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { write_outs(p, || Ok(pick(crate::system::active()?.snapshot(g)?))) }
+/// The published snapshot of running group `g` (no engine lock; see `Shared::snapshot`).
+pub fn group_snapshot(g: u16) -> McclResult<crate::engine::snapshot::GroupSnapshot> {
+    crate::system::active()?.snapshot(g)
 }
 
 /// Writes `N` results through outputs made by [`Out::each`].

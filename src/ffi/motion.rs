@@ -2,7 +2,7 @@
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
 use super::{
-    axis_mask, finite, finite8, queue, queue_curve, shape, shape_char, snapshot_outs, with_group,
+    axis_mask, finite, finite8, group_snapshot, queue, queue_curve, shape, shape_char, with_group,
 };
 use crate::error::{McclError, McclResult};
 use crate::planner::{Path, Plane};
@@ -126,29 +126,10 @@ pub extern "C" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
     ffi_boundary! { Ok(system::active()?.snapshot(wGroupIndex)?.path_speed) }
 }
 
-/// The current speed of every axis, UU/s (signed).
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetSpeed(
-    pdfVel0: *mut f64,
-    pdfVel1: *mut f64,
-    pdfVel2: *mut f64,
-    pdfVel3: *mut f64,
-    pdfVel4: *mut f64,
-    pdfVel5: *mut f64,
-    pdfVel6: *mut f64,
-    pdfVel7: *mut f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe { snapshot_outs(p, wGroupIndex, |s| s.vel) }
-    }
+per_axis_getters! {
+    /// The current speed of every axis, UU/s (signed).
+    MCC_GetSpeed(pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7: f64; wGroupIndex)
+        = group_snapshot(wGroupIndex).map(|s| s.vel);
 }
 
 fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
