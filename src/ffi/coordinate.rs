@@ -45,18 +45,18 @@ per_axis_getters! {
     /// Current command position in user coordinates (UU). Under the fast and stepped clocks
     /// a read repeated at the same virtual time while the group moves runs one tick, so a
     /// program that waits by reading positions makes progress.
-    MCC_GetCurPos(pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB: f64; wGroupIndex)
+    MCC_GetCurPos(f64; wGroupIndex)
         = cur_pos(wGroupIndex);
     /// Current command position in reference coordinates: the user coordinates before
     /// `MCC_DefinePos`/`MCC_DefineOrigin` moved them (UU).
-    MCC_GetCurRefPos(pdfX, pdfY, pdfZ, pdfU, pdfV, pdfW, pdfA, pdfB: f64; wGroupIndex)
+    MCC_GetCurRefPos(f64; wGroupIndex)
         = group_snapshot(wGroupIndex).map(|s| s.ref_pos);
     /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
     /// sign reversed when wPosToEncoderDir = 1.
-    MCC_GetPulsePos(plX, plY, plZ, plU, plV, plW, plA, plB: c_long; wGroupIndex)
+    MCC_GetPulsePos(c_long; wGroupIndex)
         = pulse_pos(wGroupIndex).map(|p| p.map(|v| v as c_long));
     /// [`MCC_GetPulsePos`] with 64-bit results on every platform.
-    MCC_GetPulsePosEx(plX, plY, plZ, plU, plV, plW, plA, plB: c_longlong; wGroupIndex)
+    MCC_GetPulsePosEx(c_longlong; wGroupIndex)
         = pulse_pos(wGroupIndex);
 }
 

@@ -48,18 +48,13 @@ fn set_over_travel_check(v: [c_int; 8], g: WORD) -> McclResult<c_int> {
 per_axis_setters! {
     /// Software over-travel check per axis (1 on, 0 off): an axis never goes past its
     /// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
-    MCC_SetOverTravelCheck(
-        nOTCheck0, nOTCheck1, nOTCheck2, nOTCheck3,
-        nOTCheck4, nOTCheck5, nOTCheck6, nOTCheck7: c_int; wGroupIndex
-    ) = |v| set_over_travel_check(v, wGroupIndex);
+    MCC_SetOverTravelCheck(c_int; wGroupIndex) = |v| set_over_travel_check(v, wGroupIndex);
 }
 
 per_axis_getters! {
     /// Reads the over-travel check per axis (1 on, 0 off).
-    MCC_GetOverTravelCheck(
-        pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3,
-        pnOTCheck4, pnOTCheck5, pnOTCheck6, pnOTCheck7: c_int; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)));
+    MCC_GetOverTravelCheck(c_int; wGroupIndex)
+        = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)));
 }
 
 /// A limit switch side from C: 0 (+) or 1 (−).

@@ -14,15 +14,22 @@ macro_rules! ffi_boundary {
 }
 
 /// Declares entry points that take one value per axis or channel:
-/// `$name(v0, ..., v7, $ix)` gathers the values into the array `$v` and returns `$body`
-/// (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).
+/// `$name(v0, ..., v7: $t, $ix)` gathers the values into the array `$v` and returns
+/// `$body` (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).
+///
+/// The eight parameters are named `v0..v7` here, not by the vendor's names (`wGain0`,
+/// `nPulse0`, ...): a Rust parameter name is not part of the C interface, and the C
+/// header takes every prototype, names included, from the vendor table.
 macro_rules! per_axis_setters {
-    ($($(#[$doc:meta])* $name:ident($($p:ident),+: $t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
+    ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($($p: $t,)+ $ix: $crate::vendor::WORD) -> ::std::os::raw::c_int {
+        pub extern "C" fn $name(
+            v0: $t, v1: $t, v2: $t, v3: $t, v4: $t, v5: $t, v6: $t, v7: $t,
+            $ix: $crate::vendor::WORD,
+        ) -> ::std::os::raw::c_int {
             ffi_boundary! {
-                let $v = [$($p),+];
+                let $v = [v0, v1, v2, v3, v4, v5, v6, v7];
                 $body
             }
         }
@@ -30,23 +37,26 @@ macro_rules! per_axis_setters {
 }
 
 /// Declares entry points that write one value per axis or channel:
-/// `$name(p0, ..., p7, $ix)` checks every pointer (one NULL is refused with
+/// `$name(p0, ..., p7: *mut $t, $ix)` checks every pointer (one NULL is refused with
 /// `PARAMETER_ERR` and nothing is written), then writes what `$get` returns (a
-/// `McclResult<[T; 8]>`, with the group or card index `$ix` in scope).
+/// `McclResult<[$t; 8]>`, with the group or card index `$ix` in scope). The pointers are
+/// named `p0..p7` (see [`per_axis_setters`]).
 macro_rules! per_axis_getters {
-    ($($(#[$doc:meta])* $name:ident($($p:ident),+: $t:ty; $ix:ident) = $get:expr;)*) => {$(
+    ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = $get:expr;)*) => {$(
         $(#[$doc])*
         ///
         /// # Safety
         /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
         #[no_mangle]
         pub unsafe extern "C" fn $name(
-            $($p: *mut $t,)+
+            p0: *mut $t, p1: *mut $t, p2: *mut $t, p3: *mut $t,
+            p4: *mut $t, p5: *mut $t, p6: *mut $t, p7: *mut $t,
             $ix: $crate::vendor::WORD,
         ) -> ::std::os::raw::c_int {
             ffi_boundary! {
+                let p = [p0, p1, p2, p3, p4, p5, p6, p7];
                 // SAFETY: forwarded under this function's contract.
-                unsafe { $crate::ffi::write_outs([$($p),+], || $get) }
+                unsafe { $crate::ffi::write_outs(p, || $get) }
             }
         }
     )*};

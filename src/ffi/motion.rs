@@ -128,7 +128,7 @@ pub extern "C" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
 
 per_axis_getters! {
     /// The current speed of every axis, UU/s (signed).
-    MCC_GetSpeed(pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7: f64; wGroupIndex)
+    MCC_GetSpeed(f64; wGroupIndex)
         = group_snapshot(wGroupIndex).map(|s| s.vel);
 }
 

@@ -28,31 +28,31 @@ fn gains(k: Gain, wCardIndex: WORD) -> McclResult<[WORD; 8]> {
 
 per_axis_setters! {
     /// Proportional gain per channel (0..255).
-    MCC_SetPGain(wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7: WORD; wCardIndex)
+    MCC_SetPGain(WORD; wCardIndex)
         = |v| set_gains(Gain::P, v, wCardIndex);
     /// Integral gain per channel (0..255).
-    MCC_SetIGain(wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7: WORD; wCardIndex)
+    MCC_SetIGain(WORD; wCardIndex)
         = |v| set_gains(Gain::I, v, wCardIndex);
     /// Derivative gain per channel (0..255).
-    MCC_SetDGain(wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7: WORD; wCardIndex)
+    MCC_SetDGain(WORD; wCardIndex)
         = |v| set_gains(Gain::D, v, wCardIndex);
     /// Feed-forward gain per channel (0..255).
-    MCC_SetFGain(wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7: WORD; wCardIndex)
+    MCC_SetFGain(WORD; wCardIndex)
         = |v| set_gains(Gain::FeedForward, v, wCardIndex);
 }
 
 per_axis_getters! {
     /// Reads the proportional gains.
-    MCC_GetPGain(pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7: WORD; wCardIndex)
+    MCC_GetPGain(WORD; wCardIndex)
         = gains(Gain::P, wCardIndex);
     /// Reads the integral gains.
-    MCC_GetIGain(pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7: WORD; wCardIndex)
+    MCC_GetIGain(WORD; wCardIndex)
         = gains(Gain::I, wCardIndex);
     /// Reads the derivative gains.
-    MCC_GetDGain(pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7: WORD; wCardIndex)
+    MCC_GetDGain(WORD; wCardIndex)
         = gains(Gain::D, wCardIndex);
     /// Reads the feed-forward gains.
-    MCC_GetFGain(pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7: WORD; wCardIndex)
+    MCC_GetFGain(WORD; wCardIndex)
         = gains(Gain::FeedForward, wCardIndex);
 }
 
@@ -91,10 +91,7 @@ fn error_counts(wCardIndex: WORD) -> McclResult<[c_int; 8]> {
 
 per_axis_getters! {
     /// The closed-loop error counter per channel: pulses output minus the motor's position.
-    MCC_GetErrorCount(
-        pnErrCount0, pnErrCount1, pnErrCount2, pnErrCount3,
-        pnErrCount4, pnErrCount5, pnErrCount6, pnErrCount7: c_int; wCardIndex
-    ) = error_counts(wCardIndex);
+    MCC_GetErrorCount(c_int; wCardIndex) = error_counts(wCardIndex);
 }
 
 /// Thresholds of the closed-loop error counter of one channel (kept for the PCL
@@ -133,25 +130,19 @@ fn pulse_limits(k: PulseLimit, wCardIndex: WORD) -> McclResult<[c_int; 8]> {
 per_axis_setters! {
     /// Most pulses per interpolation period per channel (1..32767, default 32767). More
     /// stops the group with error 0xF203.
-    MCC_SetMaxPulseSpeed(nPulse0, nPulse1, nPulse2, nPulse3, nPulse4, nPulse5, nPulse6, nPulse7: c_int; wCardIndex)
+    MCC_SetMaxPulseSpeed(c_int; wCardIndex)
         = |v| set_pulse_limits(PulseLimit::Speed, v, wCardIndex);
     /// Most change of pulses per period from one period to the next (1..32767, default
     /// 32767). More stops the group with error 0xF204.
-    MCC_SetMaxPulseAcc(
-        nPulseAcc0, nPulseAcc1, nPulseAcc2, nPulseAcc3,
-        nPulseAcc4, nPulseAcc5, nPulseAcc6, nPulseAcc7: c_int; wCardIndex
-    ) = |v| set_pulse_limits(PulseLimit::Acc, v, wCardIndex);
+    MCC_SetMaxPulseAcc(c_int; wCardIndex) = |v| set_pulse_limits(PulseLimit::Acc, v, wCardIndex);
 }
 
 per_axis_getters! {
     /// Reads the pulse speed limits.
-    MCC_GetMaxPulseSpeed(pnSpeed0, pnSpeed1, pnSpeed2, pnSpeed3, pnSpeed4, pnSpeed5, pnSpeed6, pnSpeed7: c_int; wCardIndex)
+    MCC_GetMaxPulseSpeed(c_int; wCardIndex)
         = pulse_limits(PulseLimit::Speed, wCardIndex);
     /// Reads the pulse acceleration limits.
-    MCC_GetMaxPulseAcc(
-        pnPulseAcc0, pnPulseAcc1, pnPulseAcc2, pnPulseAcc3,
-        pnPulseAcc4, pnPulseAcc5, pnPulseAcc6, pnPulseAcc7: c_int; wCardIndex
-    ) = pulse_limits(PulseLimit::Acc, wCardIndex);
+    MCC_GetMaxPulseAcc(c_int; wCardIndex) = pulse_limits(PulseLimit::Acc, wCardIndex);
 }
 
 /// Tracking error check on for the axes in the mask: a following error above the
@@ -308,24 +299,16 @@ fn set_tolerances(v: [f64; 8], g: WORD) -> McclResult<c_int> {
 
 per_axis_setters! {
     /// In-position tolerance per axis, UU (>= 0, distances of the axes in the position range).
-    MCC_SetInPosToleranceEx(
-        dfTolerance0, dfTolerance1, dfTolerance2, dfTolerance3,
-        dfTolerance4, dfTolerance5, dfTolerance6, dfTolerance7: f64; wGroupIndex
-    ) = |v| set_tolerances(v, wGroupIndex);
+    MCC_SetInPosToleranceEx(f64; wGroupIndex) = |v| set_tolerances(v, wGroupIndex);
 }
 
 per_axis_getters! {
     /// Reads the in-position tolerances, UU.
-    MCC_GetInPosToleranceEx(
-        pdfTolerance0, pdfTolerance1, pdfTolerance2, pdfTolerance3,
-        pdfTolerance4, pdfTolerance5, pdfTolerance6, pdfTolerance7: f64; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance));
+    MCC_GetInPosToleranceEx(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance));
     /// In-position status per axis: 0xFF once in position (held until the next command),
     /// 0 otherwise.
-    MCC_GetInPosStatus(
-        pbyInPos0, pbyInPos1, pbyInPos2, pbyInPos3,
-        pbyInPos4, pbyInPos5, pbyInPos6, pbyInPos7: crate::vendor::BYTE; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.inpos_status()));
+    MCC_GetInPosStatus(crate::vendor::BYTE; wGroupIndex)
+        = with_group(wGroupIndex, |g| Ok(g.inpos_status()));
 }
 
 /// Obsolete name of [`MCC_SetInPosMaxCheckTime`].
@@ -371,16 +354,10 @@ fn tolerances_pulses(g: WORD) -> McclResult<[WORD; 8]> {
 per_axis_setters! {
     /// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
     /// pulses per UU).
-    MCC_SetInPosTolerance(
-        wTolerance0, wTolerance1, wTolerance2, wTolerance3,
-        wTolerance4, wTolerance5, wTolerance6, wTolerance7: WORD; wGroupIndex
-    ) = |v| set_tolerances_pulses(v, wGroupIndex);
+    MCC_SetInPosTolerance(WORD; wGroupIndex) = |v| set_tolerances_pulses(v, wGroupIndex);
 }
 
 per_axis_getters! {
     /// Obsolete: reads the in-position tolerances in pulses.
-    MCC_GetInPosTolerance(
-        pwTolerance0, pwTolerance1, pwTolerance2, pwTolerance3,
-        pwTolerance4, pwTolerance5, pwTolerance6, pwTolerance7: WORD; wGroupIndex
-    ) = tolerances_pulses(wGroupIndex);
+    MCC_GetInPosTolerance(WORD; wGroupIndex) = tolerances_pulses(wGroupIndex);
 }

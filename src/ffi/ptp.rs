@@ -21,34 +21,22 @@ fn times(v: [f64; 8]) -> Result<[f64; 8], McclError> {
 
 per_axis_setters! {
     /// PtP acceleration shape per axis ('T' or 'S').
-    MCC_SetPtPAccType(
-        cAccType0, cAccType1, cAccType2, cAccType3,
-        cAccType4, cAccType5, cAccType6, cAccType7: c_char; wGroupIndex
-    ) = |v| {
+    MCC_SetPtPAccType(c_char; wGroupIndex) = |v| {
         let s = shapes(v)?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_acc = s)
     };
     /// PtP deceleration shape per axis ('T' or 'S').
-    MCC_SetPtPDecType(
-        cDecType0, cDecType1, cDecType2, cDecType3,
-        cDecType4, cDecType5, cDecType6, cDecType7: c_char; wGroupIndex
-    ) = |v| {
+    MCC_SetPtPDecType(c_char; wGroupIndex) = |v| {
         let s = shapes(v)?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_dec = s)
     };
     /// PtP acceleration time per axis, ms (0..=2^32 − 1).
-    MCC_SetPtPAccTime(
-        dfAccTime0, dfAccTime1, dfAccTime2, dfAccTime3,
-        dfAccTime4, dfAccTime5, dfAccTime6, dfAccTime7: f64; wGroupIndex
-    ) = |v| {
+    MCC_SetPtPAccTime(f64; wGroupIndex) = |v| {
         let t = times(v)?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_acc_ms = t)
     };
     /// PtP deceleration time per axis, ms (0..=2^32 − 1).
-    MCC_SetPtPDecTime(
-        dfDecTime0, dfDecTime1, dfDecTime2, dfDecTime3,
-        dfDecTime4, dfDecTime5, dfDecTime6, dfDecTime7: f64; wGroupIndex
-    ) = |v| {
+    MCC_SetPtPDecTime(f64; wGroupIndex) = |v| {
         let t = times(v)?;
         super::update_group(wGroupIndex, |g| g.settings.ptp_dec_ms = t)
     };
@@ -56,23 +44,13 @@ per_axis_setters! {
 
 per_axis_getters! {
     /// Reads the PtP acceleration shapes.
-    MCC_GetPtPAccType(
-        pcAccType0, pcAccType1, pcAccType2, pcAccType3,
-        pcAccType4, pcAccType5, pcAccType6, pcAccType7: c_char; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)));
+    MCC_GetPtPAccType(c_char; wGroupIndex)
+        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)));
     /// Reads the PtP deceleration shapes.
-    MCC_GetPtPDecType(
-        pcDecType0, pcDecType1, pcDecType2, pcDecType3,
-        pcDecType4, pcDecType5, pcDecType6, pcDecType7: c_char; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)));
+    MCC_GetPtPDecType(c_char; wGroupIndex)
+        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)));
     /// Reads the PtP acceleration times, ms.
-    MCC_GetPtPAccTime(
-        pdfAccTime0, pdfAccTime1, pdfAccTime2, pdfAccTime3,
-        pdfAccTime4, pdfAccTime5, pdfAccTime6, pdfAccTime7: f64; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms));
+    MCC_GetPtPAccTime(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms));
     /// Reads the PtP deceleration times, ms.
-    MCC_GetPtPDecTime(
-        pdfDecTime0, pdfDecTime1, pdfDecTime2, pdfDecTime3,
-        pdfDecTime4, pdfDecTime5, pdfDecTime6, pdfDecTime7: f64; wGroupIndex
-    ) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms));
+    MCC_GetPtPDecTime(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms));
 }
