@@ -115,16 +115,12 @@ pub unsafe extern "C" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: W
     }
 }
 
-/// Every completed conversion calls the ADC routine with `CONV` set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_conv_trigger(true)) }
-}
-
-/// Completed conversions no longer call the ADC routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_conv_trigger(false)) }
+on_off! {
+    /// Every completed conversion calls the ADC routine with `CONV` set.
+    MCC_EnableADCConvTrigger,
+    /// Completed conversions no longer call the ADC routine.
+    MCC_DisableADCConvTrigger(wCardIndex: WORD)
+        = |on| card_op(wCardIndex, |p| p.adc.set_conv_trigger(on));
 }
 
 /// Chooses the tagged channel (one at a time).
@@ -133,16 +129,12 @@ pub extern "C" fn MCC_SetADCTagChannel(wChannel: WORD, wCardIndex: WORD) -> c_in
     ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_tag_channel(ch)) }
 }
 
-/// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_tag_trigger(true)) }
-}
-
-/// Conversions of the tagged channel no longer call the ADC routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_tag_trigger(false)) }
+on_off! {
+    /// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
+    MCC_EnableADCTagTrigger,
+    /// Conversions of the tagged channel no longer call the ADC routine.
+    MCC_DisableADCTagTrigger(wCardIndex: WORD)
+        = |on| card_op(wCardIndex, |p| p.adc.set_tag_trigger(on));
 }
 
 /// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
@@ -181,28 +173,20 @@ pub unsafe extern "C" fn MCC_GetADCCompValue(
     }
 }
 
-/// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, true)) }
+on_off! {
+    /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
+    MCC_EnableADCCompTrigger,
+    /// The channel's comparator no longer calls the ADC routine.
+    MCC_DisableADCCompTrigger(wChannel: WORD, wCardIndex: WORD)
+        = |on| ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, on));
 }
 
-/// The channel's comparator no longer calls the ADC routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, false)) }
-}
-
-/// Lets a channel convert in free mode.
-#[no_mangle]
-pub extern "C" fn MCC_EnableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, true)) }
-}
-
-/// Stops a channel converting in free mode.
-#[no_mangle]
-pub extern "C" fn MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, false)) }
+on_off! {
+    /// Lets a channel convert in free mode.
+    MCC_EnableADCConvChannel,
+    /// Stops a channel converting in free mode.
+    MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD)
+        = |on| ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, on));
 }
 
 /// Starts conversion: free mode converts every enabled channel once per tick from the

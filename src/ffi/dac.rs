@@ -62,16 +62,12 @@ pub extern "C" fn MCC_SetDACTriggerSource(
     ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_source(ch, dwSource)) }
 }
 
-/// Turns a channel's trigger mode on.
-#[no_mangle]
-pub extern "C" fn MCC_EnableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, true)) }
-}
-
-/// Turns a channel's trigger mode off.
-#[no_mangle]
-pub extern "C" fn MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, false)) }
+on_off! {
+    /// Turns a channel's trigger mode on.
+    MCC_EnableDACTriggerMode,
+    /// Turns a channel's trigger mode off.
+    MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD)
+        = |on| on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, on));
 }
 
 /// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs

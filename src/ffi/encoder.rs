@@ -184,17 +184,13 @@ fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int
     })
 }
 
-/// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
-/// passes.
-#[no_mangle]
-pub extern "C" fn MCC_EnableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { index_trigger(wChannel, wCardIndex, true) }
-}
-
-/// Index pulses no longer call the encoder routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { index_trigger(wChannel, wCardIndex, false) }
+on_off! {
+    /// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
+    /// passes.
+    MCC_EnableENCIndexTrigger,
+    /// Index pulses no longer call the encoder routine.
+    MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD)
+        = |on| index_trigger(wChannel, wCardIndex, on);
 }
 
 /// 1 when an index pulse of the channel passed since the last read (the read clears it).
@@ -308,16 +304,12 @@ fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int>
     })
 }
 
-/// The channel's compare stock is active: values fire as the count reaches them.
-#[no_mangle]
-pub extern "C" fn MCC_EnableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { comp_trigger(wChannel, wCardIndex, true) }
-}
-
-/// The channel's compare stock stops firing (the values stay).
-#[no_mangle]
-pub extern "C" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { comp_trigger(wChannel, wCardIndex, false) }
+on_off! {
+    /// The channel's compare stock is active: values fire as the count reaches them.
+    MCC_EnableENCCompTrigger,
+    /// The channel's compare stock stops firing (the values stay).
+    MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD)
+        = |on| comp_trigger(wChannel, wCardIndex, on);
 }
 
 /// Removes every compare value of the channel.

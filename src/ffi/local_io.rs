@@ -29,16 +29,11 @@ fn servo(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-/// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
-#[no_mangle]
-pub extern "C" fn MCC_SetServoOn(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { servo(wChannel, wCardIndex, true) }
-}
-
-/// Turns the servo-on output of one channel off.
-#[no_mangle]
-pub extern "C" fn MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { servo(wChannel, wCardIndex, false) }
+on_off! {
+    /// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
+    MCC_SetServoOn,
+    /// Turns the servo-on output of one channel off.
+    MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) = |on| servo(wChannel, wCardIndex, on);
 }
 
 fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
@@ -48,16 +43,11 @@ fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-/// Turns the card's position-ready output on.
-#[no_mangle]
-pub extern "C" fn MCC_EnablePosReady(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { pos_ready(wCardIndex, true) }
-}
-
-/// Turns the card's position-ready output off.
-#[no_mangle]
-pub extern "C" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { pos_ready(wCardIndex, false) }
+on_off! {
+    /// Turns the card's position-ready output on.
+    MCC_EnablePosReady,
+    /// Turns the card's position-ready output off.
+    MCC_DisablePosReady(wCardIndex: WORD) = |on| pos_ready(wCardIndex, on);
 }
 
 /// The emergency-stop input of the card: 1 pressed, 0 released.
@@ -84,16 +74,11 @@ fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     })
 }
 
-/// Turns a channel's LED output on.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedLightOn(Channel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { led(Channel, wCardIndex, true) }
-}
-
-/// Turns a channel's LED output off.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { led(Channel, wCardIndex, false) }
+on_off! {
+    /// Turns a channel's LED output on.
+    MCC_SetLedLightOn,
+    /// Turns a channel's LED output off.
+    MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) = |on| led(Channel, wCardIndex, on);
 }
 
 /// A channel's LED output: 1 on, 0 off (while an LED trigger-out holds it: its trigger
@@ -207,16 +192,12 @@ fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     })
 }
 
-/// The local-input routine is called (`LIOINT`) on the point's trigger.
-#[no_mangle]
-pub extern "C" fn MCC_EnableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { lio_trigger(wPoint, wCardIndex, true) }
-}
-
-/// The point no longer calls the local-input routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { lio_trigger(wPoint, wCardIndex, false) }
+on_off! {
+    /// The local-input routine is called (`LIOINT`) on the point's trigger.
+    MCC_EnableLIOTrigger,
+    /// The point no longer calls the local-input routine.
+    MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD)
+        = |on| lio_trigger(wPoint, wCardIndex, on);
 }
 
 /// Compare sources from C: bit n is the compare of channel n (0..7).

@@ -13,6 +13,28 @@ macro_rules! ffi_boundary {
     };
 }
 
+/// Declares pairs of entry points that turn one thing on and off: `$on(params)` and
+/// `$off(params)` (the same parameters) return `$body` with `$flag` true and false.
+macro_rules! on_off {
+    ($(
+        $(#[$on_doc:meta])* $on:ident,
+        $(#[$off_doc:meta])* $off:ident($($p:ident: $t:ty),*) = |$flag:ident| $body:expr;
+    )*) => {$(
+        on_off!(@one $(#[$on_doc])* $on($($p: $t),*) $flag = true => $body);
+        on_off!(@one $(#[$off_doc])* $off($($p: $t),*) $flag = false => $body);
+    )*};
+    (@one $(#[$doc:meta])* $name:ident($($p:ident: $t:ty),*) $flag:ident = $v:literal => $body:expr) => {
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                let $flag = $v;
+                $body
+            }
+        }
+    };
+}
+
 /// Declares entry points that take one value per axis or channel:
 /// `$name(v0, ..., v7: $t, $ix)` gathers the values into the array `$v` and returns
 /// `$body` (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).

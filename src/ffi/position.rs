@@ -268,17 +268,13 @@ fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> McclResult<c_
     })
 }
 
-/// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
-/// the command index.
-#[no_mangle]
-pub extern "C" fn MCC_EnableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, true) }
-}
-
-/// Queues "in-position check off" for the axes in the mask. Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, false) }
+on_off! {
+    /// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
+    /// the command index.
+    MCC_EnableInPos,
+    /// Queues "in-position check off" for the axes in the mask. Returns the command index.
+    MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD)
+        = |on| inpos_marker(wGroupIndex, dwAxisMask, on);
 }
 
 /// Sets the in-position tolerances of group `g`, UU: finite, >= 0, each a distance of

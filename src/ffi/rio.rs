@@ -77,28 +77,20 @@ unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<
 
 // ---- RIO ----
 
-/// Starts data transfer of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.control = true) }
+on_off! {
+    /// Starts data transfer of a RIO set.
+    MCC_EnableRIOSetControl,
+    /// Stops data transfer of a RIO set.
+    MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD)
+        = |on| rio_set(wSet, wCardIndex, |s| s.control = on);
 }
 
-/// Stops data transfer of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.control = false) }
-}
-
-/// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true)) }
-}
-
-/// Stops data transfer with one slave of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, false)) }
+on_off! {
+    /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
+    MCC_EnableRIOSlaveControl,
+    /// Stops data transfer with one slave of a RIO set.
+    MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
+        = |on| rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
 }
 
 /// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
@@ -230,37 +222,21 @@ pub extern "C" fn MCC_SetRIOTriggerType(
     ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType)) }
 }
 
-/// An edge of the digital input calls the RIO routine with `RDIn` set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOInputTrigger(
-    wSet: WORD,
-    wDigitalInput: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, true)) }
+on_off! {
+    /// An edge of the digital input calls the RIO routine with `RDIn` set.
+    MCC_EnableRIOInputTrigger,
+    /// The digital input no longer calls the RIO routine.
+    MCC_DisableRIOInputTrigger(wSet: WORD, wDigitalInput: WORD, wCardIndex: WORD)
+        = |on| rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, on));
 }
 
-/// The digital input no longer calls the RIO routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOInputTrigger(
-    wSet: WORD,
-    wDigitalInput: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, false)) }
-}
-
-/// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
-/// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(true)) }
-}
-
-/// Transfer errors no longer call the RIO routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(false)) }
+on_off! {
+    /// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
+    /// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
+    MCC_EnableRIOTransTrigger,
+    /// Transfer errors no longer call the RIO routine.
+    MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD)
+        = |on| rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(on));
 }
 
 // ---- ARIO ----
@@ -306,16 +282,12 @@ pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) ->
     ffi_boundary! { ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay)) }
 }
 
-/// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
-#[no_mangle]
-pub extern "C" fn MCC_EnableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true)) }
-}
-
-/// Stops data transfer with an ARIO slave.
-#[no_mangle]
-pub extern "C" fn MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, false)) }
+on_off! {
+    /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
+    MCC_EnableARIOSlaveControl,
+    /// Stops data transfer with an ARIO slave.
+    MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
+        = |on| ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
 }
 
 /// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).

@@ -23,29 +23,19 @@ pub extern "C" fn MCC_SetTimer(dwValue: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! { on(wCardIndex, |p| p.timer.set_period(dwValue)) }
 }
 
-/// Starts the timer (counting from 0).
-#[no_mangle]
-pub extern "C" fn MCC_EnableTimer(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.timer.set_enabled(true)) }
+on_off! {
+    /// Starts the timer (counting from 0).
+    MCC_EnableTimer,
+    /// Stops the timer (and with it the watchdog's time base).
+    MCC_DisableTimer(wCardIndex: WORD) = |enable| on(wCardIndex, |p| p.timer.set_enabled(enable));
 }
 
-/// Stops the timer (and with it the watchdog's time base).
-#[no_mangle]
-pub extern "C" fn MCC_DisableTimer(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.timer.set_enabled(false)) }
-}
-
-/// The timer's expirations call the TMR routine (`TMRINT.TIMER` = expirations in the
-/// tick).
-#[no_mangle]
-pub extern "C" fn MCC_EnableTimerTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.timer.trigger = true) }
-}
-
-/// The timer's expirations no longer call the TMR routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableTimerTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.timer.trigger = false) }
+on_off! {
+    /// The timer's expirations call the TMR routine (`TMRINT.TIMER` = expirations in the
+    /// tick).
+    MCC_EnableTimerTrigger,
+    /// The timer's expirations no longer call the TMR routine.
+    MCC_DisableTimerTrigger(wCardIndex: WORD) = |enable| on(wCardIndex, |p| p.timer.trigger = enable);
 }
 
 /// Sets the watchdog's compare value in timer periods (1..=2^32-1): with the timer at its
@@ -61,19 +51,15 @@ pub extern "C" fn MCC_SetWatchDogResetPeriod(dwValue: DWORD, wCardIndex: WORD) -
     ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_reset_period(dwValue)) }
 }
 
-/// Starts the watchdog (counting from 0). It counts while the timer runs; when the count
-/// reaches the compare value the card is reset: its groups abort and record 0xF103
-/// (`MCC_GetErrorCode`), servo-on and position-ready go off, DAC outputs go to 0 V,
-/// remote outputs to 0, and the watchdog disables itself.
-#[no_mangle]
-pub extern "C" fn MCC_EnableWatchDogTimer(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_enabled(true)) }
-}
-
-/// Stops the watchdog.
-#[no_mangle]
-pub extern "C" fn MCC_DisableWatchDogTimer(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_enabled(false)) }
+on_off! {
+    /// Starts the watchdog (counting from 0). It counts while the timer runs; when the count
+    /// reaches the compare value the card is reset: its groups abort and record 0xF103
+    /// (`MCC_GetErrorCode`), servo-on and position-ready go off, DAC outputs go to 0 V,
+    /// remote outputs to 0, and the watchdog disables itself.
+    MCC_EnableWatchDogTimer,
+    /// Stops the watchdog.
+    MCC_DisableWatchDogTimer(wCardIndex: WORD)
+        = |enable| on(wCardIndex, |p| p.watchdog.set_enabled(enable));
 }
 
 /// Clears the watchdog's count.
