@@ -52,20 +52,10 @@ pub extern "C" fn MCC_SetADCConvType(wConvType: WORD, wChannel: WORD, wCardIndex
     ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_conv_type(ch, wConvType)) }
 }
 
-/// Reads a channel's conversion type.
-///
-/// # Safety
-/// `pwConvType` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetADCConvType(
-    pwConvType: *mut WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch)) }
-    }
+pointer_fns! {
+    /// Reads a channel's conversion type.
+    MCC_GetADCConvType(pwConvType: WORD; wChannel, wCardIndex)
+        = ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch));
 }
 
 /// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
@@ -75,20 +65,10 @@ pub extern "C" fn MCC_SetADCConvMode(wConvMode: WORD, wCardIndex: WORD) -> c_int
     ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_mode(wConvMode)) }
 }
 
-/// Reads the last converted voltage of a channel (0 before its first conversion).
-///
-/// # Safety
-/// `pfInput` must be NULL (refused with `PARAMETER_ERR`) or point to a writable float.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetADCInput(
-    pfInput: *mut f32,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch)) }
-    }
+pointer_fns! {
+    /// Reads the last converted voltage of a channel (0 before its first conversion).
+    MCC_GetADCInput(pfInput: f32; wChannel, wCardIndex)
+        = ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch));
 }
 
 /// Chooses the channel `ADC_MODE_SINGLE` converts.
@@ -157,20 +137,10 @@ pub extern "C" fn MCC_SetADCCompValue(fValue: f32, wChannel: WORD, wCardIndex: W
     ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_value(ch, fValue)) }
 }
 
-/// Reads a channel's compare value.
-///
-/// # Safety
-/// `pfValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable float.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetADCCompValue(
-    pfValue: *mut f32,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch)) }
-    }
+pointer_fns! {
+    /// Reads a channel's compare value.
+    MCC_GetADCCompValue(pfValue: f32; wChannel, wCardIndex)
+        = ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch));
 }
 
 on_off! {

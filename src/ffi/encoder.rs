@@ -12,46 +12,17 @@ use crate::vendor::DWORD;
 use crate::vendor::WORD;
 use std::os::raw::{c_int, c_long, c_longlong};
 
-/// The encoder count of a channel.
-///
-/// # Safety
-/// `plValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCValue(
-    plValue: *mut c_long,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(plValue, || {
-                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
-                    Ok(ch.encoder() as c_long)
-                })
-            })
-        }
-    }
-}
-
-/// The encoder count of a channel, 64-bit.
-///
-/// # Safety
-/// `pllValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCValueEx(
-    pllValue: *mut c_longlong,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pllValue, || {
-                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
-            })
-        }
-    }
+pointer_fns! {
+    /// The encoder count of a channel.
+    MCC_GetENCValue(plValue: c_long; wChannel, wCardIndex) = write_out(plValue, || {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+            Ok(ch.encoder() as c_long)
+        })
+    });
+    /// The encoder count of a channel, 64-bit.
+    MCC_GetENCValueEx(pllValue: c_longlong; wChannel, wCardIndex) = write_out(pllValue, || {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
+    });
 }
 
 /// Sets the encoder count of a channel to `lValue` (|lValue| <= 1e18; the motor does not

@@ -89,38 +89,13 @@ unsafe fn limit_status(
     }
 }
 
-/// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetLimitSwitchStatus(
-    pwStatus: *mut WORD,
-    wUpDown: WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false) }
-    }
-}
-
-/// Whether the limit switch has been active since the latch was last cleared.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetLatchedLimitSwitchStatus(
-    pwStatus: *mut WORD,
-    wUpDown: WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true) }
-    }
+pointer_fns! {
+    /// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
+    MCC_GetLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
+        = limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false);
+    /// Whether the limit switch has been active since the latch was last cleared.
+    MCC_GetLatchedLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
+        = limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true);
 }
 
 /// Clears the latched limit switch status (it latches again while the switch is active).

@@ -50,20 +50,11 @@ on_off! {
     MCC_DisablePosReady(wCardIndex: WORD) = |on| pos_ready(wCardIndex, on);
 }
 
-/// The emergency-stop input of the card: 1 pressed, 0 released.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetEmgcStopStatus(pwStatus: *mut WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pwStatus, || {
-                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
-            })
-        }
-    }
+pointer_fns! {
+    /// The emergency-stop input of the card: 1 pressed, 0 released.
+    MCC_GetEmgcStopStatus(pwStatus: WORD; wCardIndex) = write_out(pwStatus, || {
+        with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
+    });
 }
 
 fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
@@ -312,20 +303,11 @@ pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardInde
     }
 }
 
-/// Compare values waiting on the channels that trigger local outputs.
-///
-/// # Safety
-/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(wCount, || {
-                with_card_triggers(Card(wCardIndex), |t| Ok(word_count(t.lio_comp_stock_count())))
-            })
-        }
-    }
+pointer_fns! {
+    /// Compare values waiting on the channels that trigger local outputs.
+    MCC_GetLIOCompStockCount(wCount: WORD; wCardIndex) = write_out(wCount, || {
+        with_card_triggers(Card(wCardIndex), |t| Ok(word_count(t.lio_comp_stock_count())))
+    });
 }
 
 /// Removes the compare values of the channels that trigger local outputs.

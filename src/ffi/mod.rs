@@ -35,6 +35,32 @@ macro_rules! on_off {
     };
 }
 
+/// Declares entry points whose first parameter is a pointer `$p` to a `$t` (read or
+/// written as each member's doc says) followed by `WORD` indices `$a...`: the body is
+/// `$body`, run in the panic boundary as an unsafe block under the function's contract
+/// (the member's helper checks the pointer, NULL refused with `PARAMETER_ERR`).
+macro_rules! pointer_fns {
+    ($($(#[$doc:meta])* $name:ident($p:ident: $t:ty; $($a:ident),+) = $body:expr;)*) => {$(
+        $(#[$doc])*
+        ///
+        /// # Safety
+        #[doc = concat!(
+            "`", stringify!($p), "` must be NULL (refused with `PARAMETER_ERR`) or point to a",
+            " valid `", stringify!($t), "`."
+        )]
+        #[no_mangle]
+        pub unsafe extern "C" fn $name(
+            $p: *mut $t,
+            $($a: $crate::vendor::WORD),+
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                // SAFETY: forwarded under this function's contract.
+                unsafe { $body }
+            }
+        }
+    )*};
+}
+
 /// Declares entry points that take one value per axis or channel:
 /// `$name(v0, ..., v7: $t, $ix)` gathers the values into the array `$v` and returns
 /// `$body` (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).

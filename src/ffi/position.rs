@@ -201,22 +201,11 @@ pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
     }
 }
 
-/// Compensation tables of one channel (§2.7.5); they take effect at
-/// `MCC_UpdateCompParam`. `dwInterval` 0 turns compensation off; `wHome_No` <= 255.
-///
-/// # Safety
-/// `pstCompParam` must be NULL (refused with `PARAMETER_ERR`) or point to a
-/// `SYS_COMP_PARAM`.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetCompParam(
-    pstCompParam: *mut SYS_COMP_PARAM,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param) }
-    }
+pointer_fns! {
+    /// Compensation tables of one channel (§2.7.5); they take effect at
+    /// `MCC_UpdateCompParam`. `dwInterval` 0 turns compensation off; `wHome_No` <= 255.
+    MCC_SetCompParam(pstCompParam: SYS_COMP_PARAM; wChannel, wCardIndex)
+        = set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param);
 }
 
 /// Applies the compensation tables set with `MCC_SetCompParam`.

@@ -85,121 +85,75 @@ on_off! {
         = |on| rio_set(wSet, wCardIndex, |s| s.control = on);
 }
 
-on_off! {
+/// Declares the entry points RIO and ARIO share, for one kind of master: `$kind` runs a
+/// closure on one of its sets ([`rio`], [`ario`]), `$set` a setter ([`rio_set`],
+/// [`ario_set`]). The members are, in this order: slave control on and off, transfer,
+/// master and slave status, failed slaves, a port's (RIO) or slave's (ARIO) inputs, and
+/// setting and reading its outputs.
+macro_rules! remote_io {
+    (
+        $kind:ident, $set:ident;
+        $(#[$on_doc:meta])* $slave_on:ident,
+        $(#[$off_doc:meta])* $slave_off:ident,
+        $(#[$trans_doc:meta])* $trans:ident,
+        $(#[$master_doc:meta])* $master:ident,
+        $(#[$slaves_doc:meta])* $slaves:ident,
+        $(#[$fail_doc:meta])* $fail:ident,
+        $(#[$input_doc:meta])* $input:ident,
+        $(#[$set_output_doc:meta])* $set_output:ident,
+        $(#[$output_doc:meta])* $output:ident;
+    ) => {
+        on_off! {
+            $(#[$on_doc])* $slave_on,
+            $(#[$off_doc])* $slave_off(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
+                = |on| $set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
+        }
+
+        pointer_fns! {
+            $(#[$trans_doc])* $trans(pwStatus: WORD; wSet, wCardIndex)
+                = read(pwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.trans_status())));
+            $(#[$master_doc])* $master(pwStatus: WORD; wSet, wCardIndex)
+                = read(pwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.master_status())));
+            $(#[$slaves_doc])* $slaves(pwStatus: WORD; wSet, wCardIndex)
+                = read(pwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.slave_status())));
+            $(#[$fail_doc])* $fail(pdwStatus: DWORD; wSet, wCardIndex)
+                = read(pdwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.slave_fail())));
+            $(#[$input_doc])* $input(pwValue: WORD; wSet, wPort, wCardIndex)
+                = read(pwValue, || $kind(wSet, wCardIndex, |s| s.input(wPort)));
+            $(#[$output_doc])* $output(pwValue: WORD; wSet, wPort, wCardIndex)
+                = read(pwValue, || $kind(wSet, wCardIndex, |s| s.output(wPort)));
+        }
+
+        $(#[$set_output_doc])*
+        #[no_mangle]
+        pub extern "C" fn $set_output(
+            wValue: WORD, wSet: WORD, wPort: WORD, wCardIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! { $set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
+        }
+    };
+}
+
+remote_io! {
+    rio, rio_set;
     /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
     MCC_EnableRIOSlaveControl,
     /// Stops data transfer with one slave of a RIO set.
-    MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
-        = |on| rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
-}
-
-/// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOTransStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) }
-    }
-}
-
-/// Master status of a RIO set: 1 normal, 0 error.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOMasterStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.master_status()))) }
-    }
-}
-
-/// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOSlaveStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) }
-    }
-}
-
-/// Failed transmitting slaves of a RIO set, bit n = slave n.
-///
-/// # Safety
-/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable DWORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOSlaveFail(
-    pdwStatus: *mut DWORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) }
-    }
-}
-
-/// The 16 inputs of a RIO port (bit n = input n), as last transferred.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOInputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) }
-    }
-}
-
-/// Sets the 16 outputs of a RIO port (sent at the next transfer).
-#[no_mangle]
-pub extern "C" fn MCC_SetRIOOutputValue(
-    wValue: WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
-}
-
-/// The 16 outputs set for a RIO port.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOOutputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) }
-    }
+    MCC_DisableRIOSlaveControl,
+    /// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
+    MCC_GetRIOTransStatus,
+    /// Master status of a RIO set: 1 normal, 0 error.
+    MCC_GetRIOMasterStatus,
+    /// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
+    MCC_GetRIOSlaveStatus,
+    /// Failed transmitting slaves of a RIO set, bit n = slave n.
+    MCC_GetRIOSlaveFail,
+    /// The 16 inputs of a RIO port (bit n = input n), as last transferred.
+    MCC_GetRIOInputValue,
+    /// Sets the 16 outputs of a RIO port (sent at the next transfer).
+    MCC_SetRIOOutputValue,
+    /// The 16 outputs set for a RIO port.
+    MCC_GetRIOOutputValue;
 }
 
 /// Consecutive failed transfers a slave of the RIO set may have before the set reports
@@ -250,17 +204,25 @@ fn ario_timing<D: Done>(
     Ok(c::NO_ERR)
 }
 
+/// Runs setter `f` on the ARIO timing of set `wSet` (see [`ario_timing`]): after init,
+/// `PARAMETER_ERR` for a bad set before the card is looked at.
+fn ario_set_timing<D: Done>(
+    wSet: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut crate::card::rio::ArioTiming, usize) -> D,
+) -> McclResult<c_int> {
+    super::initialised()?;
+    let s = set_ix(wSet)?;
+    ario_timing(wCardIndex, |t| f(t, s))
+}
+
 /// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
 /// 2^32 − 1 ms long) for the ARIO
 /// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
 /// restarts at the call.
 #[no_mangle]
 pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        super::initialised()?;
-        let s = set_ix(wSet)?;
-        ario_timing(wCardIndex, |t| t.set_update_rate(s, dfUpdateRate))
-    }
+    ffi_boundary! { ario_set_timing(wSet, wCardIndex, |t, s| t.set_update_rate(s, dfUpdateRate)) }
 }
 
 /// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
@@ -268,11 +230,7 @@ pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardInde
 /// restarts at the call.
 #[no_mangle]
 pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        super::initialised()?;
-        let s = set_ix(wSet)?;
-        ario_timing(wCardIndex, |t| t.set_divider(s, wDivider))
-    }
+    ffi_boundary! { ario_set_timing(wSet, wCardIndex, |t, s| t.set_divider(s, wDivider)) }
 }
 
 /// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
@@ -282,119 +240,24 @@ pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) ->
     ffi_boundary! { ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay)) }
 }
 
-on_off! {
+remote_io! {
+    ario, ario_set;
     /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
     MCC_EnableARIOSlaveControl,
     /// Stops data transfer with an ARIO slave.
-    MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
-        = |on| ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
-}
-
-/// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOTransStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.trans_status()))) }
-    }
-}
-
-/// ARIO master status: 1 normal, 0 error.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOMasterStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.master_status()))) }
-    }
-}
-
-/// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOSlaveStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_status()))) }
-    }
-}
-
-/// Failed transmitting ARIO slaves, bit n = slave n.
-///
-/// # Safety
-/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable DWORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOSlaveFail(
-    pdwStatus: *mut DWORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) }
-    }
-}
-
-/// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOInputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) }
-    }
-}
-
-/// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
-#[no_mangle]
-pub extern "C" fn MCC_SetARIOOutputValue(
-    wValue: WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
-}
-
-/// The 16 outputs set for ARIO slave `wPort`.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOOutputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) }
-    }
+    MCC_DisableARIOSlaveControl,
+    /// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
+    MCC_GetARIOTransStatus,
+    /// ARIO master status: 1 normal, 0 error.
+    MCC_GetARIOMasterStatus,
+    /// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
+    MCC_GetARIOSlaveStatus,
+    /// Failed transmitting ARIO slaves, bit n = slave n.
+    MCC_GetARIOSlaveFail,
+    /// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
+    MCC_GetARIOInputValue,
+    /// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
+    MCC_SetARIOOutputValue,
+    /// The 16 outputs set for ARIO slave `wPort`.
+    MCC_GetARIOOutputValue;
 }

@@ -56,109 +56,26 @@ pub extern "C" fn MCC_GetSysMaxSpeed() -> f64 {
     ffi_boundary! { Ok(system::config(|c| c.sys_max_speed)) }
 }
 
-/// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
-/// take effect at `MCC_UpdateParam`.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetMacParam(
-    pstMacParam: *mut SYS_MAC_PARAM,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param) }
-    }
-}
-
-/// Reads the mechanism parameters last set for one channel.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetMacParam(
-    pstMacParam: *mut SYS_MAC_PARAM,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac) }
-    }
-}
-
-/// Sets the encoder configuration of one channel (§2.4.2).
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetEncoderConfig(
-    pstEncoderConfig: *mut SYS_ENCODER_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config)
-        }
-    }
-}
-
-/// Reads the encoder configuration last set for one channel.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetEncoderConfig(
-    pstEncoderConfig: *mut SYS_ENCODER_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder) }
-    }
-}
-
-/// Sets the go-home parameters of one channel (§2.4.3); mode 3..16.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetHomeConfig(
-    pstHomeConfig: *mut SYS_HOME_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config) }
-    }
-}
-
-/// Reads the go-home parameters last set for one channel.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetHomeConfig(
-    pstHomeConfig: *mut SYS_HOME_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home) }
-    }
+pointer_fns! {
+    /// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
+    /// take effect at `MCC_UpdateParam`.
+    MCC_SetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
+        = set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param);
+    /// Reads the mechanism parameters last set for one channel.
+    MCC_GetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
+        = get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac);
+    /// Sets the encoder configuration of one channel (§2.4.2).
+    MCC_SetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex) = set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config)
+;
+    /// Reads the encoder configuration last set for one channel.
+    MCC_GetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
+        = get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder);
+    /// Sets the go-home parameters of one channel (§2.4.3); mode 3..16.
+    MCC_SetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
+        = set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config);
+    /// Reads the go-home parameters last set for one channel.
+    MCC_GetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
+        = get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home);
 }
 
 /// Removes every group (only while the system is closed).
