@@ -5,33 +5,20 @@
 //! ([`crate::planner::ConeSeg`]; docs/undocumented-functions.md). Queued like the
 //! helices, reported as a helix (`COMMAND_INFO.nType` 4 clockwise, 5 counter-clockwise).
 
-use super::motion::{direction, finite2, resolve_spiral};
-use super::{finite, queue_curve};
+use super::finite;
+use super::motion::{direction, queue_about, third_axis_end, About};
 use crate::error::McclResult;
 use crate::planner::{Path, Plane};
 use crate::vendor::{BYTE, WORD};
 use std::os::raw::c_int;
 
-fn cone(
-    plane: Plane,
-    cxy: [f64; 2],
-    pos: f64,
-    pitch: f64,
-    rate: f64,
-    dir: BYTE,
-    g: WORD,
-) -> McclResult<c_int> {
-    let cxy = finite2(cxy)?;
+fn cone(at: About, pos: f64, pitch: f64, rate: f64, dir: BYTE, g: WORD) -> McclResult<c_int> {
     let (pos, pitch, rate) = (finite(pos)?, finite(pitch)?, finite(rate)?);
     let ccw = direction(dir)?;
-    queue_curve(
-        g,
-        |ctx| {
-            let (c, to) = resolve_spiral(ctx, plane, cxy, pos)?;
-            Path::cone(plane, &ctx.from, c, to, pitch, rate, ccw)
-        },
-        true,
-    )
+    queue_about(at, true, g, |ctx, c, _| {
+        let to = third_axis_end(ctx, at.plane, pos)?;
+        Path::cone(at.plane, &ctx.from, c, to, pitch, rate, ccw)
+    })
 }
 
 /// Declares the conical helices of one plane: `$name(c0, c1, dfPos, dfPitch, CenterRate,
@@ -46,8 +33,8 @@ macro_rules! plane_cones {
             byCirDir: BYTE, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! {
-                let center = [$c0, $c1];
-                cone(Plane::$plane, center, dfPos, dfPitch, CenterRate, byCirDir, wGroupIndex)
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                cone(at, dfPos, dfPitch, CenterRate, byCirDir, wGroupIndex)
             }
         }
     )*};

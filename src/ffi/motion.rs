@@ -269,33 +269,50 @@ pub(super) fn finite2(v: [f64; 2]) -> McclResult<[f64; 2]> {
     Ok([finite(v[0])?, finite(v[1])?])
 }
 
-/// A curve's center `cxy` on `plane` and its U..B ends resolved against the group
-/// (absolute or relative), both checked against the position range.
-fn resolve_center(
-    ctx: &crate::engine::command::Ctx<'_>,
-    plane: Plane,
-    cxy: [f64; 2],
-    aux: Option<[f64; 5]>,
-) -> Result<([f64; 2], Option<[f64; 5]>), crate::planner::PlanError> {
-    let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-    let c = ctx.resolve_plane(plane, cxy);
-    check_plane(ctx, plane, &[c], aux)?;
-    Ok((c, aux))
+/// A curve about a center `c` of a plane (arc by an angle, circle, helix, cone), with
+/// the U..B ends `aux` moving linearly along, as C passed them.
+#[derive(Clone, Copy)]
+pub(super) struct About {
+    pub plane: Plane,
+    pub c: [f64; 2],
+    pub aux: Option<[f64; 5]>,
 }
 
-/// A spiral's center `cxy` on `plane` and the end `pos` of the plane's third axis,
-/// resolved against the group and checked against the position range.
-pub(super) fn resolve_spiral(
+/// Queues the curve `build` makes about `at` (`helix`: reported as a helix): the center
+/// and the ends are checked finite, resolved against the group (absolute or relative)
+/// and checked against the position range before `build` runs with them.
+pub(super) fn queue_about(
+    at: About,
+    helix: bool,
+    g: WORD,
+    build: impl FnOnce(
+        &crate::engine::command::Ctx<'_>,
+        [f64; 2],
+        Option<[f64; 5]>,
+    ) -> Result<Path, crate::planner::PlanError>,
+) -> McclResult<c_int> {
+    let cxy = finite2(at.c)?;
+    let aux = at.aux.map(aux5).transpose()?;
+    let plan = |ctx: &crate::engine::command::Ctx<'_>| {
+        let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+        let c = ctx.resolve_plane(at.plane, cxy);
+        check_plane(ctx, at.plane, &[c], aux)?;
+        build(ctx, c, aux)
+    };
+    queue_curve(g, plan, helix)
+}
+
+/// The end `pos` of the third axis of `plane`, resolved against the group and checked
+/// against the position range (the obsolete helix and the cone run until it).
+pub(super) fn third_axis_end(
     ctx: &crate::engine::command::Ctx<'_>,
     plane: Plane,
-    cxy: [f64; 2],
     pos: f64,
-) -> Result<([f64; 2], f64), crate::planner::PlanError> {
+) -> Result<f64, crate::planner::PlanError> {
     let n = plane.axes().2;
-    let (c, _) = resolve_center(ctx, plane, cxy, None)?;
     let to = ctx.resolve_axis(n, pos);
     ctx.check_points(&[(n, to)])?;
-    Ok((c, to))
+    Ok(to)
 }
 
 fn arc(
@@ -417,16 +434,15 @@ pub extern "C" fn MCC_ArcXYZ_Aux(
 }
 
 fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_int> {
-    let cxy = finite2(cxy)?;
     let theta = finite(theta)?;
-    queue_curve(
-        g,
-        |ctx| {
-            let (c, _) = resolve_center(ctx, plane, cxy, None)?;
-            Path::arc_theta(plane, &ctx.from, c, theta)
-        },
-        false,
-    )
+    let at = About {
+        plane,
+        c: cxy,
+        aux: None,
+    };
+    queue_about(at, false, g, |ctx, c, _| {
+        Path::arc_theta(plane, &ctx.from, c, theta)
+    })
 }
 
 /// Declares the arcs by an angle of one plane: `$name(c0, c1, dfTheta, wGroupIndex)` turns
@@ -451,24 +467,11 @@ plane_arcs_theta! {
     MCC_ArcThetaZX(dfCZ, dfCX) => ZX;
 }
 
-fn circle(
-    plane: Plane,
-    cxy: [f64; 2],
-    aux: Option<[f64; 5]>,
-    dir: BYTE,
-    g: WORD,
-) -> McclResult<c_int> {
-    let cxy = finite2(cxy)?;
+fn circle(at: About, dir: BYTE, g: WORD) -> McclResult<c_int> {
     let ccw = direction(dir)?;
-    let aux = aux.map(aux5).transpose()?;
-    queue_curve(
-        g,
-        |ctx| {
-            let (c, aux) = resolve_center(ctx, plane, cxy, aux)?;
-            Path::circle(plane, &ctx.from, c, ccw, aux)
-        },
-        false,
-    )
+    queue_about(at, false, g, |ctx, c, aux| {
+        Path::circle(at.plane, &ctx.from, c, ccw, aux)
+    })
 }
 
 /// Declares the full circles of one plane, each with its `_Aux` form:
@@ -480,7 +483,7 @@ macro_rules! plane_circles {
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name($c0: f64, $c1: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-            ffi_boundary! { circle(Plane::$plane, [$c0, $c1], None, byCirDir, wGroupIndex) }
+            ffi_boundary! { circle(About { plane: Plane::$plane, c: [$c0, $c1], aux: None }, byCirDir, wGroupIndex) }
         }
 
         #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
@@ -492,7 +495,7 @@ macro_rules! plane_circles {
         ) -> c_int {
             ffi_boundary! {
                 let aux = Some([dfU, dfV, dfW, dfA, dfB]);
-                circle(Plane::$plane, [$c0, $c1], aux, byCirDir, wGroupIndex)
+                circle(About { plane: Plane::$plane, c: [$c0, $c1], aux }, byCirDir, wGroupIndex)
             }
         }
     )*};
@@ -507,25 +510,11 @@ plane_circles! {
     MCC_CircleZX, MCC_CircleZX_Aux(dfCZ, dfCX) => ZX;
 }
 
-fn helical(
-    plane: Plane,
-    cxy: [f64; 2],
-    pitch: f64,
-    theta: f64,
-    aux: Option<[f64; 5]>,
-    g: WORD,
-) -> McclResult<c_int> {
-    let cxy = finite2(cxy)?;
+fn helical(at: About, pitch: f64, theta: f64, g: WORD) -> McclResult<c_int> {
     let (pitch, theta) = (finite(pitch)?, finite(theta)?);
-    let aux = aux.map(aux5).transpose()?;
-    queue_curve(
-        g,
-        |ctx| {
-            let (c, aux) = resolve_center(ctx, plane, cxy, aux)?;
-            Path::helix(plane, &ctx.from, c, pitch, theta, aux)
-        },
-        true,
-    )
+    queue_about(at, true, g, |ctx, c, aux| {
+        Path::helix(at.plane, &ctx.from, c, pitch, theta, aux)
+    })
 }
 
 /// Declares the helices of one plane, each with its `_Aux` form:
@@ -538,7 +527,8 @@ macro_rules! plane_helicals {
         #[no_mangle]
         pub extern "C" fn $name($c0: f64, $c1: f64, dfPitch: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
             ffi_boundary! {
-                helical(Plane::$plane, [$c0, $c1], dfPitch, dfTheta, None, wGroupIndex)
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                helical(at, dfPitch, dfTheta, wGroupIndex)
             }
         }
 
@@ -551,7 +541,7 @@ macro_rules! plane_helicals {
         ) -> c_int {
             ffi_boundary! {
                 let aux = Some([dfU, dfV, dfW, dfA, dfB]);
-                helical(Plane::$plane, [$c0, $c1], dfPitch, dfTheta, aux, wGroupIndex)
+                helical(About { plane: Plane::$plane, c: [$c0, $c1], aux }, dfPitch, dfTheta, wGroupIndex)
             }
         }
     )*};
@@ -567,25 +557,13 @@ plane_helicals! {
     MCC_HelicalZX_Y, MCC_HelicalZX_Y_Aux(dfCZ, dfCX) => ZX;
 }
 
-fn helica(
-    plane: Plane,
-    cxy: [f64; 2],
-    pos: f64,
-    pitch: f64,
-    dir: BYTE,
-    g: WORD,
-) -> McclResult<c_int> {
-    let cxy = finite2(cxy)?;
+fn helica(at: About, pos: f64, pitch: f64, dir: BYTE, g: WORD) -> McclResult<c_int> {
     let (pos, pitch) = (finite(pos)?, finite(pitch)?);
     let ccw = direction(dir)?;
-    queue_curve(
-        g,
-        |ctx| {
-            let (c, to) = resolve_spiral(ctx, plane, cxy, pos)?;
-            Path::helix_to(plane, &ctx.from, c, to, pitch, ccw, None)
-        },
-        true,
-    )
+    queue_about(at, true, g, |ctx, c, _| {
+        let to = third_axis_end(ctx, at.plane, pos)?;
+        Path::helix_to(at.plane, &ctx.from, c, to, pitch, ccw, None)
+    })
 }
 
 /// Declares the obsolete helices of one plane: `$name(c0, c1, dfPos, dfPitch, byCirDir,
@@ -599,7 +577,8 @@ macro_rules! plane_helicas {
             $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, byCirDir: BYTE, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! {
-                helica(Plane::$plane, [$c0, $c1], dfPos, dfPitch, byCirDir, wGroupIndex)
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                helica(at, dfPos, dfPitch, byCirDir, wGroupIndex)
             }
         }
     )*};
