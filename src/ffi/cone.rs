@@ -6,18 +6,16 @@
 //! helices, reported as a helix (`COMMAND_INFO.nType` 4 clockwise, 5 counter-clockwise).
 
 use super::finite;
-use super::motion::{direction, queue_about, third_axis_end, About};
+use super::motion::{queue_spiral, About, SpiralTo};
 use crate::error::McclResult;
 use crate::planner::{Path, Plane};
 use crate::vendor::{BYTE, WORD};
 use std::os::raw::c_int;
 
-fn cone(at: About, pos: f64, pitch: f64, rate: f64, dir: BYTE, g: WORD) -> McclResult<c_int> {
-    let (pos, pitch, rate) = (finite(pos)?, finite(pitch)?, finite(rate)?);
-    let ccw = direction(dir)?;
-    queue_about(at, true, g, |ctx, c, _| {
-        let to = third_axis_end(ctx, at.plane, pos)?;
-        Path::cone(at.plane, &ctx.from, c, to, pitch, rate, ccw)
+fn cone(s: SpiralTo, rate: f64, g: WORD) -> McclResult<c_int> {
+    let rate = finite(rate)?;
+    queue_spiral(s, g, |from, c, to, pitch, ccw| {
+        Path::cone(s.at.plane, from, c, to, pitch, rate, ccw)
     })
 }
 
@@ -34,7 +32,8 @@ macro_rules! plane_cones {
         ) -> c_int {
             ffi_boundary! {
                 let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
-                cone(at, dfPos, dfPitch, CenterRate, byCirDir, wGroupIndex)
+                let spiral = SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir };
+                cone(spiral, CenterRate, wGroupIndex)
             }
         }
     )*};

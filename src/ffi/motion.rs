@@ -5,7 +5,7 @@ use super::{
     axis_mask, finite, finite8, group_snapshot, queue, queue_curve, shape, shape_char, with_group,
 };
 use crate::error::{McclError, McclResult};
-use crate::planner::{Path, Plane};
+use crate::planner::{Axes, Path, Plane};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{BYTE, DWORD, WORD};
@@ -160,16 +160,9 @@ macro_rules! axes_motions {
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name(
-            dfX0: f64,
-            dfX1: f64,
-            dfX2: f64,
-            dfX3: f64,
-            dfX4: f64,
-            dfX5: f64,
-            dfX6: f64,
-            dfX7: f64,
-            wGroupIndex: WORD,
-            dwAxisMask: DWORD,
+            dfX0: f64, dfX1: f64, dfX2: f64, dfX3: f64,
+            dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
+            wGroupIndex: WORD, dwAxisMask: DWORD,
         ) -> c_int {
             ffi_boundary! {
                 $f(
@@ -300,19 +293,6 @@ pub(super) fn queue_about(
         build(ctx, c, aux)
     };
     queue_curve(g, plan, helix)
-}
-
-/// The end `pos` of the third axis of `plane`, resolved against the group and checked
-/// against the position range (the obsolete helix and the cone run until it).
-pub(super) fn third_axis_end(
-    ctx: &crate::engine::command::Ctx<'_>,
-    plane: Plane,
-    pos: f64,
-) -> Result<f64, crate::planner::PlanError> {
-    let n = plane.axes().2;
-    let to = ctx.resolve_axis(n, pos);
-    ctx.check_points(&[(n, to)])?;
-    Ok(to)
 }
 
 fn arc(
@@ -557,12 +537,36 @@ plane_helicals! {
     MCC_HelicalZX_Y, MCC_HelicalZX_Y_Aux(dfCZ, dfCX) => ZX;
 }
 
-fn helica(at: About, pos: f64, pitch: f64, dir: BYTE, g: WORD) -> McclResult<c_int> {
-    let (pos, pitch) = (finite(pos)?, finite(pitch)?);
-    let ccw = direction(dir)?;
-    queue_about(at, true, g, |ctx, c, _| {
-        let to = third_axis_end(ctx, at.plane, pos)?;
-        Path::helix_to(at.plane, &ctx.from, c, to, pitch, ccw, None)
+/// A spiral about `at` until the plane's third axis reaches `pos`, `pitch` per turn in
+/// direction `dir` (the obsolete helix, the cone).
+#[derive(Clone, Copy)]
+pub(super) struct SpiralTo {
+    pub at: About,
+    pub pos: f64,
+    pub pitch: f64,
+    pub dir: BYTE,
+}
+
+/// Queues the spiral `build(from, center, end of the third axis, pitch, counter-clockwise)`
+/// makes, its arguments checked, resolved and range-checked first.
+pub(super) fn queue_spiral(
+    s: SpiralTo,
+    g: WORD,
+    build: impl FnOnce(&Axes, [f64; 2], f64, f64, bool) -> Result<Path, crate::planner::PlanError>,
+) -> McclResult<c_int> {
+    let (pos, pitch) = (finite(s.pos)?, finite(s.pitch)?);
+    let ccw = direction(s.dir)?;
+    queue_about(s.at, true, g, |ctx, c, _| {
+        let n = s.at.plane.axes().2;
+        let to = ctx.resolve_axis(n, pos);
+        ctx.check_points(&[(n, to)])?;
+        build(&ctx.from, c, to, pitch, ccw)
+    })
+}
+
+fn helica(s: SpiralTo, g: WORD) -> McclResult<c_int> {
+    queue_spiral(s, g, |from, c, to, pitch, ccw| {
+        Path::helix_to(s.at.plane, from, c, to, pitch, ccw, None)
     })
 }
 
@@ -578,7 +582,7 @@ macro_rules! plane_helicas {
         ) -> c_int {
             ffi_boundary! {
                 let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
-                helica(at, dfPos, dfPitch, byCirDir, wGroupIndex)
+                helica(SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir }, wGroupIndex)
             }
         }
     )*};
