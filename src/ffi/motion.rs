@@ -570,14 +570,19 @@ fn helica(s: SpiralTo, g: WORD) -> McclResult<c_int> {
     })
 }
 
-/// Declares the obsolete helices of one plane: `$name(c0, c1, dfPos, dfPitch, byCirDir,
-/// wGroupIndex)` turns around `(c0, c1)` of `Plane::$plane` until the third axis reaches
-/// dfPos, moving dfPitch per turn.
-macro_rules! plane_helicas {
-    ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
+/// Declares the spirals of one plane that run until its third axis reaches dfPos: the
+/// obsolete helix `$helica(c0, c1, dfPos, dfPitch, byCirDir, wGroupIndex)`, turning around
+/// `(c0, c1)` of `Plane::$plane` and moving dfPitch per turn, and the conical helix
+/// `$cone(c0, c1, dfPos, dfPitch, CenterRate, byCirDir, wGroupIndex)`, whose radius also
+/// changes by CenterRate per turn (src/ffi/cone.rs).
+macro_rules! plane_spirals {
+    ($(
+        $(#[$doc:meta])* $helica:ident,
+        $(#[$cone_doc:meta])* $cone:ident($c0:ident, $c1:ident) => $plane:ident;
+    )*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "C" fn $helica(
             $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, byCirDir: BYTE, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! {
@@ -585,15 +590,35 @@ macro_rules! plane_helicas {
                 helica(SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir }, wGroupIndex)
             }
         }
+
+        $(#[$cone_doc])*
+        #[no_mangle]
+        pub extern "C" fn $cone(
+            $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, CenterRate: f64,
+            byCirDir: BYTE, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                let spiral = SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir };
+                super::cone::cone(spiral, CenterRate, wGroupIndex)
+            }
+        }
     )*};
 }
 
-plane_helicas! {
+plane_spirals! {
     /// Obsolete helix: around (dfCX, dfCY) in direction byCirDir until Z reaches dfPos,
     /// rising dfPitch per turn.
-    MCC_HelicaXY_Z(dfCX, dfCY) => XY;
+    MCC_HelicaXY_Z,
+    /// Conical helix about (dfCX, dfCY) in direction byCirDir until Z reaches dfPos, Z
+    /// moving dfPitch per turn and the radius changing by CenterRate per turn.
+    MCC_ConeXY_Z(dfCX, dfCY) => XY;
     /// Obsolete helix around (dfCY, dfCZ) until X reaches dfPos.
-    MCC_HelicaYZ_X(dfCY, dfCZ) => YZ;
+    MCC_HelicaYZ_X,
+    /// Conical helix about (dfCY, dfCZ) until X reaches dfPos (see [`MCC_ConeXY_Z`]).
+    MCC_ConeYZ_X(dfCY, dfCZ) => YZ;
     /// Obsolete helix around (dfCZ, dfCX) until Y reaches dfPos.
-    MCC_HelicaZX_Y(dfCZ, dfCX) => ZX;
+    MCC_HelicaZX_Y,
+    /// Conical helix about (dfCZ, dfCX) until Y reaches dfPos (see [`MCC_ConeXY_Z`]).
+    MCC_ConeZX_Y(dfCZ, dfCX) => ZX;
 }
