@@ -375,42 +375,37 @@ fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResu
     )
 }
 
-/// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
-#[no_mangle]
-pub extern "C" fn MCC_ArcXYZ(
-    dfRX0: f64,
-    dfRX1: f64,
-    dfRX2: f64,
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
+/// Declares the 3-D arc `$name(dfRX0..2, dfX0..2, wGroupIndex)` from the current point
+/// through (dfRX0..2) to (dfX0..2), and its `_Aux` form `$aux`, which takes U..B ends
+/// (`dfX3..dfX7`) too.
+macro_rules! arcs_xyz {
+    ($(#[$doc:meta])* $name:ident, $aux:ident) => {
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
+        }
+
+        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
+        #[no_mangle]
+        pub extern "C" fn $aux(
+            dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64,
+            dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
+            wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+                arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], aux, wGroupIndex)
+            }
+        }
+    };
 }
 
-/// [`MCC_ArcXYZ`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_ArcXYZ_Aux(
-    dfRX0: f64,
-    dfRX1: f64,
-    dfRX2: f64,
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc_xyz(
-        [dfRX0, dfRX1, dfRX2],
-        [dfX0, dfX1, dfX2],
-        Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
-        wGroupIndex,
-    ) }
+arcs_xyz! {
+    /// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
+    MCC_ArcXYZ, MCC_ArcXYZ_Aux
 }
 
 fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_int> {

@@ -84,58 +84,39 @@ pub extern "C" fn MCC_CloseAllGroups() -> c_int {
     ffi_boundary! { system::with(|s| s.close_all_groups()).map(|()| c::NO_ERR) }
 }
 
-/// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
-#[no_mangle]
-pub extern "C" fn MCC_CreateGroup(
-    xMapToCh: c_int,
-    yMapToCh: c_int,
-    zMapToCh: c_int,
-    uMapToCh: c_int,
-    vMapToCh: c_int,
-    wMapToCh: c_int,
-    aMapToCh: c_int,
-    bMapToCh: c_int,
-    nCardIndex: c_int,
-) -> c_int {
-    ffi_boundary! {
-    Ok(MCC_CreateGroupEx(
-            xMapToCh,
-            yMapToCh,
-            zMapToCh,
-            uMapToCh,
-            vMapToCh,
-            wMapToCh,
-            aMapToCh,
-            bMapToCh,
-            nCardIndex,
-            c::MOTION_QUEUE_SIZE,
-        ))
-        }
+/// Creates a group of `nMotionQueueSize` commands mapping axes X..B to the channels of
+/// `map` on card `nCardIndex`; its index.
+fn create_group(map: [c_int; 8], nCardIndex: c_int, nMotionQueueSize: c_int) -> McclResult<c_int> {
+    let def = GroupDef::new(map, nCardIndex, nMotionQueueSize)?;
+    let g = system::with(|s| s.create_group(def))?;
+    Ok(g as c_int)
 }
 
-/// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
-/// of `nMotionQueueSize` commands; returns the group index (lowest free slot).
-#[no_mangle]
-pub extern "C" fn MCC_CreateGroupEx(
-    xMapToCh: c_int,
-    yMapToCh: c_int,
-    zMapToCh: c_int,
-    uMapToCh: c_int,
-    vMapToCh: c_int,
-    wMapToCh: c_int,
-    aMapToCh: c_int,
-    bMapToCh: c_int,
-    nCardIndex: c_int,
-    nMotionQueueSize: c_int,
-) -> c_int {
-    ffi_boundary! {
-        let map = [
-            xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
-        ];
-        let def = GroupDef::new(map, nCardIndex, nMotionQueueSize)?;
-        let g = system::with(|s| s.create_group(def))?;
-        Ok(g as c_int)
-    }
+/// Declares `MCC_CreateGroup` and `MCC_CreateGroupEx`: the axis mappings and the card,
+/// then for the `Ex` form the queue size `$size`; `$queue` is the queue size used.
+macro_rules! create_groups {
+    ($($(#[$doc:meta])* $name:ident($($size:ident)?) = $queue:expr;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            xMapToCh: c_int, yMapToCh: c_int, zMapToCh: c_int, uMapToCh: c_int,
+            vMapToCh: c_int, wMapToCh: c_int, aMapToCh: c_int, bMapToCh: c_int,
+            nCardIndex: c_int, $($size: c_int)?
+        ) -> c_int {
+            ffi_boundary! {
+                let map = [xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh];
+                create_group(map, nCardIndex, $queue)
+            }
+        }
+    )*};
+}
+
+create_groups! {
+    /// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
+    MCC_CreateGroup() = c::MOTION_QUEUE_SIZE;
+    /// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
+    /// of `nMotionQueueSize` commands; returns the group index (lowest free slot).
+    MCC_CreateGroupEx(nMotionQueueSize) = nMotionQueueSize;
 }
 
 /// Removes one group (only while the system is closed).
