@@ -45,11 +45,11 @@ unsafe fn ch_read<T>(
     unsafe { write_out(p, || with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))) }
 }
 
-/// Sets a channel's conversion type: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` (−5..5 V) or
-/// `ADC_TYPE_UNI_DIFF`/`_UNI_SING` (0..10 V). Default `ADC_TYPE_BIP_DIFF`.
-#[no_mangle]
-pub extern "C" fn MCC_SetADCConvType(wConvType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_conv_type(ch, wConvType)) }
+value_fns! {
+    /// Sets a channel's conversion type: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` (−5..5 V) or
+    /// `ADC_TYPE_UNI_DIFF`/`_UNI_SING` (0..10 V). Default `ADC_TYPE_BIP_DIFF`.
+    MCC_SetADCConvType(wConvType: WORD; wChannel, wCardIndex)
+        = ch_op(wChannel, wCardIndex, |a, ch| a.set_conv_type(ch, wConvType));
 }
 
 pointer_fns! {
@@ -58,11 +58,11 @@ pointer_fns! {
         = ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch));
 }
 
-/// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
-/// free-running conversion).
-#[no_mangle]
-pub extern "C" fn MCC_SetADCConvMode(wConvMode: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_mode(wConvMode)) }
+value_fns! {
+    /// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
+    /// free-running conversion).
+    MCC_SetADCConvMode(wConvMode: WORD; wCardIndex)
+        = card_op(wCardIndex, |p| p.adc.set_mode(wConvMode));
 }
 
 pointer_fns! {
@@ -71,10 +71,10 @@ pointer_fns! {
         = ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch));
 }
 
-/// Chooses the channel `ADC_MODE_SINGLE` converts.
-#[no_mangle]
-pub extern "C" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_single_channel(ch)) }
+value_fns! {
+    /// Chooses the channel `ADC_MODE_SINGLE` converts.
+    MCC_SetADCSingleChannel(wChannel, wCardIndex)
+        = ch_op(wChannel, wCardIndex, |a, ch| a.set_single_channel(ch));
 }
 
 /// Writes 1 while conversion runs (free mode started), 0 otherwise (a single conversion
@@ -103,10 +103,10 @@ on_off! {
         = |on| card_op(wCardIndex, |p| p.adc.set_conv_trigger(on));
 }
 
-/// Chooses the tagged channel (one at a time).
-#[no_mangle]
-pub extern "C" fn MCC_SetADCTagChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_tag_channel(ch)) }
+value_fns! {
+    /// Chooses the tagged channel (one at a time).
+    MCC_SetADCTagChannel(wChannel, wCardIndex)
+        = ch_op(wChannel, wCardIndex, |a, ch| a.set_tag_channel(ch));
 }
 
 on_off! {
@@ -117,24 +117,18 @@ on_off! {
         = |on| card_op(wCardIndex, |p| p.adc.set_tag_trigger(on));
 }
 
-/// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
-/// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
-#[no_mangle]
-pub extern "C" fn MCC_SetADCCompMask(wMask: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.set_comp_mask(wMask)) }
-}
-
-/// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
-/// `ADC_COMP_LEVEL` (2). Default `ADC_COMP_RISE`.
-#[no_mangle]
-pub extern "C" fn MCC_SetADCCompType(wCompType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_type(ch, wCompType)) }
-}
-
-/// Sets a channel's compare value (finite, −10..10 V).
-#[no_mangle]
-pub extern "C" fn MCC_SetADCCompValue(fValue: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_value(ch, fValue)) }
+value_fns! {
+    /// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
+    /// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
+    MCC_SetADCCompMask(wMask: WORD; wCardIndex)
+        = card_op(wCardIndex, |p| p.adc.set_comp_mask(wMask));
+    /// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
+    /// `ADC_COMP_LEVEL` (2). Default `ADC_COMP_RISE`.
+    MCC_SetADCCompType(wCompType: WORD; wChannel, wCardIndex)
+        = ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_type(ch, wCompType));
+    /// Sets a channel's compare value (finite, −10..10 V).
+    MCC_SetADCCompValue(fValue: f32; wChannel, wCardIndex)
+        = ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_value(ch, fValue));
 }
 
 pointer_fns! {
@@ -159,16 +153,11 @@ on_off! {
         = |on| ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, on));
 }
 
-/// Starts conversion: free mode converts every enabled channel once per tick from the
-/// next tick on; single mode converts the single channel now (its interrupts follow the
-/// next tick).
-#[no_mangle]
-pub extern "C" fn MCC_StartADCConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.start_adc()) }
-}
-
-/// Stops free-running conversion (the last values stay readable).
-#[no_mangle]
-pub extern "C" fn MCC_StopADCConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_op(wCardIndex, |p| p.adc.stop()) }
+value_fns! {
+    /// Starts conversion: free mode converts every enabled channel once per tick from the
+    /// next tick on; single mode converts the single channel now (its interrupts follow the
+    /// next tick).
+    MCC_StartADCConv(wCardIndex) = card_op(wCardIndex, |p| p.start_adc());
+    /// Stops free-running conversion (the last values stay readable).
+    MCC_StopADCConv(wCardIndex) = card_op(wCardIndex, |p| p.adc.stop());
 }

@@ -35,31 +35,17 @@ fn on_card(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::dac::Dac)) -> Mccl
     })
 }
 
-/// Outputs `fVoltage` (−10..10 V) on a DAC channel.
-#[no_mangle]
-pub extern "C" fn MCC_SetDACOutput(fVoltage: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage)) }
-}
-
-/// Presets the voltage (−10..10 V) a channel outputs when its trigger source fires.
-#[no_mangle]
-pub extern "C" fn MCC_SetDACTriggerOutput(
-    fVoltage: f32,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_output(ch, fVoltage)) }
-}
-
-/// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
-/// channel n of the same card); other bits are `PARAMETER_ERR`.
-#[no_mangle]
-pub extern "C" fn MCC_SetDACTriggerSource(
-    dwSource: DWORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_source(ch, dwSource)) }
+value_fns! {
+    /// Outputs `fVoltage` (−10..10 V) on a DAC channel.
+    MCC_SetDACOutput(fVoltage: f32; wChannel, wCardIndex)
+        = on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage));
+    /// Presets the voltage (−10..10 V) a channel outputs when its trigger source fires.
+    MCC_SetDACTriggerOutput(fVoltage: f32; wChannel, wCardIndex)
+        = on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_output(ch, fVoltage));
+    /// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
+    /// channel n of the same card); other bits are `PARAMETER_ERR`.
+    MCC_SetDACTriggerSource(dwSource: DWORD; wChannel, wCardIndex)
+        = on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_source(ch, dwSource));
 }
 
 on_off! {
@@ -70,16 +56,11 @@ on_off! {
         = |on| on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, on));
 }
 
-/// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
-/// from `MCC_InitSystem` on.
-#[no_mangle]
-pub extern "C" fn MCC_StartDACConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_card(wCardIndex, |d| d.set_running(true)) }
-}
-
-/// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
-/// kept).
-#[no_mangle]
-pub extern "C" fn MCC_StopDACConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on_card(wCardIndex, |d| d.set_running(false)) }
+value_fns! {
+    /// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
+    /// from `MCC_InitSystem` on.
+    MCC_StartDACConv(wCardIndex) = on_card(wCardIndex, |d| d.set_running(true));
+    /// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
+    /// kept).
+    MCC_StopDACConv(wCardIndex) = on_card(wCardIndex, |d| d.set_running(false));
 }

@@ -102,22 +102,13 @@ pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResul
     })
 }
 
-/// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
-#[no_mangle]
-pub extern "C" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FilterClock::Limit, Value, wCardIndex) }
-}
-
-/// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
-#[no_mangle]
-pub extern "C" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FilterClock::Home, Value, wCardIndex) }
-}
-
-/// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
-#[no_mangle]
-pub extern "C" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FilterClock::Gpio, Value, wCardIndex) }
+value_fns! {
+    /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
+    MCC_SetLimitFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Limit, Value, wCardIndex);
+    /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
+    MCC_SetHomeFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Home, Value, wCardIndex);
+    /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
+    MCC_SetGpioFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Gpio, Value, wCardIndex);
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.

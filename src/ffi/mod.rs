@@ -35,6 +35,32 @@ macro_rules! on_off {
     };
 }
 
+/// Declares entry points that take a value `$v` of type `$t` (or none) followed by `WORD`
+/// indices `$a...` and return `$body` (a `McclResult<c_int>`): the setters of one card,
+/// channel, set or group. A member is `name(value: T; indices...) = body;` or
+/// `name(indices...) = body;`.
+macro_rules! value_fns {
+    (@fn $(#[$doc:meta])* $name:ident($($v:ident: $t:ty)?) ($($a:ident),+) $body:expr) => {
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            $($v: $t,)?
+            $($a: $crate::vendor::WORD),+
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! { $body }
+        }
+    };
+    () => {};
+    ($(#[$doc:meta])* $name:ident($v:ident: $t:ty; $($a:ident),+) = $body:expr; $($rest:tt)*) => {
+        value_fns!(@fn $(#[$doc])* $name($v: $t) ($($a),+) $body);
+        value_fns!($($rest)*);
+    };
+    ($(#[$doc:meta])* $name:ident($($a:ident),+) = $body:expr; $($rest:tt)*) => {
+        value_fns!(@fn $(#[$doc])* $name() ($($a),+) $body);
+        value_fns!($($rest)*);
+    };
+}
+
 /// Declares entry points whose first parameter is a pointer `$p` to a `$t` (read or
 /// written as each member's doc says) followed by `WORD` indices `$a...`: the body is
 /// `$body`, run in the panic boundary as an unsafe block under the function's contract

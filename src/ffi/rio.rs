@@ -156,24 +156,16 @@ remote_io! {
     MCC_GetRIOOutputValue;
 }
 
-/// Consecutive failed transfers a slave of the RIO set may have before the set reports
-/// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
-/// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
-#[no_mangle]
-pub extern "C" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_tolerance(wTime)) }
-}
-
-/// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
-/// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
-#[no_mangle]
-pub extern "C" fn MCC_SetRIOTriggerType(
-    wType: WORD,
-    wSet: WORD,
-    wDigitalInput: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType)) }
+value_fns! {
+    /// Consecutive failed transfers a slave of the RIO set may have before the set reports
+    /// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
+    /// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
+    MCC_SetRIOTransError(wTime: WORD; wSet, wCardIndex)
+        = rio_set(wSet, wCardIndex, |s| s.set_tolerance(wTime));
+    /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
+    /// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
+    MCC_SetRIOTriggerType(wType: WORD; wSet, wDigitalInput, wCardIndex)
+        = rio_set(wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType));
 }
 
 on_off! {
@@ -216,28 +208,22 @@ fn ario_set_timing<D: Done>(
     ario_timing(wCardIndex, |t| f(t, s))
 }
 
-/// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
-/// 2^32 − 1 ms long) for the ARIO
-/// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
-/// restarts at the call.
-#[no_mangle]
-pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_set_timing(wSet, wCardIndex, |t, s| t.set_update_rate(s, dfUpdateRate)) }
-}
-
-/// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
-/// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
-/// restarts at the call.
-#[no_mangle]
-pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_set_timing(wSet, wCardIndex, |t, s| t.set_divider(s, wDivider)) }
-}
-
-/// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
-/// of the card. The cycle count restarts at the call.
-#[no_mangle]
-pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay)) }
+value_fns! {
+    /// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
+    /// 2^32 − 1 ms long) for the ARIO
+    /// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
+    /// restarts at the call.
+    MCC_SetARIOUpdateRate(dfUpdateRate: f64; wSet, wCardIndex)
+        = ario_set_timing(wSet, wCardIndex, |t, s| t.set_update_rate(s, dfUpdateRate));
+    /// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
+    /// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
+    /// restarts at the call.
+    MCC_SetARIOClockDivider(wDivider: WORD; wSet, wCardIndex)
+        = ario_set_timing(wSet, wCardIndex, |t, s| t.set_divider(s, wDivider));
+    /// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
+    /// of the card. The cycle count restarts at the call.
+    MCC_SetARIONode2NodeDelay(dwDelay: DWORD; wCardIndex)
+        = ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay));
 }
 
 remote_io! {

@@ -16,11 +16,10 @@ fn on<D: Done>(
     Ok(c::NO_ERR)
 }
 
-/// Sets the timer's period in system clocks of 10 ns (1..=2^32-1; 0 is `PARAMETER_ERR`).
-/// Counting restarts. Before any call the period is 100 (1 µs).
-#[no_mangle]
-pub extern "C" fn MCC_SetTimer(dwValue: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.timer.set_period(dwValue)) }
+value_fns! {
+    /// Sets the timer's period in system clocks of 10 ns (1..=2^32-1; 0 is `PARAMETER_ERR`).
+    /// Counting restarts. Before any call the period is 100 (1 µs).
+    MCC_SetTimer(dwValue: DWORD; wCardIndex) = on(wCardIndex, |p| p.timer.set_period(dwValue));
 }
 
 on_off! {
@@ -38,17 +37,14 @@ on_off! {
     MCC_DisableTimerTrigger(wCardIndex: WORD) = |enable| on(wCardIndex, |p| p.timer.trigger = enable);
 }
 
-/// Sets the watchdog's compare value in timer periods (1..=2^32-1): with the timer at its
-/// default 1 µs, microseconds.
-#[no_mangle]
-pub extern "C" fn MCC_SetWatchDogTimer(wValue: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_compare(wValue)) }
-}
-
-/// Sets the length of the watchdog's reset signal in system clocks (1..=2^32-1).
-#[no_mangle]
-pub extern "C" fn MCC_SetWatchDogResetPeriod(dwValue: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.watchdog.set_reset_period(dwValue)) }
+value_fns! {
+    /// Sets the watchdog's compare value in timer periods (1..=2^32-1): with the timer at its
+    /// default 1 µs, microseconds.
+    MCC_SetWatchDogTimer(wValue: DWORD; wCardIndex)
+        = on(wCardIndex, |p| p.watchdog.set_compare(wValue));
+    /// Sets the length of the watchdog's reset signal in system clocks (1..=2^32-1).
+    MCC_SetWatchDogResetPeriod(dwValue: DWORD; wCardIndex)
+        = on(wCardIndex, |p| p.watchdog.set_reset_period(dwValue));
 }
 
 on_off! {
@@ -62,8 +58,7 @@ on_off! {
         = |enable| on(wCardIndex, |p| p.watchdog.set_enabled(enable));
 }
 
-/// Clears the watchdog's count.
-#[no_mangle]
-pub extern "C" fn MCC_RefreshWatchDogTimer(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { on(wCardIndex, |p| p.watchdog.refresh()) }
+value_fns! {
+    /// Clears the watchdog's count.
+    MCC_RefreshWatchDogTimer(wCardIndex) = on(wCardIndex, |p| p.watchdog.refresh());
 }
