@@ -391,10 +391,25 @@ pub unsafe fn get_channel_config<T: Copy>(
     wCardIndex: WORD,
     table: impl FnOnce(&crate::config::Config) -> &[[T; crate::config::AXES]; crate::config::CARDS],
 ) -> McclResult<c_int> {
+    // SAFETY: forwarded under this function's contract.
+    unsafe { read_channel_config(p, wChannel, wCardIndex, |c, cd, ch| table(c)[cd.0][ch.0]) }
+}
+
+/// Writes what `get` makes of a channel's configuration to C (card, then channel, then
+/// NULL checked).
+///
+/// # Safety
+/// `p` must be NULL or point to memory writable as a `T`.
+pub unsafe fn read_channel_config<T>(
+    p: *mut T,
+    wChannel: WORD,
+    wCardIndex: WORD,
+    get: impl FnOnce(&crate::config::Config, CardIx, ChannelIx) -> T,
+) -> McclResult<c_int> {
     let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
     // SAFETY: NULL or writable, as this function's contract requires.
     let out = unsafe { Out::new(p) }?;
-    out.write(crate::system::config(|c| table(c)[cd.0][ch.0]));
+    out.write(crate::system::config(|c| get(c, cd, ch)));
     Ok(crate::vendor::consts::NO_ERR)
 }
 

@@ -251,28 +251,13 @@ pub extern "C" fn MCC_QueueLIOOutputValue(
     }
 }
 
-/// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
-/// `wBitMask` take those of `wValue` when the queue reaches it. Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_QueueRIOOutputValue(
-    wBitMask: WORD,
-    wValue: WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { queue_remote(false, wBitMask, wValue, wSet, wPort, wGroupIndex) }
-}
-
-/// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
-/// Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_QueueARIOOutputValue(
-    wBitMask: WORD,
-    wValue: WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { queue_remote(true, wBitMask, wValue, wSet, wPort, wGroupIndex) }
+value_fns! {
+    /// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
+    /// `wBitMask` take those of `wValue` when the queue reaches it. Returns the command index.
+    MCC_QueueRIOOutputValue(wBitMask, wValue, wSet, wPort, wGroupIndex)
+        = queue_remote(false, wBitMask, wValue, wSet, wPort, wGroupIndex);
+    /// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
+    /// Returns the command index.
+    MCC_QueueARIOOutputValue(wBitMask, wValue, wSet, wPort, wGroupIndex)
+        = queue_remote(true, wBitMask, wValue, wSet, wPort, wGroupIndex);
 }
