@@ -201,25 +201,51 @@ fn trig_out(
     })
 }
 
-/// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
-/// (1) or off (0): when a compare of its source fires, the output takes its trigger
-/// value for the trigger period, then returns.
-#[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = TrigOutSetting::Enabled(flag(wEnable)?);
-        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
+/// Before an LED trigger-out setting looks at its arguments: INITIAL_MOTION_ERR before
+/// init whatever they are. A local output's setting checks its arguments first.
+fn trig_out_ready(kind: TrigOutKind) -> McclResult<()> {
+    match kind {
+        TrigOutKind::Led => super::initialised(),
+        TrigOutKind::Local => Ok(()),
     }
 }
 
-/// The value a triggered output takes (1: servo off, 0: servo on, as the examples
-/// manual's §26 uses it).
-#[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = TrigOutSetting::Value(flag(wValue)?);
-        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
-    }
+/// Declares the trigger-out settings of the local output points and the LEDs:
+/// `$name($w, wPoint, wCardIndex)` sets `TrigOutSetting::$setting($parse($w))` of point
+/// `wPoint` (0..7) of `TrigOutKind::$kind`.
+macro_rules! trig_out_settings {
+    ($($(#[$doc:meta])* $name:ident($w:ident) => $kind:ident, $setting:ident($parse:ident);)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($w: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+            ffi_boundary! {
+                trig_out_ready(TrigOutKind::$kind)?;
+                let s = TrigOutSetting::$setting($parse($w)?);
+                trig_out(TrigOutKind::$kind, wPoint, wCardIndex, s)
+            }
+        }
+    )*};
+}
+
+trig_out_settings! {
+    /// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
+    /// (1) or off (0): when a compare of its source fires, the output takes its trigger
+    /// value for the trigger period, then returns.
+    MCC_SetLIOTrigOutEnable(wEnable) => Local, Enabled(flag);
+    /// The value a triggered output takes (1: servo off, 0: servo on, as the examples
+    /// manual's §26 uses it).
+    MCC_SetLIOTrigOutValue(wValue) => Local, Value(flag);
+    /// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
+    MCC_SetLIOTrigOutSource(wSource) => Local, Source(sources);
+    /// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
+    /// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
+    /// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
+    /// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
+    MCC_SetLedTrigOutEnable(wEnable) => Led, Enabled(flag);
+    /// The value a triggered LED shows: 1 lit, 0 dark.
+    MCC_SetLedTrigOutValue(wOutput) => Led, Value(flag);
+    /// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
+    MCC_SetLedTrigOutSource(wSource) => Led, Source(sources);
 }
 
 /// Trigger values of several points at once: bit n of the mask selects point n.
@@ -238,15 +264,6 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
     }
 }
 
-/// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
-#[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = TrigOutSetting::Source(sources(wSource)?);
-        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
-    }
-}
-
 /// How long a triggered output or LED holds its value, ns (rounded up to whole ticks).
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
@@ -255,42 +272,6 @@ pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> 
             t.trig_period_ns = u64::from(dwPeriod);
             Ok(c::NO_ERR)
         })
-    }
-}
-
-/// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
-/// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
-/// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
-/// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        super::initialised()?;
-        let s = TrigOutSetting::Enabled(flag(wEnable)?);
-        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
-    }
-}
-
-/// The value a triggered LED shows: 1 lit, 0 dark.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        super::initialised()?;
-        let s = TrigOutSetting::Value(flag(wOutput)?);
-        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
-    }
-}
-
-/// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        super::initialised()?;
-        let s = TrigOutSetting::Source(sources(wSource)?);
-        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
     }
 }
 
