@@ -3,20 +3,12 @@
 //! channel of the same number unless set otherwise from Rust
 //! (`Peripherals::set_adc_source`). The routine is registered with `MCC_SetADCRoutine`.
 
-use super::{channel, with_card, write_out, Done};
+use super::{card_do, channel, with_card, write_out, Done};
 use crate::card::adc::Adc;
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-
-fn card_op<D: Done>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::Peripherals) -> D,
-) -> McclResult<c_int> {
-    with_card(wCardIndex, |p| f(p).done())?;
-    Ok(c::NO_ERR)
-}
 
 fn ch_op<D: Done>(
     wChannel: WORD,
@@ -107,7 +99,7 @@ value_fns! {
     /// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
     /// free-running conversion).
     MCC_SetADCConvMode(wConvMode: WORD; wCardIndex)
-        = card_op(wCardIndex, |p| p.adc.set_mode(wConvMode));
+        = card_do(wCardIndex, |p| p.adc.set_mode(wConvMode));
     /// Chooses the channel `ADC_MODE_SINGLE` converts.
     MCC_SetADCSingleChannel(wChannel, wCardIndex)
         = ch_op(wChannel, wCardIndex, |a, ch| a.set_single_channel(ch));
@@ -117,7 +109,7 @@ value_fns! {
     /// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
     /// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
     MCC_SetADCCompMask(wMask: WORD; wCardIndex)
-        = card_op(wCardIndex, |p| p.adc.set_comp_mask(wMask));
+        = card_do(wCardIndex, |p| p.adc.set_comp_mask(wMask));
     /// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
     /// `ADC_COMP_LEVEL` (2). Default `ADC_COMP_RISE`.
     MCC_SetADCCompType(wCompType: WORD; wChannel, wCardIndex)
@@ -125,9 +117,9 @@ value_fns! {
     /// Starts conversion: free mode converts every enabled channel once per tick from the
     /// next tick on; single mode converts the single channel now (its interrupts follow the
     /// next tick).
-    MCC_StartADCConv(wCardIndex) = card_op(wCardIndex, |p| p.start_adc());
+    MCC_StartADCConv(wCardIndex) = card_do(wCardIndex, |p| p.start_adc());
     /// Stops free-running conversion (the last values stay readable).
-    MCC_StopADCConv(wCardIndex) = card_op(wCardIndex, |p| p.adc.stop());
+    MCC_StopADCConv(wCardIndex) = card_do(wCardIndex, |p| p.adc.stop());
 }
 
 on_off! {
@@ -135,12 +127,12 @@ on_off! {
     MCC_EnableADCConvTrigger,
     /// Completed conversions no longer call the ADC routine.
     MCC_DisableADCConvTrigger(wCardIndex: WORD)
-        = |on| card_op(wCardIndex, |p| p.adc.set_conv_trigger(on));
+        = |on| card_do(wCardIndex, |p| p.adc.set_conv_trigger(on));
     /// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
     MCC_EnableADCTagTrigger,
     /// Conversions of the tagged channel no longer call the ADC routine.
     MCC_DisableADCTagTrigger(wCardIndex: WORD)
-        = |on| card_op(wCardIndex, |p| p.adc.set_tag_trigger(on));
+        = |on| card_do(wCardIndex, |p| p.adc.set_tag_trigger(on));
     /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
     MCC_EnableADCCompTrigger,
     /// The channel's comparator no longer calls the ADC routine.

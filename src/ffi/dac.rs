@@ -2,7 +2,7 @@
 //! Control"). A channel whose mechanism parameters in effect say `OCM_VOLTAGE` belongs
 //! to its axis: every DAC call on it returns `VOLTAGE_COMMAND_CHANNEL_ERR`.
 
-use super::{channel, with_card, Done};
+use super::{card_do, channel, with_card, Done};
 use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
@@ -26,13 +26,6 @@ fn on_channel<D: Done>(
     let ch = dac_channel(wChannel, wCardIndex)?;
     with_card(wCardIndex, |p| f(&mut p.dac, ch).done())?;
     Ok(c::NO_ERR)
-}
-
-fn on_card(wCardIndex: WORD, f: impl FnOnce(&mut crate::card::dac::Dac)) -> McclResult<c_int> {
-    with_card(wCardIndex, |p| {
-        f(&mut p.dac);
-        Ok(c::NO_ERR)
-    })
 }
 
 value_fns! {
@@ -59,8 +52,8 @@ on_off! {
 value_fns! {
     /// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
     /// from `MCC_InitSystem` on.
-    MCC_StartDACConv(wCardIndex) = on_card(wCardIndex, |d| d.set_running(true));
+    MCC_StartDACConv(wCardIndex) = card_do(wCardIndex, |p| p.dac.set_running(true));
     /// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
     /// kept).
-    MCC_StopDACConv(wCardIndex) = on_card(wCardIndex, |d| d.set_running(false));
+    MCC_StopDACConv(wCardIndex) = card_do(wCardIndex, |p| p.dac.set_running(false));
 }

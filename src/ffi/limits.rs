@@ -62,40 +62,31 @@ fn side(wUpDown: WORD) -> McclResult<usize> {
     index(wUpDown, 2)
 }
 
-/// Writes limit switch `wUpDown` of a channel, as it reads now or as latched.
-///
-/// # Safety
-/// `pwStatus` must be NULL or point to a writable WORD.
-unsafe fn limit_status(
-    pwStatus: *mut WORD,
+/// Limit switch `wUpDown` of a channel, as it reads now or as latched (1 active).
+fn limit_switch(
     wUpDown: WORD,
     wChannel: WORD,
     wCardIndex: WORD,
     latched: bool,
-) -> McclResult<c_int> {
+) -> McclResult<WORD> {
     let side = side(wUpDown)?;
-    // SAFETY: forwarded under this function's contract.
-    unsafe {
-        write_out(pwStatus, || {
-            let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |chan| {
-                Ok(if latched {
-                    chan.latched_limit(side)
-                } else {
-                    chan.limit_switch(side)
-                })
-            })?;
-            Ok(WORD::from(v))
+    let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |chan| {
+        Ok(if latched {
+            chan.latched_limit(side)
+        } else {
+            chan.limit_switch(side)
         })
-    }
+    })?;
+    Ok(WORD::from(v))
 }
 
 pointer_fns! {
     /// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
     MCC_GetLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
-        = limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false);
+        = write_out(pwStatus, || limit_switch(wUpDown, wChannel, wCardIndex, false));
     /// Whether the limit switch has been active since the latch was last cleared.
     MCC_GetLatchedLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
-        = limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true);
+        = write_out(pwStatus, || limit_switch(wUpDown, wChannel, wCardIndex, true));
 }
 
 /// Clears the latched limit switch status (it latches again while the switch is active).

@@ -187,20 +187,6 @@ fn sources(w: WORD) -> McclResult<u16> {
     bits(w, 0xFF)
 }
 
-/// Changes one setting of trigger-out point `wPoint` (0..7) of `kind`.
-fn trig_out(
-    kind: TrigOutKind,
-    wPoint: WORD,
-    wCardIndex: WORD,
-    s: TrigOutSetting,
-) -> McclResult<c_int> {
-    let p = out_point(wPoint)?;
-    with_card_triggers(Card(wCardIndex), |t| {
-        t.set_trig_out(kind, p, s);
-        Ok(c::NO_ERR)
-    })
-}
-
 /// Before an LED trigger-out setting looks at its arguments: INITIAL_MOTION_ERR before
 /// init whatever they are. A local output's setting checks its arguments first.
 fn trig_out_ready(kind: TrigOutKind) -> McclResult<()> {
@@ -221,7 +207,11 @@ macro_rules! trig_out_settings {
             ffi_boundary! {
                 trig_out_ready(TrigOutKind::$kind)?;
                 let s = TrigOutSetting::$setting($parse($w)?);
-                trig_out(TrigOutKind::$kind, wPoint, wCardIndex, s)
+                let p = out_point(wPoint)?;
+                with_card_triggers(Card(wCardIndex), |t| {
+                    t.set_trig_out(TrigOutKind::$kind, p, s);
+                    Ok(c::NO_ERR)
+                })
             }
         }
     )*};

@@ -248,6 +248,15 @@ pub struct Card(pub u16);
 #[derive(Debug, Clone, Copy)]
 pub struct Channel(pub u16);
 
+/// Runs setter `f` on the peripherals of card `wCardIndex` (see [`with_card`]); `NO_ERR`.
+pub fn card_do<D: Done>(
+    wCardIndex: u16,
+    f: impl FnOnce(&mut crate::card::Peripherals) -> D,
+) -> McclResult<c_int> {
+    with_card(wCardIndex, |p| f(p).done())?;
+    Ok(crate::vendor::consts::NO_ERR)
+}
+
 /// Runs `f` on the simulated machine with its lock held and the index of card `cd`.
 /// `INITIAL_MOTION_ERR` before init, then `PARAMETER_ERR` for a bad card.
 pub fn with_machine<R>(

@@ -2,8 +2,11 @@
 //! "Point-to-Point Motion").
 
 use super::{shape, shape_char, with_group};
-use crate::error::McclError;
+use crate::engine::command::Settings;
+use crate::error::{McclError, McclResult};
+use crate::vendor::WORD;
 use std::os::raw::c_char;
+use std::os::raw::c_int;
 
 fn shapes(v: [c_char; 8]) -> Result<[crate::planner::Shape; 8], McclError> {
     let mut out = [crate::planner::Shape::T; 8];
@@ -19,27 +22,26 @@ fn times(v: [f64; 8]) -> Result<[f64; 8], McclError> {
     Ok(v)
 }
 
+/// Stores the per-axis values `v` (an error if the check refused them) in the PtP setting
+/// `field` of group `g`.
+fn set_ptp<T>(
+    g: WORD,
+    v: McclResult<[T; 8]>,
+    field: impl FnOnce(&mut Settings) -> &mut [T; 8],
+) -> McclResult<c_int> {
+    let v = v?;
+    super::update_group(g, |grp| *field(&mut grp.settings) = v)
+}
+
 per_axis_setters! {
     /// PtP acceleration shape per axis ('T' or 'S').
-    MCC_SetPtPAccType(c_char; wGroupIndex) = |v| {
-        let s = shapes(v)?;
-        super::update_group(wGroupIndex, |g| g.settings.ptp_acc = s)
-    };
+    MCC_SetPtPAccType(c_char; wGroupIndex) = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_acc);
     /// PtP deceleration shape per axis ('T' or 'S').
-    MCC_SetPtPDecType(c_char; wGroupIndex) = |v| {
-        let s = shapes(v)?;
-        super::update_group(wGroupIndex, |g| g.settings.ptp_dec = s)
-    };
+    MCC_SetPtPDecType(c_char; wGroupIndex) = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_dec);
     /// PtP acceleration time per axis, ms (0..=2^32 − 1).
-    MCC_SetPtPAccTime(f64; wGroupIndex) = |v| {
-        let t = times(v)?;
-        super::update_group(wGroupIndex, |g| g.settings.ptp_acc_ms = t)
-    };
+    MCC_SetPtPAccTime(f64; wGroupIndex) = |v| set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_acc_ms);
     /// PtP deceleration time per axis, ms (0..=2^32 − 1).
-    MCC_SetPtPDecTime(f64; wGroupIndex) = |v| {
-        let t = times(v)?;
-        super::update_group(wGroupIndex, |g| g.settings.ptp_dec_ms = t)
-    };
+    MCC_SetPtPDecTime(f64; wGroupIndex) = |v| set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_dec_ms);
 }
 
 per_axis_getters! {

@@ -29,39 +29,24 @@ fn on_set<const N: usize, R>(
     with_card(wCardIndex, |p| f(&mut pick(&mut p.rio)[s]))
 }
 
-fn rio<R>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<RIO_PORTS>) -> McclResult<R>,
-) -> McclResult<R> {
-    on_set(|m| &mut m.rio, wSet, wCardIndex, f)
+/// The RIO sets of a card's master.
+fn rio_sets(m: &mut Master) -> &mut [Set<RIO_PORTS>; SETS] {
+    &mut m.rio
 }
 
-fn ario<R>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> McclResult<R>,
-) -> McclResult<R> {
-    on_set(|m| &mut m.ario, wSet, wCardIndex, f)
+/// The ARIO sets of a card's master.
+fn ario_sets(m: &mut Master) -> &mut [Set<ARIO_SLAVES>; SETS] {
+    &mut m.ario
 }
 
-/// Runs setter `f` on a RIO set (see [`rio`]); `NO_ERR`.
-fn rio_set<D: Done>(
+/// Runs setter `f` on set `wSet` of the sets `pick` chooses (see [`on_set`]); `NO_ERR`.
+fn set_do<const N: usize, D: Done>(
+    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
     wSet: WORD,
     wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<RIO_PORTS>) -> D,
+    f: impl FnOnce(&mut Set<N>) -> D,
 ) -> McclResult<c_int> {
-    rio(wSet, wCardIndex, |s| f(s).done())?;
-    Ok(c::NO_ERR)
-}
-
-/// Runs setter `f` on an ARIO set (see [`ario`]); `NO_ERR`.
-fn ario_set<D: Done>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> D,
-) -> McclResult<c_int> {
-    ario(wSet, wCardIndex, |s| f(s).done())?;
+    on_set(pick, wSet, wCardIndex, |s| f(s).done())?;
     Ok(c::NO_ERR)
 }
 
@@ -82,17 +67,16 @@ on_off! {
     MCC_EnableRIOSetControl,
     /// Stops data transfer of a RIO set.
     MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD)
-        = |on| rio_set(wSet, wCardIndex, |s| s.control = on);
+        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.control = on);
 }
 
-/// Declares the entry points RIO and ARIO share, for one kind of master: `$kind` runs a
-/// closure on one of its sets ([`rio`], [`ario`]), `$set` a setter ([`rio_set`],
-/// [`ario_set`]). The members are, in this order: slave control on and off, transfer,
+/// Declares the entry points RIO and ARIO share, for one kind of master: `$sets` picks
+/// its sets ([`rio_sets`], [`ario_sets`]). The members are, in this order: slave control on and off, transfer,
 /// master and slave status, failed slaves, a port's (RIO) or slave's (ARIO) inputs, and
 /// setting and reading its outputs.
 macro_rules! remote_io {
     (
-        $kind:ident, $set:ident;
+        $sets:ident;
         $(#[$on_doc:meta])* $slave_on:ident,
         $(#[$off_doc:meta])* $slave_off:ident,
         $(#[$trans_doc:meta])* $trans:ident,
@@ -106,22 +90,22 @@ macro_rules! remote_io {
         on_off! {
             $(#[$on_doc])* $slave_on,
             $(#[$off_doc])* $slave_off(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
-                = |on| $set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
+                = |on| set_do($sets, wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
         }
 
         pointer_fns! {
             $(#[$trans_doc])* $trans(pwStatus: WORD; wSet, wCardIndex)
-                = read(pwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.trans_status())));
+                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.trans_status())));
             $(#[$master_doc])* $master(pwStatus: WORD; wSet, wCardIndex)
-                = read(pwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.master_status())));
+                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.master_status())));
             $(#[$slaves_doc])* $slaves(pwStatus: WORD; wSet, wCardIndex)
-                = read(pwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.slave_status())));
+                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.slave_status())));
             $(#[$fail_doc])* $fail(pdwStatus: DWORD; wSet, wCardIndex)
-                = read(pdwStatus, || $kind(wSet, wCardIndex, |s| Ok(s.slave_fail())));
+                = read(pdwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.slave_fail())));
             $(#[$input_doc])* $input(pwValue: WORD; wSet, wPort, wCardIndex)
-                = read(pwValue, || $kind(wSet, wCardIndex, |s| s.input(wPort)));
+                = read(pwValue, || on_set($sets, wSet, wCardIndex, |s| s.input(wPort)));
             $(#[$output_doc])* $output(pwValue: WORD; wSet, wPort, wCardIndex)
-                = read(pwValue, || $kind(wSet, wCardIndex, |s| s.output(wPort)));
+                = read(pwValue, || on_set($sets, wSet, wCardIndex, |s| s.output(wPort)));
         }
 
         $(#[$set_output_doc])*
@@ -129,13 +113,13 @@ macro_rules! remote_io {
         pub extern "C" fn $set_output(
             wValue: WORD, wSet: WORD, wPort: WORD, wCardIndex: WORD,
         ) -> c_int {
-            ffi_boundary! { $set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
+            ffi_boundary! { set_do($sets, wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
         }
     };
 }
 
 remote_io! {
-    rio, rio_set;
+    rio_sets;
     /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
     MCC_EnableRIOSlaveControl,
     /// Stops data transfer with one slave of a RIO set.
@@ -161,11 +145,11 @@ value_fns! {
     /// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
     /// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
     MCC_SetRIOTransError(wTime: WORD; wSet, wCardIndex)
-        = rio_set(wSet, wCardIndex, |s| s.set_tolerance(wTime));
+        = set_do(rio_sets, wSet, wCardIndex, |s| s.set_tolerance(wTime));
     /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
     /// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
     MCC_SetRIOTriggerType(wType: WORD; wSet, wDigitalInput, wCardIndex)
-        = rio_set(wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType));
+        = set_do(rio_sets, wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType));
 }
 
 on_off! {
@@ -173,7 +157,7 @@ on_off! {
     MCC_EnableRIOInputTrigger,
     /// The digital input no longer calls the RIO routine.
     MCC_DisableRIOInputTrigger(wSet: WORD, wDigitalInput: WORD, wCardIndex: WORD)
-        = |on| rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, on));
+        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, on));
 }
 
 on_off! {
@@ -182,7 +166,7 @@ on_off! {
     MCC_EnableRIOTransTrigger,
     /// Transfer errors no longer call the RIO routine.
     MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD)
-        = |on| rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(on));
+        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.set_trans_trigger(on));
 }
 
 // ---- ARIO ----
@@ -227,7 +211,7 @@ value_fns! {
 }
 
 remote_io! {
-    ario, ario_set;
+    ario_sets;
     /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
     MCC_EnableARIOSlaveControl,
     /// Stops data transfer with an ARIO slave.

@@ -2,31 +2,20 @@
 //! Watch Dog Control"). Units: the timer counts system clocks of 10 ns; the watchdog
 //! counts timer periods (see `crate::card::timer` and docs/compatibility.md).
 
-use super::{with_card, Done};
-use crate::error::McclResult;
-use crate::vendor::consts as c;
+use super::card_do;
 use crate::vendor::{DWORD, WORD};
-use std::os::raw::c_int;
-
-fn on<D: Done>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::Peripherals) -> D,
-) -> McclResult<c_int> {
-    with_card(wCardIndex, |p| f(p).done())?;
-    Ok(c::NO_ERR)
-}
 
 value_fns! {
     /// Sets the timer's period in system clocks of 10 ns (1..=2^32-1; 0 is `PARAMETER_ERR`).
     /// Counting restarts. Before any call the period is 100 (1 µs).
-    MCC_SetTimer(dwValue: DWORD; wCardIndex) = on(wCardIndex, |p| p.timer.set_period(dwValue));
+    MCC_SetTimer(dwValue: DWORD; wCardIndex) = card_do(wCardIndex, |p| p.timer.set_period(dwValue));
 }
 
 on_off! {
     /// Starts the timer (counting from 0).
     MCC_EnableTimer,
     /// Stops the timer (and with it the watchdog's time base).
-    MCC_DisableTimer(wCardIndex: WORD) = |enable| on(wCardIndex, |p| p.timer.set_enabled(enable));
+    MCC_DisableTimer(wCardIndex: WORD) = |enable| card_do(wCardIndex, |p| p.timer.set_enabled(enable));
 }
 
 on_off! {
@@ -34,17 +23,17 @@ on_off! {
     /// tick).
     MCC_EnableTimerTrigger,
     /// The timer's expirations no longer call the TMR routine.
-    MCC_DisableTimerTrigger(wCardIndex: WORD) = |enable| on(wCardIndex, |p| p.timer.trigger = enable);
+    MCC_DisableTimerTrigger(wCardIndex: WORD) = |enable| card_do(wCardIndex, |p| p.timer.trigger = enable);
 }
 
 value_fns! {
     /// Sets the watchdog's compare value in timer periods (1..=2^32-1): with the timer at its
     /// default 1 µs, microseconds.
     MCC_SetWatchDogTimer(wValue: DWORD; wCardIndex)
-        = on(wCardIndex, |p| p.watchdog.set_compare(wValue));
+        = card_do(wCardIndex, |p| p.watchdog.set_compare(wValue));
     /// Sets the length of the watchdog's reset signal in system clocks (1..=2^32-1).
     MCC_SetWatchDogResetPeriod(dwValue: DWORD; wCardIndex)
-        = on(wCardIndex, |p| p.watchdog.set_reset_period(dwValue));
+        = card_do(wCardIndex, |p| p.watchdog.set_reset_period(dwValue));
 }
 
 on_off! {
@@ -55,10 +44,10 @@ on_off! {
     MCC_EnableWatchDogTimer,
     /// Stops the watchdog.
     MCC_DisableWatchDogTimer(wCardIndex: WORD)
-        = |enable| on(wCardIndex, |p| p.watchdog.set_enabled(enable));
+        = |enable| card_do(wCardIndex, |p| p.watchdog.set_enabled(enable));
 }
 
 value_fns! {
     /// Clears the watchdog's count.
-    MCC_RefreshWatchDogTimer(wCardIndex) = on(wCardIndex, |p| p.watchdog.refresh());
+    MCC_RefreshWatchDogTimer(wCardIndex) = card_do(wCardIndex, |p| p.watchdog.refresh());
 }
