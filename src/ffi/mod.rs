@@ -257,6 +257,18 @@ pub fn card_do<D: Done>(
     Ok(crate::vendor::consts::NO_ERR)
 }
 
+/// After init (`INITIAL_MOTION_ERR` whatever the arguments), checks the index `check`
+/// returns, then runs setter `f` with it on the peripherals of card `wCardIndex`; `NO_ERR`.
+pub fn card_do_at<I, D: Done>(
+    wCardIndex: u16,
+    check: impl FnOnce() -> McclResult<I>,
+    f: impl FnOnce(&mut crate::card::Peripherals, I) -> D,
+) -> McclResult<c_int> {
+    initialised()?;
+    let i = check()?;
+    card_do(wCardIndex, |p| f(p, i))
+}
+
 /// Runs `f` on the simulated machine with its lock held and the index of card `cd`.
 /// `INITIAL_MOTION_ERR` before init, then `PARAMETER_ERR` for a bad card.
 pub fn with_machine<R>(

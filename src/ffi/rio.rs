@@ -8,7 +8,7 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::{with_card, write_out, Done};
+use super::{card_do_at, with_card, write_out, Done};
 use crate::card::rio::{set_ix, Master, Set, ARIO_SLAVES, RIO_PORTS, SETS};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
@@ -171,43 +171,28 @@ on_off! {
 
 // ---- ARIO ----
 
-fn ario_timing<D: Done>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> D,
-) -> McclResult<c_int> {
-    super::initialised()?;
-    with_card(wCardIndex, |p| f(&mut p.rio.ario_timing).done())?;
-    Ok(c::NO_ERR)
-}
-
-/// Runs setter `f` on the ARIO timing of set `wSet` (see [`ario_timing`]): after init,
-/// `PARAMETER_ERR` for a bad set before the card is looked at.
-fn ario_set_timing<D: Done>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::rio::ArioTiming, usize) -> D,
-) -> McclResult<c_int> {
-    super::initialised()?;
-    let s = set_ix(wSet)?;
-    ario_timing(wCardIndex, |t| f(t, s))
-}
-
 value_fns! {
     /// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
     /// 2^32 − 1 ms long) for the ARIO
     /// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
     /// restarts at the call.
     MCC_SetARIOUpdateRate(dfUpdateRate: f64; wSet, wCardIndex)
-        = ario_set_timing(wSet, wCardIndex, |t, s| t.set_update_rate(s, dfUpdateRate));
+        = card_do_at(wCardIndex, || set_ix(wSet), |p, s| {
+            p.rio.ario_timing.set_update_rate(s, dfUpdateRate)
+        });
     /// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
     /// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
     /// restarts at the call.
     MCC_SetARIOClockDivider(wDivider: WORD; wSet, wCardIndex)
-        = ario_set_timing(wSet, wCardIndex, |t, s| t.set_divider(s, wDivider));
+        = card_do_at(wCardIndex, || set_ix(wSet), |p, s| {
+            p.rio.ario_timing.set_divider(s, wDivider)
+        });
     /// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
     /// of the card. The cycle count restarts at the call.
     MCC_SetARIONode2NodeDelay(dwDelay: DWORD; wCardIndex)
-        = ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay));
+        = card_do_at(wCardIndex, || Ok(()), |p, ()| {
+            p.rio.ario_timing.set_node_delay(dwDelay)
+        });
 }
 
 remote_io! {
