@@ -200,7 +200,9 @@ fn trig_out_ready(kind: TrigOutKind) -> McclResult<()> {
 /// `$name($w, wPoint, wCardIndex)` sets `TrigOutSetting::$setting($parse($w))` of point
 /// `wPoint` (0..7) of `TrigOutKind::$kind`.
 macro_rules! trig_out_settings {
-    ($($(#[$doc:meta])* $name:ident($w:ident) => $kind:ident, $setting:ident($parse:ident);)*) => {$(
+    ($(
+        $(#[$doc:meta])* $name:ident($w:ident) => $kind:ident, $setting:ident($parse:ident);
+    )*) => {$(
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name($w: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {

@@ -23,7 +23,9 @@ macro_rules! on_off {
         on_off!(@one $(#[$on_doc])* $on($($p: $t),*) $flag = true => $body);
         on_off!(@one $(#[$off_doc])* $off($($p: $t),*) $flag = false => $body);
     )*};
-    (@one $(#[$doc:meta])* $name:ident($($p:ident: $t:ty),*) $flag:ident = $v:literal => $body:expr) => {
+    (@one
+        $(#[$doc:meta])* $name:ident($($p:ident: $t:ty),*) $flag:ident = $v:literal => $body:expr
+    ) => {
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name($($p: $t),*) -> ::std::os::raw::c_int {

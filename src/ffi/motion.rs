@@ -180,7 +180,10 @@ macro_rules! axes_motions {
 /// `$name($arg, wGroupIndex)` calls `$f` with `$arg` at index `$axis`, the axis's mask bit
 /// `$mask` and `$extra...`.
 macro_rules! axis_motions {
-    ($($(#[$doc:meta])* $name:ident($arg:ident) => $f:ident($axis:expr, $mask:ident $(, $extra:expr)*);)*) => {$(
+    ($(
+        $(#[$doc:meta])*
+        $name:ident($arg:ident) => $f:ident($axis:expr, $mask:ident $(, $extra:expr)*);
+    )*) => {$(
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name($arg: f64, wGroupIndex: WORD) -> c_int {
@@ -324,10 +327,15 @@ fn arc(
 /// `(e0, e1)` on `Plane::$plane`; `$aux` takes U..B ends (`dfX3..dfX7`) too, which move
 /// linearly along.
 macro_rules! plane_arcs {
-    ($($(#[$doc:meta])* $name:ident, $aux:ident($r0:ident, $r1:ident, $e0:ident, $e1:ident) => $plane:ident;)*) => {$(
+    ($(
+        $(#[$doc:meta])*
+        $name:ident, $aux:ident($r0:ident, $r1:ident, $e0:ident, $e1:ident) => $plane:ident;
+    )*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($r0: f64, $r1: f64, $e0: f64, $e1: f64, wGroupIndex: WORD) -> c_int {
+        pub extern "C" fn $name(
+            $r0: f64, $r1: f64, $e0: f64, $e1: f64, wGroupIndex: WORD,
+        ) -> c_int {
             ffi_boundary! { arc(Plane::$plane, [$r0, $r1], [$e0, $e1], None, wGroupIndex) }
         }
 
@@ -458,7 +466,10 @@ macro_rules! plane_circles {
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name($c0: f64, $c1: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-            ffi_boundary! { circle(About { plane: Plane::$plane, c: [$c0, $c1], aux: None }, byCirDir, wGroupIndex) }
+            ffi_boundary! {
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                circle(at, byCirDir, wGroupIndex)
+            }
         }
 
         #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
@@ -500,7 +511,9 @@ macro_rules! plane_helicals {
     ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($c0: f64, $c1: f64, dfPitch: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
+        pub extern "C" fn $name(
+            $c0: f64, $c1: f64, dfPitch: f64, dfTheta: f64, wGroupIndex: WORD,
+        ) -> c_int {
             ffi_boundary! {
                 let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
                 helical(at, dfPitch, dfTheta, wGroupIndex)
@@ -516,7 +529,8 @@ macro_rules! plane_helicals {
         ) -> c_int {
             ffi_boundary! {
                 let aux = Some([dfU, dfV, dfW, dfA, dfB]);
-                helical(About { plane: Plane::$plane, c: [$c0, $c1], aux }, dfPitch, dfTheta, wGroupIndex)
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux };
+                helical(at, dfPitch, dfTheta, wGroupIndex)
             }
         }
     )*};

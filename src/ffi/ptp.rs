@@ -35,9 +35,11 @@ fn set_ptp<T>(
 
 per_axis_setters! {
     /// PtP acceleration shape per axis ('T' or 'S').
-    MCC_SetPtPAccType(c_char; wGroupIndex) = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_acc);
+    MCC_SetPtPAccType(c_char; wGroupIndex)
+        = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_acc);
     /// PtP deceleration shape per axis ('T' or 'S').
-    MCC_SetPtPDecType(c_char; wGroupIndex) = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_dec);
+    MCC_SetPtPDecType(c_char; wGroupIndex)
+        = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_dec);
     /// PtP acceleration time per axis, ms (0..=2^32 − 1).
     MCC_SetPtPAccTime(f64; wGroupIndex) = |v| set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_acc_ms);
     /// PtP deceleration time per axis, ms (0..=2^32 − 1).

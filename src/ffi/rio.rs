@@ -71,9 +71,9 @@ on_off! {
 }
 
 /// Declares the entry points RIO and ARIO share, for one kind of master: `$sets` picks
-/// its sets ([`rio_sets`], [`ario_sets`]). The members are, in this order: slave control on and off, transfer,
-/// master and slave status, failed slaves, a port's (RIO) or slave's (ARIO) inputs, and
-/// setting and reading its outputs.
+/// its sets ([`rio_sets`], [`ario_sets`]). The members are, in this order: slave control
+/// on and off, transfer, master and slave status, failed slaves, a port's (RIO) or
+/// slave's (ARIO) inputs, and setting and reading its outputs.
 macro_rules! remote_io {
     (
         $sets:ident;

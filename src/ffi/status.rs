@@ -27,10 +27,8 @@ pointer_fns! {
     /// 0..10), index, feed speed (PtP: ratio; delay: ms left), target, acc/dec times,
     /// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
     /// started since `MCC_ResetCommandIndexLD`.
-    MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex) = write_out(pstCurCommand, || {
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        Ok(s.cmd)
-    });
+    MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex)
+        = write_out(pstCurCommand, || Ok(system::active()?.snapshot(wGroupIndex)?.cmd));
     /// Commands queued and not yet started (the running one is not counted).
     MCC_GetCommandCount(pnCmdCount: c_int; wGroupIndex) = write_out(pnCmdCount, || {
         let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;

@@ -65,8 +65,8 @@ pointer_fns! {
     MCC_GetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
         = get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac);
     /// Sets the encoder configuration of one channel (§2.4.2).
-    MCC_SetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex) = set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config)
-;
+    MCC_SetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
+        = set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config);
     /// Reads the encoder configuration last set for one channel.
     MCC_GetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
         = get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder);
@@ -104,7 +104,9 @@ macro_rules! create_groups {
             nCardIndex: c_int, $($size: c_int)?
         ) -> c_int {
             ffi_boundary! {
-                let map = [xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh];
+                let map = [
+                    xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
+                ];
                 create_group(map, nCardIndex, $queue)
             }
         }

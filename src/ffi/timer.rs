@@ -15,7 +15,8 @@ on_off! {
     /// Starts the timer (counting from 0).
     MCC_EnableTimer,
     /// Stops the timer (and with it the watchdog's time base).
-    MCC_DisableTimer(wCardIndex: WORD) = |enable| card_do(wCardIndex, |p| p.timer.set_enabled(enable));
+    MCC_DisableTimer(wCardIndex: WORD)
+        = |enable| card_do(wCardIndex, |p| p.timer.set_enabled(enable));
 }
 
 on_off! {
@@ -23,7 +24,8 @@ on_off! {
     /// tick).
     MCC_EnableTimerTrigger,
     /// The timer's expirations no longer call the TMR routine.
-    MCC_DisableTimerTrigger(wCardIndex: WORD) = |enable| card_do(wCardIndex, |p| p.timer.trigger = enable);
+    MCC_DisableTimerTrigger(wCardIndex: WORD)
+        = |enable| card_do(wCardIndex, |p| p.timer.trigger = enable);
 }
 
 value_fns! {
