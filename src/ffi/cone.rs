@@ -12,6 +12,10 @@ use crate::planner::Path;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
 
+// Declared with the obsolete helices of the same planes (`plane_spirals!`); their Rust
+// path stays here.
+pub use super::motion::{MCC_ConeXY_Z, MCC_ConeYZ_X, MCC_ConeZX_Y};
+
 /// Queues the conical helix `s` whose radius changes by `rate` per turn; the entry points
 /// are declared with the obsolete helices (`plane_spirals!`, src/ffi/motion.rs).
 pub(super) fn cone(s: SpiralTo, rate: f64, g: WORD) -> McclResult<c_int> {
