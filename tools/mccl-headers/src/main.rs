@@ -147,10 +147,14 @@ struct Raw {
     /// Everything but the prototypes (typedefs, defines, structs), cbindgen's order.
     decls: String,
     protos: Vec<Proto>,
+    /// The vendor types in the order MCCL.h declares them (cbindgen.toml, `[export]
+    /// include`).
+    type_order: Vec<String>,
 }
 
 fn run_cbindgen(root: &Path) -> Result<Raw, String> {
     let cfg = cbindgen::Config::from_file(root.join("cbindgen.toml"))?;
+    let type_order = cfg.export.include.clone();
     let bindings = cbindgen::Builder::new()
         .with_crate(root)
         .with_config(cfg)
@@ -173,7 +177,11 @@ fn run_cbindgen(root: &Path) -> Result<Raw, String> {
             decls.push('\n');
         }
     }
-    Ok(Raw { decls, protos })
+    Ok(Raw {
+        decls,
+        protos,
+        type_order,
+    })
 }
 
 fn check_against_vendor(p: &Proto, v: &Proto) -> Result<(), String> {
@@ -271,11 +279,61 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
         }
         body.push('\n');
     }
-    let body = collapse_blank_lines(&body);
+    let body = in_type_order(&collapse_blank_lines(&body), &raw.type_order)?;
     Ok(format!(
         "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
+}
+
+/// The name a type declaration block declares: `typedef ... NAME;`, `typedef struct {
+/// ... } NAME;` or `typedef R (MCC_CALLBACK *NAME)(...);`; `None` for other blocks.
+fn declared_type(block: &str) -> Option<String> {
+    let first = block.lines().next()?;
+    if !first.starts_with("typedef") {
+        return None;
+    }
+    if let Some(rest) = first.split_once("(MCC_CALLBACK *").map(|(_, r)| r) {
+        return rest.split(')').next().map(str::to_string);
+    }
+    let last = block.trim_end().strip_suffix(';')?;
+    let name: String = last
+        .chars()
+        .rev()
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
+        .collect();
+    Some(name.chars().rev().collect())
+}
+
+/// `body` with its type declarations in `order`, each in the place of one of them (the
+/// defines stay where cbindgen put them). cbindgen declares a type where the first
+/// function using it makes it need one, so its order follows the Rust sources (and misses
+/// the functions that family macros declare, which it does not expand); MCCL.h instead
+/// declares the vendor types in one fixed order, each after the types it uses. A type
+/// missing from `order` is an error.
+fn in_type_order(body: &str, order: &[String]) -> Result<String, String> {
+    let blocks: Vec<&str> = body.split("\n\n").collect();
+    let mut typed: Vec<(usize, &str)> = Vec::new();
+    for b in &blocks {
+        if let Some(name) = declared_type(b) {
+            let rank = order.iter().position(|n| *n == name).ok_or_else(|| {
+                format!(
+                    "{name}: a type MCCL.h declares is missing from cbindgen.toml [export] include"
+                )
+            })?;
+            typed.push((rank, b));
+        }
+    }
+    typed.sort_by_key(|(rank, _)| *rank);
+    let mut sorted = typed.into_iter().map(|(_, b)| b);
+    let out: Vec<&str> = blocks
+        .iter()
+        .map(|b| match declared_type(b) {
+            Some(_) => sorted.next().unwrap_or(b),
+            None => b,
+        })
+        .collect();
+    Ok(out.join("\n\n"))
 }
 
 /// The `typedef struct { ... } MCCL_*;` blocks of cbindgen's output (the simulation
@@ -712,6 +770,17 @@ mod tests {
         );
         assert_eq!(p("double MCC_GetSysMaxSpeed()"), "extern \"C\" fn() -> f64");
         assert!(rust_fn_type(&parse_proto("int f(unsigned short w)").unwrap()).is_err());
+    }
+
+    #[test]
+    fn type_declarations_follow_the_given_order() {
+        let body = "#define A 1\n\ntypedef struct {\n  T x;\n} S;\n\ntypedef uint16_t T;\n\ntypedef void (MCC_CALLBACK *F)(S *p);\n\n#define B 2";
+        let order = ["T", "S", "F"].map(String::from);
+        assert_eq!(
+            in_type_order(body, &order).unwrap(),
+            "#define A 1\n\ntypedef uint16_t T;\n\ntypedef struct {\n  T x;\n} S;\n\ntypedef void (MCC_CALLBACK *F)(S *p);\n\n#define B 2"
+        );
+        assert!(in_type_order(body, &order[..2]).is_err());
     }
 
     #[test]
