@@ -2,7 +2,7 @@
 //! Management").
 
 use super::{axis_mask, group_snapshot, index, with_group};
-use crate::error::{McclError, McclResult};
+use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
@@ -87,14 +87,7 @@ pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c
 pub extern "C" fn MCC_DefinePosHere(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
         axis_mask(dwAxisMask)?;
-        with_group(wGroupIndex, |g| {
-            if g.busy() {
-                return Err(McclError::NotFinished);
-            }
-            for i in (0..8).filter(|i| dwAxisMask & (1 << i) != 0) {
-                g.sync_to_output(i)?;
-            }
-            Ok(c::NO_ERR)
-        })
+        with_group(wGroupIndex, |g| g.define_pos_here(dwAxisMask))?;
+        Ok(c::NO_ERR)
     }
 }

@@ -5,24 +5,20 @@
 use super::{
     flag, index, update_group, with_group, with_machine_channel, write_out, Card, Channel,
 };
-use crate::error::{McclError, McclResult};
+use crate::engine::safety::limit_check_mode;
+use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
 
 /// Turns the hardware limit switch check on: `HLP_BIDIR` (0), `HLP_UNIDIR` (1),
 /// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); rules: docs/simulated-machine.md.
 #[no_mangle]
 pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
     ffi_boundary! {
-        if !(c::HLP_BIDIR..=c::HLP_UNIDIR_GEN_ERR).contains(&nMode) {
-            return Err(McclError::Parameter);
-        }
-        system::active()?
-            .limit_check
-            .store(nMode, Ordering::Release);
+        let mode = limit_check_mode(nMode)?;
+        system::active()?.set_limit_check(Some(mode));
         Ok(c::NO_ERR)
     }
 }
@@ -31,7 +27,7 @@ pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
     ffi_boundary! {
-        system::active()?.limit_check.store(-1, Ordering::Release);
+        system::active()?.set_limit_check(None);
         Ok(c::NO_ERR)
     }
 }

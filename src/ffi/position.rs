@@ -151,14 +151,14 @@ per_axis_getters! {
 pub extern "C" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
         axis_mask(dwAxisMask)?;
-        update_group(wGroupIndex, |g| g.track_mask |= dwAxisMask)
+        update_group(wGroupIndex, |g| g.enable_track_error(dwAxisMask))
     }
 }
 
 /// Tracking error check off for every axis.
 #[no_mangle]
 pub extern "C" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { update_group(wGroupIndex, |g| g.track_mask = 0) }
+    ffi_boundary! { update_group(wGroupIndex, |g| g.disable_track_error()) }
 }
 
 /// The tracking error limit of one axis, UU (>= 0, a distance of the axis in the
@@ -171,11 +171,8 @@ pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupInde
             return Err(McclError::Parameter);
         }
         let a = axis(cAxis)?;
-        with_group(wGroupIndex, |g| {
-            crate::config::range::position(v, g.axes[a].factor)?;
-            g.track_limit[a] = v;
-            Ok(c::NO_ERR)
-        })
+        with_group(wGroupIndex, |g| g.set_track_error_limit(a, v))?;
+        Ok(c::NO_ERR)
     }
 }
 
@@ -234,9 +231,7 @@ pub extern "C" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        update_group(wGroupIndex, |g| {
-            g.inpos.max_check_s = f64::from(wMaxCheckTime) / 1000.0
-        })
+        update_group(wGroupIndex, |g| g.inpos.set_max_check_ms(wMaxCheckTime))
     }
 }
 
@@ -244,9 +239,7 @@ pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WOR
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        update_group(wGroupIndex, |g| {
-            g.inpos.settle_s = f64::from(wSettleTime) / 1000.0
-        })
+        update_group(wGroupIndex, |g| g.inpos.set_settle_ms(wSettleTime))
     }
 }
 
@@ -266,20 +259,15 @@ on_off! {
         = |on| inpos_marker(wGroupIndex, dwAxisMask, on);
 }
 
-/// Sets the in-position tolerances of group `g`, UU: finite, >= 0, each a distance of
-/// its axis in the position range. An error changes nothing.
+/// Sets the in-position tolerances of group `g`, UU: finite and >= 0 here, in the
+/// position range of each axis by the group (`GroupState::set_inpos_tolerances`).
 fn set_tolerances(v: [f64; 8], g: WORD) -> McclResult<c_int> {
     let v = super::finite8(v)?;
     if v.iter().any(|&t| t < 0.0) {
         return Err(McclError::Parameter);
     }
-    with_group(g, |g| {
-        for (t, a) in v.iter().zip(&g.axes) {
-            crate::config::range::position(*t, a.factor)?;
-        }
-        g.inpos.tolerance = v;
-        Ok(c::NO_ERR)
-    })
+    with_group(g, |g| g.set_inpos_tolerances(v))?;
+    Ok(c::NO_ERR)
 }
 
 per_axis_setters! {
@@ -308,41 +296,17 @@ pub extern "C" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> 
 #[no_mangle]
 pub extern "C" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        with_group(wGroupIndex, |g| {
-            Ok((g.inpos.settle_s * 1000.0).round() as c_int)
-        })
+        with_group(wGroupIndex, |g| Ok(g.inpos.settle_ms()))
     }
-}
-
-/// Sets the in-position tolerances of group `g` from pulses (each converted to UU with
-/// its axis's pulses per UU; 0 for an axis without a factor).
-fn set_tolerances_pulses(v: [WORD; 8], g: WORD) -> McclResult<c_int> {
-    update_group(g, |g| {
-        for (i, t) in v.iter().enumerate() {
-            let f = g.axes[i].factor.abs();
-            g.inpos.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
-        }
-    })
-}
-
-/// The in-position tolerances of group `g` in pulses, rounded, at most `WORD::MAX`.
-fn tolerances_pulses(g: WORD) -> McclResult<[WORD; 8]> {
-    with_group(g, |g| {
-        Ok(std::array::from_fn(|i| {
-            (g.inpos.tolerance[i] * g.axes[i].factor.abs())
-                .round()
-                .min(f64::from(WORD::MAX)) as WORD
-        }))
-    })
 }
 
 per_axis_setters! {
     /// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
     /// pulses per UU).
-    MCC_SetInPosTolerance(WORD; wGroupIndex) = |v| set_tolerances_pulses(v, wGroupIndex);
+    MCC_SetInPosTolerance(WORD; wGroupIndex) = |v| update_group(wGroupIndex, |g| g.set_inpos_tolerances_pulses(v));
 }
 
 per_axis_getters! {
     /// Obsolete: reads the in-position tolerances in pulses.
-    MCC_GetInPosTolerance(WORD; wGroupIndex) = tolerances_pulses(wGroupIndex);
+    MCC_GetInPosTolerance(WORD; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.inpos_tolerances_pulses()));
 }
