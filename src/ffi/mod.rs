@@ -3,6 +3,13 @@
 //! plain `#[no_mangle] pub extern "C" fn` whose body is one `ffi_boundary! { ... }`
 //! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
 //! `ffi_boundary` integration test rejects an exported body that does not enter it.
+//!
+//! A family of entry points with one signature and one body shape (one per axis, plane,
+//! channel kind, on/off pair, ...) is declared once by a `macro_rules!` macro next to it
+//! whose expansion is that literal function; the families several files share are below
+//! (`macro_rules!` macros are not items: rustdoc lists their members).
+//! The C header takes its prototypes from the vendor table, and the generated test
+//! `tests/vendor_prototypes.rs` checks each Rust signature against it at compile time.
 
 /// The panic boundary of an exported function: the block runs as a closure returning
 /// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
@@ -116,7 +123,7 @@ macro_rules! per_axis_setters {
 /// `$name(p0, ..., p7: *mut $t, $ix)` checks every pointer (one NULL is refused with
 /// `PARAMETER_ERR` and nothing is written), then writes what `$get` returns (a
 /// `McclResult<[$t; 8]>`, with the group or card index `$ix` in scope). The pointers are
-/// named `p0..p7` (see [`per_axis_setters`]).
+/// named `p0..p7` (see `per_axis_setters!`).
 macro_rules! per_axis_getters {
     ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = $get:expr;)*) => {$(
         $(#[$doc])*
