@@ -38,6 +38,7 @@ use program::RECOVER;
 pub use program::{program, uses_home_sensor, Speed, Step, Then, Until};
 
 use crate::config::AXES;
+use crate::error::{McclError, McclResult};
 use crate::machine::Channel;
 use crate::planner::Axis1D;
 use crate::vendor::consts as c;
@@ -45,6 +46,18 @@ use crate::vendor::SYS_HOME_CONFIG;
 
 /// `MCC_Home` order that leaves a channel out.
 pub const ORDER_SKIP: i32 = 255;
+
+/// The go-home order of each channel of a card, checked: 0..=7 (lower orders first,
+/// equal orders together) or [`ORDER_SKIP`]; anything else is `PARAMETER_ERR`.
+pub fn home_orders(orders: [i32; AXES]) -> McclResult<[i32; AXES]> {
+    if orders
+        .iter()
+        .any(|&o| !(0..=7).contains(&o) && o != ORDER_SKIP)
+    {
+        return Err(McclError::Parameter);
+    }
+    Ok(orders)
+}
 
 /// Go-home status: homing in progress (`MCC_GetGoHomeStatus`).
 pub const HOME_BUSY: i32 = 0;
@@ -584,6 +597,22 @@ impl Homing {
                     a.parked = true;
                 }
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod order_tests {
+    use super::*;
+
+    #[test]
+    fn home_orders_are_0_to_7_or_skip() {
+        let ok = [0, 1, 7, ORDER_SKIP, 3, 3, ORDER_SKIP, 0];
+        assert_eq!(home_orders(ok), Ok(ok));
+        for bad in [8, -1, 254, 256] {
+            let mut o = ok;
+            o[4] = bad;
+            assert_eq!(home_orders(o), Err(McclError::Parameter), "{bad}");
         }
     }
 }

@@ -5,8 +5,10 @@
 use super::group::GroupState;
 use super::shared::Shared;
 use crate::config::AXES;
+use crate::error::{McclError, McclResult};
 use crate::error_record::ErrorRecord;
 use crate::machine::Machine;
+use crate::vendor::consts as c;
 use std::sync::atomic::Ordering;
 
 /// Error record: emergency stop.
@@ -91,7 +93,24 @@ pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
     None
 }
 
+/// A hardware limit switch check mode from `MCC_EnableLimitSwitchCheck`: `HLP_BIDIR`,
+/// `HLP_UNIDIR`, `HLP_BIDIR_GEN_ERR` or `HLP_UNIDIR_GEN_ERR`; anything else is
+/// `PARAMETER_ERR`.
+pub fn limit_check_mode(mode: i32) -> McclResult<i32> {
+    if !(c::HLP_BIDIR..=c::HLP_UNIDIR_GEN_ERR).contains(&mode) {
+        return Err(McclError::Parameter);
+    }
+    Ok(mode)
+}
+
 impl Shared {
+    /// Turns the hardware limit switch check on in `mode` (see [`limit_check_mode`]) or,
+    /// with `None`, off.
+    pub fn set_limit_check(&self, mode: Option<i32>) {
+        self.limit_check
+            .store(mode.unwrap_or(-1), Ordering::Release);
+    }
+
     /// The checks that need the machine: emergency stop (0xF102), hardware limit
     /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
     /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
@@ -134,5 +153,20 @@ impl Shared {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod mode_tests {
+    use super::*;
+
+    #[test]
+    fn limit_check_modes_are_the_four_hlp_values() {
+        // HLP_BIDIR 0, HLP_UNIDIR 1, HLP_BIDIR_GEN_ERR 2, HLP_UNIDIR_GEN_ERR 3.
+        for m in 0..=3 {
+            assert_eq!(limit_check_mode(m), Ok(m));
+        }
+        assert_eq!(limit_check_mode(4), Err(McclError::Parameter));
+        assert_eq!(limit_check_mode(-1), Err(McclError::Parameter));
     }
 }

@@ -12,46 +12,17 @@ use crate::vendor::DWORD;
 use crate::vendor::WORD;
 use std::os::raw::{c_int, c_long, c_longlong};
 
-/// The encoder count of a channel.
-///
-/// # Safety
-/// `plValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCValue(
-    plValue: *mut c_long,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(plValue, || {
-                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
-                    Ok(ch.encoder() as c_long)
-                })
-            })
-        }
-    }
-}
-
-/// The encoder count of a channel, 64-bit.
-///
-/// # Safety
-/// `pllValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCValueEx(
-    pllValue: *mut c_longlong,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pllValue, || {
-                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
-            })
-        }
-    }
+pointer_fns! {
+    /// The encoder count of a channel.
+    MCC_GetENCValue(plValue: c_long; wChannel, wCardIndex) = write_out(plValue, || {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+            Ok(ch.encoder() as c_long)
+        })
+    });
+    /// The encoder count of a channel, 64-bit.
+    MCC_GetENCValueEx(pllValue: c_longlong; wChannel, wCardIndex) = write_out(pllValue, || {
+        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
+    });
 }
 
 /// Sets the encoder count of a channel to `lValue` (|lValue| <= 1e18; the motor does not
@@ -124,18 +95,51 @@ fn with_triggers<R>(
     with_machine(cd, |m, cd| f(&mut m.triggers[cd], &m.cards[cd]))
 }
 
+/// Runs `f` on the triggers of card `wCardIndex` for channel `wChannel` (checked first,
+/// `PARAMETER_ERR`), with the card's channels; `NO_ERR` when `f` succeeds.
+fn set_channel_triggers(
+    wChannel: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(
+        &mut crate::machine::triggers::CardTriggers,
+        usize,
+        &[crate::machine::Channel; 8],
+    ) -> McclResult<()>,
+) -> McclResult<c_int> {
+    let ch = channel(wChannel)?;
+    with_triggers(Card(wCardIndex), |t, chans| f(t, ch.0, chans))?;
+    Ok(c::NO_ERR)
+}
+
+/// What `f` reads from the triggers of card `wCardIndex` for channel `wChannel` (checked
+/// first, `PARAMETER_ERR`).
+fn channel_triggers<R>(
+    wChannel: WORD,
+    wCardIndex: WORD,
+    f: impl FnOnce(&mut crate::machine::triggers::CardTriggers, usize) -> R,
+) -> McclResult<R> {
+    let ch = channel(wChannel)?;
+    with_triggers(Card(wCardIndex), |t, _| Ok(f(t, ch.0)))
+}
+
+/// An encoder count from C (`long`: 32-bit on Windows, 64-bit on Linux), |v| <= 1e18.
+fn enc_count(v: c_long) -> McclResult<i64> {
+    #[allow(clippy::useless_conversion)]
+    crate::config::range::enc_count(i64::from(v))
+}
+
 /// Latch type of a channel: `ENC_TRIG_FIRST` (keep the first event) or `ENC_TRIG_LAST`
 /// (every event). Setting it re-arms the latch.
 #[no_mangle]
 pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let ch = channel(wChannel)?;
+        channel(wChannel)?;
         if wType > c::ENC_TRIG_LAST {
             return Err(McclError::Parameter);
         }
-        with_triggers(Card(wCardIndex), |t, _| {
-            t.set_latch_type(ch.0, wType);
-            Ok(c::NO_ERR)
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
+            t.set_latch_type(ch, wType);
+            Ok(())
         })
     }
 }
@@ -146,76 +150,45 @@ pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: W
 #[no_mangle]
 pub extern "C" fn MCC_SetENCLatchSource(wSource: DWORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let ch = channel(wChannel)?;
+        channel(wChannel)?;
         bits(wSource, 0x00FF_FFFF)?;
-        with_triggers(Card(wCardIndex), |t, _| {
-            t.set_latch_source(ch.0, wSource);
-            Ok(c::NO_ERR)
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
+            t.set_latch_source(ch, wSource);
+            Ok(())
         })
     }
 }
 
-/// The latched count of a channel (0 until something was latched).
-///
-/// # Safety
-/// `plLatchValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCLatchValue(
-    plLatchValue: *mut c_long,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let ch = channel(wChannel)?;
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(plLatchValue, || {
-                with_triggers(Card(wCardIndex), |t, _| Ok(t.latch_value(ch.0) as c_long))
-            })
-        }
-    }
+pointer_fns! {
+    /// The latched count of a channel (0 until something was latched).
+    MCC_GetENCLatchValue(plLatchValue: c_long; wChannel, wCardIndex) = write_out(plLatchValue, || {
+        channel_triggers(wChannel, wCardIndex, |t, ch| t.latch_value(ch) as c_long)
+    });
+    /// 1 when an index pulse of the channel passed since the last read (the read clears it).
+    MCC_GetENCIndexStatus(pwStatus: WORD; wChannel, wCardIndex) = write_out(pwStatus, || {
+        channel_triggers(wChannel, wCardIndex, |t, ch| WORD::from(t.take_index_status(ch)))
+    });
+    /// The armed compare value of a channel (0 when the stock is empty).
+    MCC_GetENCCompValue(lValue: c_long; wChannel, wCardIndex) = write_out(lValue, || {
+        channel_triggers(wChannel, wCardIndex, |t, ch| t.armed_compare(ch) as c_long)
+    });
+    /// How many compare values of the channel are waiting (the armed one included).
+    MCC_GetENCCompStockCount(wCount: WORD; wChannel, wCardIndex) = write_out(wCount, || {
+        channel_triggers(wChannel, wCardIndex, |t, ch| word_count(t.stock_count(ch)))
+    });
 }
 
-fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
-    let ch = channel(wChannel)?;
-    with_triggers(Card(wCardIndex), |t, _| {
-        t.index_enabled[ch.0] = on;
-        Ok(c::NO_ERR)
-    })
-}
-
-/// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
-/// passes.
-#[no_mangle]
-pub extern "C" fn MCC_EnableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { index_trigger(wChannel, wCardIndex, true) }
-}
-
-/// Index pulses no longer call the encoder routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { index_trigger(wChannel, wCardIndex, false) }
-}
-
-/// 1 when an index pulse of the channel passed since the last read (the read clears it).
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCIndexStatus(
-    pwStatus: *mut WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let ch = channel(wChannel)?;
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pwStatus, || {
-                with_triggers(Card(wCardIndex), |t, _| Ok(WORD::from(t.take_index_status(ch.0))))
-            })
-        }
-    }
+on_off! {
+    /// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
+    /// passes.
+    MCC_EnableENCIndexTrigger,
+    /// Index pulses no longer call the encoder routine.
+    MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) = |on| {
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
+            t.index_enabled[ch] = on;
+            Ok(())
+        })
+    };
 }
 
 /// Adds a compare value to the channel's stock: when the count reaches it the encoder
@@ -224,13 +197,9 @@ pub unsafe extern "C" fn MCC_GetENCIndexStatus(
 #[no_mangle]
 pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let ch = channel(wChannel)?;
-        // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
-        #[allow(clippy::useless_conversion)]
-        let v = crate::config::range::enc_count(i64::from(lValue))?;
-        with_triggers(Card(wCardIndex), |t, _| {
-            t.push_compare(ch.0, v).map(|()| c::NO_ERR)
-        })
+        channel(wChannel)?;
+        let v = enc_count(lValue)?;
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| t.push_compare(ch, v))
     }
 }
 
@@ -244,90 +213,32 @@ pub extern "C" fn MCC_SetENCCompValueTab(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        let ch = channel(wChannel)?;
-        #[allow(clippy::useless_conversion)]
-        let (a, b, d) = (
-            crate::config::range::enc_count(i64::from(lStartValue))?,
-            crate::config::range::enc_count(i64::from(lEndValue))?,
-            crate::config::range::enc_count(i64::from(lDeltaValue))?,
-        );
+        channel(wChannel)?;
+        let (a, b, d) = (enc_count(lStartValue)?, enc_count(lEndValue)?, enc_count(lDeltaValue)?);
         let table = CompareTable::new(a, b, d)?;
-        with_triggers(Card(wCardIndex), |t, _| {
-            t.push_compare_table(ch.0, &table).map(|()| c::NO_ERR)
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| t.push_compare_table(ch, &table))
+    }
+}
+
+on_off! {
+    /// The channel's compare stock is active: values fire as the count reaches them.
+    MCC_EnableENCCompTrigger,
+    /// The channel's compare stock stops firing (the values stay).
+    MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) = |on| {
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, chans| {
+            t.set_compare_trigger(ch, on, chans);
+            Ok(())
         })
-    }
-}
-
-/// The armed compare value of a channel (0 when the stock is empty).
-///
-/// # Safety
-/// `lValue` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCCompValue(
-    lValue: *mut c_long,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let ch = channel(wChannel)?;
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(lValue, || {
-                with_triggers(Card(wCardIndex), |t, _| Ok(t.armed_compare(ch.0) as c_long))
-            })
-        }
-    }
-}
-
-/// How many compare values of the channel are waiting (the armed one included).
-///
-/// # Safety
-/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetENCCompStockCount(
-    wCount: *mut WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let ch = channel(wChannel)?;
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(wCount, || {
-                with_triggers(Card(wCardIndex), |t, _| Ok(word_count(t.stock_count(ch.0))))
-            })
-        }
-    }
-}
-
-fn comp_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
-    let ch = channel(wChannel)?;
-    with_triggers(Card(wCardIndex), |t, chans| {
-        t.set_compare_trigger(ch.0, on, chans);
-        Ok(c::NO_ERR)
-    })
-}
-
-/// The channel's compare stock is active: values fire as the count reaches them.
-#[no_mangle]
-pub extern "C" fn MCC_EnableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { comp_trigger(wChannel, wCardIndex, true) }
-}
-
-/// The channel's compare stock stops firing (the values stay).
-#[no_mangle]
-pub extern "C" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { comp_trigger(wChannel, wCardIndex, false) }
+    };
 }
 
 /// Removes every compare value of the channel.
 #[no_mangle]
 pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        let ch = channel(wChannel)?;
-        with_triggers(Card(wCardIndex), |t, _| {
-            t.stock[ch.0].clear();
-            Ok(c::NO_ERR)
+        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
+            t.stock[ch].clear();
+            Ok(())
         })
     }
 }

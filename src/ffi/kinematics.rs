@@ -227,33 +227,43 @@ pub extern "C" fn MCC_Line_V6(
     }
 }
 
-/// 3-D arc from the current point through (x0, y0, z0) to (x1, y1, z1), the orientation
-/// going linearly to (rx, ry, rz) (components outside `dwAxisMask` stay).
-#[no_mangle]
-pub extern "C" fn MCC_Arc_V6(
-    x0: f64,
-    y0: f64,
-    z0: f64,
-    x1: f64,
-    y1: f64,
-    z1: f64,
-    rx: f64,
-    ry: f64,
-    rz: f64,
-    posture: DWORD,
-    wGroupIndex: WORD,
-    dwAxisMask: DWORD,
-) -> c_int {
-    ffi_boundary! {
-        let (via, end, r) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?, finite3([rx, ry, rz])?);
-        let m = super::axis_mask(dwAxisMask)?;
-        queue_v6_curve(wGroupIndex, posture, |ctx| {
-            let (via, end) = (point3(ctx, via), point3(ctx, end));
-            let aux = orientation(ctx, r, Some(m));
-            check_curve(ctx, &[via, end], &aux)?;
-            Path::arc_3pt_xyz(&ctx.from, via, end, Some(aux))
-        })
-    }
+/// Declares the V6 curves through two points:
+/// `$name(x0, y0, z0, x1, y1, z1, rx, ry, rz, posture, wGroupIndex, dwAxisMask)` builds
+/// `$path(from, p1, p2, orientation)` from the current point by way of (x0, y0, z0) and
+/// (x1, y1, z1), the orientation going linearly to (rx, ry, rz) (components outside
+/// `dwAxisMask` stay).
+macro_rules! two_point_curves_v6 {
+    ($($(#[$doc:meta])* $name:ident => $path:path;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            x0: f64, y0: f64, z0: f64,
+            x1: f64, y1: f64, z1: f64,
+            rx: f64, ry: f64, rz: f64,
+            posture: DWORD, wGroupIndex: WORD, dwAxisMask: DWORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let (p1, p2) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?);
+                let r = finite3([rx, ry, rz])?;
+                let m = super::axis_mask(dwAxisMask)?;
+                queue_v6_curve(wGroupIndex, posture, |ctx| {
+                    let (p1, p2) = (point3(ctx, p1), point3(ctx, p2));
+                    let aux = orientation(ctx, r, Some(m));
+                    check_curve(ctx, &[p1, p2], &aux)?;
+                    $path(&ctx.from, p1, p2, Some(aux))
+                })
+            }
+        }
+    )*};
+}
+
+two_point_curves_v6! {
+    /// 3-D arc from the current point through (x0, y0, z0) to (x1, y1, z1), the orientation
+    /// going linearly to (rx, ry, rz) (components outside `dwAxisMask` stay).
+    MCC_Arc_V6 => Path::arc_3pt_xyz;
+    /// Full circle from the current point through (x0, y0, z0) and (x1, y1, z1) back to
+    /// it; the orientation goes linearly to (rx, ry, rz) over the turn.
+    MCC_Circle_V6 => Path::circle_3pt_xyz;
 }
 
 /// Arc of `theta` degrees (> 0 counter-clockwise seen from the tip of the normal) about
@@ -288,35 +298,6 @@ pub extern "C" fn MCC_ArcTheta_V6(
     }
 }
 
-/// Full circle from the current point through (x0, y0, z0) and (x1, y1, z1) back to
-/// it; the orientation goes linearly to (rx, ry, rz) over the turn.
-#[no_mangle]
-pub extern "C" fn MCC_Circle_V6(
-    x0: f64,
-    y0: f64,
-    z0: f64,
-    x1: f64,
-    y1: f64,
-    z1: f64,
-    rx: f64,
-    ry: f64,
-    rz: f64,
-    posture: DWORD,
-    wGroupIndex: WORD,
-    dwAxisMask: DWORD,
-) -> c_int {
-    ffi_boundary! {
-        let (p1, p2, r) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?, finite3([rx, ry, rz])?);
-        let m = super::axis_mask(dwAxisMask)?;
-        queue_v6_curve(wGroupIndex, posture, |ctx| {
-            let (p1, p2) = (point3(ctx, p1), point3(ctx, p2));
-            let aux = orientation(ctx, r, Some(m));
-            check_curve(ctx, &[p1, p2], &aux)?;
-            Path::circle_3pt_xyz(&ctx.from, p1, p2, Some(aux))
-        })
-    }
-}
-
 fn circle_plane(
     plane: Plane,
     c2: [f64; 2],
@@ -325,7 +306,7 @@ fn circle_plane(
     posture: DWORD,
     g: WORD,
 ) -> McclResult<c_int> {
-    let c2 = [finite(c2[0])?, finite(c2[1])?];
+    let c2 = super::motion::finite2(c2)?;
     let r = finite3(r)?;
     let ccw = direction(dir)?;
     queue_v6_curve(g, posture, |ctx| {
@@ -341,50 +322,34 @@ fn circle_plane(
     })
 }
 
-/// Full circle about (cx, cy) in the XY plane (`CIR_CW`/`CIR_CCW` seen from +Z); the
-/// orientation goes linearly to (rx, ry, rz) over the turn.
-#[no_mangle]
-pub extern "C" fn MCC_CircleXY_V6(
-    cx: f64,
-    cy: f64,
-    rx: f64,
-    ry: f64,
-    rz: f64,
-    byCirDir: BYTE,
-    posture: DWORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { circle_plane(Plane::XY, [cx, cy], [rx, ry, rz], byCirDir, posture, wGroupIndex) }
+/// Declares the V6 full circles of one plane: `$name(c0, c1, rx, ry, rz, byCirDir,
+/// posture, wGroupIndex)` circles about `(c0, c1)` of `Plane::$plane`, the orientation
+/// going linearly to (rx, ry, rz) over the turn.
+macro_rules! plane_circles_v6 {
+    ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            $c0: f64, $c1: f64,
+            rx: f64, ry: f64, rz: f64,
+            byCirDir: BYTE, posture: DWORD, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let center = [$c0, $c1];
+                circle_plane(Plane::$plane, center, [rx, ry, rz], byCirDir, posture, wGroupIndex)
+            }
+        }
+    )*};
 }
 
-/// [`MCC_CircleXY_V6`] in the YZ plane about (cy, cz), seen from +X.
-#[no_mangle]
-pub extern "C" fn MCC_CircleYZ_V6(
-    cy: f64,
-    cz: f64,
-    rx: f64,
-    ry: f64,
-    rz: f64,
-    byCirDir: BYTE,
-    posture: DWORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { circle_plane(Plane::YZ, [cy, cz], [rx, ry, rz], byCirDir, posture, wGroupIndex) }
-}
-
-/// [`MCC_CircleXY_V6`] in the ZX plane about (cz, cx), seen from +Y.
-#[no_mangle]
-pub extern "C" fn MCC_CircleZX_V6(
-    cz: f64,
-    cx: f64,
-    rx: f64,
-    ry: f64,
-    rz: f64,
-    byCirDir: BYTE,
-    posture: DWORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { circle_plane(Plane::ZX, [cz, cx], [rx, ry, rz], byCirDir, posture, wGroupIndex) }
+plane_circles_v6! {
+    /// Full circle about (cx, cy) in the XY plane (`CIR_CW`/`CIR_CCW` seen from +Z); the
+    /// orientation goes linearly to (rx, ry, rz) over the turn.
+    MCC_CircleXY_V6(cx, cy) => XY;
+    /// [`MCC_CircleXY_V6`] in the YZ plane about (cy, cz), seen from +X.
+    MCC_CircleYZ_V6(cy, cz) => YZ;
+    /// [`MCC_CircleXY_V6`] in the ZX plane about (cz, cx), seen from +Y.
+    MCC_CircleZX_V6(cz, cx) => ZX;
 }
 
 /// What `MCC_PtP_V6` reads under the group's lock before the forward kinematics.

@@ -3,27 +3,22 @@
 //! Check").
 
 use super::{
-    flag, index, update_group, with_group, with_machine_channel, write_out, write_outs, Card,
-    Channel,
+    flag, index, update_group, with_group, with_machine_channel, write_out, Card, Channel,
 };
-use crate::error::{McclError, McclResult};
+use crate::engine::safety::limit_check_mode;
+use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
 
 /// Turns the hardware limit switch check on: `HLP_BIDIR` (0), `HLP_UNIDIR` (1),
 /// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); rules: docs/simulated-machine.md.
 #[no_mangle]
 pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
     ffi_boundary! {
-        if !(c::HLP_BIDIR..=c::HLP_UNIDIR_GEN_ERR).contains(&nMode) {
-            return Err(McclError::Parameter);
-        }
-        system::active()?
-            .limit_check
-            .store(nMode, Ordering::Release);
+        let mode = limit_check_mode(nMode)?;
+        system::active()?.set_limit_check(Some(mode));
         Ok(c::NO_ERR)
     }
 }
@@ -32,65 +27,30 @@ pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
     ffi_boundary! {
-        system::active()?.limit_check.store(-1, Ordering::Release);
+        system::active()?.set_limit_check(None);
         Ok(c::NO_ERR)
     }
 }
 
-/// Software over-travel check per axis (1 on, 0 off): an axis never goes past its
-/// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
-#[no_mangle]
-pub extern "C" fn MCC_SetOverTravelCheck(
-    nOTCheck0: c_int,
-    nOTCheck1: c_int,
-    nOTCheck2: c_int,
-    nOTCheck3: c_int,
-    nOTCheck4: c_int,
-    nOTCheck5: c_int,
-    nOTCheck6: c_int,
-    nOTCheck7: c_int,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [
-            nOTCheck0, nOTCheck1, nOTCheck2, nOTCheck3, nOTCheck4, nOTCheck5, nOTCheck6, nOTCheck7,
-        ];
-        let mut f = [false; 8];
-        for (o, x) in f.iter_mut().zip(v) {
-            *o = flag(x)?;
-        }
-        update_group(wGroupIndex, |g| g.ot_check = f)
+/// Sets the software over-travel check of group `g` per axis (1 on, 0 off).
+fn set_over_travel_check(v: [c_int; 8], g: WORD) -> McclResult<c_int> {
+    let mut f = [false; 8];
+    for (o, x) in f.iter_mut().zip(v) {
+        *o = flag(x)?;
     }
+    update_group(g, |g| g.ot_check = f)
 }
 
-/// Reads the over-travel check per axis (1 on, 0 off).
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetOverTravelCheck(
-    pnOTCheck0: *mut c_int,
-    pnOTCheck1: *mut c_int,
-    pnOTCheck2: *mut c_int,
-    pnOTCheck3: *mut c_int,
-    pnOTCheck4: *mut c_int,
-    pnOTCheck5: *mut c_int,
-    pnOTCheck6: *mut c_int,
-    pnOTCheck7: *mut c_int,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pnOTCheck0, pnOTCheck1, pnOTCheck2, pnOTCheck3, pnOTCheck4, pnOTCheck5, pnOTCheck6,
-            pnOTCheck7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))
-            })
-        }
-    }
+per_axis_setters! {
+    /// Software over-travel check per axis (1 on, 0 off): an axis never goes past its
+    /// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
+    MCC_SetOverTravelCheck(c_int; wGroupIndex) = |v| set_over_travel_check(v, wGroupIndex);
+}
+
+per_axis_getters! {
+    /// Reads the over-travel check per axis (1 on, 0 off).
+    MCC_GetOverTravelCheck(c_int; wGroupIndex)
+        = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)));
 }
 
 /// A limit switch side from C: 0 (+) or 1 (−).
@@ -98,65 +58,31 @@ fn side(wUpDown: WORD) -> McclResult<usize> {
     index(wUpDown, 2)
 }
 
-/// Writes limit switch `wUpDown` of a channel, as it reads now or as latched.
-///
-/// # Safety
-/// `pwStatus` must be NULL or point to a writable WORD.
-unsafe fn limit_status(
-    pwStatus: *mut WORD,
+/// Limit switch `wUpDown` of a channel, as it reads now or as latched (1 active).
+fn limit_switch(
     wUpDown: WORD,
     wChannel: WORD,
     wCardIndex: WORD,
     latched: bool,
-) -> McclResult<c_int> {
+) -> McclResult<WORD> {
     let side = side(wUpDown)?;
-    // SAFETY: forwarded under this function's contract.
-    unsafe {
-        write_out(pwStatus, || {
-            let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |chan| {
-                Ok(if latched {
-                    chan.latched_limit(side)
-                } else {
-                    chan.limit_switch(side)
-                })
-            })?;
-            Ok(WORD::from(v))
+    let v = with_machine_channel(Channel(wChannel), Card(wCardIndex), |chan| {
+        Ok(if latched {
+            chan.latched_limit(side)
+        } else {
+            chan.limit_switch(side)
         })
-    }
+    })?;
+    Ok(WORD::from(v))
 }
 
-/// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetLimitSwitchStatus(
-    pwStatus: *mut WORD,
-    wUpDown: WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, false) }
-    }
-}
-
-/// Whether the limit switch has been active since the latch was last cleared.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetLatchedLimitSwitchStatus(
-    pwStatus: *mut WORD,
-    wUpDown: WORD,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { limit_status(pwStatus, wUpDown, wChannel, wCardIndex, true) }
-    }
+pointer_fns! {
+    /// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
+    MCC_GetLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
+        = write_out(pwStatus, || limit_switch(wUpDown, wChannel, wCardIndex, false));
+    /// Whether the limit switch has been active since the latch was last cleared.
+    MCC_GetLatchedLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
+        = write_out(pwStatus, || limit_switch(wUpDown, wChannel, wCardIndex, true));
 }
 
 /// Clears the latched limit switch status (it latches again while the switch is active).

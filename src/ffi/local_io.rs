@@ -29,16 +29,11 @@ fn servo(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-/// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
-#[no_mangle]
-pub extern "C" fn MCC_SetServoOn(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { servo(wChannel, wCardIndex, true) }
-}
-
-/// Turns the servo-on output of one channel off.
-#[no_mangle]
-pub extern "C" fn MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { servo(wChannel, wCardIndex, false) }
+on_off! {
+    /// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
+    MCC_SetServoOn,
+    /// Turns the servo-on output of one channel off.
+    MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) = |on| servo(wChannel, wCardIndex, on);
 }
 
 fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
@@ -48,32 +43,18 @@ fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-/// Turns the card's position-ready output on.
-#[no_mangle]
-pub extern "C" fn MCC_EnablePosReady(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { pos_ready(wCardIndex, true) }
+on_off! {
+    /// Turns the card's position-ready output on.
+    MCC_EnablePosReady,
+    /// Turns the card's position-ready output off.
+    MCC_DisablePosReady(wCardIndex: WORD) = |on| pos_ready(wCardIndex, on);
 }
 
-/// Turns the card's position-ready output off.
-#[no_mangle]
-pub extern "C" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { pos_ready(wCardIndex, false) }
-}
-
-/// The emergency-stop input of the card: 1 pressed, 0 released.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetEmgcStopStatus(pwStatus: *mut WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pwStatus, || {
-                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
-            })
-        }
-    }
+pointer_fns! {
+    /// The emergency-stop input of the card: 1 pressed, 0 released.
+    MCC_GetEmgcStopStatus(pwStatus: WORD; wCardIndex) = write_out(pwStatus, || {
+        with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
+    });
 }
 
 fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
@@ -84,16 +65,11 @@ fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     })
 }
 
-/// Turns a channel's LED output on.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedLightOn(Channel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { led(Channel, wCardIndex, true) }
-}
-
-/// Turns a channel's LED output off.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { led(Channel, wCardIndex, false) }
+on_off! {
+    /// Turns a channel's LED output on.
+    MCC_SetLedLightOn,
+    /// Turns a channel's LED output off.
+    MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) = |on| led(Channel, wCardIndex, on);
 }
 
 /// A channel's LED output: 1 on, 0 off (while an LED trigger-out holds it: its trigger
@@ -126,22 +102,13 @@ pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResul
     })
 }
 
-/// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
-#[no_mangle]
-pub extern "C" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FilterClock::Limit, Value, wCardIndex) }
-}
-
-/// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
-#[no_mangle]
-pub extern "C" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FilterClock::Home, Value, wCardIndex) }
-}
-
-/// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
-#[no_mangle]
-pub extern "C" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { filter(FilterClock::Gpio, Value, wCardIndex) }
+value_fns! {
+    /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
+    MCC_SetLimitFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Limit, Value, wCardIndex);
+    /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
+    MCC_SetHomeFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Home, Value, wCardIndex);
+    /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
+    MCC_SetGpioFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Gpio, Value, wCardIndex);
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.
@@ -207,16 +174,12 @@ fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     })
 }
 
-/// The local-input routine is called (`LIOINT`) on the point's trigger.
-#[no_mangle]
-pub extern "C" fn MCC_EnableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { lio_trigger(wPoint, wCardIndex, true) }
-}
-
-/// The point no longer calls the local-input routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { lio_trigger(wPoint, wCardIndex, false) }
+on_off! {
+    /// The local-input routine is called (`LIOINT`) on the point's trigger.
+    MCC_EnableLIOTrigger,
+    /// The point no longer calls the local-input routine.
+    MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD)
+        = |on| lio_trigger(wPoint, wCardIndex, on);
 }
 
 /// Compare sources from C: bit n is the compare of channel n (0..7).
@@ -224,39 +187,57 @@ fn sources(w: WORD) -> McclResult<u16> {
     bits(w, 0xFF)
 }
 
-/// Changes one setting of trigger-out point `wPoint` (0..7) of `kind`.
-fn trig_out(
-    kind: TrigOutKind,
-    wPoint: WORD,
-    wCardIndex: WORD,
-    s: TrigOutSetting,
-) -> McclResult<c_int> {
-    let p = out_point(wPoint)?;
-    with_card_triggers(Card(wCardIndex), |t| {
-        t.set_trig_out(kind, p, s);
-        Ok(c::NO_ERR)
-    })
-}
-
-/// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
-/// (1) or off (0): when a compare of its source fires, the output takes its trigger
-/// value for the trigger period, then returns.
-#[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = TrigOutSetting::Enabled(flag(wEnable)?);
-        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
+/// Before an LED trigger-out setting looks at its arguments: INITIAL_MOTION_ERR before
+/// init whatever they are. A local output's setting checks its arguments first.
+fn trig_out_ready(kind: TrigOutKind) -> McclResult<()> {
+    match kind {
+        TrigOutKind::Led => super::initialised(),
+        TrigOutKind::Local => Ok(()),
     }
 }
 
-/// The value a triggered output takes (1: servo off, 0: servo on, as the examples
-/// manual's §26 uses it).
-#[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutValue(wValue: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = TrigOutSetting::Value(flag(wValue)?);
-        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
-    }
+/// Declares the trigger-out settings of the local output points and the LEDs:
+/// `$name($w, wPoint, wCardIndex)` sets `TrigOutSetting::$setting($parse($w))` of point
+/// `wPoint` (0..7) of `TrigOutKind::$kind`.
+macro_rules! trig_out_settings {
+    ($(
+        $(#[$doc:meta])* $name:ident($w:ident) => $kind:ident, $setting:ident($parse:ident);
+    )*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($w: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+            ffi_boundary! {
+                trig_out_ready(TrigOutKind::$kind)?;
+                let s = TrigOutSetting::$setting($parse($w)?);
+                let p = out_point(wPoint)?;
+                with_card_triggers(Card(wCardIndex), |t| {
+                    t.set_trig_out(TrigOutKind::$kind, p, s);
+                    Ok(c::NO_ERR)
+                })
+            }
+        }
+    )*};
+}
+
+trig_out_settings! {
+    /// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
+    /// (1) or off (0): when a compare of its source fires, the output takes its trigger
+    /// value for the trigger period, then returns.
+    MCC_SetLIOTrigOutEnable(wEnable) => Local, Enabled(flag);
+    /// The value a triggered output takes (1: servo off, 0: servo on, as the examples
+    /// manual's §26 uses it).
+    MCC_SetLIOTrigOutValue(wValue) => Local, Value(flag);
+    /// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
+    MCC_SetLIOTrigOutSource(wSource) => Local, Source(sources);
+    /// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
+    /// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
+    /// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
+    /// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
+    MCC_SetLedTrigOutEnable(wEnable) => Led, Enabled(flag);
+    /// The value a triggered LED shows: 1 lit, 0 dark.
+    MCC_SetLedTrigOutValue(wOutput) => Led, Value(flag);
+    /// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
+    MCC_SetLedTrigOutSource(wSource) => Led, Source(sources);
 }
 
 /// Trigger values of several points at once: bit n of the mask selects point n.
@@ -275,15 +256,6 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
     }
 }
 
-/// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
-#[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = TrigOutSetting::Source(sources(wSource)?);
-        trig_out(TrigOutKind::Local, wPoint, wCardIndex, s)
-    }
-}
-
 /// How long a triggered output or LED holds its value, ns (rounded up to whole ticks).
 #[no_mangle]
 pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
@@ -295,56 +267,11 @@ pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> 
     }
 }
 
-/// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
-/// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
-/// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
-/// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedTrigOutEnable(wEnable: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        super::initialised()?;
-        let s = TrigOutSetting::Enabled(flag(wEnable)?);
-        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
-    }
-}
-
-/// The value a triggered LED shows: 1 lit, 0 dark.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedTrigOutValue(wOutput: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        super::initialised()?;
-        let s = TrigOutSetting::Value(flag(wOutput)?);
-        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
-    }
-}
-
-/// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
-#[no_mangle]
-pub extern "C" fn MCC_SetLedTrigOutSource(wSource: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // Before init: INITIAL_MOTION_ERR whatever the arguments.
-        super::initialised()?;
-        let s = TrigOutSetting::Source(sources(wSource)?);
-        trig_out(TrigOutKind::Led, wPoint, wCardIndex, s)
-    }
-}
-
-/// Compare values waiting on the channels that trigger local outputs.
-///
-/// # Safety
-/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetLIOCompStockCount(wCount: *mut WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(wCount, || {
-                with_card_triggers(Card(wCardIndex), |t| Ok(word_count(t.lio_comp_stock_count())))
-            })
-        }
-    }
+pointer_fns! {
+    /// Compare values waiting on the channels that trigger local outputs.
+    MCC_GetLIOCompStockCount(wCount: WORD; wCardIndex) = write_out(wCount, || {
+        with_card_triggers(Card(wCardIndex), |t| Ok(word_count(t.lio_comp_stock_count())))
+    });
 }
 
 /// Removes the compare values of the channels that trigger local outputs.

@@ -3,6 +3,13 @@
 //! plain `#[no_mangle] pub extern "C" fn` whose body is one `ffi_boundary! { ... }`
 //! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
 //! `ffi_boundary` integration test rejects an exported body that does not enter it.
+//!
+//! A family of entry points with one signature and one body shape (one per axis, plane,
+//! channel kind, on/off pair, ...) is declared once by a `macro_rules!` macro next to it
+//! whose expansion is that literal function; the families several files share are below
+//! (`macro_rules!` macros are not items: rustdoc lists their members).
+//! The C header takes its prototypes from the vendor table, and the generated test
+//! `tests/vendor_prototypes.rs` checks each Rust signature against it at compile time.
 
 /// The panic boundary of an exported function: the block runs as a closure returning
 /// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
@@ -11,6 +18,131 @@ macro_rules! ffi_boundary {
     ($($body:tt)*) => {
         $crate::ffi::guard(|| { $($body)* })
     };
+}
+
+/// Declares pairs of entry points that turn one thing on and off: `$on(params)` and
+/// `$off(params)` (the same parameters) return `$body` with `$flag` true and false.
+macro_rules! on_off {
+    ($(
+        $(#[$on_doc:meta])* $on:ident,
+        $(#[$off_doc:meta])* $off:ident($($p:ident: $t:ty),*) = |$flag:ident| $body:expr;
+    )*) => {$(
+        on_off!(@one $(#[$on_doc])* $on($($p: $t),*) $flag = true => $body);
+        on_off!(@one $(#[$off_doc])* $off($($p: $t),*) $flag = false => $body);
+    )*};
+    (@one
+        $(#[$doc:meta])* $name:ident($($p:ident: $t:ty),*) $flag:ident = $v:literal => $body:expr
+    ) => {
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                let $flag = $v;
+                $body
+            }
+        }
+    };
+}
+
+/// Declares entry points that take a value `$v` of type `$t` (or none) followed by `WORD`
+/// indices `$a...` and return `$body` (a `McclResult<c_int>`): the setters of one card,
+/// channel, set or group. A member is `name(value: T; indices...) = body;` or
+/// `name(indices...) = body;`.
+macro_rules! value_fns {
+    (@fn $(#[$doc:meta])* $name:ident($($v:ident: $t:ty)?) ($($a:ident),+) $body:expr) => {
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            $($v: $t,)?
+            $($a: $crate::vendor::WORD),+
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! { $body }
+        }
+    };
+    () => {};
+    ($(#[$doc:meta])* $name:ident($v:ident: $t:ty; $($a:ident),+) = $body:expr; $($rest:tt)*) => {
+        value_fns!(@fn $(#[$doc])* $name($v: $t) ($($a),+) $body);
+        value_fns!($($rest)*);
+    };
+    ($(#[$doc:meta])* $name:ident($($a:ident),+) = $body:expr; $($rest:tt)*) => {
+        value_fns!(@fn $(#[$doc])* $name() ($($a),+) $body);
+        value_fns!($($rest)*);
+    };
+}
+
+/// Declares entry points whose first parameter is a pointer `$p` to a `$t` (read or
+/// written as each member's doc says) followed by `WORD` indices `$a...`: the body is
+/// `$body`, run in the panic boundary as an unsafe block under the function's contract
+/// (the member's helper checks the pointer, NULL refused with `PARAMETER_ERR`).
+macro_rules! pointer_fns {
+    ($($(#[$doc:meta])* $name:ident($p:ident: $t:ty; $($a:ident),+) = $body:expr;)*) => {$(
+        $(#[$doc])*
+        ///
+        /// # Safety
+        #[doc = concat!(
+            "`", stringify!($p), "` must be NULL (refused with `PARAMETER_ERR`) or point to a",
+            " valid `", stringify!($t), "`."
+        )]
+        #[no_mangle]
+        pub unsafe extern "C" fn $name(
+            $p: *mut $t,
+            $($a: $crate::vendor::WORD),+
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                // SAFETY: forwarded under this function's contract.
+                unsafe { $body }
+            }
+        }
+    )*};
+}
+
+/// Declares entry points that take one value per axis or channel:
+/// `$name(v0, ..., v7: $t, $ix)` gathers the values into the array `$v` and returns
+/// `$body` (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).
+///
+/// The eight parameters are named `v0..v7` here, not by the vendor's names (`wGain0`,
+/// `nPulse0`, ...): a Rust parameter name is not part of the C interface, and the C
+/// header takes every prototype, names included, from the vendor table.
+macro_rules! per_axis_setters {
+    ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            v0: $t, v1: $t, v2: $t, v3: $t, v4: $t, v5: $t, v6: $t, v7: $t,
+            $ix: $crate::vendor::WORD,
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                let $v = [v0, v1, v2, v3, v4, v5, v6, v7];
+                $body
+            }
+        }
+    )*};
+}
+
+/// Declares entry points that write one value per axis or channel:
+/// `$name(p0, ..., p7: *mut $t, $ix)` checks every pointer (one NULL is refused with
+/// `PARAMETER_ERR` and nothing is written), then writes what `$get` returns (a
+/// `McclResult<[$t; 8]>`, with the group or card index `$ix` in scope). The pointers are
+/// named `p0..p7` (see `per_axis_setters!`).
+macro_rules! per_axis_getters {
+    ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = $get:expr;)*) => {$(
+        $(#[$doc])*
+        ///
+        /// # Safety
+        /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+        #[no_mangle]
+        pub unsafe extern "C" fn $name(
+            p0: *mut $t, p1: *mut $t, p2: *mut $t, p3: *mut $t,
+            p4: *mut $t, p5: *mut $t, p6: *mut $t, p7: *mut $t,
+            $ix: $crate::vendor::WORD,
+        ) -> ::std::os::raw::c_int {
+            ffi_boundary! {
+                let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+                // SAFETY: forwarded under this function's contract.
+                unsafe { $crate::ffi::write_outs(p, || $get) }
+            }
+        }
+    )*};
 }
 
 pub mod adc;
@@ -124,6 +256,27 @@ pub struct Card(pub u16);
 /// A channel index as C passed it (`wChannel`), not yet checked.
 #[derive(Debug, Clone, Copy)]
 pub struct Channel(pub u16);
+
+/// Runs setter `f` on the peripherals of card `wCardIndex` (see [`with_card`]); `NO_ERR`.
+pub fn card_do<D: Done>(
+    wCardIndex: u16,
+    f: impl FnOnce(&mut crate::card::Peripherals) -> D,
+) -> McclResult<c_int> {
+    with_card(wCardIndex, |p| f(p).done())?;
+    Ok(crate::vendor::consts::NO_ERR)
+}
+
+/// After init (`INITIAL_MOTION_ERR` whatever the arguments), checks the index `check`
+/// returns, then runs setter `f` with it on the peripherals of card `wCardIndex`; `NO_ERR`.
+pub fn card_do_at<I, D: Done>(
+    wCardIndex: u16,
+    check: impl FnOnce() -> McclResult<I>,
+    f: impl FnOnce(&mut crate::card::Peripherals, I) -> D,
+) -> McclResult<c_int> {
+    initialised()?;
+    let i = check()?;
+    card_do(wCardIndex, |p| f(p, i))
+}
 
 /// Runs `f` on the simulated machine with its lock held and the index of card `cd`.
 /// `INITIAL_MOTION_ERR` before init, then `PARAMETER_ERR` for a bad card.
@@ -268,10 +421,25 @@ pub unsafe fn get_channel_config<T: Copy>(
     wCardIndex: WORD,
     table: impl FnOnce(&crate::config::Config) -> &[[T; crate::config::AXES]; crate::config::CARDS],
 ) -> McclResult<c_int> {
+    // SAFETY: forwarded under this function's contract.
+    unsafe { read_channel_config(p, wChannel, wCardIndex, |c, cd, ch| table(c)[cd.0][ch.0]) }
+}
+
+/// Writes what `get` makes of a channel's configuration to C (card, then channel, then
+/// NULL checked).
+///
+/// # Safety
+/// `p` must be NULL or point to memory writable as a `T`.
+pub unsafe fn read_channel_config<T>(
+    p: *mut T,
+    wChannel: WORD,
+    wCardIndex: WORD,
+    get: impl FnOnce(&crate::config::Config, CardIx, ChannelIx) -> T,
+) -> McclResult<c_int> {
     let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
     // SAFETY: NULL or writable, as this function's contract requires.
     let out = unsafe { Out::new(p) }?;
-    out.write(crate::system::config(|c| table(c)[cd.0][ch.0]));
+    out.write(crate::system::config(|c| get(c, cd, ch)));
     Ok(crate::vendor::consts::NO_ERR)
 }
 
@@ -322,18 +490,9 @@ pub unsafe fn write_outs<T, const N: usize>(
     Ok(crate::vendor::consts::NO_ERR)
 }
 
-/// Writes an array of running group `g`'s published snapshot (no engine lock; see
-/// `Shared::snapshot`) to its `N` outputs, checked first.
-///
-/// # Safety
-/// As [`write_outs`].
-pub unsafe fn snapshot_outs<T, const N: usize>(
-    p: [*mut T; N],
-    g: u16,
-    pick: impl FnOnce(crate::engine::snapshot::GroupSnapshot) -> [T; N],
-) -> McclResult<c_int> {
-    // SAFETY: forwarded under this function's contract.
-    unsafe { write_outs(p, || Ok(pick(crate::system::active()?.snapshot(g)?))) }
+/// The published snapshot of running group `g` (no engine lock; see `Shared::snapshot`).
+pub fn group_snapshot(g: u16) -> McclResult<crate::engine::snapshot::GroupSnapshot> {
+    crate::system::active()?.snapshot(g)
 }
 
 /// Writes `N` results through outputs made by [`Out::each`].

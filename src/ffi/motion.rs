@@ -2,10 +2,10 @@
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
 use super::{
-    axis_mask, finite, finite8, queue, queue_curve, shape, shape_char, snapshot_outs, with_group,
+    axis_mask, finite, finite8, group_snapshot, queue, queue_curve, shape, shape_char, with_group,
 };
 use crate::error::{McclError, McclResult};
-use crate::planner::{Path, Plane};
+use crate::planner::{Axes, Path, Plane};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{BYTE, DWORD, WORD};
@@ -28,91 +28,96 @@ pub(super) fn feed_speed(v: f64) -> McclResult<f64> {
     Ok(system::config(|c| c.feed_speed(v)))
 }
 
-/// Acceleration shape of general motion: 'T' (trapezoid) or 'S' (S-curve).
-#[no_mangle]
-pub extern "C" fn MCC_SetAccType(cAccType: c_char, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = shape(cAccType)?;
-        super::update_group(wGroupIndex, |g| g.settings.acc = s)
-    }
+/// Declares setters of a group's motion settings: `$name(value, wGroupIndex) -> int`
+/// checks the value with `$check` (an error leaves the group unchanged) and stores the
+/// result in `settings.$field`.
+macro_rules! settings_setters {
+    ($($(#[$doc:meta])* $name:ident($arg:ident: $ty:ty) = $check:expr => $field:ident;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($arg: $ty, wGroupIndex: WORD) -> c_int {
+            ffi_boundary! {
+                let v = $check($arg)?;
+                super::update_group(wGroupIndex, |g| g.settings.$field = v)
+            }
+        }
+    )*};
 }
 
-/// The acceleration shape as its character code ('T' = 84, 'S' = 83).
-#[no_mangle]
-pub extern "C" fn MCC_GetAccType(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_group(wGroupIndex, |g| {
-            Ok(c_int::from(shape_char(g.settings.acc) as u8))
-        })
-    }
+/// Declares setters of a group's speeds that return the value now in effect:
+/// `$name(value, wGroupIndex) -> double` checks the value with `$check` and stores it in
+/// `settings.$field`.
+macro_rules! speed_setters {
+    ($($(#[$doc:meta])* $name:ident($arg:ident) = $check:expr => $field:ident;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($arg: f64, wGroupIndex: WORD) -> f64 {
+            ffi_boundary! {
+                let v = $check($arg)?;
+                with_group(wGroupIndex, |g| {
+                    g.settings.$field = v;
+                    Ok(v)
+                })
+            }
+        }
+    )*};
 }
 
-/// Deceleration shape of general motion: 'T' or 'S'.
-#[no_mangle]
-pub extern "C" fn MCC_SetDecType(cDecType: c_char, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let s = shape(cDecType)?;
-        super::update_group(wGroupIndex, |g| g.settings.dec = s)
-    }
+/// Declares getters of a group's motion settings: `$name(wGroupIndex) -> $ret` returns
+/// `$get` evaluated with `$s` bound to the group's settings.
+macro_rules! settings_getters {
+    ($($(#[$doc:meta])* $name:ident -> $ret:ty = |$s:ident| $get:expr;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(wGroupIndex: WORD) -> $ret {
+            ffi_boundary! {
+                with_group(wGroupIndex, |g| {
+                    let $s = &g.settings;
+                    Ok($get)
+                })
+            }
+        }
+    )*};
 }
 
-/// The deceleration shape as its character code.
-#[no_mangle]
-pub extern "C" fn MCC_GetDecType(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        with_group(wGroupIndex, |g| {
-            Ok(c_int::from(shape_char(g.settings.dec) as u8))
-        })
-    }
+/// The ratio of point-to-point speed: a percentage in (0, 100].
+fn ptp_ratio(r: f64) -> McclResult<f64> {
+    crate::config::range::percent(r, 100.0)
 }
 
-/// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
-#[no_mangle]
-pub extern "C" fn MCC_SetAccTime(dfAccTime: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let t = time_ms(dfAccTime)?;
-        super::update_group(wGroupIndex, |g| g.settings.acc_ms = t)
-    }
+settings_setters! {
+    /// Acceleration shape of general motion: 'T' (trapezoid) or 'S' (S-curve).
+    MCC_SetAccType(cAccType: c_char) = shape => acc;
+    /// Deceleration shape of general motion: 'T' or 'S'.
+    MCC_SetDecType(cDecType: c_char) = shape => dec;
+    /// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
+    MCC_SetAccTime(dfAccTime: f64) = time_ms => acc_ms;
+    /// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300).
+    MCC_SetDecTime(dfDecTime: f64) = time_ms => dec_ms;
 }
 
-/// The acceleration time, ms.
-#[no_mangle]
-pub extern "C" fn MCC_GetAccTime(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.acc_ms)) }
+speed_setters! {
+    /// Feed speed of following general motion, UU/s (1e-6..=1e9). A speed above
+    /// `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed speed now in effect.
+    MCC_SetFeedSpeed(dfFeedSpeed) = feed_speed => feed;
+    /// Point-to-point speed ratio, percent of each axis's maximum safe speed
+    /// (0.01 <= r <= 100). Returns the ratio now in effect.
+    MCC_SetPtPSpeed(dfRatio) = ptp_ratio => ptp_ratio;
 }
 
-/// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300).
-#[no_mangle]
-pub extern "C" fn MCC_SetDecTime(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        let t = time_ms(dfDecTime)?;
-        super::update_group(wGroupIndex, |g| g.settings.dec_ms = t)
-    }
-}
-
-/// The deceleration time, ms.
-#[no_mangle]
-pub extern "C" fn MCC_GetDecTime(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.dec_ms)) }
-}
-
-/// Feed speed of following general motion, UU/s (1e-6..=1e9). A speed above
-/// `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed speed now in effect.
-#[no_mangle]
-pub extern "C" fn MCC_SetFeedSpeed(dfFeedSpeed: f64, wGroupIndex: WORD) -> f64 {
-    ffi_boundary! {
-        let v = feed_speed(dfFeedSpeed)?;
-        with_group(wGroupIndex, |g| {
-            g.settings.feed = v;
-            Ok(v)
-        })
-    }
-}
-
-/// The feed speed of following general motion, UU/s.
-#[no_mangle]
-pub extern "C" fn MCC_GetFeedSpeed(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.feed)) }
+settings_getters! {
+    /// The acceleration shape as its character code ('T' = 84, 'S' = 83).
+    MCC_GetAccType -> c_int = |s| c_int::from(shape_char(s.acc) as u8);
+    /// The deceleration shape as its character code.
+    MCC_GetDecType -> c_int = |s| c_int::from(shape_char(s.dec) as u8);
+    /// The acceleration time, ms.
+    MCC_GetAccTime -> f64 = |s| s.acc_ms;
+    /// The deceleration time, ms.
+    MCC_GetDecTime -> f64 = |s| s.dec_ms;
+    /// The feed speed of following general motion, UU/s.
+    MCC_GetFeedSpeed -> f64 = |s| s.feed;
+    /// The point-to-point speed ratio, percent.
+    MCC_GetPtPSpeed -> f64 = |s| s.ptp_ratio;
 }
 
 /// The current tangential speed (UU/s): X/Y/Z path speed, or the fastest aux axis.
@@ -121,48 +126,10 @@ pub extern "C" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
     ffi_boundary! { Ok(system::active()?.snapshot(wGroupIndex)?.path_speed) }
 }
 
-/// The current speed of every axis, UU/s (signed).
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetSpeed(
-    pdfVel0: *mut f64,
-    pdfVel1: *mut f64,
-    pdfVel2: *mut f64,
-    pdfVel3: *mut f64,
-    pdfVel4: *mut f64,
-    pdfVel5: *mut f64,
-    pdfVel6: *mut f64,
-    pdfVel7: *mut f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pdfVel0, pdfVel1, pdfVel2, pdfVel3, pdfVel4, pdfVel5, pdfVel6, pdfVel7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe { snapshot_outs(p, wGroupIndex, |s| s.vel) }
-    }
-}
-
-/// Point-to-point speed ratio, percent of each axis's maximum safe speed
-/// (0.01 <= r <= 100). Returns the ratio now in effect.
-#[no_mangle]
-pub extern "C" fn MCC_SetPtPSpeed(dfRatio: f64, wGroupIndex: WORD) -> f64 {
-    ffi_boundary! {
-        let r = crate::config::range::percent(dfRatio, 100.0)?;
-        with_group(wGroupIndex, |g| {
-            g.settings.ptp_ratio = r;
-            Ok(r)
-        })
-    }
-}
-
-/// The point-to-point speed ratio, percent.
-#[no_mangle]
-pub extern "C" fn MCC_GetPtPSpeed(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.ptp_ratio)) }
+per_axis_getters! {
+    /// The current speed of every axis, UU/s (signed).
+    MCC_GetSpeed(f64; wGroupIndex)
+        = group_snapshot(wGroupIndex).map(|s| s.vel);
 }
 
 fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
@@ -173,97 +140,10 @@ fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
     })
 }
 
-/// Point-to-point motion: every axis in the mask runs its own profile at the PtP ratio;
-/// axes start together and need not arrive together. Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_PtP(
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-    dwAxisMask: DWORD,
-) -> c_int {
-    ffi_boundary! { ptp(
-        [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
-        wGroupIndex,
-        dwAxisMask,
-        false,
-    ) }
-}
-
-/// Synchronised point-to-point motion: all axes start and end together, paced by the
-/// slowest. Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_SyncPtP(
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-    dwAxisMask: DWORD,
-) -> c_int {
-    ffi_boundary! { ptp(
-        [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
-        wGroupIndex,
-        dwAxisMask,
-        true,
-    ) }
-}
-
 fn one(axis: usize, v: f64) -> [f64; 8] {
     let mut a = [0.0; 8];
     a[axis] = v;
     a
-}
-
-/// Point-to-point motion of X alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPX(dfX: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(0, dfX), wGroupIndex, c::IMP_AXIS_X, false) }
-}
-/// Point-to-point motion of Y alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPY(dfY: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y, false) }
-}
-/// Point-to-point motion of Z alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPZ(dfZ: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z, false) }
-}
-/// Point-to-point motion of U alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPU(dfU: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(3, dfU), wGroupIndex, c::IMP_AXIS_U, false) }
-}
-/// Point-to-point motion of V alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPV(dfV: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(4, dfV), wGroupIndex, c::IMP_AXIS_V, false) }
-}
-/// Point-to-point motion of W alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPW(dfW: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(5, dfW), wGroupIndex, c::IMP_AXIS_W, false) }
-}
-/// Point-to-point motion of A alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPA(dfA: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(6, dfA), wGroupIndex, c::IMP_AXIS_A, false) }
-}
-/// Point-to-point motion of B alone.
-#[no_mangle]
-pub extern "C" fn MCC_PtPB(dfB: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { ptp(one(7, dfB), wGroupIndex, c::IMP_AXIS_B, false) }
 }
 
 fn line(args: [f64; 8], g: WORD, m: DWORD) -> McclResult<c_int> {
@@ -272,67 +152,91 @@ fn line(args: [f64; 8], g: WORD, m: DWORD) -> McclResult<c_int> {
     queue(g, |ctx| ctx.line(ctx.resolve(&args, m)))
 }
 
-/// Linear motion of the axes in the mask at the feed speed (only X/Y/Z count for the
-/// path speed; U..B start and end with them). Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_Line(
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-    dwAxisMask: DWORD,
-) -> c_int {
-    ffi_boundary! { line(
-        [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
-        wGroupIndex,
-        dwAxisMask,
-    ) }
+/// Declares the motions of up to eight axes: `$name(dfX0..dfX7, wGroupIndex, dwAxisMask)`
+/// calls `$f(positions, group, mask, $extra...)`, which checks and queues the command and
+/// returns its index.
+macro_rules! axes_motions {
+    ($($(#[$doc:meta])* $name:ident => $f:ident($($extra:expr),*);)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            dfX0: f64, dfX1: f64, dfX2: f64, dfX3: f64,
+            dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
+            wGroupIndex: WORD, dwAxisMask: DWORD,
+        ) -> c_int {
+            ffi_boundary! {
+                $f(
+                    [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
+                    wGroupIndex,
+                    dwAxisMask,
+                    $($extra),*
+                )
+            }
+        }
+    )*};
 }
 
-/// Linear motion of X alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineX(dfX: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(0, dfX), wGroupIndex, c::IMP_AXIS_X) }
+/// Declares the motions of one axis (the obsolete one-axis forms):
+/// `$name($arg, wGroupIndex)` calls `$f` with `$arg` at index `$axis`, the axis's mask bit
+/// `$mask` and `$extra...`.
+macro_rules! axis_motions {
+    ($(
+        $(#[$doc:meta])*
+        $name:ident($arg:ident) => $f:ident($axis:expr, $mask:ident $(, $extra:expr)*);
+    )*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($arg: f64, wGroupIndex: WORD) -> c_int {
+            ffi_boundary! { $f(one($axis, $arg), wGroupIndex, c::$mask $(, $extra)*) }
+        }
+    )*};
 }
-/// Linear motion of Y alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineY(dfY: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y) }
+
+axes_motions! {
+    /// Point-to-point motion: every axis in the mask runs its own profile at the PtP ratio;
+    /// axes start together and need not arrive together. Returns the command index.
+    MCC_PtP => ptp(false);
+    /// Synchronised point-to-point motion: all axes start and end together, paced by the
+    /// slowest. Returns the command index.
+    MCC_SyncPtP => ptp(true);
+    /// Linear motion of the axes in the mask at the feed speed (only X/Y/Z count for the
+    /// path speed; U..B start and end with them). Returns the command index.
+    MCC_Line => line();
 }
-/// Linear motion of Z alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineZ(dfZ: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z) }
-}
-/// Linear motion of U alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineU(dfU: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(3, dfU), wGroupIndex, c::IMP_AXIS_U) }
-}
-/// Linear motion of V alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineV(dfV: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(4, dfV), wGroupIndex, c::IMP_AXIS_V) }
-}
-/// Linear motion of W alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineW(dfW: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(5, dfW), wGroupIndex, c::IMP_AXIS_W) }
-}
-/// Linear motion of A alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineA(dfA: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(6, dfA), wGroupIndex, c::IMP_AXIS_A) }
-}
-/// Linear motion of B alone (obsolete form).
-#[no_mangle]
-pub extern "C" fn MCC_LineB(dfB: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { line(one(7, dfB), wGroupIndex, c::IMP_AXIS_B) }
+
+axis_motions! {
+    /// Point-to-point motion of X alone.
+    MCC_PtPX(dfX) => ptp(0, IMP_AXIS_X, false);
+    /// Point-to-point motion of Y alone.
+    MCC_PtPY(dfY) => ptp(1, IMP_AXIS_Y, false);
+    /// Point-to-point motion of Z alone.
+    MCC_PtPZ(dfZ) => ptp(2, IMP_AXIS_Z, false);
+    /// Point-to-point motion of U alone.
+    MCC_PtPU(dfU) => ptp(3, IMP_AXIS_U, false);
+    /// Point-to-point motion of V alone.
+    MCC_PtPV(dfV) => ptp(4, IMP_AXIS_V, false);
+    /// Point-to-point motion of W alone.
+    MCC_PtPW(dfW) => ptp(5, IMP_AXIS_W, false);
+    /// Point-to-point motion of A alone.
+    MCC_PtPA(dfA) => ptp(6, IMP_AXIS_A, false);
+    /// Point-to-point motion of B alone.
+    MCC_PtPB(dfB) => ptp(7, IMP_AXIS_B, false);
+    /// Linear motion of X alone (obsolete form).
+    MCC_LineX(dfX) => line(0, IMP_AXIS_X);
+    /// Linear motion of Y alone (obsolete form).
+    MCC_LineY(dfY) => line(1, IMP_AXIS_Y);
+    /// Linear motion of Z alone (obsolete form).
+    MCC_LineZ(dfZ) => line(2, IMP_AXIS_Z);
+    /// Linear motion of U alone (obsolete form).
+    MCC_LineU(dfU) => line(3, IMP_AXIS_U);
+    /// Linear motion of V alone (obsolete form).
+    MCC_LineV(dfV) => line(4, IMP_AXIS_V);
+    /// Linear motion of W alone (obsolete form).
+    MCC_LineW(dfW) => line(5, IMP_AXIS_W);
+    /// Linear motion of A alone (obsolete form).
+    MCC_LineA(dfA) => line(6, IMP_AXIS_A);
+    /// Linear motion of B alone (obsolete form).
+    MCC_LineB(dfB) => line(7, IMP_AXIS_B);
 }
 
 /// Checks plane points (on `plane`'s two axes) and aux ends (U..B) against the position
@@ -354,6 +258,44 @@ fn check_plane(
 fn aux5(v: [f64; 5]) -> McclResult<[f64; 5]> {
     v.iter().try_for_each(|&x| finite(x).map(|_| ()))?;
     Ok(v)
+}
+
+/// A point of a plane from C: both coordinates finite.
+pub(super) fn finite2(v: [f64; 2]) -> McclResult<[f64; 2]> {
+    Ok([finite(v[0])?, finite(v[1])?])
+}
+
+/// A curve about a center `c` of a plane (arc by an angle, circle, helix, cone), with
+/// the U..B ends `aux` moving linearly along, as C passed them.
+#[derive(Clone, Copy)]
+pub(super) struct About {
+    pub plane: Plane,
+    pub c: [f64; 2],
+    pub aux: Option<[f64; 5]>,
+}
+
+/// Queues the curve `build` makes about `at` (`helix`: reported as a helix): the center
+/// and the ends are checked finite, resolved against the group (absolute or relative)
+/// and checked against the position range before `build` runs with them.
+pub(super) fn queue_about(
+    at: About,
+    helix: bool,
+    g: WORD,
+    build: impl FnOnce(
+        &crate::engine::command::Ctx<'_>,
+        [f64; 2],
+        Option<[f64; 5]>,
+    ) -> Result<Path, crate::planner::PlanError>,
+) -> McclResult<c_int> {
+    let cxy = finite2(at.c)?;
+    let aux = at.aux.map(aux5).transpose()?;
+    let plan = |ctx: &crate::engine::command::Ctx<'_>| {
+        let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
+        let c = ctx.resolve_plane(at.plane, cxy);
+        check_plane(ctx, at.plane, &[c], aux)?;
+        build(ctx, c, aux)
+    };
+    queue_curve(g, plan, helix)
 }
 
 fn arc(
@@ -380,109 +322,45 @@ fn arc(
     )
 }
 
-/// Arc in the XY plane from the current point through (dfRX0, dfRX1) to (dfX0, dfX1).
-#[no_mangle]
-pub extern "C" fn MCC_ArcXY(
-    dfRX0: f64,
-    dfRX1: f64,
-    dfX0: f64,
-    dfX1: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc(Plane::XY, [dfRX0, dfRX1], [dfX0, dfX1], None, wGroupIndex) }
+/// Declares the three-point arcs of one plane, each with its `_Aux` form:
+/// `$name(r0, r1, e0, e1, wGroupIndex)` runs from the current point through `(r0, r1)` to
+/// `(e0, e1)` on `Plane::$plane`; `$aux` takes U..B ends (`dfX3..dfX7`) too, which move
+/// linearly along.
+macro_rules! plane_arcs {
+    ($(
+        $(#[$doc:meta])*
+        $name:ident, $aux:ident($r0:ident, $r1:ident, $e0:ident, $e1:ident) => $plane:ident;
+    )*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            $r0: f64, $r1: f64, $e0: f64, $e1: f64, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! { arc(Plane::$plane, [$r0, $r1], [$e0, $e1], None, wGroupIndex) }
+        }
+
+        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
+        #[no_mangle]
+        pub extern "C" fn $aux(
+            $r0: f64, $r1: f64, $e0: f64, $e1: f64,
+            dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
+            wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+                arc(Plane::$plane, [$r0, $r1], [$e0, $e1], aux, wGroupIndex)
+            }
+        }
+    )*};
 }
 
-/// Arc in the YZ plane through (dfRX1, dfRX2) to (dfX1, dfX2).
-#[no_mangle]
-pub extern "C" fn MCC_ArcYZ(
-    dfRX1: f64,
-    dfRX2: f64,
-    dfX1: f64,
-    dfX2: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc(Plane::YZ, [dfRX1, dfRX2], [dfX1, dfX2], None, wGroupIndex) }
-}
-
-/// Arc in the ZX plane through (dfRX2, dfRX0) to (dfX2, dfX0).
-#[no_mangle]
-pub extern "C" fn MCC_ArcZX(
-    dfRX2: f64,
-    dfRX0: f64,
-    dfX2: f64,
-    dfX0: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc(Plane::ZX, [dfRX2, dfRX0], [dfX2, dfX0], None, wGroupIndex) }
-}
-
-/// [`MCC_ArcXY`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_ArcXY_Aux(
-    dfRX0: f64,
-    dfRX1: f64,
-    dfX0: f64,
-    dfX1: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc(
-        Plane::XY,
-        [dfRX0, dfRX1],
-        [dfX0, dfX1],
-        Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
-        wGroupIndex,
-    ) }
-}
-
-/// [`MCC_ArcYZ`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_ArcYZ_Aux(
-    dfRX1: f64,
-    dfRX2: f64,
-    dfX1: f64,
-    dfX2: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc(
-        Plane::YZ,
-        [dfRX1, dfRX2],
-        [dfX1, dfX2],
-        Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
-        wGroupIndex,
-    ) }
-}
-
-/// [`MCC_ArcZX`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_ArcZX_Aux(
-    dfRX2: f64,
-    dfRX0: f64,
-    dfX2: f64,
-    dfX0: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc(
-        Plane::ZX,
-        [dfRX2, dfRX0],
-        [dfX2, dfX0],
-        Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
-        wGroupIndex,
-    ) }
+plane_arcs! {
+    /// Arc in the XY plane from the current point through (dfRX0, dfRX1) to (dfX0, dfX1).
+    MCC_ArcXY, MCC_ArcXY_Aux(dfRX0, dfRX1, dfX0, dfX1) => XY;
+    /// Arc in the YZ plane through (dfRX1, dfRX2) to (dfX1, dfX2).
+    MCC_ArcYZ, MCC_ArcYZ_Aux(dfRX1, dfRX2, dfX1, dfX2) => YZ;
+    /// Arc in the ZX plane through (dfRX2, dfRX0) to (dfX2, dfX0).
+    MCC_ArcZX, MCC_ArcZX_Aux(dfRX2, dfRX0, dfX2, dfX0) => ZX;
 }
 
 fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResult<c_int> {
@@ -505,396 +383,251 @@ fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResu
     )
 }
 
-/// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
-#[no_mangle]
-pub extern "C" fn MCC_ArcXYZ(
-    dfRX0: f64,
-    dfRX1: f64,
-    dfRX2: f64,
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
+/// Declares the 3-D arc `$name(dfRX0..2, dfX0..2, wGroupIndex)` from the current point
+/// through (dfRX0..2) to (dfX0..2), and its `_Aux` form `$aux`, which takes U..B ends
+/// (`dfX3..dfX7`) too.
+macro_rules! arcs_xyz {
+    ($(#[$doc:meta])* $name:ident, $aux:ident) => {
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
+        }
+
+        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
+        #[no_mangle]
+        pub extern "C" fn $aux(
+            dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64,
+            dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
+            wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+                arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], aux, wGroupIndex)
+            }
+        }
+    };
 }
 
-/// [`MCC_ArcXYZ`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_ArcXYZ_Aux(
-    dfRX0: f64,
-    dfRX1: f64,
-    dfRX2: f64,
-    dfX0: f64,
-    dfX1: f64,
-    dfX2: f64,
-    dfX3: f64,
-    dfX4: f64,
-    dfX5: f64,
-    dfX6: f64,
-    dfX7: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { arc_xyz(
-        [dfRX0, dfRX1, dfRX2],
-        [dfX0, dfX1, dfX2],
-        Some([dfX3, dfX4, dfX5, dfX6, dfX7]),
-        wGroupIndex,
-    ) }
+arcs_xyz! {
+    /// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
+    MCC_ArcXYZ, MCC_ArcXYZ_Aux
 }
 
 fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_int> {
-    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
     let theta = finite(theta)?;
-    queue_curve(
-        g,
-        |ctx| {
-            let c = ctx.resolve_plane(plane, cxy);
-            check_plane(ctx, plane, &[c], None)?;
-            Path::arc_theta(plane, &ctx.from, c, theta)
-        },
-        false,
-    )
+    let at = About {
+        plane,
+        c: cxy,
+        aux: None,
+    };
+    queue_about(at, false, g, |ctx, c, _| {
+        Path::arc_theta(plane, &ctx.from, c, theta)
+    })
 }
 
-/// Arc around the center (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise seen
-/// from +Z).
-#[no_mangle]
-pub extern "C" fn MCC_ArcThetaXY(dfCX: f64, dfCY: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { arc_theta(Plane::XY, [dfCX, dfCY], dfTheta, wGroupIndex) }
+/// Declares the arcs by an angle of one plane: `$name(c0, c1, dfTheta, wGroupIndex)` turns
+/// around the center `(c0, c1)` of `Plane::$plane` by dfTheta degrees.
+macro_rules! plane_arcs_theta {
+    ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($c0: f64, $c1: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
+            ffi_boundary! { arc_theta(Plane::$plane, [$c0, $c1], dfTheta, wGroupIndex) }
+        }
+    )*};
 }
 
-/// Arc around (dfCY, dfCZ) by dfTheta degrees (> 0 counter-clockwise seen from +X).
-#[no_mangle]
-pub extern "C" fn MCC_ArcThetaYZ(dfCY: f64, dfCZ: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { arc_theta(Plane::YZ, [dfCY, dfCZ], dfTheta, wGroupIndex) }
+plane_arcs_theta! {
+    /// Arc around the center (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise seen
+    /// from +Z).
+    MCC_ArcThetaXY(dfCX, dfCY) => XY;
+    /// Arc around (dfCY, dfCZ) by dfTheta degrees (> 0 counter-clockwise seen from +X).
+    MCC_ArcThetaYZ(dfCY, dfCZ) => YZ;
+    /// Arc around (dfCZ, dfCX) by dfTheta degrees (> 0 counter-clockwise seen from +Y).
+    MCC_ArcThetaZX(dfCZ, dfCX) => ZX;
 }
 
-/// Arc around (dfCZ, dfCX) by dfTheta degrees (> 0 counter-clockwise seen from +Y).
-#[no_mangle]
-pub extern "C" fn MCC_ArcThetaZX(dfCZ: f64, dfCX: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { arc_theta(Plane::ZX, [dfCZ, dfCX], dfTheta, wGroupIndex) }
-}
-
-fn circle(
-    plane: Plane,
-    cxy: [f64; 2],
-    aux: Option<[f64; 5]>,
-    dir: BYTE,
-    g: WORD,
-) -> McclResult<c_int> {
-    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
+fn circle(at: About, dir: BYTE, g: WORD) -> McclResult<c_int> {
     let ccw = direction(dir)?;
-    let aux = aux.map(aux5).transpose()?;
-    queue_curve(
-        g,
-        |ctx| {
-            let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-            let c = ctx.resolve_plane(plane, cxy);
-            check_plane(ctx, plane, &[c], aux)?;
-            Path::circle(plane, &ctx.from, c, ccw, aux)
-        },
-        false,
-    )
+    queue_about(at, false, g, |ctx, c, aux| {
+        Path::circle(at.plane, &ctx.from, c, ccw, aux)
+    })
 }
 
-/// Full circle around (dfCX, dfCY) in the XY plane, `CIR_CW` or `CIR_CCW` seen from +Z.
-#[no_mangle]
-pub extern "C" fn MCC_CircleXY(dfCX: f64, dfCY: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { circle(Plane::XY, [dfCX, dfCY], None, byCirDir, wGroupIndex) }
+/// Declares the full circles of one plane, each with its `_Aux` form:
+/// `$name(c0, c1, byCirDir, wGroupIndex)` circles around `(c0, c1)` of `Plane::$plane`,
+/// `CIR_CW` or `CIR_CCW`; `$aux` takes U..B ends (`dfU..dfB`) too, which move linearly
+/// along.
+macro_rules! plane_circles {
+    ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name($c0: f64, $c1: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
+            ffi_boundary! {
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                circle(at, byCirDir, wGroupIndex)
+            }
+        }
+
+        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
+        #[no_mangle]
+        pub extern "C" fn $aux(
+            $c0: f64, $c1: f64,
+            dfU: f64, dfV: f64, dfW: f64, dfA: f64, dfB: f64,
+            byCirDir: BYTE, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+                circle(About { plane: Plane::$plane, c: [$c0, $c1], aux }, byCirDir, wGroupIndex)
+            }
+        }
+    )*};
 }
 
-/// Full circle around (dfCY, dfCZ) in the YZ plane, seen from +X.
-#[no_mangle]
-pub extern "C" fn MCC_CircleYZ(dfCY: f64, dfCZ: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { circle(Plane::YZ, [dfCY, dfCZ], None, byCirDir, wGroupIndex) }
+plane_circles! {
+    /// Full circle around (dfCX, dfCY) in the XY plane, `CIR_CW` or `CIR_CCW` seen from +Z.
+    MCC_CircleXY, MCC_CircleXY_Aux(dfCX, dfCY) => XY;
+    /// Full circle around (dfCY, dfCZ) in the YZ plane, seen from +X.
+    MCC_CircleYZ, MCC_CircleYZ_Aux(dfCY, dfCZ) => YZ;
+    /// Full circle around (dfCZ, dfCX) in the ZX plane, seen from +Y.
+    MCC_CircleZX, MCC_CircleZX_Aux(dfCZ, dfCX) => ZX;
 }
 
-/// Full circle around (dfCZ, dfCX) in the ZX plane, seen from +Y.
-#[no_mangle]
-pub extern "C" fn MCC_CircleZX(dfCZ: f64, dfCX: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { circle(Plane::ZX, [dfCZ, dfCX], None, byCirDir, wGroupIndex) }
-}
-
-/// [`MCC_CircleXY`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_CircleXY_Aux(
-    dfCX: f64,
-    dfCY: f64,
-    dfU: f64,
-    dfV: f64,
-    dfW: f64,
-    dfA: f64,
-    dfB: f64,
-    byCirDir: BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { circle(
-        Plane::XY,
-        [dfCX, dfCY],
-        Some([dfU, dfV, dfW, dfA, dfB]),
-        byCirDir,
-        wGroupIndex,
-    ) }
-}
-
-/// [`MCC_CircleYZ`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_CircleYZ_Aux(
-    dfCY: f64,
-    dfCZ: f64,
-    dfU: f64,
-    dfV: f64,
-    dfW: f64,
-    dfA: f64,
-    dfB: f64,
-    byCirDir: BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { circle(
-        Plane::YZ,
-        [dfCY, dfCZ],
-        Some([dfU, dfV, dfW, dfA, dfB]),
-        byCirDir,
-        wGroupIndex,
-    ) }
-}
-
-/// [`MCC_CircleZX`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_CircleZX_Aux(
-    dfCZ: f64,
-    dfCX: f64,
-    dfU: f64,
-    dfV: f64,
-    dfW: f64,
-    dfA: f64,
-    dfB: f64,
-    byCirDir: BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { circle(
-        Plane::ZX,
-        [dfCZ, dfCX],
-        Some([dfU, dfV, dfW, dfA, dfB]),
-        byCirDir,
-        wGroupIndex,
-    ) }
-}
-
-fn helical(
-    plane: Plane,
-    cxy: [f64; 2],
-    pitch: f64,
-    theta: f64,
-    aux: Option<[f64; 5]>,
-    g: WORD,
-) -> McclResult<c_int> {
-    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
+fn helical(at: About, pitch: f64, theta: f64, g: WORD) -> McclResult<c_int> {
     let (pitch, theta) = (finite(pitch)?, finite(theta)?);
-    let aux = aux.map(aux5).transpose()?;
-    queue_curve(
-        g,
-        |ctx| {
-            let aux = aux.map(|a| std::array::from_fn(|k| ctx.resolve_axis(3 + k, a[k])));
-            let c = ctx.resolve_plane(plane, cxy);
-            check_plane(ctx, plane, &[c], aux)?;
-            Path::helix(plane, &ctx.from, c, pitch, theta, aux)
-        },
-        true,
-    )
+    queue_about(at, true, g, |ctx, c, aux| {
+        Path::helix(at.plane, &ctx.from, c, pitch, theta, aux)
+    })
 }
 
-/// Helix around (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise); Z moves
-/// dfPitch per full turn (pitch x theta / 360 in all).
-#[no_mangle]
-pub extern "C" fn MCC_HelicalXY_Z(
-    dfCX: f64,
-    dfCY: f64,
-    dfPitch: f64,
-    dfTheta: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helical(Plane::XY, [dfCX, dfCY], dfPitch, dfTheta, None, wGroupIndex) }
+/// Declares the helices of one plane, each with its `_Aux` form:
+/// `$name(c0, c1, dfPitch, dfTheta, wGroupIndex)` turns around `(c0, c1)` of
+/// `Plane::$plane` by dfTheta degrees while the third axis moves dfPitch per full turn;
+/// `$aux` takes U..B ends (`dfU..dfB`) too, which move linearly along.
+macro_rules! plane_helicals {
+    ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            $c0: f64, $c1: f64, dfPitch: f64, dfTheta: f64, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                helical(at, dfPitch, dfTheta, wGroupIndex)
+            }
+        }
+
+        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
+        #[no_mangle]
+        pub extern "C" fn $aux(
+            $c0: f64, $c1: f64, dfPitch: f64,
+            dfU: f64, dfV: f64, dfW: f64, dfA: f64, dfB: f64,
+            dfTheta: f64, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux };
+                helical(at, dfPitch, dfTheta, wGroupIndex)
+            }
+        }
+    )*};
 }
 
-/// Helix around (dfCY, dfCZ); X moves dfPitch per turn.
-#[no_mangle]
-pub extern "C" fn MCC_HelicalYZ_X(
-    dfCY: f64,
-    dfCZ: f64,
-    dfPitch: f64,
-    dfTheta: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helical(Plane::YZ, [dfCY, dfCZ], dfPitch, dfTheta, None, wGroupIndex) }
+plane_helicals! {
+    /// Helix around (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise); Z moves
+    /// dfPitch per full turn (pitch x theta / 360 in all).
+    MCC_HelicalXY_Z, MCC_HelicalXY_Z_Aux(dfCX, dfCY) => XY;
+    /// Helix around (dfCY, dfCZ); X moves dfPitch per turn.
+    MCC_HelicalYZ_X, MCC_HelicalYZ_X_Aux(dfCY, dfCZ) => YZ;
+    /// Helix around (dfCZ, dfCX); Y moves dfPitch per turn.
+    MCC_HelicalZX_Y, MCC_HelicalZX_Y_Aux(dfCZ, dfCX) => ZX;
 }
 
-/// Helix around (dfCZ, dfCX); Y moves dfPitch per turn.
-#[no_mangle]
-pub extern "C" fn MCC_HelicalZX_Y(
-    dfCZ: f64,
-    dfCX: f64,
-    dfPitch: f64,
-    dfTheta: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helical(Plane::ZX, [dfCZ, dfCX], dfPitch, dfTheta, None, wGroupIndex) }
+/// A spiral about `at` until the plane's third axis reaches `pos`, `pitch` per turn in
+/// direction `dir` (the obsolete helix, the cone).
+#[derive(Clone, Copy)]
+pub(super) struct SpiralTo {
+    pub at: About,
+    pub pos: f64,
+    pub pitch: f64,
+    pub dir: BYTE,
 }
 
-/// [`MCC_HelicalXY_Z`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_HelicalXY_Z_Aux(
-    dfCX: f64,
-    dfCY: f64,
-    dfPitch: f64,
-    dfU: f64,
-    dfV: f64,
-    dfW: f64,
-    dfA: f64,
-    dfB: f64,
-    dfTheta: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helical(
-        Plane::XY,
-        [dfCX, dfCY],
-        dfPitch,
-        dfTheta,
-        Some([dfU, dfV, dfW, dfA, dfB]),
-        wGroupIndex,
-    ) }
-}
-
-/// [`MCC_HelicalYZ_X`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_HelicalYZ_X_Aux(
-    dfCY: f64,
-    dfCZ: f64,
-    dfPitch: f64,
-    dfU: f64,
-    dfV: f64,
-    dfW: f64,
-    dfA: f64,
-    dfB: f64,
-    dfTheta: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helical(
-        Plane::YZ,
-        [dfCY, dfCZ],
-        dfPitch,
-        dfTheta,
-        Some([dfU, dfV, dfW, dfA, dfB]),
-        wGroupIndex,
-    ) }
-}
-
-/// [`MCC_HelicalZX_Y`] with U..B moving linearly to the given ends.
-#[no_mangle]
-pub extern "C" fn MCC_HelicalZX_Y_Aux(
-    dfCZ: f64,
-    dfCX: f64,
-    dfPitch: f64,
-    dfU: f64,
-    dfV: f64,
-    dfW: f64,
-    dfA: f64,
-    dfB: f64,
-    dfTheta: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helical(
-        Plane::ZX,
-        [dfCZ, dfCX],
-        dfPitch,
-        dfTheta,
-        Some([dfU, dfV, dfW, dfA, dfB]),
-        wGroupIndex,
-    ) }
-}
-
-fn helica(
-    plane: Plane,
-    cxy: [f64; 2],
-    pos: f64,
-    pitch: f64,
-    dir: BYTE,
+/// Queues the spiral `build(from, center, end of the third axis, pitch, counter-clockwise)`
+/// makes, its arguments checked, resolved and range-checked first.
+pub(super) fn queue_spiral(
+    s: SpiralTo,
     g: WORD,
+    build: impl FnOnce(&Axes, [f64; 2], f64, f64, bool) -> Result<Path, crate::planner::PlanError>,
 ) -> McclResult<c_int> {
-    let cxy = [finite(cxy[0])?, finite(cxy[1])?];
-    let (pos, pitch) = (finite(pos)?, finite(pitch)?);
-    let ccw = direction(dir)?;
-    let n = plane.axes().2;
-    queue_curve(
-        g,
-        |ctx| {
-            let (c, to) = (ctx.resolve_plane(plane, cxy), ctx.resolve_axis(n, pos));
-            check_plane(ctx, plane, &[c], None)?;
-            ctx.check_points(&[(n, to)])?;
-            Path::helix_to(plane, &ctx.from, c, to, pitch, ccw, None)
-        },
-        true,
-    )
+    let (pos, pitch) = (finite(s.pos)?, finite(s.pitch)?);
+    let ccw = direction(s.dir)?;
+    queue_about(s.at, true, g, |ctx, c, _| {
+        let n = s.at.plane.axes().2;
+        let to = ctx.resolve_axis(n, pos);
+        ctx.check_points(&[(n, to)])?;
+        build(&ctx.from, c, to, pitch, ccw)
+    })
 }
 
-/// Obsolete helix: around (dfCX, dfCY) in direction byCirDir until Z reaches dfPos,
-/// rising dfPitch per turn.
-#[no_mangle]
-pub extern "C" fn MCC_HelicaXY_Z(
-    dfCX: f64,
-    dfCY: f64,
-    dfPos: f64,
-    dfPitch: f64,
-    byCirDir: BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helica(
-        Plane::XY,
-        [dfCX, dfCY],
-        dfPos,
-        dfPitch,
-        byCirDir,
-        wGroupIndex,
-    ) }
+fn helica(s: SpiralTo, g: WORD) -> McclResult<c_int> {
+    queue_spiral(s, g, |from, c, to, pitch, ccw| {
+        Path::helix_to(s.at.plane, from, c, to, pitch, ccw, None)
+    })
 }
 
-/// Obsolete helix around (dfCY, dfCZ) until X reaches dfPos.
-#[no_mangle]
-pub extern "C" fn MCC_HelicaYZ_X(
-    dfCY: f64,
-    dfCZ: f64,
-    dfPos: f64,
-    dfPitch: f64,
-    byCirDir: BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helica(
-        Plane::YZ,
-        [dfCY, dfCZ],
-        dfPos,
-        dfPitch,
-        byCirDir,
-        wGroupIndex,
-    ) }
+/// Declares the spirals of one plane that run until its third axis reaches dfPos: the
+/// obsolete helix `$helica(c0, c1, dfPos, dfPitch, byCirDir, wGroupIndex)`, turning around
+/// `(c0, c1)` of `Plane::$plane` and moving dfPitch per turn, and the conical helix
+/// `$cone(c0, c1, dfPos, dfPitch, CenterRate, byCirDir, wGroupIndex)`, whose radius also
+/// changes by CenterRate per turn (src/ffi/cone.rs).
+macro_rules! plane_spirals {
+    ($(
+        $(#[$doc:meta])* $helica:ident,
+        $(#[$cone_doc:meta])* $cone:ident($c0:ident, $c1:ident) => $plane:ident;
+    )*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $helica(
+            $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, byCirDir: BYTE, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                helica(SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir }, wGroupIndex)
+            }
+        }
+
+        $(#[$cone_doc])*
+        #[no_mangle]
+        pub extern "C" fn $cone(
+            $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, CenterRate: f64,
+            byCirDir: BYTE, wGroupIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! {
+                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
+                let spiral = SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir };
+                super::cone::cone(spiral, CenterRate, wGroupIndex)
+            }
+        }
+    )*};
 }
 
-/// Obsolete helix around (dfCZ, dfCX) until Y reaches dfPos.
-#[no_mangle]
-pub extern "C" fn MCC_HelicaZX_Y(
-    dfCZ: f64,
-    dfCX: f64,
-    dfPos: f64,
-    dfPitch: f64,
-    byCirDir: BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! { helica(
-        Plane::ZX,
-        [dfCZ, dfCX],
-        dfPos,
-        dfPitch,
-        byCirDir,
-        wGroupIndex,
-    ) }
+plane_spirals! {
+    /// Obsolete helix: around (dfCX, dfCY) in direction byCirDir until Z reaches dfPos,
+    /// rising dfPitch per turn.
+    MCC_HelicaXY_Z,
+    /// Conical helix about (dfCX, dfCY) in direction byCirDir until Z reaches dfPos, Z
+    /// moving dfPitch per turn and the radius changing by CenterRate per turn.
+    MCC_ConeXY_Z(dfCX, dfCY) => XY;
+    /// Obsolete helix around (dfCY, dfCZ) until X reaches dfPos.
+    MCC_HelicaYZ_X,
+    /// Conical helix about (dfCY, dfCZ) until X reaches dfPos (see [`MCC_ConeXY_Z`]).
+    MCC_ConeYZ_X(dfCY, dfCZ) => YZ;
+    /// Obsolete helix around (dfCZ, dfCX) until Y reaches dfPos.
+    MCC_HelicaZX_Y,
+    /// Conical helix about (dfCZ, dfCX) until Y reaches dfPos (see [`MCC_ConeXY_Z`]).
+    MCC_ConeZX_Y(dfCZ, dfCX) => ZX;
 }

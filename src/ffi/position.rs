@@ -4,7 +4,7 @@
 
 use super::{
     axis, axis_mask, channel, finite, set_channel_config, update_group, with_group, with_machine,
-    write_out, write_outs, Card,
+    write_out, Card,
 };
 use crate::config::Config;
 use crate::error::{McclError, McclResult};
@@ -22,183 +22,38 @@ fn set_gains(k: Gain, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
     })
 }
 
-/// # Safety
-/// Every pointer must be NULL or writable.
-unsafe fn get_gains(k: Gain, p: [*mut WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
-    // SAFETY: forwarded under this function's contract.
-    unsafe {
-        write_outs(p, || {
-            with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains(k)))
-        })
-    }
+fn gains(k: Gain, wCardIndex: WORD) -> McclResult<[WORD; 8]> {
+    with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains(k)))
 }
 
-/// Proportional gain per channel (0..255).
-#[no_mangle]
-pub extern "C" fn MCC_SetPGain(
-    wGain0: WORD,
-    wGain1: WORD,
-    wGain2: WORD,
-    wGain3: WORD,
-    wGain4: WORD,
-    wGain5: WORD,
-    wGain6: WORD,
-    wGain7: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
-        set_gains(Gain::P, v, wCardIndex)
-    }
+per_axis_setters! {
+    /// Proportional gain per channel (0..255).
+    MCC_SetPGain(WORD; wCardIndex)
+        = |v| set_gains(Gain::P, v, wCardIndex);
+    /// Integral gain per channel (0..255).
+    MCC_SetIGain(WORD; wCardIndex)
+        = |v| set_gains(Gain::I, v, wCardIndex);
+    /// Derivative gain per channel (0..255).
+    MCC_SetDGain(WORD; wCardIndex)
+        = |v| set_gains(Gain::D, v, wCardIndex);
+    /// Feed-forward gain per channel (0..255).
+    MCC_SetFGain(WORD; wCardIndex)
+        = |v| set_gains(Gain::FeedForward, v, wCardIndex);
 }
 
-/// Reads the proportional gains.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetPGain(
-    pwGain0: *mut WORD,
-    pwGain1: *mut WORD,
-    pwGain2: *mut WORD,
-    pwGain3: *mut WORD,
-    pwGain4: *mut WORD,
-    pwGain5: *mut WORD,
-    pwGain6: *mut WORD,
-    pwGain7: *mut WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_gains(Gain::P, p, wCardIndex) }
-    }
-}
-
-/// Integral gain per channel (0..255).
-#[no_mangle]
-pub extern "C" fn MCC_SetIGain(
-    wGain0: WORD,
-    wGain1: WORD,
-    wGain2: WORD,
-    wGain3: WORD,
-    wGain4: WORD,
-    wGain5: WORD,
-    wGain6: WORD,
-    wGain7: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
-        set_gains(Gain::I, v, wCardIndex)
-    }
-}
-
-/// Reads the integral gains.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetIGain(
-    pwGain0: *mut WORD,
-    pwGain1: *mut WORD,
-    pwGain2: *mut WORD,
-    pwGain3: *mut WORD,
-    pwGain4: *mut WORD,
-    pwGain5: *mut WORD,
-    pwGain6: *mut WORD,
-    pwGain7: *mut WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_gains(Gain::I, p, wCardIndex) }
-    }
-}
-
-/// Derivative gain per channel (0..255).
-#[no_mangle]
-pub extern "C" fn MCC_SetDGain(
-    wGain0: WORD,
-    wGain1: WORD,
-    wGain2: WORD,
-    wGain3: WORD,
-    wGain4: WORD,
-    wGain5: WORD,
-    wGain6: WORD,
-    wGain7: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
-        set_gains(Gain::D, v, wCardIndex)
-    }
-}
-
-/// Reads the derivative gains.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetDGain(
-    pwGain0: *mut WORD,
-    pwGain1: *mut WORD,
-    pwGain2: *mut WORD,
-    pwGain3: *mut WORD,
-    pwGain4: *mut WORD,
-    pwGain5: *mut WORD,
-    pwGain6: *mut WORD,
-    pwGain7: *mut WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_gains(Gain::D, p, wCardIndex) }
-    }
-}
-
-/// Feed-forward gain per channel (0..255).
-#[no_mangle]
-pub extern "C" fn MCC_SetFGain(
-    wGain0: WORD,
-    wGain1: WORD,
-    wGain2: WORD,
-    wGain3: WORD,
-    wGain4: WORD,
-    wGain5: WORD,
-    wGain6: WORD,
-    wGain7: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [wGain0, wGain1, wGain2, wGain3, wGain4, wGain5, wGain6, wGain7];
-        set_gains(Gain::FeedForward, v, wCardIndex)
-    }
-}
-
-/// Reads the feed-forward gains.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetFGain(
-    pwGain0: *mut WORD,
-    pwGain1: *mut WORD,
-    pwGain2: *mut WORD,
-    pwGain3: *mut WORD,
-    pwGain4: *mut WORD,
-    pwGain5: *mut WORD,
-    pwGain6: *mut WORD,
-    pwGain7: *mut WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [pwGain0, pwGain1, pwGain2, pwGain3, pwGain4, pwGain5, pwGain6, pwGain7];
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_gains(Gain::FeedForward, p, wCardIndex) }
-    }
+per_axis_getters! {
+    /// Reads the proportional gains.
+    MCC_GetPGain(WORD; wCardIndex)
+        = gains(Gain::P, wCardIndex);
+    /// Reads the integral gains.
+    MCC_GetIGain(WORD; wCardIndex)
+        = gains(Gain::I, wCardIndex);
+    /// Reads the derivative gains.
+    MCC_GetDGain(WORD; wCardIndex)
+        = gains(Gain::D, wCardIndex);
+    /// Reads the feed-forward gains.
+    MCC_GetFGain(WORD; wCardIndex)
+        = gains(Gain::FeedForward, wCardIndex);
 }
 
 fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
@@ -223,46 +78,20 @@ pub extern "C" fn MCC_SetDGainClockDivider(dwClockDivider: DWORD, wCardIndex: WO
     ffi_boundary! { set_divider(1, dwClockDivider, wCardIndex) }
 }
 
-/// The closed-loop error counter per channel: pulses output minus the motor's position.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetErrorCount(
-    pnErrCount0: *mut c_int,
-    pnErrCount1: *mut c_int,
-    pnErrCount2: *mut c_int,
-    pnErrCount3: *mut c_int,
-    pnErrCount4: *mut c_int,
-    pnErrCount5: *mut c_int,
-    pnErrCount6: *mut c_int,
-    pnErrCount7: *mut c_int,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pnErrCount0,
-            pnErrCount1,
-            pnErrCount2,
-            pnErrCount3,
-            pnErrCount4,
-            pnErrCount5,
-            pnErrCount6,
-            pnErrCount7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_machine(Card(wCardIndex), |m, cd| {
-                    Ok(std::array::from_fn(|ch| {
-                        m.cards[cd][ch]
-                            .error_count()
-                            .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
-                    }))
-                })
-            })
-        }
-    }
+/// Each channel's closed-loop error counter, clamped to the range of C's `int`.
+fn error_counts(wCardIndex: WORD) -> McclResult<[c_int; 8]> {
+    with_machine(Card(wCardIndex), |m, cd| {
+        Ok(std::array::from_fn(|ch| {
+            m.cards[cd][ch]
+                .error_count()
+                .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
+        }))
+    })
+}
+
+per_axis_getters! {
+    /// The closed-loop error counter per channel: pulses output minus the motor's position.
+    MCC_GetErrorCount(c_int; wCardIndex) = error_counts(wCardIndex);
 }
 
 /// Thresholds of the closed-loop error counter of one channel (kept for the PCL
@@ -283,131 +112,37 @@ pub extern "C" fn MCC_SetErrorCountThreshold(
     }
 }
 
-fn pulse_limits(v: [c_int; 8]) -> McclResult<[i32; 8]> {
+/// Sets the pulse limits `k` of card `wCardIndex`, each in 1..=[`MAX_PULSE_LIMIT`].
+fn set_pulse_limits(k: PulseLimit, v: [c_int; 8], wCardIndex: WORD) -> McclResult<c_int> {
     if v.iter().any(|&x| !(1..=MAX_PULSE_LIMIT).contains(&x)) {
         return Err(McclError::Parameter);
     }
-    Ok(v)
+    with_machine(Card(wCardIndex), |m, cd| {
+        m.set_pulse_limits(cd, k, v);
+        Ok(c::NO_ERR)
+    })
 }
 
-/// Most pulses per interpolation period per channel (1..32767, default 32767). More
-/// stops the group with error 0xF203.
-#[no_mangle]
-pub extern "C" fn MCC_SetMaxPulseSpeed(
-    nPulse0: c_int,
-    nPulse1: c_int,
-    nPulse2: c_int,
-    nPulse3: c_int,
-    nPulse4: c_int,
-    nPulse5: c_int,
-    nPulse6: c_int,
-    nPulse7: c_int,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = pulse_limits([
-            nPulse0, nPulse1, nPulse2, nPulse3, nPulse4, nPulse5, nPulse6, nPulse7,
-        ])?;
-        with_machine(Card(wCardIndex), |m, cd| {
-            m.set_pulse_limits(cd, PulseLimit::Speed, v);
-            Ok(c::NO_ERR)
-        })
-    }
+fn pulse_limits(k: PulseLimit, wCardIndex: WORD) -> McclResult<[c_int; 8]> {
+    with_machine(Card(wCardIndex), |m, cd| Ok(m.pulse_limits(cd, k)))
 }
 
-/// Reads the pulse speed limits.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetMaxPulseSpeed(
-    pnSpeed0: *mut c_int,
-    pnSpeed1: *mut c_int,
-    pnSpeed2: *mut c_int,
-    pnSpeed3: *mut c_int,
-    pnSpeed4: *mut c_int,
-    pnSpeed5: *mut c_int,
-    pnSpeed6: *mut c_int,
-    pnSpeed7: *mut c_int,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pnSpeed0, pnSpeed1, pnSpeed2, pnSpeed3, pnSpeed4, pnSpeed5, pnSpeed6, pnSpeed7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_machine(Card(wCardIndex), |m, cd| {
-                    Ok(m.pulse_limits(cd, PulseLimit::Speed))
-                })
-            })
-        }
-    }
+per_axis_setters! {
+    /// Most pulses per interpolation period per channel (1..32767, default 32767). More
+    /// stops the group with error 0xF203.
+    MCC_SetMaxPulseSpeed(c_int; wCardIndex)
+        = |v| set_pulse_limits(PulseLimit::Speed, v, wCardIndex);
+    /// Most change of pulses per period from one period to the next (1..32767, default
+    /// 32767). More stops the group with error 0xF204.
+    MCC_SetMaxPulseAcc(c_int; wCardIndex) = |v| set_pulse_limits(PulseLimit::Acc, v, wCardIndex);
 }
 
-/// Most change of pulses per period from one period to the next (1..32767, default
-/// 32767). More stops the group with error 0xF204.
-#[no_mangle]
-pub extern "C" fn MCC_SetMaxPulseAcc(
-    nPulseAcc0: c_int,
-    nPulseAcc1: c_int,
-    nPulseAcc2: c_int,
-    nPulseAcc3: c_int,
-    nPulseAcc4: c_int,
-    nPulseAcc5: c_int,
-    nPulseAcc6: c_int,
-    nPulseAcc7: c_int,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = pulse_limits([
-            nPulseAcc0, nPulseAcc1, nPulseAcc2, nPulseAcc3, nPulseAcc4, nPulseAcc5, nPulseAcc6,
-            nPulseAcc7,
-        ])?;
-        with_machine(Card(wCardIndex), |m, cd| {
-            m.set_pulse_limits(cd, PulseLimit::Acc, v);
-            Ok(c::NO_ERR)
-        })
-    }
-}
-
-/// Reads the pulse acceleration limits.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
-    pnPulseAcc0: *mut c_int,
-    pnPulseAcc1: *mut c_int,
-    pnPulseAcc2: *mut c_int,
-    pnPulseAcc3: *mut c_int,
-    pnPulseAcc4: *mut c_int,
-    pnPulseAcc5: *mut c_int,
-    pnPulseAcc6: *mut c_int,
-    pnPulseAcc7: *mut c_int,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pnPulseAcc0,
-            pnPulseAcc1,
-            pnPulseAcc2,
-            pnPulseAcc3,
-            pnPulseAcc4,
-            pnPulseAcc5,
-            pnPulseAcc6,
-            pnPulseAcc7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_machine(Card(wCardIndex), |m, cd| {
-                    Ok(m.pulse_limits(cd, PulseLimit::Acc))
-                })
-            })
-        }
-    }
+per_axis_getters! {
+    /// Reads the pulse speed limits.
+    MCC_GetMaxPulseSpeed(c_int; wCardIndex)
+        = pulse_limits(PulseLimit::Speed, wCardIndex);
+    /// Reads the pulse acceleration limits.
+    MCC_GetMaxPulseAcc(c_int; wCardIndex) = pulse_limits(PulseLimit::Acc, wCardIndex);
 }
 
 /// Tracking error check on for the axes in the mask: a following error above the
@@ -416,14 +151,14 @@ pub unsafe extern "C" fn MCC_GetMaxPulseAcc(
 pub extern "C" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
         axis_mask(dwAxisMask)?;
-        update_group(wGroupIndex, |g| g.track_mask |= dwAxisMask)
+        update_group(wGroupIndex, |g| g.enable_track_error(dwAxisMask))
     }
 }
 
 /// Tracking error check off for every axis.
 #[no_mangle]
 pub extern "C" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { update_group(wGroupIndex, |g| g.track_mask = 0) }
+    ffi_boundary! { update_group(wGroupIndex, |g| g.disable_track_error()) }
 }
 
 /// The tracking error limit of one axis, UU (>= 0, a distance of the axis in the
@@ -436,11 +171,8 @@ pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupInde
             return Err(McclError::Parameter);
         }
         let a = axis(cAxis)?;
-        with_group(wGroupIndex, |g| {
-            crate::config::range::position(v, g.axes[a].factor)?;
-            g.track_limit[a] = v;
-            Ok(c::NO_ERR)
-        })
+        with_group(wGroupIndex, |g| g.set_track_error_limit(a, v))?;
+        Ok(c::NO_ERR)
     }
 }
 
@@ -466,22 +198,11 @@ pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
     }
 }
 
-/// Compensation tables of one channel (§2.7.5); they take effect at
-/// `MCC_UpdateCompParam`. `dwInterval` 0 turns compensation off; `wHome_No` <= 255.
-///
-/// # Safety
-/// `pstCompParam` must be NULL (refused with `PARAMETER_ERR`) or point to a
-/// `SYS_COMP_PARAM`.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetCompParam(
-    pstCompParam: *mut SYS_COMP_PARAM,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param) }
-    }
+pointer_fns! {
+    /// Compensation tables of one channel (§2.7.5); they take effect at
+    /// `MCC_UpdateCompParam`. `dwInterval` 0 turns compensation off; `wHome_No` <= 255.
+    MCC_SetCompParam(pstCompParam: SYS_COMP_PARAM; wChannel, wCardIndex)
+        = set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param);
 }
 
 /// Applies the compensation tables set with `MCC_SetCompParam`.
@@ -510,9 +231,7 @@ pub extern "C" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        update_group(wGroupIndex, |g| {
-            g.inpos.max_check_s = f64::from(wMaxCheckTime) / 1000.0
-        })
+        update_group(wGroupIndex, |g| g.inpos.set_max_check_ms(wMaxCheckTime))
     }
 }
 
@@ -520,9 +239,7 @@ pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WOR
 #[no_mangle]
 pub extern "C" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        update_group(wGroupIndex, |g| {
-            g.inpos.settle_s = f64::from(wSettleTime) / 1000.0
-        })
+        update_group(wGroupIndex, |g| g.inpos.set_settle_ms(wSettleTime))
     }
 }
 
@@ -533,120 +250,38 @@ fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> McclResult<c_
     })
 }
 
-/// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
-/// the command index.
-#[no_mangle]
-pub extern "C" fn MCC_EnableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, true) }
+on_off! {
+    /// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
+    /// the command index.
+    MCC_EnableInPos,
+    /// Queues "in-position check off" for the axes in the mask. Returns the command index.
+    MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD)
+        = |on| inpos_marker(wGroupIndex, dwAxisMask, on);
 }
 
-/// Queues "in-position check off" for the axes in the mask. Returns the command index.
-#[no_mangle]
-pub extern "C" fn MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
-    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, false) }
-}
-
-/// In-position tolerance per axis, UU (>= 0, distances of the axes in the position range).
-#[no_mangle]
-pub extern "C" fn MCC_SetInPosToleranceEx(
-    dfTolerance0: f64,
-    dfTolerance1: f64,
-    dfTolerance2: f64,
-    dfTolerance3: f64,
-    dfTolerance4: f64,
-    dfTolerance5: f64,
-    dfTolerance6: f64,
-    dfTolerance7: f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = super::finite8([
-            dfTolerance0,
-            dfTolerance1,
-            dfTolerance2,
-            dfTolerance3,
-            dfTolerance4,
-            dfTolerance5,
-            dfTolerance6,
-            dfTolerance7,
-        ])?;
-        if v.iter().any(|&t| t < 0.0) {
-            return Err(McclError::Parameter);
-        }
-        with_group(wGroupIndex, |g| {
-            for (t, a) in v.iter().zip(&g.axes) {
-                crate::config::range::position(*t, a.factor)?;
-            }
-            g.inpos.tolerance = v;
-            Ok(c::NO_ERR)
-        })
+/// Sets the in-position tolerances of group `g`, UU: finite and >= 0 here, in the
+/// position range of each axis by the group (`GroupState::set_inpos_tolerances`).
+fn set_tolerances(v: [f64; 8], g: WORD) -> McclResult<c_int> {
+    let v = super::finite8(v)?;
+    if v.iter().any(|&t| t < 0.0) {
+        return Err(McclError::Parameter);
     }
+    with_group(g, |g| g.set_inpos_tolerances(v))?;
+    Ok(c::NO_ERR)
 }
 
-/// Reads the in-position tolerances, UU.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetInPosToleranceEx(
-    pdfTolerance0: *mut f64,
-    pdfTolerance1: *mut f64,
-    pdfTolerance2: *mut f64,
-    pdfTolerance3: *mut f64,
-    pdfTolerance4: *mut f64,
-    pdfTolerance5: *mut f64,
-    pdfTolerance6: *mut f64,
-    pdfTolerance7: *mut f64,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pdfTolerance0,
-            pdfTolerance1,
-            pdfTolerance2,
-            pdfTolerance3,
-            pdfTolerance4,
-            pdfTolerance5,
-            pdfTolerance6,
-            pdfTolerance7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))
-            })
-        }
-    }
+per_axis_setters! {
+    /// In-position tolerance per axis, UU (>= 0, distances of the axes in the position range).
+    MCC_SetInPosToleranceEx(f64; wGroupIndex) = |v| set_tolerances(v, wGroupIndex);
 }
 
-/// In-position status per axis: 0xFF once in position (held until the next command),
-/// 0 otherwise.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetInPosStatus(
-    pbyInPos0: *mut crate::vendor::BYTE,
-    pbyInPos1: *mut crate::vendor::BYTE,
-    pbyInPos2: *mut crate::vendor::BYTE,
-    pbyInPos3: *mut crate::vendor::BYTE,
-    pbyInPos4: *mut crate::vendor::BYTE,
-    pbyInPos5: *mut crate::vendor::BYTE,
-    pbyInPos6: *mut crate::vendor::BYTE,
-    pbyInPos7: *mut crate::vendor::BYTE,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pbyInPos0, pbyInPos1, pbyInPos2, pbyInPos3, pbyInPos4, pbyInPos5, pbyInPos6, pbyInPos7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.inpos_status()))
-            })
-        }
-    }
+per_axis_getters! {
+    /// Reads the in-position tolerances, UU.
+    MCC_GetInPosToleranceEx(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance));
+    /// In-position status per axis: 0xFF once in position (held until the next command),
+    /// 0 otherwise.
+    MCC_GetInPosStatus(crate::vendor::BYTE; wGroupIndex)
+        = with_group(wGroupIndex, |g| Ok(g.inpos_status()));
 }
 
 /// Obsolete name of [`MCC_SetInPosMaxCheckTime`].
@@ -661,84 +296,17 @@ pub extern "C" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> 
 #[no_mangle]
 pub extern "C" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        with_group(wGroupIndex, |g| {
-            Ok((g.inpos.settle_s * 1000.0).round() as c_int)
-        })
+        with_group(wGroupIndex, |g| Ok(g.inpos.settle_ms()))
     }
 }
 
-/// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
-/// pulses per UU).
-#[no_mangle]
-pub extern "C" fn MCC_SetInPosTolerance(
-    wTolerance0: WORD,
-    wTolerance1: WORD,
-    wTolerance2: WORD,
-    wTolerance3: WORD,
-    wTolerance4: WORD,
-    wTolerance5: WORD,
-    wTolerance6: WORD,
-    wTolerance7: WORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let v = [
-            wTolerance0,
-            wTolerance1,
-            wTolerance2,
-            wTolerance3,
-            wTolerance4,
-            wTolerance5,
-            wTolerance6,
-            wTolerance7,
-        ];
-        update_group(wGroupIndex, |g| {
-            for (i, t) in v.iter().enumerate() {
-                let f = g.axes[i].factor.abs();
-                g.inpos.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
-            }
-        })
-    }
+per_axis_setters! {
+    /// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
+    /// pulses per UU).
+    MCC_SetInPosTolerance(WORD; wGroupIndex) = |v| update_group(wGroupIndex, |g| g.set_inpos_tolerances_pulses(v));
 }
 
-/// Obsolete: reads the in-position tolerances in pulses.
-///
-/// # Safety
-/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetInPosTolerance(
-    pwTolerance0: *mut WORD,
-    pwTolerance1: *mut WORD,
-    pwTolerance2: *mut WORD,
-    pwTolerance3: *mut WORD,
-    pwTolerance4: *mut WORD,
-    pwTolerance5: *mut WORD,
-    pwTolerance6: *mut WORD,
-    pwTolerance7: *mut WORD,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        let p = [
-            pwTolerance0,
-            pwTolerance1,
-            pwTolerance2,
-            pwTolerance3,
-            pwTolerance4,
-            pwTolerance5,
-            pwTolerance6,
-            pwTolerance7,
-        ];
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_outs(p, || {
-                with_group(wGroupIndex, |g| {
-                    Ok(std::array::from_fn(|i| {
-                        (g.inpos.tolerance[i] * g.axes[i].factor.abs())
-                            .round()
-                            .min(f64::from(WORD::MAX)) as WORD
-                    }))
-                })
-            })
-        }
-    }
+per_axis_getters! {
+    /// Obsolete: reads the in-position tolerances in pulses.
+    MCC_GetInPosTolerance(WORD; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.inpos_tolerances_pulses()));
 }

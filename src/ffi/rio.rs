@@ -8,7 +8,7 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::{with_card, write_out, Done};
+use super::{card_do_at, with_card, write_out, Done};
 use crate::card::rio::{set_ix, Master, Set, ARIO_SLAVES, RIO_PORTS, SETS};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
@@ -29,39 +29,24 @@ fn on_set<const N: usize, R>(
     with_card(wCardIndex, |p| f(&mut pick(&mut p.rio)[s]))
 }
 
-fn rio<R>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<RIO_PORTS>) -> McclResult<R>,
-) -> McclResult<R> {
-    on_set(|m| &mut m.rio, wSet, wCardIndex, f)
+/// The RIO sets of a card's master.
+fn rio_sets(m: &mut Master) -> &mut [Set<RIO_PORTS>; SETS] {
+    &mut m.rio
 }
 
-fn ario<R>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> McclResult<R>,
-) -> McclResult<R> {
-    on_set(|m| &mut m.ario, wSet, wCardIndex, f)
+/// The ARIO sets of a card's master.
+fn ario_sets(m: &mut Master) -> &mut [Set<ARIO_SLAVES>; SETS] {
+    &mut m.ario
 }
 
-/// Runs setter `f` on a RIO set (see [`rio`]); `NO_ERR`.
-fn rio_set<D: Done>(
+/// Runs setter `f` on set `wSet` of the sets `pick` chooses (see [`on_set`]); `NO_ERR`.
+fn set_do<const N: usize, D: Done>(
+    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
     wSet: WORD,
     wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<RIO_PORTS>) -> D,
+    f: impl FnOnce(&mut Set<N>) -> D,
 ) -> McclResult<c_int> {
-    rio(wSet, wCardIndex, |s| f(s).done())?;
-    Ok(c::NO_ERR)
-}
-
-/// Runs setter `f` on an ARIO set (see [`ario`]); `NO_ERR`.
-fn ario_set<D: Done>(
-    wSet: WORD,
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut Set<ARIO_SLAVES>) -> D,
-) -> McclResult<c_int> {
-    ario(wSet, wCardIndex, |s| f(s).done())?;
+    on_set(pick, wSet, wCardIndex, |s| f(s).done())?;
     Ok(c::NO_ERR)
 }
 
@@ -77,352 +62,157 @@ unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<
 
 // ---- RIO ----
 
-/// Starts data transfer of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.control = true) }
+on_off! {
+    /// Starts data transfer of a RIO set.
+    MCC_EnableRIOSetControl,
+    /// Stops data transfer of a RIO set.
+    MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD)
+        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.control = on);
 }
 
-/// Stops data transfer of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.control = false) }
+/// Declares the entry points RIO and ARIO share, for one kind of master: `$sets` picks
+/// its sets ([`rio_sets`], [`ario_sets`]). The members are, in this order: slave control
+/// on and off, transfer, master and slave status, failed slaves, a port's (RIO) or
+/// slave's (ARIO) inputs, and setting and reading its outputs.
+macro_rules! remote_io {
+    (
+        $sets:ident;
+        $(#[$on_doc:meta])* $slave_on:ident,
+        $(#[$off_doc:meta])* $slave_off:ident,
+        $(#[$trans_doc:meta])* $trans:ident,
+        $(#[$master_doc:meta])* $master:ident,
+        $(#[$slaves_doc:meta])* $slaves:ident,
+        $(#[$fail_doc:meta])* $fail:ident,
+        $(#[$input_doc:meta])* $input:ident,
+        $(#[$set_output_doc:meta])* $set_output:ident,
+        $(#[$output_doc:meta])* $output:ident;
+    ) => {
+        on_off! {
+            $(#[$on_doc])* $slave_on,
+            $(#[$off_doc])* $slave_off(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
+                = |on| set_do($sets, wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
+        }
+
+        pointer_fns! {
+            $(#[$trans_doc])* $trans(pwStatus: WORD; wSet, wCardIndex)
+                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.trans_status())));
+            $(#[$master_doc])* $master(pwStatus: WORD; wSet, wCardIndex)
+                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.master_status())));
+            $(#[$slaves_doc])* $slaves(pwStatus: WORD; wSet, wCardIndex)
+                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.slave_status())));
+            $(#[$fail_doc])* $fail(pdwStatus: DWORD; wSet, wCardIndex)
+                = read(pdwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.slave_fail())));
+            $(#[$input_doc])* $input(pwValue: WORD; wSet, wPort, wCardIndex)
+                = read(pwValue, || on_set($sets, wSet, wCardIndex, |s| s.input(wPort)));
+            $(#[$output_doc])* $output(pwValue: WORD; wSet, wPort, wCardIndex)
+                = read(pwValue, || on_set($sets, wSet, wCardIndex, |s| s.output(wPort)));
+        }
+
+        $(#[$set_output_doc])*
+        #[no_mangle]
+        pub extern "C" fn $set_output(
+            wValue: WORD, wSet: WORD, wPort: WORD, wCardIndex: WORD,
+        ) -> c_int {
+            ffi_boundary! { set_do($sets, wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
+        }
+    };
 }
 
-/// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true)) }
+remote_io! {
+    rio_sets;
+    /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
+    MCC_EnableRIOSlaveControl,
+    /// Stops data transfer with one slave of a RIO set.
+    MCC_DisableRIOSlaveControl,
+    /// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
+    MCC_GetRIOTransStatus,
+    /// Master status of a RIO set: 1 normal, 0 error.
+    MCC_GetRIOMasterStatus,
+    /// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
+    MCC_GetRIOSlaveStatus,
+    /// Failed transmitting slaves of a RIO set, bit n = slave n.
+    MCC_GetRIOSlaveFail,
+    /// The 16 inputs of a RIO port (bit n = input n), as last transferred.
+    MCC_GetRIOInputValue,
+    /// Sets the 16 outputs of a RIO port (sent at the next transfer).
+    MCC_SetRIOOutputValue,
+    /// The 16 outputs set for a RIO port.
+    MCC_GetRIOOutputValue;
 }
 
-/// Stops data transfer with one slave of a RIO set.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, false)) }
+value_fns! {
+    /// Consecutive failed transfers a slave of the RIO set may have before the set reports
+    /// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
+    /// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
+    MCC_SetRIOTransError(wTime: WORD; wSet, wCardIndex)
+        = set_do(rio_sets, wSet, wCardIndex, |s| s.set_tolerance(wTime));
+    /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
+    /// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
+    MCC_SetRIOTriggerType(wType: WORD; wSet, wDigitalInput, wCardIndex)
+        = set_do(rio_sets, wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType));
 }
 
-/// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOTransStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.trans_status()))) }
-    }
+on_off! {
+    /// An edge of the digital input calls the RIO routine with `RDIn` set.
+    MCC_EnableRIOInputTrigger,
+    /// The digital input no longer calls the RIO routine.
+    MCC_DisableRIOInputTrigger(wSet: WORD, wDigitalInput: WORD, wCardIndex: WORD)
+        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, on));
 }
 
-/// Master status of a RIO set: 1 normal, 0 error.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOMasterStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.master_status()))) }
-    }
-}
-
-/// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOSlaveStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_status()))) }
-    }
-}
-
-/// Failed transmitting slaves of a RIO set, bit n = slave n.
-///
-/// # Safety
-/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable DWORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOSlaveFail(
-    pdwStatus: *mut DWORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pdwStatus, || rio(wSet, wCardIndex, |s| Ok(s.slave_fail()))) }
-    }
-}
-
-/// The 16 inputs of a RIO port (bit n = input n), as last transferred.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOInputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.input(wPort))) }
-    }
-}
-
-/// Sets the 16 outputs of a RIO port (sent at the next transfer).
-#[no_mangle]
-pub extern "C" fn MCC_SetRIOOutputValue(
-    wValue: WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
-}
-
-/// The 16 outputs set for a RIO port.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetRIOOutputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || rio(wSet, wCardIndex, |s| s.output(wPort))) }
-    }
-}
-
-/// Consecutive failed transfers a slave of the RIO set may have before the set reports
-/// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
-/// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
-#[no_mangle]
-pub extern "C" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_tolerance(wTime)) }
-}
-
-/// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
-/// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
-#[no_mangle]
-pub extern "C" fn MCC_SetRIOTriggerType(
-    wType: WORD,
-    wSet: WORD,
-    wDigitalInput: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType)) }
-}
-
-/// An edge of the digital input calls the RIO routine with `RDIn` set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOInputTrigger(
-    wSet: WORD,
-    wDigitalInput: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, true)) }
-}
-
-/// The digital input no longer calls the RIO routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOInputTrigger(
-    wSet: WORD,
-    wDigitalInput: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, false)) }
-}
-
-/// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
-/// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
-#[no_mangle]
-pub extern "C" fn MCC_EnableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(true)) }
-}
-
-/// Transfer errors no longer call the RIO routine.
-#[no_mangle]
-pub extern "C" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { rio_set(wSet, wCardIndex, |s| s.set_trans_trigger(false)) }
+on_off! {
+    /// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
+    /// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
+    MCC_EnableRIOTransTrigger,
+    /// Transfer errors no longer call the RIO routine.
+    MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD)
+        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.set_trans_trigger(on));
 }
 
 // ---- ARIO ----
 
-fn ario_timing<D: Done>(
-    wCardIndex: WORD,
-    f: impl FnOnce(&mut crate::card::rio::ArioTiming) -> D,
-) -> McclResult<c_int> {
-    super::initialised()?;
-    with_card(wCardIndex, |p| f(&mut p.rio.ario_timing).done())?;
-    Ok(c::NO_ERR)
+value_fns! {
+    /// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
+    /// 2^32 − 1 ms long) for the ARIO
+    /// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
+    /// restarts at the call.
+    MCC_SetARIOUpdateRate(dfUpdateRate: f64; wSet, wCardIndex)
+        = card_do_at(wCardIndex, || set_ix(wSet), |p, s| {
+            p.rio.ario_timing.set_update_rate(s, dfUpdateRate)
+        });
+    /// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
+    /// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
+    /// restarts at the call.
+    MCC_SetARIOClockDivider(wDivider: WORD; wSet, wCardIndex)
+        = card_do_at(wCardIndex, || set_ix(wSet), |p, s| {
+            p.rio.ario_timing.set_divider(s, wDivider)
+        });
+    /// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
+    /// of the card. The cycle count restarts at the call.
+    MCC_SetARIONode2NodeDelay(dwDelay: DWORD; wCardIndex)
+        = card_do_at(wCardIndex, || Ok(()), |p, ()| {
+            p.rio.ario_timing.set_node_delay(dwDelay)
+        });
 }
 
-/// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
-/// 2^32 − 1 ms long) for the ARIO
-/// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
-/// restarts at the call.
-#[no_mangle]
-pub extern "C" fn MCC_SetARIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        super::initialised()?;
-        let s = set_ix(wSet)?;
-        ario_timing(wCardIndex, |t| t.set_update_rate(s, dfUpdateRate))
-    }
-}
-
-/// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
-/// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
-/// restarts at the call.
-#[no_mangle]
-pub extern "C" fn MCC_SetARIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! {
-        super::initialised()?;
-        let s = set_ix(wSet)?;
-        ario_timing(wCardIndex, |t| t.set_divider(s, wDivider))
-    }
-}
-
-/// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
-/// of the card. The cycle count restarts at the call.
-#[no_mangle]
-pub extern "C" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_timing(wCardIndex, |t| t.set_node_delay(dwDelay)) }
-}
-
-/// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
-#[no_mangle]
-pub extern "C" fn MCC_EnableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, true)) }
-}
-
-/// Stops data transfer with an ARIO slave.
-#[no_mangle]
-pub extern "C" fn MCC_DisableARIOSlaveControl(wSet: WORD, wSlave: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_slave_control(wSlave, false)) }
-}
-
-/// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOTransStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.trans_status()))) }
-    }
-}
-
-/// ARIO master status: 1 normal, 0 error.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOMasterStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.master_status()))) }
-    }
-}
-
-/// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
-///
-/// # Safety
-/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOSlaveStatus(
-    pwStatus: *mut WORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_status()))) }
-    }
-}
-
-/// Failed transmitting ARIO slaves, bit n = slave n.
-///
-/// # Safety
-/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable DWORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOSlaveFail(
-    pdwStatus: *mut DWORD,
-    wSet: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pdwStatus, || ario(wSet, wCardIndex, |s| Ok(s.slave_fail()))) }
-    }
-}
-
-/// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOInputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.input(wPort))) }
-    }
-}
-
-/// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
-#[no_mangle]
-pub extern "C" fn MCC_SetARIOOutputValue(
-    wValue: WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! { ario_set(wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
-}
-
-/// The 16 outputs set for ARIO slave `wPort`.
-///
-/// # Safety
-/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetARIOOutputValue(
-    pwValue: *mut WORD,
-    wSet: WORD,
-    wPort: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { read(pwValue, || ario(wSet, wCardIndex, |s| s.output(wPort))) }
-    }
+remote_io! {
+    ario_sets;
+    /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
+    MCC_EnableARIOSlaveControl,
+    /// Stops data transfer with an ARIO slave.
+    MCC_DisableARIOSlaveControl,
+    /// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
+    MCC_GetARIOTransStatus,
+    /// ARIO master status: 1 normal, 0 error.
+    MCC_GetARIOMasterStatus,
+    /// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
+    MCC_GetARIOSlaveStatus,
+    /// Failed transmitting ARIO slaves, bit n = slave n.
+    MCC_GetARIOSlaveFail,
+    /// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
+    MCC_GetARIOInputValue,
+    /// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
+    MCC_SetARIOOutputValue,
+    /// The 16 outputs set for ARIO slave `wPort`.
+    MCC_GetARIOOutputValue;
 }

@@ -22,44 +22,18 @@ pub extern "C" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
     }
 }
 
-/// The command being executed (`nType` -1 when none): type (user manual §2.6.5 codes
-/// 0..10), index, feed speed (PtP: ratio; delay: ms left), target, acc/dec times,
-/// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
-/// started since `MCC_ResetCommandIndexLD`.
-///
-/// # Safety
-/// `pstCurCommand` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetCurCommand(
-    pstCurCommand: *mut crate::vendor::COMMAND_INFO,
-    wGroupIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pstCurCommand, || {
-                let s = system::active()?.snapshot(wGroupIndex)?;
-                Ok(s.cmd)
-            })
-        }
-    }
-}
-
-/// Commands queued and not yet started (the running one is not counted).
-///
-/// # Safety
-/// `pnCmdCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetCommandCount(pnCmdCount: *mut c_int, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(pnCmdCount, || {
-                let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
-                Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
-            })
-        }
-    }
+pointer_fns! {
+    /// The command being executed (`nType` -1 when none): type (user manual §2.6.5 codes
+    /// 0..10), index, feed speed (PtP: ratio; delay: ms left), target, acc/dec times,
+    /// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
+    /// started since `MCC_ResetCommandIndexLD`.
+    MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex)
+        = write_out(pstCurCommand, || Ok(system::active()?.snapshot(wGroupIndex)?.cmd));
+    /// Commands queued and not yet started (the running one is not counted).
+    MCC_GetCommandCount(pnCmdCount: c_int; wGroupIndex) = write_out(pnCmdCount, || {
+        let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
+        Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
+    });
 }
 
 /// The next queued command gets index 0 again (automatic numbering).
@@ -90,21 +64,12 @@ pub extern "C" fn MCC_SetCommandIndex(
     }
 }
 
-/// The index the next queued command will get.
-///
-/// # Safety
-/// `wIndex` must be NULL (refused with `PARAMETER_ERR`) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetCommandIndex(wIndex: *mut WORD, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            write_out(wIndex, || {
-                let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
-                Ok(n as WORD)
-            })
-        }
-    }
+pointer_fns! {
+    /// The index the next queued command will get.
+    MCC_GetCommandIndex(wIndex: WORD; wGroupIndex) = write_out(wIndex, || {
+        let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
+        Ok(n as WORD)
+    });
 }
 
 /// Depth of the card's pulse FIFO (1..=10000; default 60).

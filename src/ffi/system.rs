@@ -56,109 +56,26 @@ pub extern "C" fn MCC_GetSysMaxSpeed() -> f64 {
     ffi_boundary! { Ok(system::config(|c| c.sys_max_speed)) }
 }
 
-/// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
-/// take effect at `MCC_UpdateParam`.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetMacParam(
-    pstMacParam: *mut SYS_MAC_PARAM,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param) }
-    }
-}
-
-/// Reads the mechanism parameters last set for one channel.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetMacParam(
-    pstMacParam: *mut SYS_MAC_PARAM,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac) }
-    }
-}
-
-/// Sets the encoder configuration of one channel (§2.4.2).
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetEncoderConfig(
-    pstEncoderConfig: *mut SYS_ENCODER_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe {
-            set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config)
-        }
-    }
-}
-
-/// Reads the encoder configuration last set for one channel.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetEncoderConfig(
-    pstEncoderConfig: *mut SYS_ENCODER_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder) }
-    }
-}
-
-/// Sets the go-home parameters of one channel (§2.4.3); mode 3..16.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_SetHomeConfig(
-    pstHomeConfig: *mut SYS_HOME_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config) }
-    }
-}
-
-/// Reads the go-home parameters last set for one channel.
-///
-/// # Safety
-/// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
-/// valid memory of the declared C type, as in the vendor library.
-#[no_mangle]
-pub unsafe extern "C" fn MCC_GetHomeConfig(
-    pstHomeConfig: *mut SYS_HOME_CONFIG,
-    wChannel: WORD,
-    wCardIndex: WORD,
-) -> c_int {
-    ffi_boundary! {
-        // SAFETY: forwarded under this function's contract.
-        unsafe { get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home) }
-    }
+pointer_fns! {
+    /// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
+    /// take effect at `MCC_UpdateParam`.
+    MCC_SetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
+        = set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param);
+    /// Reads the mechanism parameters last set for one channel.
+    MCC_GetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
+        = get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac);
+    /// Sets the encoder configuration of one channel (§2.4.2).
+    MCC_SetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
+        = set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config);
+    /// Reads the encoder configuration last set for one channel.
+    MCC_GetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
+        = get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder);
+    /// Sets the go-home parameters of one channel (§2.4.3); mode 3..16.
+    MCC_SetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
+        = set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config);
+    /// Reads the go-home parameters last set for one channel.
+    MCC_GetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
+        = get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home);
 }
 
 /// Removes every group (only while the system is closed).
@@ -167,58 +84,41 @@ pub extern "C" fn MCC_CloseAllGroups() -> c_int {
     ffi_boundary! { system::with(|s| s.close_all_groups()).map(|()| c::NO_ERR) }
 }
 
-/// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
-#[no_mangle]
-pub extern "C" fn MCC_CreateGroup(
-    xMapToCh: c_int,
-    yMapToCh: c_int,
-    zMapToCh: c_int,
-    uMapToCh: c_int,
-    vMapToCh: c_int,
-    wMapToCh: c_int,
-    aMapToCh: c_int,
-    bMapToCh: c_int,
-    nCardIndex: c_int,
-) -> c_int {
-    ffi_boundary! {
-    Ok(MCC_CreateGroupEx(
-            xMapToCh,
-            yMapToCh,
-            zMapToCh,
-            uMapToCh,
-            vMapToCh,
-            wMapToCh,
-            aMapToCh,
-            bMapToCh,
-            nCardIndex,
-            c::MOTION_QUEUE_SIZE,
-        ))
-        }
+/// Creates a group of `nMotionQueueSize` commands mapping axes X..B to the channels of
+/// `map` on card `nCardIndex`; its index.
+fn create_group(map: [c_int; 8], nCardIndex: c_int, nMotionQueueSize: c_int) -> McclResult<c_int> {
+    let def = GroupDef::new(map, nCardIndex, nMotionQueueSize)?;
+    let g = system::with(|s| s.create_group(def))?;
+    Ok(g as c_int)
 }
 
-/// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
-/// of `nMotionQueueSize` commands; returns the group index (lowest free slot).
-#[no_mangle]
-pub extern "C" fn MCC_CreateGroupEx(
-    xMapToCh: c_int,
-    yMapToCh: c_int,
-    zMapToCh: c_int,
-    uMapToCh: c_int,
-    vMapToCh: c_int,
-    wMapToCh: c_int,
-    aMapToCh: c_int,
-    bMapToCh: c_int,
-    nCardIndex: c_int,
-    nMotionQueueSize: c_int,
-) -> c_int {
-    ffi_boundary! {
-        let map = [
-            xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
-        ];
-        let def = GroupDef::new(map, nCardIndex, nMotionQueueSize)?;
-        let g = system::with(|s| s.create_group(def))?;
-        Ok(g as c_int)
-    }
+/// Declares `MCC_CreateGroup` and `MCC_CreateGroupEx`: the axis mappings and the card,
+/// then for the `Ex` form the queue size `$size`; `$queue` is the queue size used.
+macro_rules! create_groups {
+    ($($(#[$doc:meta])* $name:ident($($size:ident)?) = $queue:expr;)*) => {$(
+        $(#[$doc])*
+        #[no_mangle]
+        pub extern "C" fn $name(
+            xMapToCh: c_int, yMapToCh: c_int, zMapToCh: c_int, uMapToCh: c_int,
+            vMapToCh: c_int, wMapToCh: c_int, aMapToCh: c_int, bMapToCh: c_int,
+            nCardIndex: c_int, $($size: c_int)?
+        ) -> c_int {
+            ffi_boundary! {
+                let map = [
+                    xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
+                ];
+                create_group(map, nCardIndex, $queue)
+            }
+        }
+    )*};
+}
+
+create_groups! {
+    /// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
+    MCC_CreateGroup() = c::MOTION_QUEUE_SIZE;
+    /// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
+    /// of `nMotionQueueSize` commands; returns the group index (lowest free slot).
+    MCC_CreateGroupEx(nMotionQueueSize) = nMotionQueueSize;
 }
 
 /// Removes one group (only while the system is closed).

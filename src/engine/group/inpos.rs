@@ -5,6 +5,7 @@ use super::GroupState;
 use super::TIME_EPS;
 use crate::config::AXES;
 use crate::engine::trace::Note;
+use crate::error::McclResult;
 use crate::planner::Axes;
 use crate::vendor::consts as c;
 
@@ -23,6 +24,23 @@ pub struct InPosSettings {
 
 /// Maximum check time before it is set (ms; the examples manual uses 1000).
 pub const DEFAULT_INPOS_CHECK_MS: f64 = 1000.0;
+
+impl InPosSettings {
+    /// The longest time the check waits after a command's last pulse, ms.
+    pub fn set_max_check_ms(&mut self, ms: u16) {
+        self.max_check_s = f64::from(ms) / 1000.0;
+    }
+
+    /// How long the axes must stay within tolerance in the `IPM_SETTLE_*` modes, ms.
+    pub fn set_settle_ms(&mut self, ms: u16) {
+        self.settle_s = f64::from(ms) / 1000.0;
+    }
+
+    /// The settle time, whole ms.
+    pub fn settle_ms(&self) -> i32 {
+        (self.settle_s * 1000.0).round() as i32
+    }
+}
 
 impl Default for InPosSettings {
     fn default() -> Self {
@@ -126,5 +144,107 @@ impl GroupState {
             self.inpos_wait = Some(w);
         }
         self.update_status();
+    }
+}
+
+/// The in-position tolerances, as the program sets them.
+impl GroupState {
+    /// Sets the tolerance of every axis, UU (each >= 0, which the caller checks): each must
+    /// be a distance of its axis within the position range ("Ranges"); an error changes
+    /// nothing.
+    pub fn set_inpos_tolerances(&mut self, v: Axes) -> McclResult<()> {
+        for (t, a) in v.iter().zip(&self.axes) {
+            crate::config::range::position(*t, a.factor)?;
+        }
+        self.inpos.tolerance = v;
+        Ok(())
+    }
+
+    /// Sets the tolerances in pulses (the obsolete form): each becomes UU with its axis's
+    /// pulses per UU, 0 for an axis without a factor.
+    pub fn set_inpos_tolerances_pulses(&mut self, v: [u16; AXES]) {
+        for (i, t) in v.iter().enumerate() {
+            let f = self.axes[i].factor.abs();
+            self.inpos.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
+        }
+    }
+
+    /// The tolerances in pulses, rounded, at most `u16::MAX`.
+    pub fn inpos_tolerances_pulses(&self) -> [u16; AXES] {
+        std::array::from_fn(|i| {
+            (self.inpos.tolerance[i] * self.axes[i].factor.abs())
+                .round()
+                .min(f64::from(u16::MAX)) as u16
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::GroupDef;
+    use crate::engine::command::AxisMech;
+    use crate::error::McclError;
+
+    /// A group of eight unmapped axes of `factor` pulses per UU.
+    fn group(factor: f64) -> GroupState {
+        let def = GroupDef::new([0, 1, 2, 3, 4, 5, 6, 7], 0, 10).unwrap();
+        let axis = AxisMech {
+            channel: None,
+            factor,
+            safe_speed: 1.0,
+            high: 1e9,
+            low: -1e9,
+        };
+        GroupState::new(0, def, [axis; AXES])
+    }
+
+    #[test]
+    fn tolerances_in_pulses_go_through_each_axis_factor() {
+        // -1000 pulses per UU (reversed direction: the size counts): 10 pulses = 0.01 UU
+        // and back; 70 UU = 70000 pulses reads as the WORD maximum 65535.
+        let mut g = group(-1000.0);
+        g.set_inpos_tolerances_pulses([10; AXES]);
+        assert_eq!(g.inpos.tolerance, [0.01; AXES]);
+        assert_eq!(g.inpos_tolerances_pulses(), [10; AXES]);
+        g.set_inpos_tolerances([70.0; AXES]).unwrap();
+        assert_eq!(g.inpos_tolerances_pulses(), [65535; AXES]);
+    }
+
+    #[test]
+    fn a_tolerance_outside_the_position_range_changes_nothing() {
+        // 2e12 UU x 1000 pulses per UU = 2e15 pulses, beyond the 1e15 of "Ranges".
+        let mut g = group(1000.0);
+        g.set_inpos_tolerances([0.5; AXES]).unwrap();
+        let mut v = [0.25; AXES];
+        v[7] = 2e12;
+        assert_eq!(g.set_inpos_tolerances(v), Err(McclError::Parameter));
+        assert_eq!(g.inpos.tolerance, [0.5; AXES]);
+    }
+
+    #[test]
+    fn check_and_settle_times_are_set_in_ms() {
+        let mut s = InPosSettings::default();
+        s.set_max_check_ms(250);
+        s.set_settle_ms(1500);
+        assert_eq!(
+            (s.max_check_s, s.settle_s, s.settle_ms()),
+            (0.25, 1.5, 1500)
+        );
+    }
+
+    #[test]
+    fn tracking_error_limit_and_mask() {
+        // Axis 2 at 1000 pulses per UU: 0.3 UU is a valid limit, 2e12 UU is not (2e15
+        // pulses) and leaves 0.3.
+        let mut g = group(1000.0);
+        g.set_track_error_limit(2, 0.3).unwrap();
+        assert_eq!(g.set_track_error_limit(2, 2e12), Err(McclError::Parameter));
+        assert_eq!(g.track_limit[2], 0.3);
+        g.enable_track_error(0b101);
+        g.enable_track_error(0b010);
+        assert_eq!(g.track_mask, 0b111);
+        g.disable_track_error();
+        assert_eq!(g.track_mask, 0);
     }
 }

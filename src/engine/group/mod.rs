@@ -305,6 +305,19 @@ impl GroupState {
         Ok(())
     }
 
+    /// `MCC_DefinePosHere` for the axes of `mask` (a valid axis mask, which the caller
+    /// checks): each one's command position becomes the position the card has output;
+    /// only when stopped (`COMMAND_NOTFINISHED_ERR`).
+    pub fn define_pos_here(&mut self, mask: u32) -> McclResult<()> {
+        if self.busy() {
+            return Err(McclError::NotFinished);
+        }
+        for i in (0..AXES).filter(|i| mask & (1 << i) != 0) {
+            self.sync_to_output(i)?;
+        }
+        Ok(())
+    }
+
     /// `MCC_DefinePosHere`: the command position of axis `i` becomes the position the card
     /// has output (its pulse count in UU); only when stopped.
     pub fn sync_to_output(&mut self, i: usize) -> McclResult<()> {
@@ -318,6 +331,29 @@ impl GroupState {
             self.base[i] = here;
             self.queue_end[i] = here;
         }
+        Ok(())
+    }
+}
+
+/// The tracking error check (user manual §2.7): which axes it watches and their limits;
+/// the check itself runs with the engine's safety checks (`engine::safety`).
+impl GroupState {
+    /// Turns the check on for the axes of `mask` (a valid axis mask, which the caller
+    /// checks), besides those already on.
+    pub fn enable_track_error(&mut self, mask: u32) {
+        self.track_mask |= mask;
+    }
+
+    /// Turns the check off for every axis.
+    pub fn disable_track_error(&mut self) {
+        self.track_mask = 0;
+    }
+
+    /// The tracking error limit of `axis`, UU (>= 0, which the caller checks): a distance
+    /// of the axis within the position range ("Ranges"); an error changes nothing.
+    pub fn set_track_error_limit(&mut self, axis: usize, limit: f64) -> McclResult<()> {
+        crate::config::range::position(limit, self.axes[axis].factor)?;
+        self.track_limit[axis] = limit;
         Ok(())
     }
 }

@@ -4,17 +4,25 @@
 //! this program then adds what cbindgen cannot express and writes:
 //!
 //! * `include/MCCL.h`      typedefs, constants, structs and ISR callback types;
-//! * `include/MCCL_Fun.h`  the `MCC_*` prototypes with `MCC_API`/`MCC_CALL` and the vendor's
-//!   C++ default arguments (visible to C++ only), in the vendor header's section order;
+//! * `include/MCCL_Fun.h`  the `MCC_*` prototypes of `vendor_prototypes.txt` with
+//!   `MCC_API`/`MCC_CALL` and the vendor's C++ default arguments (visible to C++ only), in
+//!   the vendor header's section order;
 //! * `include/mccl.h`      the lower-case name the vendor's MCCL_Fun.h includes;
-//! * `include/mcl.h`       the MC3B motor control library (`mcl_*`, MC3B User's Guide §4).
+//! * `include/mcl.h`       the MC3B motor control library (`mcl_*`, MC3B User's Guide §4);
+//! * `include/MCCL_Sim.h`  the simulation extension (`MCCL_Sim*`);
+//! * `tests/vendor_prototypes.rs` a Rust test that binds every function of the vendor table
+//!   to the function-pointer type its prototype spells, so the compiler checks each Rust
+//!   signature against the table.
 //!
-//! Every exported `MCC_*` function is checked against `vendor_prototypes.txt` (return type,
-//! parameter count, types and names); every `#define` against the vendor constants of
-//! `src/vendor/consts.rs`. Any mismatch is an error, so the headers cannot drift from the
-//! vendor interface. `--check` compares instead of writing and fails on drift.
+//! `MCCL_Fun.h` is written from the vendor table rather than from cbindgen's output because
+//! cbindgen does not expand macros, and families of entry points in `src/ffi` are declared by
+//! `macro_rules!` macros. The generated test covers those: a wrong parameter type, count or
+//! return type, or a table function the crate does not export, fails to compile. The
+//! functions cbindgen does see are still checked against the table here (return type,
+//! parameter count, types and names), and every `#define` against the vendor constants of
+//! `src/vendor/consts.rs`. `--check` compares instead of writing and fails on drift.
 
-use std::collections::{BTreeMap, HashSet};
+use std::collections::{BTreeSet, HashSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -139,10 +147,14 @@ struct Raw {
     /// Everything but the prototypes (typedefs, defines, structs), cbindgen's order.
     decls: String,
     protos: Vec<Proto>,
+    /// The vendor types in the order MCCL.h declares them (cbindgen.toml, `[export]
+    /// include`).
+    type_order: Vec<String>,
 }
 
 fn run_cbindgen(root: &Path) -> Result<Raw, String> {
     let cfg = cbindgen::Config::from_file(root.join("cbindgen.toml"))?;
+    let type_order = cfg.export.include.clone();
     let bindings = cbindgen::Builder::new()
         .with_crate(root)
         .with_config(cfg)
@@ -165,7 +177,11 @@ fn run_cbindgen(root: &Path) -> Result<Raw, String> {
             decls.push('\n');
         }
     }
-    Ok(Raw { decls, protos })
+    Ok(Raw {
+        decls,
+        protos,
+        type_order,
+    })
 }
 
 fn check_against_vendor(p: &Proto, v: &Proto) -> Result<(), String> {
@@ -263,11 +279,61 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
         }
         body.push('\n');
     }
-    let body = collapse_blank_lines(&body);
+    let body = in_type_order(&collapse_blank_lines(&body), &raw.type_order)?;
     Ok(format!(
         "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
+}
+
+/// The name a type declaration block declares: `typedef ... NAME;`, `typedef struct {
+/// ... } NAME;` or `typedef R (MCC_CALLBACK *NAME)(...);`; `None` for other blocks.
+fn declared_type(block: &str) -> Option<String> {
+    let first = block.lines().next()?;
+    if !first.starts_with("typedef") {
+        return None;
+    }
+    if let Some(rest) = first.split_once("(MCC_CALLBACK *").map(|(_, r)| r) {
+        return rest.split(')').next().map(str::to_string);
+    }
+    let last = block.trim_end().strip_suffix(';')?;
+    let name: String = last
+        .chars()
+        .rev()
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
+        .collect();
+    Some(name.chars().rev().collect())
+}
+
+/// `body` with its type declarations in `order`, each in the place of one of them (the
+/// defines stay where cbindgen put them). cbindgen declares a type where the first
+/// function using it makes it need one, so its order follows the Rust sources (and misses
+/// the functions that family macros declare, which it does not expand); MCCL.h instead
+/// declares the vendor types in one fixed order, each after the types it uses. A type
+/// missing from `order` is an error.
+fn in_type_order(body: &str, order: &[String]) -> Result<String, String> {
+    let blocks: Vec<&str> = body.split("\n\n").collect();
+    let mut typed: Vec<(usize, &str)> = Vec::new();
+    for b in &blocks {
+        if let Some(name) = declared_type(b) {
+            let rank = order.iter().position(|n| *n == name).ok_or_else(|| {
+                format!(
+                    "{name}: a type MCCL.h declares is missing from cbindgen.toml [export] include"
+                )
+            })?;
+            typed.push((rank, b));
+        }
+    }
+    typed.sort_by_key(|(rank, _)| *rank);
+    let mut sorted = typed.into_iter().map(|(_, b)| b);
+    let out: Vec<&str> = blocks
+        .iter()
+        .map(|b| match declared_type(b) {
+            Some(_) => sorted.next().unwrap_or(b),
+            None => b,
+        })
+        .collect();
+    Ok(out.join("\n\n"))
 }
 
 /// The `typedef struct { ... } MCCL_*;` blocks of cbindgen's output (the simulation
@@ -341,8 +407,15 @@ fn collapse_blank_lines(s: &str) -> String {
     out
 }
 
+/// `include/MCCL_Fun.h`: every prototype of the vendor table, in its section order, with the
+/// vendor's C++ default arguments.
+///
+/// The prototypes come from the table, not from cbindgen: an entry point declared by one of
+/// the family macros of `src/ffi` is invisible to cbindgen (it does not expand macros), and
+/// the generated `tests/vendor_prototypes.rs` makes the compiler check every Rust signature
+/// against the table instead. The functions cbindgen does see are still checked here, and
+/// an exported function that belongs in no header is an error.
 fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
-    let mut exported: BTreeMap<&str, &Proto> = BTreeMap::new();
     for p in &raw.protos {
         if p.name.starts_with("mcl_") || p.name.starts_with("MCCL_Sim") {
             continue; // include/mcl.h, include/MCCL_Sim.h
@@ -357,7 +430,6 @@ fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
             .find(&p.name)
             .ok_or_else(|| format!("{}: not a vendor function (vendor_prototypes.txt)", p.name))?;
         check_against_vendor(p, v)?;
-        exported.insert(&p.name, p);
     }
     let mut out = String::new();
     out.push_str(BANNER);
@@ -365,17 +437,12 @@ fn mccl_fun_h(raw: &Raw, vendor: &Vendor) -> Result<String, String> {
         "/* MCCL_Fun.h: the functions of the IMP-series motion control command library that\n * libMCCLPCI_IMP implements. C++ callers get the vendor's default arguments. */\n#ifndef MCCL_FUN_H_LIBMCCLPCI_IMP\n#define MCCL_FUN_H_LIBMCCLPCI_IMP\n\n#include \"MCCL.h\"\n\n#ifndef MCC_CALL\n#if defined(_WIN32)\n#define MCC_CALL __stdcall\n#else\n#define MCC_CALL\n#endif\n#endif\n\n#ifndef MCC_API\n#if defined(_WIN32) && defined(MCCL_EXPORTS)\n#define MCC_API __declspec(dllexport)\n#elif defined(_WIN32)\n#define MCC_API __declspec(dllimport)\n#else\n#define MCC_API\n#endif\n#endif\n\n#ifdef __cplusplus\n#define MCC_DEFAULT(v) = v\nextern \"C\" {\n#else\n#define MCC_DEFAULT(v)\n#endif\n",
     );
     for (section, protos) in &vendor.sections {
-        let present: Vec<&Proto> = protos
-            .iter()
-            .filter(|v| exported.contains_key(v.name.as_str()))
-            .collect();
-        if present.is_empty() {
+        if protos.is_empty() {
             continue;
         }
         let _ = write!(out, "\n/* {section} */\n");
-        for v in present {
-            let p = exported[v.name.as_str()];
-            let line = render(p, Some(v));
+        for v in protos {
+            let line = render(v, Some(v));
             let (ret, rest) = line.split_once(' ').unwrap_or(("", &line));
             let _ = writeln!(out, "MCC_API {ret} MCC_CALL {rest};");
         }
@@ -448,6 +515,145 @@ fn mccl_lower_h() -> String {
     format!("{BANNER}/* mccl.h: the lower-case name the vendor's MCCL_Fun.h includes. */\n#ifndef MCCL_LOWER_H_LIBMCCLPCI_IMP\n#define MCCL_LOWER_H_LIBMCCLPCI_IMP\n#include \"MCCL.h\"\n#endif\n")
 }
 
+/// The Rust spelling of a vendor C type (`WORD *` -> `*mut WORD`), with the crate's names:
+/// `std::os::raw` for C's integers, the vendor typedefs, structs and callback types of
+/// `src/vendor` under their own names.
+fn rust_type(ty: &[String]) -> Result<String, String> {
+    let stars = ty.iter().rev().take_while(|t| *t == "*").count();
+    let base = ty[..ty.len() - stars].join(" ");
+    let base = match base.as_str() {
+        "int" => "c_int",
+        "double" => "f64",
+        "float" => "f32",
+        "char" => "c_char",
+        "long" => "c_long",
+        "long long" => "c_longlong",
+        "void" if stars > 0 => "c_void",
+        b if !b.is_empty() && b.chars().all(|c| c.is_ascii_uppercase() || c == '_') => b,
+        _ => {
+            return Err(format!(
+                "no Rust spelling for the C type {:?}",
+                ty.join(" ")
+            ))
+        }
+    };
+    Ok(format!("{}{base}", "*mut ".repeat(stars)))
+}
+
+/// The Rust function-pointer type a vendor prototype must have: `unsafe` when it takes a
+/// pointer (the caller vouches for it), `extern "C"`, no return type for `void`.
+fn rust_fn_type(v: &Proto) -> Result<String, String> {
+    let params = v
+        .params
+        .iter()
+        .map(|p| rust_type(&p.ty))
+        .collect::<Result<Vec<_>, _>>()?;
+    let unsafety = if v.params.iter().any(|p| p.ty.iter().any(|t| t == "*")) {
+        "unsafe "
+    } else {
+        ""
+    };
+    let ret = match v.ret.as_str() {
+        "void" => String::new(),
+        r => format!(" -> {}", rust_type(&tokens(r))?),
+    };
+    Ok(format!(
+        "{unsafety}extern \"C\" fn({}){ret}",
+        params.join(", ")
+    ))
+}
+
+/// The modules of `src/ffi` that declare entry points (not `mod.rs`, not the unit tests).
+fn ffi_modules(root: &Path) -> Result<Vec<String>, String> {
+    let dir = root.join("src/ffi");
+    let entries = std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let mut out = Vec::new();
+    for e in entries {
+        let name = e.map_err(|e| e.to_string())?.file_name();
+        let name = name.to_string_lossy();
+        if let Some(m) = name.strip_suffix(".rs") {
+            if m != "mod" && !m.starts_with("tests") {
+                out.push(m.to_string());
+            }
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// `tests/vendor_prototypes.rs`: one typed binding per prototype of the vendor table, so the
+/// compiler checks each entry point's Rust signature (parameter count, types, return type)
+/// against the table, however the function is declared (written out or made by a family
+/// macro). A function of the table that the crate does not export fails the build too.
+fn prototype_test(vendor: &Vendor, modules: &[String]) -> Result<String, String> {
+    let mut names: BTreeSet<String> = BTreeSet::new();
+    let mut body = String::new();
+    let mut count = 0;
+    for (section, protos) in &vendor.sections {
+        if protos.is_empty() {
+            continue;
+        }
+        let _ = writeln!(body, "    // {section}");
+        for v in protos {
+            let ty = rust_fn_type(v)?;
+            // The type names the binding uses, for the generated `use` lines.
+            let words = ty.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'));
+            let is_type = |w: &&str| {
+                !w.is_empty()
+                    && *w != "C"
+                    && (w.starts_with("c_")
+                        || w.chars().all(|c| c.is_ascii_uppercase() || c == '_'))
+            };
+            names.extend(words.filter(is_type).map(str::to_string));
+            let _ = writeln!(body, "    let _: {ty} = {};", v.name);
+            count += 1;
+        }
+    }
+    let (raw, crate_types): (Vec<String>, Vec<String>) =
+        names.into_iter().partition(|n| n.starts_with("c_"));
+    let mut out = String::new();
+    out.push_str("//! Generated by tools/mccl-headers from tools/mccl-headers/vendor_prototypes.txt.\n//! Do not edit: run `cargo run -p mccl-headers` to regenerate.\n//!\n//! Every function of the vendor table, bound to the Rust function-pointer type its C\n//! prototype spells: this file compiles only if each entry point exists with exactly that\n//! parameter list and return type, however it is declared (written out in `src/ffi` or made\n//! by one of its family macros). The C header `MCCL_Fun.h` is written from the same table.\n\n// Every module of src/ffi is searched; some export no vendor function (the simulation\n// extension).\n#![allow(unused_imports)]\n\n");
+    let _ = writeln!(out, "use std::os::raw::{{{}}};", raw.join(", "));
+    for m in modules {
+        let _ = writeln!(out, "use MCCLPCI_IMP::ffi::{m}::*;");
+    }
+    let _ = writeln!(
+        out,
+        "use MCCLPCI_IMP::vendor::{{{}}};",
+        crate_types.join(", ")
+    );
+    let _ = write!(
+        out,
+        "\n/// The {count} prototypes of the vendor table (vendor_prototypes.txt), in its order.\n#[test]\nfn every_vendor_function_has_the_vendor_signature() {{\n{body}}}\n"
+    );
+    rustfmt(&out)
+}
+
+/// `text` as `cargo fmt` leaves it, so the generated test passes the format check as written.
+fn rustfmt(text: &str) -> Result<String, String> {
+    use std::io::Write as _;
+    use std::process::{Command, Stdio};
+    let mut child = Command::new("rustfmt")
+        .args(["--edition", "2021"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("rustfmt: {e}"))?;
+    child
+        .stdin
+        .take()
+        .ok_or("rustfmt: no stdin")?
+        .write_all(text.as_bytes())
+        .map_err(|e| format!("rustfmt: {e}"))?;
+    let out = child
+        .wait_with_output()
+        .map_err(|e| format!("rustfmt: {e}"))?;
+    if !out.status.success() {
+        return Err("rustfmt failed on the generated prototype test".to_string());
+    }
+    String::from_utf8(out.stdout).map_err(|e| format!("rustfmt: {e}"))
+}
+
 fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
     let here = root.join("tools/mccl-headers");
     let vendor = Vendor::load(&here.join("vendor_prototypes.txt"))?;
@@ -460,6 +666,10 @@ fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
         (inc.join("mccl.h"), mccl_lower_h()),
         (inc.join("mcl.h"), mcl_h(&raw)),
         (inc.join("MCCL_Sim.h"), mccl_sim_h(&raw)),
+        (
+            root.join("tests/vendor_prototypes.rs"),
+            prototype_test(&vendor, &ffi_modules(root)?)?,
+        ),
     ])
 }
 
@@ -541,6 +751,36 @@ mod tests {
             assert!(check_against_vendor(&p, &v).is_err(), "{p:?}");
         }
         assert!(check_against_vendor(&v, &v).is_ok());
+    }
+
+    #[test]
+    fn rust_types_of_prototypes() {
+        let p = |s| rust_fn_type(&parse_proto(s).unwrap()).unwrap();
+        assert_eq!(
+            p("int MCC_SetPGain(WORD wGain0, WORD wCardIndex = 0)"),
+            "extern \"C\" fn(WORD, WORD) -> c_int"
+        );
+        assert_eq!(
+            p("int MCC_GetPulsePos(long *plX, long long *plY, void *pv, char c)"),
+            "unsafe extern \"C\" fn(*mut c_long, *mut c_longlong, *mut c_void, c_char) -> c_int"
+        );
+        assert_eq!(
+            p("void MCC_GetVersion(char *strVersion)"),
+            "unsafe extern \"C\" fn(*mut c_char)"
+        );
+        assert_eq!(p("double MCC_GetSysMaxSpeed()"), "extern \"C\" fn() -> f64");
+        assert!(rust_fn_type(&parse_proto("int f(unsigned short w)").unwrap()).is_err());
+    }
+
+    #[test]
+    fn type_declarations_follow_the_given_order() {
+        let body = "#define A 1\n\ntypedef struct {\n  T x;\n} S;\n\ntypedef uint16_t T;\n\ntypedef void (MCC_CALLBACK *F)(S *p);\n\n#define B 2";
+        let order = ["T", "S", "F"].map(String::from);
+        assert_eq!(
+            in_type_order(body, &order).unwrap(),
+            "#define A 1\n\ntypedef uint16_t T;\n\ntypedef struct {\n  T x;\n} S;\n\ntypedef void (MCC_CALLBACK *F)(S *p);\n\n#define B 2"
+        );
+        assert!(in_type_order(body, &order[..2]).is_err());
     }
 
     #[test]
