@@ -22,9 +22,12 @@ use MCCLPCI_IMP::vendor::SYS_CARD_CONFIG;
 
 /// Ticks per engine measurement (1 ms each, so the lines, 100 s long, never end).
 const TICKS: u32 = 5_000;
-/// Line length per axis (UU) and feed (UU/s): 1000·√8 UU at 10 UU/s, about 283 s.
+/// Line length per axis (UU) and feed (UU/s): X, Y and Z compose the path, 1000·√3 UU at
+/// 10 UU/s, about 173 s (173,000 ticks; a measurement runs about 105,000).
 const LEN: f64 = 1000.0;
 const FEED: f64 = 10.0;
+/// Ticks of the profile mode (`MCCL_TICK_FLOOR_PROFILE`): the lines run 173,000.
+const PROFILE_TICKS: u32 = 150_000;
 /// Pulses per UU of every channel (the default mechanism parameters).
 const PULSES_PER_UU: f64 = 1000.0;
 
@@ -190,7 +193,7 @@ fn measure(groups: u16) -> (Costs, Costs) {
 }
 
 /// `MCCL_TICK_FLOOR_PROFILE=<groups>[,live]`: only the engine, `groups` groups for
-/// 200,000 ticks (with a snapshot published every tick with `,live`), to run under a
+/// 150,000 ticks (the lines still run) (with a snapshot published every tick with `,live`), to run under a
 /// profiler (`perf record`); prints the time per tick.
 fn profile(spec: &str) {
     let (n, live) = match spec.split_once(',') {
@@ -207,8 +210,8 @@ fn profile(spec: &str) {
         .live_snapshots
         .store(live, std::sync::atomic::Ordering::Relaxed);
     let t = Instant::now();
-    MCC_TimeDelay(200_000);
-    let us = t.elapsed().as_secs_f64() / 200_000.0 * 1e6;
+    MCC_TimeDelay(PROFILE_TICKS);
+    let us = t.elapsed().as_secs_f64() / f64::from(PROFILE_TICKS) * 1e6;
     MCC_CloseSystem();
     println!("profile: {groups} groups, live {live}: engine {us:.3} us per tick");
 }

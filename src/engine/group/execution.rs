@@ -59,6 +59,15 @@ pub(super) struct Running {
 impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
+        if !self.tick_cruising(dt) {
+            self.tick_full(dt);
+        }
+    }
+
+    /// [`GroupState::tick`] when the group does more than cruise: kept out of line, so
+    /// that the cruise path, nearly every tick of a moving group, stays small.
+    #[inline(never)]
+    fn tick_full(&mut self, dt: f64) {
         if self.homing != 0 && self.external.is_none() {
             // The homing sets the positions (`set_homing_axis`).
             self.update_status();
@@ -69,9 +78,6 @@ impl GroupState {
         }
         if self.post.is_some() {
             return self.tick_post(dt);
-        }
-        if self.tick_cruising(dt) {
-            return;
         }
         // Software over-travel compares with the position before the tick (only needed,
         // and so only copied, when a check is on).
@@ -102,13 +108,16 @@ impl GroupState {
     }
 
     /// The tick of a group in the middle of one general or PtP command at a steady rate
-    /// (no ramp, not held or aborting, no over-travel check, kinematics or filters): only
+    /// (no ramp, not held or aborting, no homing, external executor, over-travel check,
+    /// kinematics or filters): only
     /// the command's own time advances and the position is sampled. Returns false, having
     /// changed nothing, when the tick may do more (start, blend, end or retire a command,
     /// ramp the rate); [`GroupState::tick`] then runs in full. The arithmetic is that of
     /// the full tick, operation for operation, so the positions are the same to the bit.
     fn tick_cruising(&mut self, dt: f64) -> bool {
         if self.homing != 0
+            || self.external.is_some()
+            || self.post.is_some()
             || self.kin.is_some()
             || self.mode != Mode::Normal
             || self.rate.ramp.is_some()
