@@ -60,6 +60,7 @@ impl GroupState {
     }
 
     /// The part of the published state that changes every tick.
+    #[inline]
     pub fn motion(&self) -> Motion {
         if self.post.is_some() || self.settings.compose != crate::planner::compose::XYZ_MASK {
             return self.post_motion();
@@ -104,6 +105,7 @@ impl GroupState {
     /// keys mean equal infos, so publishing compares these few words instead of building
     /// and comparing the whole info every tick. The rest of the info changes only with a
     /// command start (counted by `starts`) or a reset (which publishes afresh).
+    #[inline]
     pub(super) fn info_key(&self) -> InfoKey {
         let back = self.running.back();
         InfoKey {
@@ -132,6 +134,7 @@ impl GroupState {
 
     /// Whether the info part changed since it was last published ([`GroupState::info_key`]);
     /// if so, it counts as published from now on.
+    #[inline]
     pub fn info_changed(&mut self) -> bool {
         let key = self.info_key();
         if self.published_key == Some(key) {
