@@ -2,9 +2,10 @@
 //! period on the [`Clock`](crate::clock::Clock), advances every group, and publishes
 //! snapshots that status calls read without taking any lock.
 //!
-//! Locks: each group has its own mutex (a call on group 3 never waits for group 5); the
-//! engine thread takes one group lock at a time and never holds one while user code runs,
-//! so a callback may call any MCC_* function. Order: `system::SYSTEM`, then a group.
+//! Locks: the groups share one mutex ([`Shared::group`] maps it to one group), so the
+//! tick takes a single lock for all of them; a program's call holds it only to queue or
+//! change its group. The engine thread never holds it while user code runs, so a callback
+//! may call any MCC_* function. Order: `system::SYSTEM`, the machine, then the groups.
 //!
 //! Files, one concept each: `shared.rs` ([`Shared`], what the engine thread and the
 //! program's threads share), `running.rs` ([`Engine`]: the thread's start, loop, stop and

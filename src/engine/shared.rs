@@ -1,5 +1,5 @@
 //! What the engine thread and the program's threads share ([`Shared`]): the clock, the
-//! groups behind their locks, the published snapshots and statuses, the simulated
+//! groups behind their one lock, the published snapshots and statuses, the simulated
 //! machine, the card's outputs and peripherals, the routines and the go home in progress.
 //! The tick ([`super::tick`]), the virtual-time polls ([`super::poll`]) and the go-home
 //! control ([`super::homing::control`]) are methods of it in their own files.
