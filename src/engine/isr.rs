@@ -166,8 +166,9 @@ impl Shared {
     }
 
     /// Runs every card's peripherals for one tick of `dt_ns` and takes the causes raised
-    /// since the last delivery into `out` (cleared first). A watchdog that expired resets its card here (its groups
-    /// abort and record [`ERR_WATCHDOG_RESET`], servo-on and position-ready go off).
+    /// since the last delivery into `out` (cleared first). A watchdog that expired resets
+    /// its card here (its groups abort and record [`ERR_WATCHDOG_RESET`], servo-on and
+    /// position-ready go off).
     pub fn tick_peripherals(&self, dt_ns: u64, out: &mut Collected) {
         out.clear();
         for (card, p) in self.periph.iter().enumerate() {
