@@ -132,6 +132,12 @@ pub struct Channel {
     /// The command for the coming step, set during a tick by the group (or homing)
     /// driving the channel ([`Channel::command`]); `None`: the channel holds `cmd`.
     commanded: Option<i64>,
+    /// The last step changed nothing, and another with the same command would change
+    /// nothing either ([`Channel::step_commanded`] skips it). Every method that changes
+    /// the channel other than a step clears it.
+    resting: bool,
+    /// The period of the step that found the channel resting.
+    resting_dt: f64,
     /// Pulses output (command + compensation).
     out: i64,
     prev_out: i64,
@@ -158,7 +164,7 @@ pub struct Channel {
     /// ([`Channel::refresh_sensors`]).
     sensors: bool,
     /// Compensation tables in effect.
-    pub comp: Compensation,
+    comp: Compensation,
     /// Simulation configuration.
     spec: ChannelSpec,
     mac: SYS_MAC_PARAM,
@@ -195,6 +201,8 @@ impl Channel {
             gear_rate: 1.0,
             cmd: 0,
             commanded: None,
+            resting: false,
+            resting_dt: 0.0,
             out: 0,
             prev_out: 0,
             prev_delta: 0,
@@ -249,6 +257,7 @@ impl Channel {
     /// `MCC_ResetMotion`/`MCC_UpdateParam`: the command counter restarts from 0 where the
     /// motor stands; the motor, its encoder count and the sensors do not move.
     pub fn rezero(&mut self) {
+        self.resting = false;
         let count = self.encoder();
         self.restart_counter(self.actual, count);
     }
@@ -257,6 +266,7 @@ impl Channel {
     /// motor, its sensors and its machine position do not move); the encoder then reads
     /// `count` and compensation starts again from its home point.
     fn restart_counter(&mut self, shift: f64, count: i64) {
+        self.resting = false;
         self.base += shift;
         self.actual -= shift;
         self.cmd = 0;
@@ -273,6 +283,7 @@ impl Channel {
     /// move (a lagging one keeps its following error); compensation restarts from its
     /// home point (`wHome_No`).
     pub fn home_here(&mut self) {
+        self.resting = false;
         self.restart_counter(self.out as f64, 0);
     }
 
@@ -341,12 +352,14 @@ impl Channel {
 
     /// `MCC_SetENCValue`: the count becomes `v` here.
     pub fn set_encoder(&mut self, v: i64) {
+        self.resting = false;
         self.enc_offset = v - self.raw_count();
     }
 
     /// `MCC_SetENCInputRate`: counts per encoder cycle (1, 2 or 4; 3 also means x4);
     /// the count keeps its value at the change.
     pub fn set_input_rate(&mut self, rate: u16) {
+        self.resting = false;
         let v = self.encoder();
         self.input_rate = Some(rate);
         self.set_encoder(v);
@@ -355,6 +368,7 @@ impl Channel {
     /// `MCC_SetENCGearRate`: counts per motor pulse at x4; the count keeps its value at
     /// the change.
     pub fn set_gear_rate(&mut self, r: f64) {
+        self.resting = false;
         let v = self.encoder();
         self.gear_rate = r;
         self.set_encoder(v);
@@ -362,6 +376,7 @@ impl Channel {
 
     /// New mechanism and encoder parameters (`MCC_UpdateParam`).
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
+        self.resting = false;
         let count = self.encoder();
         self.mac = mac;
         self.enc = enc;
@@ -373,12 +388,14 @@ impl Channel {
 
     /// New compensation tables (`MCC_UpdateCompParam`).
     pub fn set_compensation(&mut self, p: &SYS_COMP_PARAM) {
+        self.resting = false;
         *self.comp_param = *p;
         self.comp = Compensation::new(p);
     }
 
     /// Forces a sensor's physical level (`Some`) or lets the position decide (`None`).
     pub fn force(&mut self, s: Sensor, level: Option<bool>) {
+        self.resting = false;
         self.forced[s as usize] = level;
         self.refresh_sensors();
         self.update_sensors();
@@ -397,6 +414,7 @@ impl Channel {
 
     /// Moves a sensor: the home region, or a limit switch's position (`from`).
     pub fn place(&mut self, s: Sensor, from: f64, to: f64) {
+        self.resting = false;
         match s {
             Sensor::Home => self.spec.home = Some((from, to)),
             Sensor::LimitPlus => self.spec.limit_plus = Some(from),
@@ -428,6 +446,7 @@ impl Channel {
     /// Clears the latch of limit switch `side`; it latches again at once while the
     /// switch is active.
     pub fn clear_latched_limit(&mut self, side: usize) {
+        self.resting = false;
         self.latched[side] = self.limit_switch(side);
     }
 
@@ -442,6 +461,7 @@ impl Channel {
     }
 
     fn update_sensors(&mut self) {
+        self.resting = false;
         let x = self.position();
         let hit = [
             self.spec.home.is_some_and(|(a, b)| x >= a && x <= b),
@@ -513,6 +533,7 @@ impl Channel {
     /// The plant: a first-order lag of `lag_s` seconds, or ideal (`None`) — what a
     /// `[plant]` table of the simulation configuration sets.
     pub fn set_plant_lag(&mut self, lag_s: Option<f64>) {
+        self.resting = false;
         self.spec.lag_s = lag_s;
     }
 
@@ -543,8 +564,15 @@ impl Channel {
 
     /// One step of `dt` seconds to the pulses set by [`Channel::command`] this tick, or
     /// holding the last command when none was set.
+    ///
+    /// A channel at rest (see `resting`) held at its command is not stepped: the step
+    /// would leave every field as it is. Most channels of a machine stand still most of
+    /// the time; this keeps a tick from touching them.
     pub fn step_commanded(&mut self, dt: f64) {
         let cmd = self.commanded.take().unwrap_or(self.cmd);
+        if self.resting && cmd == self.cmd && dt == self.resting_dt {
+            return;
+        }
         self.step(cmd, dt);
     }
 
@@ -573,10 +601,23 @@ impl Channel {
             self.update_sensors();
         }
         self.step_levels = self.levels;
+        // A fixed point of `step` with this command and period: the output stood still
+        // for two steps (no pulse speed or acceleration), the motor did not move (the
+        // plant's next position depends only on this one, the command and the period; a
+        // lag ends on a fixed point of its floating-point iteration, which need not be
+        // the command), so no index pulse and the same sensor levels, and no
+        // compensation state follows the motion.
+        self.resting = !self.comp.active()
+            && self.out == self.prev_out
+            && self.prev_delta == 0
+            && self.last_move.0 == self.last_move.1
+            && self.prev_levels == self.step_levels;
+        self.resting_dt = dt;
     }
 
     /// Sets the motor where the command is (for a channel that is stopped and reset).
     pub fn settle(&mut self) {
+        self.resting = false;
         self.actual = self.out as f64;
         self.update_sensors();
     }
@@ -829,6 +870,87 @@ mod tests {
 
     fn ch(spec: ChannelSpec) -> Channel {
         Channel::new(spec, default_mac_param(), default_encoder_config())
+    }
+
+    /// What a step shows: the fields `step` writes, and the readings derived from them.
+    fn shown(
+        c: &Channel,
+    ) -> (
+        i64,
+        i64,
+        i64,
+        f64,
+        SensorLevels,
+        SensorLevels,
+        (i64, i64),
+        u32,
+    ) {
+        (
+            c.cmd,
+            c.out,
+            c.encoder(),
+            c.actual,
+            c.levels,
+            c.prev_levels,
+            c.pulse_rate(),
+            c.index_events,
+        )
+    }
+
+    #[test]
+    fn a_channel_at_rest_skips_steps_that_would_change_nothing() {
+        // Two channels with a 10 ms lag, one stepped through `step_commanded` (which skips
+        // steps at rest), one always through `step`: a move of 1000 pulses, then the
+        // command held while the motor closes in (by e^(-1 ms / 10 ms) a step, until
+        // the floating-point iteration stands still a few ULP of 1000 short, after some
+        // hundreds of steps), then held at rest. Every step shows the same on both, and
+        // the steps from the first at rest on are skipped.
+        let spec = ChannelSpec {
+            lag_s: Some(0.01),
+            ..ChannelSpec::default()
+        };
+        let (mut a, mut b) = (ch(spec), ch(spec));
+        let mut first_rest = None;
+        for n in 0..3000 {
+            let cmd = if n < 10 { 100 * (n + 1) } else { 1000 };
+            a.command(cmd);
+            a.step_commanded(0.001);
+            b.step(cmd, 0.001);
+            assert_eq!(shown(&a), shown(&b), "step {n}");
+            if a.resting && first_rest.is_none() {
+                first_rest = Some(n);
+            }
+        }
+        let n = first_rest.unwrap_or_else(|| {
+            panic!(
+                "the motor comes to rest: {:?} {:?} {} {}",
+                shown(&a),
+                a.last_move,
+                a.prev_out,
+                a.prev_delta
+            )
+        });
+        assert!(n > 300 && n < 3000, "{n}");
+        assert!((a.actual - 1000.0).abs() < 1e-9, "{}", a.actual);
+    }
+
+    #[test]
+    fn a_sensor_forced_at_rest_shows_as_one_edge() {
+        // At rest at 0, the home sensor forced active between steps: the next step shows the
+        // edge (previous level low, level high), the one after shows no edge.
+        let mut c = ch(ChannelSpec::default());
+        for _ in 0..3 {
+            c.step_commanded(0.001);
+        }
+        assert!(c.resting);
+        c.force(Sensor::Home, Some(true));
+        c.step_commanded(0.001);
+        assert!(!c.prev_levels().home && c.levels().home);
+        c.step_commanded(0.001);
+        assert!(
+            c.prev_levels().home && c.levels().home,
+            "the edge shows once"
+        );
     }
 
     #[test]
