@@ -316,6 +316,15 @@ impl Clock {
         &self.lateness
     }
 
+    /// Whether the next tick is granted already, so that [`Clock::wait_next`] returns it
+    /// without waiting (a virtual clock in the middle of a run). Never under the realtime
+    /// clock, whose ticks wait for their deadline.
+    pub fn granted(&self) -> bool {
+        self.mode != ClockMode::Realtime
+            && !self.stop.load(Ordering::Acquire)
+            && self.ticks() < self.run_until.load(Ordering::Acquire)
+    }
+
     /// Called by the engine thread before each tick; blocks until the tick may run.
     pub fn wait_next(&self) -> Next {
         if self.mode == ClockMode::Realtime {

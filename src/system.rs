@@ -346,8 +346,7 @@ pub fn reset_motion() -> McclResult<()> {
     let r = sys.running.as_ref().ok_or(McclError::NotInitialized)?;
     let shared = r.engine.shared();
     shared
-        .machine
-        .lock()
+        .lock_machine()
         .cards
         .iter_mut()
         .flatten()
@@ -366,7 +365,7 @@ pub fn update_param() -> McclResult<()> {
     r.encoder = encoder;
     let shared = r.engine.shared();
     {
-        let mut m = shared.machine.lock();
+        let mut m = shared.lock_machine();
         for (c, chans) in m.cards.iter_mut().enumerate() {
             for (ch, chan) in chans.iter_mut().enumerate() {
                 chan.set_params(mac[c][ch], encoder[c][ch]);

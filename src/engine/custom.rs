@@ -117,6 +117,11 @@ pub struct CustomSpec {
 /// Custom motion commands alive anywhere (queued, running or awaiting cleanup): while
 /// none is, the stage costs one atomic load a tick.
 static LIVE: AtomicUsize = AtomicUsize::new(0);
+
+/// Whether a custom command of any system may have callbacks to run (see `LIVE`).
+pub(super) fn live() -> bool {
+    LIVE.load(Ordering::Acquire) != 0
+}
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
 impl CustomSpec {

@@ -169,7 +169,12 @@ impl Shared {
     /// since the last delivery into `out` (cleared first). A watchdog that expired resets
     /// its card here (its groups abort and record [`ERR_WATCHDOG_RESET`], servo-on and
     /// position-ready go off).
-    pub fn tick_peripherals(&self, dt_ns: u64, out: &mut Collected) {
+    pub fn tick_peripherals(
+        &self,
+        dt_ns: u64,
+        out: &mut Collected,
+        groups: &mut [super::group::GroupState],
+    ) {
         out.clear();
         for (card, p) in self.periph.iter().enumerate() {
             if p.count_idle_tick() {
@@ -183,7 +188,7 @@ impl Shared {
                 (reset, pending)
             };
             if reset {
-                self.reset_card(card);
+                self.reset_card(card, groups);
             }
             if let Some(pending) = pending {
                 out.push(card, pending);
@@ -192,15 +197,16 @@ impl Shared {
     }
 
     /// The card-level part of a watchdog reset (the peripherals reset themselves).
-    fn reset_card(&self, card: usize) {
+    fn reset_card(&self, card: usize, groups: &mut [super::group::GroupState]) {
         self.servo_on[card].store(0, Ordering::Release);
         self.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
-        self.for_each_group(|g| {
+        for g in groups.iter_mut() {
             if g.def.card.0 == card {
                 g.abort(0.0, false);
                 g.set_error(ERR_WATCHDOG_RESET);
             }
-        });
+            self.publish(g);
+        }
     }
 }
 

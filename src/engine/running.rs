@@ -130,19 +130,43 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
     drop(ready);
     // The interrupts each tick collects, reused from tick to tick.
     let mut interrupts = isr::Collected::new();
+    // The machine's and the groups' locks, kept from one tick to the next while nothing
+    // in between needs them (`Shared::quiet_between_ticks`).
+    let mut held: Option<super::tick::Held<'_>> = None;
     loop {
+        if !shared.clock.granted() {
+            // The run ends: the program resumes and will want them.
+            if let Some(h) = held.take() {
+                h.release();
+            }
+        }
         match shared.clock.wait_next() {
             Next::Stop => {
+                if let Some(h) = held.take() {
+                    h.release();
+                }
                 shared.custom_close();
                 return;
             }
             Next::Tick => {
-                let published = shared.tick_or_recover(&mut interrupts);
+                let published = shared.tick_or_recover(&mut held, &mut interrupts);
+                if shared.quiet_between_ticks() {
+                    // Nothing to call: the stages below would find nothing registered.
+                    shared.check_watch();
+                    if !published {
+                        shared.end_of_run(held.as_mut());
+                    }
+                    shared.clock.tick_done();
+                    continue;
+                }
+                if let Some(h) = held.take() {
+                    h.release();
+                }
                 // The program's kinematics for the next tick, without any lock.
                 shared.kinematics_stage();
                 shared.check_watch();
                 if !published {
-                    shared.end_of_run();
+                    shared.end_of_run(None);
                 }
                 if shared.tracing && !interrupts.is_empty() {
                     shared.trace_interrupts(&interrupts);

@@ -47,8 +47,13 @@ pub struct Shared {
     pub(super) watch: (AtomicI32, AtomicI32),
     /// Number of cards passed to `MCC_InitSystem`.
     pub cards: usize,
-    /// The simulated machine behind the channels. Lock order: machine before a group.
-    pub machine: Mutex<Machine>,
+    /// The simulated machine behind the channels ([`Shared::lock_machine`]). Lock order:
+    /// machine before the groups.
+    pub(super) machine: Mutex<Machine>,
+    /// Threads other than the engine's waiting for the machine's or the groups' lock: the
+    /// engine thread, which may keep both from one virtual tick to the next
+    /// ([`super::running`]), lets them go at the next tick when this is not 0.
+    pub(super) lock_wanted: AtomicU32,
     /// Hardware limit switch check (`MCC_EnableLimitSwitchCheck` mode, -1 when off).
     pub limit_check: AtomicI32,
     /// `MCC_EnableDryRun` is in effect.
@@ -133,6 +138,7 @@ impl Shared {
             snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
             cards: machine.cards.len(),
             machine: Mutex::new(machine),
+            lock_wanted: AtomicU32::new(0),
             limit_check: AtomicI32::new(-1),
             dry_run: AtomicBool::new(false),
             live_snapshots: AtomicBool::new(false),
@@ -166,7 +172,17 @@ impl Shared {
             .copied()
             .flatten()
             .ok_or(McclError::Group)?;
-        MutexGuard::try_map(self.groups.lock(), |gs| gs.get_mut(slot)).map_err(|_| McclError::Group)
+        MutexGuard::try_map(self.lock_groups(), |gs| gs.get_mut(slot)).map_err(|_| McclError::Group)
+    }
+
+    /// Locks the simulated machine (lock order: before the groups).
+    pub fn lock_machine(&self) -> MutexGuard<'_, Machine> {
+        wanted(&self.lock_wanted, &self.machine)
+    }
+
+    /// Locks the groups, for anyone but the engine's tick.
+    pub(super) fn lock_groups(&self) -> MutexGuard<'_, Vec<GroupState>> {
+        wanted(&self.lock_wanted, &self.groups)
     }
 
     /// Number of running groups (positions 0.. in the groups' lock).
@@ -178,7 +194,7 @@ impl Shared {
     /// engine's stages, which visit every group one at a time and release the lock
     /// around the program's callbacks.
     pub(super) fn nth_group(&self, n: usize) -> Option<MappedMutexGuard<'_, GroupState>> {
-        MutexGuard::try_map(self.groups.lock(), |gs| gs.get_mut(n)).ok()
+        MutexGuard::try_map(self.lock_groups(), |gs| gs.get_mut(n)).ok()
     }
 
     /// Marks `card` as an MC3B (its groups run on the device).
@@ -234,7 +250,7 @@ impl Shared {
 
     /// Whether a group driving channel `ch` of `card` is moving.
     pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
-        self.groups.lock().iter().any(|g| {
+        self.lock_groups().iter().any(|g| {
             g.status() == crate::vendor::consts::GMS_RUNNING
                 && g.axes.iter().any(|a| a.channel == Some((card, ch)))
         })
@@ -242,7 +258,7 @@ impl Shared {
 
     /// Every running group, locked one at a time.
     pub fn for_each_group(&self, mut f: impl FnMut(&mut GroupState)) {
-        for g in self.groups.lock().iter_mut() {
+        for g in self.lock_groups().iter_mut() {
             f(g);
             self.publish(g);
         }
@@ -282,4 +298,16 @@ fn commanding_axes(groups: &[GroupState]) -> Vec<u32> {
         out[*n] |= 1 << i;
     }
     out
+}
+
+/// Locks `m` counting the caller in `wanted` while it may wait: the engine thread, which
+/// may hold the lock from one virtual tick to the next, sees the count and lets go.
+fn wanted<'a, T>(wanted: &AtomicU32, m: &'a Mutex<T>) -> MutexGuard<'a, T> {
+    if let Some(g) = m.try_lock() {
+        return g;
+    }
+    wanted.fetch_add(1, Ordering::AcqRel);
+    let g = m.lock();
+    wanted.fetch_sub(1, Ordering::AcqRel);
+    g
 }

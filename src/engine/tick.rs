@@ -2,10 +2,13 @@
 //! pulses to the channels, the simulated machine's step, triggers and interrupts, the
 //! safety checks, the snapshots and the trace; and the recovery from a panicking tick.
 
+use super::group::GroupState;
 use super::homing::control::apply_homing;
 use super::shared::Shared;
 use super::{command, isr, snapshot};
 use crate::config::AXES;
+use crate::machine::Machine;
+use parking_lot::MutexGuard;
 use std::sync::atomic::Ordering;
 use std::time::Duration;
 
@@ -18,10 +21,16 @@ impl Shared {
     /// state instead of a dead engine thread: every group stops where it stands, drops
     /// its queue and records [`safety::ERR_INTERNAL`]; the clock goes on. The locks the
     /// tick held were released while unwinding (parking_lot locks do not poison).
-    pub(super) fn tick_or_recover(&self, interrupts: &mut isr::Collected) -> bool {
-        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick(interrupts))) {
+    pub(super) fn tick_or_recover<'a>(
+        &'a self,
+        held: &mut Option<Held<'a>>,
+        interrupts: &mut isr::Collected,
+    ) -> bool {
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick(held, interrupts)))
+        {
             Ok(published) => published,
             Err(_) => {
+                *held = None;
                 self.stop_all_for_internal_error();
                 interrupts.clear();
                 true
@@ -36,8 +45,9 @@ impl Shared {
     /// is waiting while ticks run, so a long run publishes every [`PUBLISH_EVERY`] ticks
     /// and at its last tick (see [`Shared::end_of_run`]); statuses are published every
     /// tick. Returns whether it published everything; the interrupts to deliver are
-    /// left in `interrupts`.
-    fn tick(&self, interrupts: &mut isr::Collected) -> bool {
+    /// left in `interrupts`. The machine's and the groups' locks are `held`'s (taken
+    /// here when it is empty); they stay there when the tick ends.
+    fn tick<'a>(&'a self, held: &mut Option<Held<'a>>, interrupts: &mut isr::Collected) -> bool {
         let dt = self.clock.period().as_secs_f64();
         let n = self.clock.ticks();
         let t_ns = self.running_tick_end_ns();
@@ -49,10 +59,11 @@ impl Shared {
         // operations a tick.
         let mut trace_guard = self.tracing.then(|| self.trace.lock());
         let mut trace = trace_guard.as_mut().and_then(|t| t.as_mut());
-        let mut machine = self.machine.lock();
+        let held = held.get_or_insert_with(|| Held::lock(self));
+        let machine = &mut *held.machine;
         let dry = self.dry_run.load(Ordering::Relaxed);
-        let homed = self.tick_homing(&mut machine, dt);
-        let mut groups = self.groups.lock();
+        let homed = self.tick_homing(machine, dt);
+        let groups = &mut *held.groups;
         for (n, g) in groups.iter_mut().enumerate() {
             g.tick(dt);
             g.kinematics_apply();
@@ -124,29 +135,47 @@ impl Shared {
                 }
             }
         }
-        self.safety(&machine, &mut groups, full, dt);
+        self.safety(machine, groups, full, dt);
         if let Some(t) = trace {
-            t.machine_events(t_ns, &machine);
+            t.machine_events(t_ns, machine);
             if let Some(h) = &homed {
                 t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
             }
         }
         if full {
-            self.publish_view(&machine, &groups, self.clock.last_of_run());
+            self.publish_view(machine, groups, self.clock.last_of_run());
         }
-        drop(groups);
-        drop(machine);
         drop(trace_guard);
-        self.tick_peripherals(tick_ns(self.clock.period()), interrupts);
+        // Peripherals after the groups (lock order: groups, then a card's peripherals).
+        self.tick_peripherals(tick_ns(self.clock.period()), interrupts, groups);
         full
     }
 
     /// After a tick that did not publish everything: if it ended the run (the waiting
-    /// program resumes now), publishes every group.
-    pub(super) fn end_of_run(&self) {
+    /// program resumes now), publishes every group (through `held` when the engine
+    /// thread holds the locks).
+    pub(super) fn end_of_run(&self, held: Option<&mut Held<'_>>) {
         if self.clock.last_of_run() {
-            self.for_each_group(|_| {});
+            match held {
+                Some(h) => h.groups.iter_mut().for_each(|g| self.publish(g)),
+                None => self.for_each_group(|_| {}),
+            }
         }
+    }
+
+    /// Whether nothing between this tick and the next needs the machine's or the groups'
+    /// locks or runs the program's code: a virtual clock (the program waits while ticks
+    /// run), no trace, no routine, no kinematics or custom motion callbacks, and no other
+    /// thread waiting for either lock. Then the engine thread keeps both locks into the
+    /// next tick (four atomic operations a tick less) and skips the stages, which have
+    /// nothing to run; a routine registered meanwhile is called from the next tick on.
+    pub(super) fn quiet_between_ticks(&self) -> bool {
+        self.clock.mode().virtual_time()
+            && !self.tracing
+            && !self.routines_any()
+            && !self.kinematics_on.load(Ordering::Acquire)
+            && !super::custom::live()
+            && self.lock_wanted.load(Ordering::Acquire) == 0
     }
 
     /// Virtual time, ns, at the end of the tick now running (the time its trace rows and
@@ -200,6 +229,30 @@ impl Shared {
                 }
             }
         }
+    }
+}
+
+/// The machine's and the groups' locks as the engine thread holds them through a tick
+/// and, while [`Shared::quiet_between_ticks`], from one virtual tick to the next.
+pub(super) struct Held<'a> {
+    // Fields drop in order: the groups, then the machine (the reverse of locking).
+    groups: MutexGuard<'a, Vec<GroupState>>,
+    machine: MutexGuard<'a, Machine>,
+}
+
+impl<'a> Held<'a> {
+    /// Locks the machine, then the groups.
+    fn lock(shared: &'a Shared) -> Held<'a> {
+        let machine = shared.machine.lock();
+        let groups = shared.groups.lock();
+        Held { groups, machine }
+    }
+
+    /// Unlocks both, handing each to a thread waiting for it if there is one (the engine
+    /// thread would otherwise take them back at its next tick before a woken thread runs).
+    pub(super) fn release(self) {
+        MutexGuard::unlock_fair(self.groups);
+        MutexGuard::unlock_fair(self.machine);
     }
 }
 

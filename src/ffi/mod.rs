@@ -286,7 +286,7 @@ pub fn with_machine<R>(
 ) -> McclResult<R> {
     let shared = crate::system::active()?;
     let cd = shared.card(card(cd.0)?)?;
-    let mut m = shared.machine.lock();
+    let mut m = shared.lock_machine();
     f(&mut m, cd)
 }
 
@@ -309,7 +309,7 @@ pub fn with_machine_channel<R>(
     let (cd, ch) = (card(cd.0)?, channel(ch.0)?);
     let shared = crate::system::active()?;
     let cd = shared.card(cd)?;
-    let mut m = shared.machine.lock();
+    let mut m = shared.lock_machine();
     f(m.channel_mut(cd, ch.0).ok_or(McclError::Parameter)?)
 }
 

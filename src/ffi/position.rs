@@ -210,7 +210,7 @@ pointer_fns! {
 pub extern "C" fn MCC_UpdateCompParam() -> c_int {
     ffi_boundary! {
         let comp = system::config(|c| c.comp.clone());
-        system::active()?.machine.lock().apply_compensation(&comp);
+        system::active()?.lock_machine().apply_compensation(&comp);
         Ok(c::NO_ERR)
     }
 }

@@ -123,10 +123,10 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
                 let v = match nOutput {
                     MCCL_SIM_OUT_SERVO => {
                         let bits = shared.servo_on[cd].load(Ordering::Acquire);
-                        shared.machine.lock().servo_output(cd, ch.0, bits)
+                        shared.lock_machine().servo_output(cd, ch.0, bits)
                     }
                     MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
-                    MCCL_SIM_OUT_LED => shared.machine.lock().led_lit(cd, ch.0),
+                    MCCL_SIM_OUT_LED => shared.lock_machine().led_lit(cd, ch.0),
                     _ => return Err(McclError::Parameter),
                 };
                 Ok(c_int::from(v))

@@ -129,7 +129,7 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
                 _ => return Err(bad("level must be 1, 0 or -1")),
             };
             let (cd, ch) = (card_of(shared, card)?, channel_of(channel)?);
-            let mut m = shared.machine.lock();
+            let mut m = shared.lock_machine();
             let chan = m
                 .channel_mut(cd, ch)
                 .ok_or_else(|| bad("no such channel"))?;
@@ -137,7 +137,7 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
         }
         Control::EmergencyStop { card, on } => {
             let cd = card_of(shared, card)?;
-            let mut m = shared.machine.lock();
+            let mut m = shared.lock_machine();
             let e = m.emergency.get_mut(cd).ok_or_else(|| bad("no such card"))?;
             *e = on;
         }

@@ -30,7 +30,7 @@ impl Shared {
         if self.mc3b_cards.load(Ordering::Acquire) & (1 << card) != 0 {
             return self.start_mc3b_homing(card, orders, cfgs);
         }
-        let machine = self.machine.lock();
+        let machine = self.lock_machine();
         let chans = machine.cards.get(card).ok_or(McclError::Parameter)?;
         let mut slot = self.homing.lock();
         if slot.is_some() {
@@ -46,7 +46,7 @@ impl Shared {
         };
         // Every group driving a homed channel must be idle; mark them, undo on failure.
         let mut marked: Vec<usize> = Vec::new();
-        let mut groups = self.groups.lock();
+        let mut groups = self.lock_groups();
         for n in 0..groups.len() {
             let g = &mut groups[n];
             let mask = axes_of(g);
@@ -93,7 +93,7 @@ impl Shared {
             self.home_status.store(homing::HOME_DONE, Ordering::Release);
             return Ok(());
         }
-        for g in self.groups.lock().iter_mut() {
+        for g in self.lock_groups().iter_mut() {
             if g.def.card.0 != card || !g.is_external() {
                 continue;
             }
