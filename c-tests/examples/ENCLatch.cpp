@@ -61,6 +61,11 @@ int main()
     CHECK_EQ(ENC_ISR, 3);   // index trigger off
     CHECK_EQ(MCC_SetENCLatchType(2, CHANNEL_INDEX, CARD_INDEX), PARAMETER_ERR);
     CHECK_EQ(MCC_SetENCLatchSource(0x2000000, CHANNEL_INDEX, CARD_INDEX), PARAMETER_ERR);
+    // A latch on the timer is not simulated (docs/compatibility.md, "Encoder latch
+    // sources"): refused, and the latch keeps its value.
+    CHECK_EQ(MCC_SetENCLatchSource(ENC_TRIG_TMR, CHANNEL_INDEX, CARD_INDEX), PARAMETER_ERR);
+    CHECK_EQ(MCC_GetENCLatchValue(&lLatchValue, CHANNEL_INDEX, CARD_INDEX), NO_ERR);
+    CHECK_EQ(lLatchValue, 1500);
     Close();
     return check_done("ENCLatch");
 }

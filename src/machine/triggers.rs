@@ -14,9 +14,6 @@ use std::collections::VecDeque;
 /// Most compare values a channel's stock holds (the manuals give no number).
 pub const MAX_COMPARE_STOCK: usize = 65_536;
 
-/// Latch sources (`ENC_TRIG_*`) the virtual card honours.
-pub const LATCH_SOURCES: u32 = 0x00FF_FFFF | c::ENC_TRIG_TMR;
-
 /// Per-card trigger settings and state.
 #[derive(Debug, Clone)]
 pub struct CardTriggers {
