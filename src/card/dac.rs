@@ -86,7 +86,7 @@ impl Dac {
         self.running
     }
 
-    /// `MCC_SetDACOutput` (channel checked by the caller): see [`Dac::write`].
+    /// `MCC_SetDACOutput` (channel checked by the caller): see `Dac::write`.
     pub fn set_output(&mut self, ch: usize, v: f32) -> McclResult<()> {
         let v = check_voltage(v)?;
         self.write(ch, v);

@@ -120,13 +120,13 @@ impl Peripherals {
 /// One card's [`Peripherals`] behind their mutex, and what lets the engine skip the tick
 /// of an idle card without taking the lock.
 ///
-/// `state` holds [`IDLE`] when the peripherals were [idle](Peripherals::idle) as last
+/// `state` holds `IDLE` when the peripherals were [idle](Peripherals::idle) as last
 /// unlocked, and in its other bits the ticks the engine counted instead of running since
 /// (an idle tick only moves the ARIO cycle timing). Whoever locks takes the count and runs
 /// those ticks first ([`Peripherals::idle_ticks`]), so every holder of the lock sees the
 /// state an engine ticking every card would have made. Both sides change `state` with one
 /// atomic operation: a tick counted before a lock is run by that lock before its holder
-/// changes anything; once the lock has taken the count (and cleared [`IDLE`]) the engine
+/// changes anything; once the lock has taken the count (and cleared `IDLE`) the engine
 /// counts no more and ticks the card under the lock.
 #[derive(Debug)]
 pub struct PeriphCell {

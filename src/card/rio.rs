@@ -454,7 +454,7 @@ impl Master {
     }
 
     /// Whether a tick now would only move the ARIO and RIO cycle timing: every set's
-    /// transfer would change nothing ([`Set::transfer_idle`]).
+    /// transfer would change nothing (`Set::transfer_idle`).
     pub fn idle(&self) -> bool {
         self.rio.iter().all(Set::transfer_idle) && self.ario.iter().all(Set::transfer_idle)
     }

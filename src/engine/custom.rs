@@ -5,7 +5,7 @@
 //! # The stage after a tick
 //!
 //! The callbacks run on the engine thread with no library lock held, like routines, in a
-//! stage after each tick ([`Shared::custom_stage`], called by the engine thread's loop
+//! stage after each tick (`Shared::custom_stage`, called by the engine thread's loop
 //! before the routines are delivered). For each group, after tick k:
 //!
 //! 1. under the group lock: the started custom commands that are no longer running (they

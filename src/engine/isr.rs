@@ -54,7 +54,7 @@ impl Collected {
         }
     }
 
-    /// Adds the causes of `card` (one entry per card: beyond [`crate::config::CARDS`]
+    /// Adds the causes of `card` (one entry per card: beyond `crate::config::CARDS`
     /// entries the rest is dropped, which cannot happen as cards are at most that many).
     pub fn push(&mut self, card: usize, p: Pending) {
         if let Some(slot) = self.items.get_mut(self.len) {

@@ -9,10 +9,10 @@
 //! ([`crate::engine::group::kinematics`] keeps them). The user's callbacks never run
 //! with a library lock held, so they may call any `MCC_*` function:
 //!
-//! 1. Tick k ([`super::tick`]): the group samples its Cartesian path as any group does,
+//! 1. Tick k (`super::tick`): the group samples its Cartesian path as any group does,
 //!    then applies the joints the stage computed after tick k−1; the channels get those
 //!    joints' pulses.
-//! 2. After tick k, with every lock released ([`Shared::kinematics_stage`], called by
+//! 2. After tick k, with every lock released (`Shared::kinematics_stage`, called by
 //!    the engine thread's loop): for each kinematic group, read under its lock the
 //!    Cartesian sample of tick k (the point the joints of tick k+1 go to), release the
 //!    lock, call the inverse kinematics with it and the previous joints, take the lock

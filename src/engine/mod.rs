@@ -6,7 +6,7 @@
 //! tick takes a single lock for all of them; a program's call holds it only to queue or
 //! change its group. Under a virtual clock the engine thread keeps the machine's and the
 //! groups' locks from one tick to the next while nothing in between needs them (no
-//! routine, no trace, no other thread waiting: [`Shared::quiet_between_ticks`]); another
+//! routine, no trace, no other thread waiting: `Shared::quiet_between_ticks`); another
 //! thread that wants one is counted and gets it at the next tick. The engine thread never
 //! holds either while user code runs, so a callback may call any MCC_* function. Order:
 //! `system::SYSTEM`, the machine, then the groups.

@@ -164,7 +164,7 @@ impl Shared {
     }
 
     /// Locks group `g` (`GROUP_PARAMETER_ERR` when no such group runs). The groups share
-    /// one lock (see [`Shared::groups`]): never call this while holding a group.
+    /// one lock (see `Shared::groups`): never call this while holding a group.
     pub fn group(&self, g: u16) -> McclResult<MappedMutexGuard<'_, GroupState>> {
         let slot = self
             .slots

@@ -257,7 +257,7 @@ impl Trace {
 }
 
 /// Something a group did that the events file records, noted where it happens (only while
-/// tracing: [`GroupState::note`] is a check of an `Option` otherwise) and written with the
+/// tracing: `GroupState::note` is a check of an `Option` otherwise) and written with the
 /// virtual time of the tick that writes the group's row.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Note {

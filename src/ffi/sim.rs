@@ -196,8 +196,9 @@ pub struct MCCL_CLOCK_STATS {
     pub dfMaxUs: f64,
     /// Mean lateness, µs.
     pub dfMeanUs: f64,
-    /// Realtime ticks by lateness: [0] below 16 µs, [k] (k = 1..14) from 2^(k+3) to
-    /// below 2^(k+4) µs (16-32, 32-64, ..., 131072-262144), [15] 262144 µs or more.
+    /// Realtime ticks by lateness: bucket 0 below 16 µs, bucket k (k = 1..14) from
+    /// 2^(k+3) to below 2^(k+4) µs (16-32, 32-64, ..., 131072-262144), bucket 15 262144 µs
+    /// or more.
     pub ullBucket: [u64; MCCL_SIM_CLOCK_BUCKETS],
 }
 

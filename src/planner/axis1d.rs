@@ -25,7 +25,7 @@ enum Drive {
     },
 }
 
-/// A single axis's position (UU) and speed (UU/s) under a [`Drive`].
+/// A single axis's position (UU) and speed (UU/s) under a `Drive`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis1D {
     /// Where the current drive began.

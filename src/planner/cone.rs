@@ -81,7 +81,7 @@ impl ConeSeg {
     /// reaches `end_n`: `|end_n − start_n| / |pitch|` turns, counter-clockwise when
     /// `ccw`, the radius changing by `center_rate` per turn.
     ///
-    /// Errors: `BadArc` for a start on the center (radius below [`MIN_RADIUS`]);
+    /// Errors: `BadArc` for a start on the center (radius below `MIN_RADIUS`);
     /// `BadParameter` for NaN/inf, a zero pitch, or a radius that would shrink below 0
     /// before the end.
     pub fn new(

@@ -1,7 +1,7 @@
 //! A kinematic group's joints (`MCC_SetKinematicTrans`) and its side of the kinematics
-//! stage: what the stage reads under the group's lock ([`GroupState::kinematics_job`]),
+//! stage: what the stage reads under the group's lock (`GroupState::kinematics_job`),
 //! the callbacks it runs without the lock ([`Job::call`]), and what it stores afterwards
-//! ([`GroupState::kinematics_done`]). The model is in [`crate::engine::kinematics`].
+//! (`GroupState::kinematics_done`). The model is in [`crate::engine::kinematics`].
 
 use super::{GroupState, TIME_EPS};
 use crate::config::AXES;

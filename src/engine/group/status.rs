@@ -132,7 +132,7 @@ impl GroupState {
         GroupSnapshot::from_parts(&self.motion(), &self.info())
     }
 
-    /// Whether the info part changed since it was last published ([`GroupState::info_key`]);
+    /// Whether the info part changed since it was last published (`GroupState::info_key`);
     /// if so, it counts as published from now on.
     #[inline]
     pub fn info_changed(&mut self) -> bool {

@@ -133,7 +133,7 @@ impl Executor {
         self.limits = limits;
     }
 
-    /// The jobs of `MCC_Home` on this group's MC3B (see [`home::plan`]).
+    /// The jobs of `MCC_Home` on this group's MC3B (see `home::plan`).
     #[allow(clippy::type_complexity)]
     pub fn plan_home(
         &self,
