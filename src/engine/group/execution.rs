@@ -59,9 +59,36 @@ pub(super) struct Running {
 impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
-        if !self.tick_cruising(dt) {
+        if !self.tick_cruising(dt) && !self.tick_idle() {
             self.tick_full(dt);
         }
+    }
+
+    /// The tick of a group with nothing to do: no command running or queued, not held,
+    /// no rate ramp, in-position check, over-travel check, homing, external executor,
+    /// kinematics or filters. The full tick would only set the position to where the
+    /// finished commands left it and the status to `GMS_STOP`; this does just that.
+    /// Returns false, having changed nothing, otherwise.
+    fn tick_idle(&mut self) -> bool {
+        if self.homing != 0
+            || self.external.is_some()
+            || self.post.is_some()
+            || self.kin.is_some()
+            || !self.running.is_empty()
+            || !self.queue.is_empty()
+            || self.mode != Mode::Normal
+            || self.rate.ramp.is_some()
+            || self.inpos_wait.is_some()
+            || self.ot_check != [false; AXES]
+        {
+            return false;
+        }
+        // `compute_pos_vel` with no running command, and `update_status` of a group
+        // with nothing active and not held.
+        self.pos = self.base;
+        self.vel = [0.0; AXES];
+        self.status = c::GMS_STOP;
+        true
     }
 
     /// [`GroupState::tick`] when the group does more than cruise: kept out of line, so
