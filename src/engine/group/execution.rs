@@ -59,28 +59,31 @@ pub(super) struct Running {
 impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
-        if !self.tick_cruising(dt) && !self.tick_idle() {
-            self.tick_full(dt);
+        if self.steady() && (self.tick_cruising(dt) || self.tick_idle()) {
+            return;
         }
+        self.tick_full(dt);
     }
 
-    /// The tick of a group with nothing to do: no command running or queued, not held,
-    /// no rate ramp, in-position check, over-travel check, homing, external executor,
-    /// kinematics or filters. The full tick would only set the position to where the
-    /// finished commands left it and the status to `GMS_STOP`; this does just that.
-    /// Returns false, having changed nothing, otherwise.
+    /// Whether the group's tick can take one of the short paths: not homing, no
+    /// external executor, filters or kinematics, not held or aborting, no rate ramp and
+    /// no over-travel check.
+    fn steady(&self) -> bool {
+        self.homing == 0
+            && self.external.is_none()
+            && self.post.is_none()
+            && self.kin.is_none()
+            && self.mode == Mode::Normal
+            && self.rate.ramp.is_none()
+            && self.ot_check == [false; AXES]
+    }
+
+    /// The tick of a [steady](GroupState::steady) group with nothing to do: no command
+    /// running or queued and no in-position check. The full tick would only set the
+    /// position to where the finished commands left it and the status to `GMS_STOP`;
+    /// this does just that. Returns false, having changed nothing, otherwise.
     fn tick_idle(&mut self) -> bool {
-        if self.homing != 0
-            || self.external.is_some()
-            || self.post.is_some()
-            || self.kin.is_some()
-            || !self.running.is_empty()
-            || !self.queue.is_empty()
-            || self.mode != Mode::Normal
-            || self.rate.ramp.is_some()
-            || self.inpos_wait.is_some()
-            || self.ot_check != [false; AXES]
-        {
+        if !self.running.is_empty() || !self.queue.is_empty() || self.inpos_wait.is_some() {
             return false;
         }
         // `compute_pos_vel` with no running command, and `update_status` of a group
@@ -91,8 +94,8 @@ impl GroupState {
         true
     }
 
-    /// [`GroupState::tick`] when the group does more than cruise: kept out of line, so
-    /// that the cruise path, nearly every tick of a moving group, stays small.
+    /// [`GroupState::tick`] when the group does more than cruise or stand idle: kept out
+    /// of line, so that the short paths, nearly every tick of most groups, stay small.
     #[inline(never)]
     fn tick_full(&mut self, dt: f64) {
         if self.homing != 0 && self.external.is_none() {
@@ -134,23 +137,14 @@ impl GroupState {
         self.update_status();
     }
 
-    /// The tick of a group in the middle of one general or PtP command at a steady rate
-    /// (no ramp, not held or aborting, no homing, external executor, over-travel check,
-    /// kinematics or filters): only
-    /// the command's own time advances and the position is sampled. Returns false, having
-    /// changed nothing, when the tick may do more (start, blend, end or retire a command,
-    /// ramp the rate); [`GroupState::tick`] then runs in full. The arithmetic is that of
-    /// the full tick, operation for operation, so the positions are the same to the bit.
+    /// The tick of a [steady](GroupState::steady) group in the middle of one general or
+    /// PtP command: only the command's own time advances and the position is sampled.
+    /// Returns false, having changed nothing, when the tick may do more (start, blend,
+    /// end or retire a command); [`GroupState::tick`] then runs in full. The arithmetic
+    /// is that of the full tick, operation for operation, so the positions are the same
+    /// to the bit.
     fn tick_cruising(&mut self, dt: f64) -> bool {
-        if self.homing != 0
-            || self.external.is_some()
-            || self.post.is_some()
-            || self.kin.is_some()
-            || self.mode != Mode::Normal
-            || self.rate.ramp.is_some()
-            || self.running.len() != 1
-            || self.ot_check != [false; AXES]
-        {
+        if self.running.len() != 1 {
             return false;
         }
         let dtau = self.rate.value * dt;
