@@ -136,46 +136,38 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
     loop {
         if !shared.clock.granted() {
             // The run ends: the program resumes and will want them.
-            if let Some(h) = held.take() {
-                h.release();
-            }
+            super::tick::release(&mut held);
         }
         match shared.clock.wait_next() {
             Next::Stop => {
-                if let Some(h) = held.take() {
-                    h.release();
-                }
+                super::tick::release(&mut held);
                 shared.custom_close();
                 return;
             }
             Next::Tick => {
                 let published = shared.tick_or_recover(&mut held, &mut interrupts);
-                if shared.quiet_between_ticks() {
-                    // Nothing to call: the stages below would find nothing registered.
-                    shared.check_watch();
-                    if !published {
-                        shared.end_of_run(held.as_mut());
-                    }
-                    shared.clock.tick_done();
-                    continue;
+                // Quiet: no stage below has anything to run, and the locks stay held into
+                // the next tick.
+                let quiet = shared.quiet_between_ticks();
+                if !quiet {
+                    super::tick::release(&mut held);
+                    // The program's kinematics for the next tick, without any lock.
+                    shared.kinematics_stage();
                 }
-                if let Some(h) = held.take() {
-                    h.release();
-                }
-                // The program's kinematics for the next tick, without any lock.
-                shared.kinematics_stage();
                 shared.check_watch();
                 if !published {
-                    shared.end_of_run(None);
+                    shared.end_of_run(held.as_mut());
                 }
-                if shared.tracing && !interrupts.is_empty() {
-                    shared.trace_interrupts(&interrupts);
+                if !quiet {
+                    if shared.tracing && !interrupts.is_empty() {
+                        shared.trace_interrupts(&interrupts);
+                    }
+                    // Custom-motion callbacks, then the interrupt callbacks collected in
+                    // the tick, run here without any lock.
+                    shared.custom_stage();
+                    shared.isr.deliver(&interrupts, &shared.clock);
+                    shared.call_cycle_routines();
                 }
-                // Custom-motion callbacks, then the interrupt callbacks collected in the
-                // tick, run here without any lock.
-                shared.custom_stage();
-                shared.isr.deliver(&interrupts, &shared.clock);
-                shared.call_cycle_routines();
                 shared.clock.tick_done();
             }
         }

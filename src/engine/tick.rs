@@ -250,9 +250,16 @@ impl<'a> Held<'a> {
 
     /// Unlocks both, handing each to a thread waiting for it if there is one (the engine
     /// thread would otherwise take them back at its next tick before a woken thread runs).
-    pub(super) fn release(self) {
+    fn release(self) {
         MutexGuard::unlock_fair(self.groups);
         MutexGuard::unlock_fair(self.machine);
+    }
+}
+
+/// Lets go of the locks in `held`, if any ([`Held::release`]).
+pub(super) fn release(held: &mut Option<Held<'_>>) {
+    if let Some(h) = held.take() {
+        h.release();
     }
 }
 
