@@ -133,8 +133,10 @@ pub struct Channel {
     /// driving the channel ([`Channel::command`]); `None`: the channel holds `cmd`.
     commanded: Option<i64>,
     /// The last step changed nothing, and another with the same command would change
-    /// nothing either ([`Channel::step_commanded`] skips it). Every method that changes
-    /// the channel other than a step clears it.
+    /// nothing either ([`Channel::step_commanded`] skips it). Cleared by whatever changes
+    /// what a step reads: the counter's frame (`restart_counter`), the sensors
+    /// (`update_sensors`, which placing, forcing and new parameters go through), the
+    /// index grid (`set_grid`), the compensation and the plant.
     resting: bool,
     /// The period of the step that found the channel resting.
     resting_dt: f64,
@@ -257,7 +259,6 @@ impl Channel {
     /// `MCC_ResetMotion`/`MCC_UpdateParam`: the command counter restarts from 0 where the
     /// motor stands; the motor, its encoder count and the sensors do not move.
     pub fn rezero(&mut self) {
-        self.resting = false;
         let count = self.encoder();
         self.restart_counter(self.actual, count);
     }
@@ -283,7 +284,6 @@ impl Channel {
     /// move (a lagging one keeps its following error); compensation restarts from its
     /// home point (`wHome_No`).
     pub fn home_here(&mut self) {
-        self.resting = false;
         self.restart_counter(self.out as f64, 0);
     }
 
@@ -352,14 +352,12 @@ impl Channel {
 
     /// `MCC_SetENCValue`: the count becomes `v` here.
     pub fn set_encoder(&mut self, v: i64) {
-        self.resting = false;
         self.enc_offset = v - self.raw_count();
     }
 
     /// `MCC_SetENCInputRate`: counts per encoder cycle (1, 2 or 4; 3 also means x4);
     /// the count keeps its value at the change.
     pub fn set_input_rate(&mut self, rate: u16) {
-        self.resting = false;
         let v = self.encoder();
         self.input_rate = Some(rate);
         self.set_encoder(v);
@@ -368,7 +366,6 @@ impl Channel {
     /// `MCC_SetENCGearRate`: counts per motor pulse at x4; the count keeps its value at
     /// the change.
     pub fn set_gear_rate(&mut self, r: f64) {
-        self.resting = false;
         let v = self.encoder();
         self.gear_rate = r;
         self.set_encoder(v);
@@ -376,7 +373,6 @@ impl Channel {
 
     /// New mechanism and encoder parameters (`MCC_UpdateParam`).
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
-        self.resting = false;
         let count = self.encoder();
         self.mac = mac;
         self.enc = enc;
@@ -395,7 +391,6 @@ impl Channel {
 
     /// Forces a sensor's physical level (`Some`) or lets the position decide (`None`).
     pub fn force(&mut self, s: Sensor, level: Option<bool>) {
-        self.resting = false;
         self.forced[s as usize] = level;
         self.refresh_sensors();
         self.update_sensors();
@@ -414,7 +409,6 @@ impl Channel {
 
     /// Moves a sensor: the home region, or a limit switch's position (`from`).
     pub fn place(&mut self, s: Sensor, from: f64, to: f64) {
-        self.resting = false;
         match s {
             Sensor::Home => self.spec.home = Some((from, to)),
             Sensor::LimitPlus => self.spec.limit_plus = Some(from),
@@ -446,7 +440,6 @@ impl Channel {
     /// Clears the latch of limit switch `side`; it latches again at once while the
     /// switch is active.
     pub fn clear_latched_limit(&mut self, side: usize) {
-        self.resting = false;
         self.latched[side] = self.limit_switch(side);
     }
 
@@ -519,6 +512,7 @@ impl Channel {
         if grid != self.grid {
             self.grid = grid;
             self.cell = None;
+            self.resting = false;
         }
     }
 
@@ -617,7 +611,6 @@ impl Channel {
 
     /// Sets the motor where the command is (for a channel that is stopped and reset).
     pub fn settle(&mut self) {
-        self.resting = false;
         self.actual = self.out as f64;
         self.update_sensors();
     }
