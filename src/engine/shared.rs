@@ -172,7 +172,7 @@ impl Shared {
             .copied()
             .flatten()
             .ok_or(McclError::Group)?;
-        MutexGuard::try_map(self.lock_groups(), |gs| gs.get_mut(slot)).map_err(|_| McclError::Group)
+        self.nth_group(slot).ok_or(McclError::Group)
     }
 
     /// Locks the simulated machine (lock order: before the groups).
