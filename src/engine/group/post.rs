@@ -378,22 +378,6 @@ impl GroupState {
     }
 }
 
-impl GroupState {
-    /// [`GroupState::motion`] of a group with a [`Post`] or a compose mask other than
-    /// X|Y|Z: the output position and velocity, and the path speed over the composing
-    /// axes (with no speed on them, the fastest other axis; the X/Y/Z rule generalised).
-    #[cold]
-    #[inline(never)]
-    pub(super) fn post_motion(&self) -> crate::engine::snapshot::Motion {
-        crate::engine::snapshot::Motion {
-            status: self.status,
-            pos: self.out_pos(),
-            vel: self.out_vel(),
-            compose: self.settings.compose,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -62,14 +62,13 @@ impl GroupState {
     /// The part of the published state that changes every tick.
     #[inline]
     pub fn motion(&self) -> Motion {
-        if self.post.is_some() || self.settings.compose != crate::planner::compose::XYZ_MASK {
-            return self.post_motion();
-        }
+        // The output position and velocity (after the filters, `post.rs`); readers derive
+        // the path speed from the velocities and the compose mask.
         Motion {
             status: self.status,
-            pos: self.pos,
-            vel: self.vel,
-            compose: crate::planner::compose::XYZ_MASK,
+            pos: self.out_pos(),
+            vel: self.out_vel(),
+            compose: self.settings.compose,
         }
     }
 
