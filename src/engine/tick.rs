@@ -83,16 +83,7 @@ impl Shared {
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
-                let mut axes = self.commanding[n];
-                while axes != 0 {
-                    let i = axes.trailing_zeros() as usize;
-                    axes &= axes - 1;
-                    if let Some((card, ch)) = g.axes[i].channel {
-                        if let Some(chan) = machine.channel_mut(card, ch) {
-                            chan.command(g.pulses(i));
-                        }
-                    }
-                }
+                g.command_channels(self.commanding[n], &mut machine.cards);
             }
             if full {
                 self.publish(g);

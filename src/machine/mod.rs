@@ -140,6 +140,10 @@ pub struct Channel {
     resting: bool,
     /// The period of the step that found the channel resting.
     resting_dt: f64,
+    /// An ideal motor (no plant lag) with no compensation and no sensor that follows it:
+    /// a step is [`Channel::step_ideal`]. Kept by [`Channel::refresh_ideal`] wherever
+    /// the compensation, the plant or the sensors change.
+    ideal: bool,
     /// Pulses output (command + compensation).
     out: i64,
     prev_out: i64,
@@ -205,6 +209,7 @@ impl Channel {
             commanded: None,
             resting: false,
             resting_dt: 0.0,
+            ideal: false,
             out: 0,
             prev_out: 0,
             prev_delta: 0,
@@ -275,6 +280,7 @@ impl Channel {
         self.prev_out = 0;
         self.prev_delta = 0;
         self.comp = Compensation::new(&self.comp_param);
+        self.refresh_ideal();
         self.set_encoder(count);
         self.update_sensors();
     }
@@ -387,6 +393,7 @@ impl Channel {
         self.resting = false;
         *self.comp_param = *p;
         self.comp = Compensation::new(p);
+        self.refresh_ideal();
     }
 
     /// Forces a sensor's physical level (`Some`) or lets the position decide (`None`).
@@ -522,6 +529,23 @@ impl Channel {
             || self.spec.limit_plus.is_some()
             || self.spec.limit_minus.is_some()
             || self.forced.iter().any(Option::is_some);
+        self.refresh_ideal();
+    }
+
+    /// Recomputes [`Channel::ideal`] after the compensation, the plant or the sensors
+    /// changed.
+    fn refresh_ideal(&mut self) {
+        self.ideal = self.ideal_now();
+    }
+
+    /// What [`Channel::ideal`] should be.
+    fn ideal_now(&self) -> bool {
+        !self.comp.active() && !self.lags() && !self.sensors
+    }
+
+    /// Whether the plant is a first-order lag (a positive time constant).
+    fn lags(&self) -> bool {
+        matches!(self.spec.lag_s, Some(tau) if tau > 0.0)
     }
 
     /// The plant: a first-order lag of `lag_s` seconds, or ideal (`None`) — what a
@@ -529,6 +553,7 @@ impl Channel {
     pub fn set_plant_lag(&mut self, lag_s: Option<f64>) {
         self.resting = false;
         self.spec.lag_s = lag_s;
+        self.refresh_ideal();
     }
 
     /// The `n`th (from 0) index pulse the motor passed in the last step, in the pulse
@@ -562,6 +587,7 @@ impl Channel {
     /// A channel at rest (see `resting`) held at its command is not stepped: the step
     /// would leave every field as it is. Most channels of a machine stand still most of
     /// the time; this keeps a tick from touching them.
+    #[inline]
     pub fn step_commanded(&mut self, dt: f64) {
         let cmd = self.commanded.take().unwrap_or(self.cmd);
         if self.resting && cmd == self.cmd && dt == self.resting_dt {
@@ -572,7 +598,43 @@ impl Channel {
 
     /// One interpolation period: the channel is commanded `cmd` pulses; the motor follows
     /// (ideal or lagging), the encoder and sensors follow the motor.
+    #[inline]
     pub fn step(&mut self, cmd: i64, dt: f64) {
+        debug_assert_eq!(self.ideal, self.ideal_now(), "Channel::ideal is stale");
+        if self.ideal {
+            self.step_ideal(cmd, dt);
+        } else {
+            self.step_general(cmd, dt);
+        }
+    }
+
+    /// [`Channel::step`] of an ideal channel ([`Channel::ideal`]): the same fields
+    /// written with the same values as [`Channel::step_general`] writes them when the
+    /// output is the command, the motor is where the output is and no sensor follows
+    /// the motor. Most channels of a running machine are such, and this is every tick's
+    /// cost for each of them.
+    #[inline]
+    fn step_ideal(&mut self, cmd: i64, dt: f64) {
+        self.prev_levels = self.step_levels;
+        let d_prev = self.out - self.prev_out;
+        self.prev_out = self.out;
+        self.prev_delta = d_prev;
+        self.cmd = cmd;
+        self.out = cmd;
+        let before = self.actual;
+        self.actual = cmd as f64;
+        self.count_index(before + self.base, self.actual + self.base);
+        self.step_levels = self.levels;
+        self.resting = self.out == self.prev_out
+            && d_prev == 0
+            && self.last_move.0 == self.last_move.1
+            && self.prev_levels == self.step_levels;
+        self.resting_dt = dt;
+    }
+
+    /// [`Channel::step`] of any channel: compensation, a lagging plant, sensors.
+    #[inline(never)]
+    fn step_general(&mut self, cmd: i64, dt: f64) {
         self.prev_levels = self.step_levels;
         let d_prev = self.out - self.prev_out;
         self.prev_out = self.out;
@@ -630,6 +692,7 @@ impl Channel {
         k
     }
 
+    #[inline]
     fn count_index(&mut self, from: f64, to: f64) {
         self.index_events = 0;
         self.last_move = (from, to);
@@ -642,6 +705,12 @@ impl Channel {
             // Both ends in one interval: no index pulse passed.
             return;
         }
+        self.count_index_across(from, to);
+    }
+
+    /// [`Channel::count_index`] of a move that leaves the last index interval looked up.
+    #[inline(never)]
+    fn count_index_across(&mut self, from: f64, to: f64) {
         // Index pulses in x4 counts of the motor position: one count per pulse.
         let (spacing, phase) = self.index_grid();
         let (a, b) = (self.index_interval(from), self.index_interval(to));
@@ -925,6 +994,76 @@ mod tests {
         });
         assert!(n > 300 && n < 3000, "{n}");
         assert!((a.actual - 1000.0).abs() < 1e-9, "{}", a.actual);
+    }
+
+    #[test]
+    fn the_ideal_step_writes_what_the_general_step_writes() {
+        // Two copies of an ideal channel (dwPPR 4: an index pulse every 4 counts), one
+        // stepped by `step` (which takes the ideal path), one by `step_general`, through
+        // moves up and down across index pulses, a stop, a standstill, a counter restart
+        // and a wiring change that turns the − limit input active with nothing hit (NC on
+        // an open contact, so the levels change between steps without a sensor placed).
+        // Every field is the same after every step (`Debug` prints them all).
+        let mac = SYS_MAC_PARAM {
+            dwPPR: 4,
+            ..default_mac_param()
+        };
+        let mut a = Channel::new(ChannelSpec::default(), mac, default_encoder_config());
+        assert!(a.ideal, "no lag, no compensation, no sensor");
+        let mut b = a.clone();
+        let cmds = [0, 3, 9, 17, 17, 17, 5, -7, -7, -7, 1_000_001, 1_000_001, 2];
+        for (n, &cmd) in cmds.iter().enumerate() {
+            if n == 8 {
+                a.rezero();
+                b.rezero();
+            }
+            if n == 11 {
+                let nc = SYS_MAC_PARAM {
+                    wOverTravelDownSensorMode: c::SL_NORMAL_CLOSE,
+                    ..mac
+                };
+                a.set_params(nc, default_encoder_config());
+                b.set_params(nc, default_encoder_config());
+            }
+            a.step(cmd, 0.001);
+            b.step_general(cmd, 0.001);
+            assert_eq!(format!("{a:?}"), format!("{b:?}"), "step {n}");
+            if n == 11 {
+                assert!(
+                    a.levels().minus && !a.prev_levels().minus,
+                    "the wiring edge"
+                );
+            }
+        }
+        // The restart at -7 put counter 0 at machine count -7: the last move, down from
+        // counter 1,000,001 to 2 (machine -5), passed the machine's pulse at -4 last,
+        // counter 3.
+        assert_eq!(a.last_index_count, Some(3));
+    }
+
+    #[test]
+    fn ideal_follows_what_a_step_depends_on() {
+        // Each change that makes a step do more than the ideal path clears `ideal`, and
+        // its undoing sets it again.
+        let mut c = ch(ChannelSpec::default());
+        assert!(c.ideal);
+        c.set_plant_lag(Some(0.01));
+        assert!(!c.ideal, "a lagging plant");
+        c.set_plant_lag(None);
+        assert!(c.ideal);
+        c.force(Sensor::Home, Some(true));
+        assert!(!c.ideal, "a forced sensor");
+        c.force(Sensor::Home, None);
+        assert!(c.ideal);
+        c.place(Sensor::LimitPlus, 5.0, 5.0);
+        assert!(!c.ideal, "a placed sensor");
+        let mut d = ch(ChannelSpec::default());
+        let mut comp = compensation::off();
+        comp.dwInterval = 100;
+        d.set_compensation(&comp);
+        assert!(!d.ideal, "compensation");
+        d.set_compensation(&compensation::off());
+        assert!(d.ideal);
     }
 
     #[test]

@@ -4,8 +4,10 @@
 use super::execution::Running;
 use super::GroupState;
 use super::Mode;
+use crate::config::AXES;
 use crate::engine::command::Plan;
 use crate::engine::snapshot::{round_pulses, GroupSnapshot, Info, Motion};
+use crate::machine::Channel;
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 
@@ -57,6 +59,35 @@ impl GroupState {
             self.pos[i]
         };
         round_pulses((pos + self.offset[i]) * self.axes[i].factor)
+    }
+
+    /// Commands the channels of the axes in `axes` (a bit mask of this group's axes,
+    /// each mapped to a channel) with their pulses this tick ([`GroupState::pulses`]);
+    /// `cards` are the machine's channels. An axis whose channel is not in `cards` is
+    /// passed over.
+    ///
+    /// One loop for the whole group, with what [`GroupState::pulses`] asks of every axis
+    /// (kinematics, filters) asked once: this runs every tick for every commanding group.
+    #[inline]
+    pub fn command_channels(&self, mut axes: u32, cards: &mut [[Channel; AXES]]) {
+        let plain = self.kin.is_none() && self.post.is_none();
+        while axes != 0 {
+            let i = axes.trailing_zeros() as usize;
+            axes &= axes - 1;
+            let Some(ax) = self.axes.get(i) else { break };
+            let Some((card, ch)) = ax.channel else {
+                continue;
+            };
+            let Some(chan) = cards.get_mut(card).and_then(|c| c.get_mut(ch)) else {
+                continue;
+            };
+            let p = if plain {
+                round_pulses((self.pos[i] + self.offset[i]) * ax.factor)
+            } else {
+                self.pulses(i)
+            };
+            chan.command(p);
+        }
     }
 
     /// The part of the published state that changes every tick.
