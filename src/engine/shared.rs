@@ -234,9 +234,8 @@ impl Shared {
             #[cfg(debug_assertions)]
             debug_assert_eq!(g.published_info, Some(g.info()), "group {}", g.index);
         }
-        let motion = g.motion();
-        cell.store_motion(&motion);
-        self.status[g.index].store(motion.status, Ordering::Release);
+        g.store_motion(cell);
+        self.status[g.index].store(g.status(), Ordering::Release);
     }
 
     /// Checks that `card` is one of the cards passed to `MCC_InitSystem`.

@@ -167,12 +167,21 @@ impl<const N: usize> Default for SeqWords<N> {
 
 impl<const N: usize> SeqWords<N> {
     fn store(&self, w: &[u64; N]) {
+        self.store_by(|cells| {
+            for (cell, v) in cells.iter().zip(w) {
+                cell.store(*v, Ordering::Relaxed);
+            }
+        });
+    }
+
+    /// Stores the words `write` stores (relaxed) as one write: readers see all of them
+    /// or none.
+    #[inline]
+    fn store_by(&self, write: impl FnOnce(&[AtomicU64; N])) {
         let seq = self.seq.load(Ordering::Relaxed);
         self.seq.store(seq.wrapping_add(1), Ordering::Relaxed);
         fence(Ordering::Release);
-        for (cell, v) in self.words.iter().zip(w) {
-            cell.store(*v, Ordering::Relaxed);
-        }
+        write(&self.words);
         self.seq.store(seq.wrapping_add(2), Ordering::Release);
     }
 
@@ -209,6 +218,21 @@ impl SnapshotCell {
         self.motion.store(&motion_words(m));
     }
 
+    /// Publishes the motion part from its fields, as [`SnapshotCell::store_motion`]
+    /// stores the [`Motion`] they make, without assembling it first (this runs for every
+    /// group on every tick that publishes). Callers must be serialised.
+    #[inline]
+    pub fn store_motion_parts(&self, status: i32, pos: &Axes, vel: &Axes, compose: u32) {
+        self.motion.store_by(|w| {
+            w[0].store(status as u32 as u64, Ordering::Relaxed);
+            for k in 0..8 {
+                w[1 + k].store(pos[k].to_bits(), Ordering::Relaxed);
+                w[9 + k].store(vel[k].to_bits(), Ordering::Relaxed);
+            }
+            w[17].store(u64::from(compose), Ordering::Relaxed);
+        });
+    }
+
     /// Publishes the info part. Callers must be serialised.
     pub fn store_info(&self, i: &Info) {
         self.info.store(&info_words(i));
@@ -236,6 +260,24 @@ impl SnapshotCell {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn motion_stored_from_its_parts_reads_back_as_stored_whole() {
+        let mut m = Motion {
+            status: -3,
+            compose: 0b1000_0101,
+            ..Default::default()
+        };
+        for k in 0..8 {
+            m.pos[k] = -1.5 * k as f64 + 0.25;
+            m.vel[k] = 7.0 / (k as f64 + 1.0);
+        }
+        let (a, b) = (SnapshotCell::default(), SnapshotCell::default());
+        a.store_motion(&m);
+        b.store_motion_parts(m.status, &m.pos, &m.vel, m.compose);
+        assert_eq!(a.motion.load(), b.motion.load());
+        assert_eq!(b.load_motion(), m);
+    }
 
     #[test]
     fn round_trip() {

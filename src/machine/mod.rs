@@ -66,7 +66,11 @@ pub enum Sensor {
 }
 
 /// Sensor inputs of one channel after wiring, as the card sees them.
+///
+/// Aligned to 4 bytes so that the copies and comparisons a channel's step makes are one
+/// 32-bit move each.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[repr(C, align(4))]
 pub struct SensorLevels {
     /// Home sensor active.
     pub home: bool,
@@ -103,6 +107,14 @@ struct IndexCell {
 }
 
 impl IndexCell {
+    /// No interval: holds no position (the bounds are the wrong way round), so the next
+    /// lookup computes one.
+    const NONE: IndexCell = IndexCell {
+        k: 0,
+        lo: f64::INFINITY,
+        hi: f64::NEG_INFINITY,
+    };
+
     /// The cell of interval `k`, when its bounds are exact.
     fn new(spacing: i64, phase: i64, k: i64) -> Option<IndexCell> {
         let lo = k.checked_mul(spacing)?.checked_add(phase)?;
@@ -156,8 +168,9 @@ pub struct Channel {
     pub index_events: u32,
     /// Motor positions (pulses, machine frame) at the start and end of the last step.
     last_move: (f64, f64),
-    /// The index interval of the last position looked up (`index_interval`).
-    cell: Option<IndexCell>,
+    /// The index interval of the last position looked up (`index_interval`), or
+    /// [`IndexCell::NONE`].
+    cell: IndexCell,
     levels: SensorLevels,
     prev_levels: SensorLevels,
     /// Levels at the end of the last step: a level forced between steps shows as an edge.
@@ -225,7 +238,7 @@ impl Channel {
             index_events: 0,
             last_index_count: None,
             last_move: (0.0, 0.0),
-            cell: None,
+            cell: IndexCell::NONE,
             latched: [false; 2],
             max_speed: MAX_PULSE_LIMIT,
             max_acc: MAX_PULSE_LIMIT,
@@ -518,7 +531,7 @@ impl Channel {
     fn set_grid(&mut self, grid: (i64, i64)) {
         if grid != self.grid {
             self.grid = grid;
-            self.cell = None;
+            self.cell = IndexCell::NONE;
             self.resting = false;
         }
     }
@@ -684,11 +697,11 @@ impl Channel {
     /// `lo <= x < hi` means `lo <= floor(x) <= hi - 1`.
     fn index_interval(&mut self, x: f64) -> i64 {
         let (spacing, phase) = self.grid;
-        if let Some(c) = self.cell.filter(|c| c.holds(x)) {
-            return c.k;
+        if self.cell.holds(x) {
+            return self.cell.k;
         }
         let k = (floor_i64(x) - phase).div_euclid(spacing);
-        self.cell = IndexCell::new(spacing, phase, k);
+        self.cell = IndexCell::new(spacing, phase, k).unwrap_or(IndexCell::NONE);
         k
     }
 
@@ -701,7 +714,7 @@ impl Channel {
         }
         // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
         // between pulses rounds down to the pulse it has passed.
-        if self.cell.is_some_and(|c| c.holds(from) && c.holds(to)) {
+        if self.cell.holds(from) && self.cell.holds(to) {
             // Both ends in one interval: no index pulse passed.
             return;
         }

@@ -265,6 +265,12 @@ impl GroupState {
         }
     }
 
+    /// Whether the output position and velocity are the reference's (no filter stage):
+    /// [`GroupState::out_pos`] and [`GroupState::out_vel`] are then `pos` and `vel`.
+    pub(super) fn output_is_reference(&self) -> bool {
+        !matches!(&self.post, Some(p) if !p.filters.stages.is_empty())
+    }
+
     /// The output velocity (see [`GroupState::out_pos`]).
     pub(super) fn out_vel(&self) -> Axes {
         match &self.post {

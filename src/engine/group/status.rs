@@ -6,7 +6,7 @@ use super::GroupState;
 use super::Mode;
 use crate::config::AXES;
 use crate::engine::command::Plan;
-use crate::engine::snapshot::{round_pulses, GroupSnapshot, Info, Motion};
+use crate::engine::snapshot::{round_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
 use crate::machine::Channel;
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
@@ -100,6 +100,17 @@ impl GroupState {
             pos: self.out_pos(),
             vel: self.out_vel(),
             compose: self.settings.compose,
+        }
+    }
+
+    /// Publishes [`GroupState::motion`] to `cell`: straight from the group's fields when
+    /// its output is its reference (no filter stage), which is what `motion` copies then.
+    #[inline]
+    pub fn store_motion(&self, cell: &SnapshotCell) {
+        if self.output_is_reference() {
+            cell.store_motion_parts(self.status, &self.pos, &self.vel, self.settings.compose);
+        } else {
+            cell.store_motion(&self.motion());
         }
     }
 
