@@ -193,6 +193,9 @@ pub struct Clock {
     start_ns: AtomicU64,
     /// `period` in ns.
     period_ns: u64,
+    /// `period` in seconds and exactly in ns, as every tick uses them.
+    period_s: f64,
+    period_nanos: u128,
     source: Source,
     /// Realtime ticks that started a period or more after their deadline.
     missed: AtomicU64,
@@ -233,6 +236,8 @@ impl Clock {
             period,
             start_ns,
             period_ns,
+            period_s: period.as_secs_f64(),
+            period_nanos: period.as_nanos(),
             source,
             missed: AtomicU64::new(0),
             ticks: AtomicU64::new(0),
@@ -260,6 +265,16 @@ impl Clock {
     /// The interpolation period.
     pub fn period(&self) -> Duration {
         self.period
+    }
+
+    /// The interpolation period in seconds (`period().as_secs_f64()`, kept).
+    pub fn period_s(&self) -> f64 {
+        self.period_s
+    }
+
+    /// The interpolation period in ns (`period().as_nanos()`, kept).
+    pub fn period_nanos(&self) -> u128 {
+        self.period_nanos
     }
 
     /// Ticks completed so far.

@@ -84,6 +84,8 @@ impl Collected {
 #[derive(Debug)]
 pub struct IsrTable {
     slots: Vec<[AtomicUsize; KINDS]>,
+    /// How many slots hold a routine: [`IsrTable::any`] is asked after every tick.
+    registered: AtomicUsize,
 }
 
 /// The C signature every routine shares: `void f(XXXINT *)` (the struct differs by kind).
@@ -96,20 +98,30 @@ impl IsrTable {
             slots: (0..cards)
                 .map(|_| std::array::from_fn(|_| AtomicUsize::new(0)))
                 .collect(),
+            registered: AtomicUsize::new(0),
         }
     }
 
     /// Registers the routine at address `f` (0 unregisters) for `kind` on `card` (a card
     /// checked with [`Shared::card`]).
     pub fn set(&self, card: usize, kind: Kind, f: usize) {
-        self.slots[card][kind as usize].store(f, Ordering::Release);
+        let old = self.slots[card][kind as usize].swap(f, Ordering::AcqRel);
+        // Each change between empty and registered moves the count (registrations from
+        // several threads each see their own slot's old value).
+        match (old != 0, f != 0) {
+            (false, true) => {
+                self.registered.fetch_add(1, Ordering::AcqRel);
+            }
+            (true, false) => {
+                self.registered.fetch_sub(1, Ordering::AcqRel);
+            }
+            _ => {}
+        }
     }
 
     /// Whether any routine is registered on any card.
     pub fn any(&self) -> bool {
-        self.slots
-            .iter()
-            .any(|s| s.iter().any(|f| f.load(Ordering::Acquire) != 0))
+        self.registered.load(Ordering::Acquire) != 0
     }
 
     /// The address registered for `kind` on `card` (0 when none).
@@ -169,6 +181,7 @@ impl Shared {
     /// since the last delivery into `out` (cleared first). A watchdog that expired resets
     /// its card here (its groups abort and record [`ERR_WATCHDOG_RESET`], servo-on and
     /// position-ready go off).
+    #[inline]
     pub fn tick_peripherals(
         &self,
         dt_ns: u64,
@@ -181,18 +194,31 @@ impl Shared {
                 // Runs when the card is next locked (see `PeriphCell`).
                 continue;
             }
-            let (reset, pending) = {
-                let mut p = p.lock();
-                let reset = p.tick(dt_ns);
-                let pending = (!p.pending.is_empty()).then(|| std::mem::take(&mut p.pending));
-                (reset, pending)
-            };
-            if reset {
-                self.reset_card(card, groups);
-            }
-            if let Some(pending) = pending {
-                out.push(card, pending);
-            }
+            self.tick_busy_card(card, p, dt_ns, out, groups);
+        }
+    }
+
+    /// [`Shared::tick_peripherals`] of a card that is not idle: its tick under its lock.
+    #[inline(never)]
+    fn tick_busy_card(
+        &self,
+        card: usize,
+        p: &crate::card::PeriphCell,
+        dt_ns: u64,
+        out: &mut Collected,
+        groups: &mut [super::group::GroupState],
+    ) {
+        let (reset, pending) = {
+            let mut p = p.lock();
+            let reset = p.tick(dt_ns);
+            let pending = (!p.pending.is_empty()).then(|| std::mem::take(&mut p.pending));
+            (reset, pending)
+        };
+        if reset {
+            self.reset_card(card, groups);
+        }
+        if let Some(pending) = pending {
+            out.push(card, pending);
         }
     }
 
@@ -213,6 +239,26 @@ impl Shared {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn any_counts_registered_routines() {
+        // Two cards: register on both, replace one routine with another, unregister one
+        // twice; `any` holds exactly while a slot is non-zero.
+        let t = IsrTable::new(2);
+        assert!(!t.any());
+        t.set(0, Kind::Tmr, 0x1000);
+        t.set(1, Kind::Enc, 0x2000);
+        t.set(1, Kind::Enc, 0x3000);
+        assert!(t.any());
+        t.set(1, Kind::Enc, 0);
+        t.set(1, Kind::Enc, 0);
+        assert!(t.any(), "card 0's timer routine is still there");
+        assert_eq!(t.get(0, Kind::Tmr), 0x1000);
+        t.set(0, Kind::Tmr, 0);
+        assert!(!t.any());
+        t.set(0, Kind::Lio, 0);
+        assert!(!t.any(), "unregistering an empty slot counts nothing");
+    }
 
     #[test]
     fn collected_holds_one_entry_per_card_in_order() {

@@ -134,11 +134,16 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
     // in between needs them (`Shared::quiet_between_ticks`).
     let mut held: Option<super::tick::Held<'_>> = None;
     loop {
-        if !shared.clock.granted() {
-            // The run ends: the program resumes and will want them.
+        // Within a run granted to a virtual clock the next tick is due at once (what
+        // `wait_next` would find); otherwise the run ends (the program resumes and will
+        // want the locks) or the clock decides.
+        let next = if shared.clock.granted() {
+            Next::Tick
+        } else {
             super::tick::release(&mut held);
-        }
-        match shared.clock.wait_next() {
+            shared.clock.wait_next()
+        };
+        match next {
             Next::Stop => {
                 super::tick::release(&mut held);
                 shared.custom_close();

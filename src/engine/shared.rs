@@ -35,6 +35,8 @@ pub struct Shared {
     /// The mapping is fixed while the engine runs (a group's channels come from its
     /// definition).
     pub(super) commanding: Vec<u32>,
+    /// The length of a tick in ns, as the peripherals count it ([`super::tick::tick_ns`]).
+    pub(super) tick_len_ns: u64,
     /// Published state per group slot.
     pub(super) snaps: Vec<SnapshotCell>,
     /// Per group slot: the tick count at its last status poll and last position read
@@ -129,6 +131,7 @@ impl Shared {
             clock: Clock::new(mode, period),
             slots,
             commanding,
+            tick_len_ns: tick_ns(period),
             last_poll: (0..GROUPS)
                 .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
                 .collect(),

@@ -48,7 +48,7 @@ impl Shared {
     /// left in `interrupts`. The machine's and the groups' locks are `held`'s (taken
     /// here when it is empty); they stay there when the tick ends.
     fn tick<'a>(&'a self, held: &mut Option<Held<'a>>, interrupts: &mut isr::Collected) -> bool {
-        let dt = self.clock.period().as_secs_f64();
+        let dt = self.clock.period_s();
         let n = self.clock.ticks();
         let t_ns = self.running_tick_end_ns();
         let full = !self.clock.mode().virtual_time()
@@ -138,7 +138,7 @@ impl Shared {
         }
         drop(trace_guard);
         // Peripherals after the groups (lock order: groups, then a card's peripherals).
-        self.tick_peripherals(tick_ns(self.clock.period()), interrupts, groups);
+        self.tick_peripherals(self.tick_len_ns, interrupts, groups);
         full
     }
 
@@ -172,7 +172,7 @@ impl Shared {
     /// Virtual time, ns, at the end of the tick now running (the time its trace rows and
     /// events carry).
     pub(super) fn running_tick_end_ns(&self) -> u128 {
-        u128::from(self.clock.ticks() + 1) * self.clock.period().as_nanos()
+        u128::from(self.clock.ticks() + 1) * self.clock.period_nanos()
     }
 
     /// Writes the interrupts a tick collected to the trace's events file.

@@ -327,6 +327,7 @@ impl CardTriggers {
     /// Whether anything on the card is armed: compares, index or local-input interrupts,
     /// latches, closed-loop thresholds or a trigger-out (output or LED) holding. A card
     /// with nothing armed skips its tick (re-arming a compare rebases the counts).
+    #[inline]
     fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
         // Whole-array comparisons: a few wide compares instead of a loop per array.
         self.comp_enabled != [false; AXES]
@@ -340,6 +341,7 @@ impl CardTriggers {
     /// [`CardTriggers::tick`] for a card with nothing armed: only the index status
     /// follows the channels (the tick raises nothing then). Returns false, having done
     /// nothing, when something is armed.
+    #[inline]
     pub fn tick_idle(&mut self, chans: &[Channel; AXES], thresholds: &[(u16, u16); AXES]) -> bool {
         if self.armed(thresholds) {
             return false;

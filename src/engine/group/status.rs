@@ -63,22 +63,29 @@ impl GroupState {
 
     /// Commands the channels of the axes in `axes` (a bit mask of this group's axes,
     /// each mapped to a channel) with their pulses this tick ([`GroupState::pulses`]);
-    /// `cards` are the machine's channels. An axis whose channel is not in `cards` is
-    /// passed over.
+    /// `cards` are the machine's channels. A group's axes map channels of its own card
+    /// (`engine::axes_of`); an axis mapping another, or a card not in `cards`, is passed
+    /// over.
     ///
     /// One loop for the whole group, with what [`GroupState::pulses`] asks of every axis
-    /// (kinematics, filters) asked once: this runs every tick for every commanding group.
+    /// (kinematics, filters) and the card asked once: this runs every tick for every
+    /// commanding group.
     #[inline]
-    pub fn command_channels(&self, mut axes: u32, cards: &mut [[Channel; AXES]]) {
+    pub fn command_channels(&self, axes: u32, cards: &mut [[Channel; AXES]]) {
+        let own = self.def.card.0;
+        let Some(chans) = cards.get_mut(own).filter(|_| axes != 0) else {
+            return;
+        };
         let plain = self.kin.is_none() && self.post.is_none();
-        while axes != 0 {
-            let i = axes.trailing_zeros() as usize;
-            axes &= axes - 1;
-            let Some(ax) = self.axes.get(i) else { break };
+        for (i, ax) in self.axes.iter().enumerate() {
+            if axes >> i & 1 == 0 {
+                continue;
+            }
             let Some((card, ch)) = ax.channel else {
                 continue;
             };
-            let Some(chan) = cards.get_mut(card).and_then(|c| c.get_mut(ch)) else {
+            debug_assert_eq!(card, own, "a group's axes map its own card's channels");
+            let Some(chan) = chans.get_mut(ch).filter(|_| card == own) else {
                 continue;
             };
             let p = if plain {
