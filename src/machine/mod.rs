@@ -141,9 +141,10 @@ impl IndexCell {
 pub struct Channel {
     /// Pulses the program commanded (before compensation).
     cmd: i64,
-    /// The command for the coming step, set during a tick by the group (or homing)
-    /// driving the channel ([`Channel::command`]); `None`: the channel holds `cmd`.
-    commanded: Option<i64>,
+    /// The command for the coming step: what [`Channel::command`] set during this tick
+    /// (the group or homing driving the channel), else `cmd` (every step and counter
+    /// restart sets both), so that a channel nobody commands holds.
+    next: i64,
     /// The last step changed nothing, and another with the same command would change
     /// nothing either ([`Channel::step_commanded`] skips it). Cleared by whatever changes
     /// what a step reads: the counter's frame (`restart_counter`), the sensors
@@ -219,7 +220,7 @@ impl Channel {
             input_rate: None,
             gear_rate: 1.0,
             cmd: 0,
-            commanded: None,
+            next: 0,
             resting: false,
             resting_dt: 0.0,
             ideal: false,
@@ -289,6 +290,7 @@ impl Channel {
         self.base += shift;
         self.actual -= shift;
         self.cmd = 0;
+        self.next = 0;
         self.out = 0;
         self.prev_out = 0;
         self.prev_delta = 0;
@@ -591,7 +593,7 @@ impl Channel {
     /// Sets the pulses the coming [`Channel::step_commanded`] moves to (the last call in
     /// a tick wins).
     pub fn command(&mut self, pulses: i64) {
-        self.commanded = Some(pulses);
+        self.next = pulses;
     }
 
     /// One step of `dt` seconds to the pulses set by [`Channel::command`] this tick, or
@@ -602,7 +604,7 @@ impl Channel {
     /// the time; this keeps a tick from touching them.
     #[inline]
     pub fn step_commanded(&mut self, dt: f64) {
-        let cmd = self.commanded.take().unwrap_or(self.cmd);
+        let cmd = self.next;
         if self.resting && cmd == self.cmd && dt == self.resting_dt {
             return;
         }
@@ -633,6 +635,7 @@ impl Channel {
         self.prev_out = self.out;
         self.prev_delta = d_prev;
         self.cmd = cmd;
+        self.next = cmd;
         self.out = cmd;
         let before = self.actual;
         self.actual = cmd as f64;
@@ -653,6 +656,7 @@ impl Channel {
         self.prev_out = self.out;
         self.prev_delta = d_prev;
         self.cmd = cmd;
+        self.next = cmd;
         self.out = if self.comp.active() {
             cmd + self.comp.offset(cmd)
         } else {

@@ -334,7 +334,10 @@ impl CardTriggers {
             || self.index_enabled != [false; AXES]
             || self.lio_enabled != [false; 24]
             || self.latch_source != [0; AXES]
-            || *thresholds != [(0, 0); AXES]
+            || thresholds
+                .iter()
+                .fold(0, |any, &(plus, minus)| any | plus | minus)
+                != 0
             || self.timed_outputs
     }
 
