@@ -220,8 +220,8 @@ impl Shared {
         Ok(self.snaps[usize::from(g)].load())
     }
 
-    /// Publishes a group's state (call with its lock held) and, unless dry-running, the
-    /// pulse counters of its channels.
+    /// Publishes a group's state (call with its lock held): the info part when its key
+    /// changed, the motion part and the status.
     pub fn publish(&self, g: &mut GroupState) {
         let cell = &self.snaps[g.index];
         if g.info_changed() {
