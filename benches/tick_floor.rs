@@ -3,10 +3,12 @@
 //! machine.
 //!
 //! * **engine**: the fast clock running `groups` groups of 8 axes, all moving along a
-//!   line (as `benches/engine.rs` runs it), wall time per tick of `MCC_TimeDelay`;
-//!   also with a snapshot published every tick, as under the realtime clock.
+//!   line (as `benches/engine.rs` runs it), per tick of `MCC_TimeDelay`: the engine
+//!   thread's CPU time (its CPU-time clock) and wall time; also with a snapshot published
+//!   every tick, as under the realtime clock.
 //! * **floor**: the crate's own planner sampling the same lines (`PathMove::sample_into`
-//!   of 8 axes) and rounding every axis to pulses, per tick, results kept live.
+//!   of 8 axes) and rounding every axis to pulses, per tick, results kept live: the
+//!   calling thread's CPU time and wall time.
 //!
 //! Engine and floor alternate over [`ROUNDS`] short rounds. The headline ratios are the
 //! medians of each round's own ratio (engine over the floor measured next to it, the
