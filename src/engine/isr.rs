@@ -107,7 +107,10 @@ impl IsrTable {
     pub fn set(&self, card: usize, kind: Kind, f: usize) {
         let old = self.slots[card][kind as usize].swap(f, Ordering::AcqRel);
         // Each change between empty and registered moves the count (registrations from
-        // several threads each see their own slot's old value).
+        // several threads each see their own slot's old value). While two threads change
+        // one slot at once the count can be off (even wrap) between their swaps and
+        // counts: `any` may then answer wrongly for a tick, as if the registration had
+        // come a tick earlier or later, and the count is right again after both.
         match (old != 0, f != 0) {
             (false, true) => {
                 self.registered.fetch_add(1, Ordering::AcqRel);
