@@ -250,6 +250,28 @@ struct SchedAttr {
     sched_period: u64,
 }
 
+/// The calling thread's scheduling attributes (`sched_getattr(2)`).
+#[cfg(any(target_os = "linux", target_os = "android"))]
+fn own_sched_attr() -> std::io::Result<SchedAttr> {
+    let mut a = SchedAttr::default();
+    let size = std::mem::size_of::<SchedAttr>() as u32;
+    // SAFETY: `a` is a writable sched_attr of `size` bytes; pid 0 is this thread.
+    let r = unsafe {
+        libc::syscall(
+            libc::SYS_sched_getattr,
+            0,
+            &mut a as *mut SchedAttr,
+            size,
+            0,
+        )
+    };
+    if r != 0 {
+        return Err(std::io::Error::last_os_error());
+    }
+    a.size = size;
+    Ok(a)
+}
+
 /// Asks for a time slice of `us` µs for the calling thread under its normal scheduling
 /// policy, keeping its policy and nice value (read first: a nice value written back
 /// unchanged needs no privilege). A thread under `SCHED_FIFO` or `SCHED_RR` is left as it
@@ -257,26 +279,11 @@ struct SchedAttr {
 fn request_slice(us: u64) -> std::io::Result<()> {
     #[cfg(any(target_os = "linux", target_os = "android"))]
     {
-        let mut a = SchedAttr::default();
-        let size = std::mem::size_of::<SchedAttr>() as u32;
-        // SAFETY: `a` is a writable sched_attr of `size` bytes; pid 0 is this thread.
-        let r = unsafe {
-            libc::syscall(
-                libc::SYS_sched_getattr,
-                0,
-                &mut a as *mut SchedAttr,
-                size,
-                0,
-            )
-        };
-        if r != 0 {
-            return Err(std::io::Error::last_os_error());
-        }
+        let mut a = own_sched_attr()?;
         let normal = [libc::SCHED_OTHER, libc::SCHED_BATCH];
         if !normal.iter().any(|&p| p as u32 == a.sched_policy) {
             return Ok(());
         }
-        a.size = size;
         a.sched_flags = 0;
         a.sched_runtime = us.saturating_mul(1000);
         // SAFETY: `a` is a valid sched_attr of `a.size` bytes; pid 0 is this thread.
@@ -298,19 +305,7 @@ fn request_slice(us: u64) -> std::io::Result<()> {
 /// where the call is not allowed (a seccomp filter).
 #[cfg(test)]
 fn current_slice_ns() -> Option<u64> {
-    let mut a = SchedAttr::default();
-    let size = std::mem::size_of::<SchedAttr>() as u32;
-    // SAFETY: `a` is a writable sched_attr of `size` bytes; pid 0 is this thread.
-    let r = unsafe {
-        libc::syscall(
-            libc::SYS_sched_getattr,
-            0,
-            &mut a as *mut SchedAttr,
-            size,
-            0,
-        )
-    };
-    (r == 0).then_some(a.sched_runtime)
+    own_sched_attr().ok().map(|a| a.sched_runtime)
 }
 
 /// Sets up the calling thread as the realtime engine thread: 1 ns timer slack and the
