@@ -630,33 +630,18 @@ impl Channel {
     /// cost for each of them.
     #[inline]
     fn step_ideal(&mut self, cmd: i64, dt: f64) {
-        self.prev_levels = self.step_levels;
-        let d_prev = self.out - self.prev_out;
-        self.prev_out = self.out;
-        self.prev_delta = d_prev;
-        self.cmd = cmd;
-        self.next = cmd;
+        self.begin_step(cmd);
         self.out = cmd;
         let before = self.actual;
         self.actual = cmd as f64;
         self.count_index(before + self.base, self.actual + self.base);
-        self.step_levels = self.levels;
-        self.resting = self.out == self.prev_out
-            && d_prev == 0
-            && self.last_move.0 == self.last_move.1
-            && self.prev_levels == self.step_levels;
-        self.resting_dt = dt;
+        self.end_step(dt, true);
     }
 
     /// [`Channel::step`] of any channel: compensation, a lagging plant, sensors.
     #[inline(never)]
     fn step_general(&mut self, cmd: i64, dt: f64) {
-        self.prev_levels = self.step_levels;
-        let d_prev = self.out - self.prev_out;
-        self.prev_out = self.out;
-        self.prev_delta = d_prev;
-        self.cmd = cmd;
-        self.next = cmd;
+        self.begin_step(cmd);
         self.out = if self.comp.active() {
             cmd + self.comp.offset(cmd)
         } else {
@@ -673,14 +658,33 @@ impl Channel {
         if self.sensors {
             self.update_sensors();
         }
+        self.end_step(dt, !self.comp.active());
+    }
+
+    /// The start of every step: the output's history moves on one period (pulse speed
+    /// and acceleration) and `cmd` becomes the command.
+    #[inline(always)]
+    fn begin_step(&mut self, cmd: i64) {
+        self.prev_levels = self.step_levels;
+        self.prev_delta = self.out - self.prev_out;
+        self.prev_out = self.out;
+        self.cmd = cmd;
+        self.next = cmd;
+    }
+
+    /// The end of every step, once the output, the motor, the index count and the levels
+    /// are up to date: whether the channel now rests (`comp_still`: no compensation state
+    /// follows the motion).
+    ///
+    /// Resting is a fixed point of `step` with this command and period: the output stood
+    /// still for two steps (no pulse speed or acceleration), the motor did not move (the
+    /// plant's next position depends only on this one, the command and the period; a lag
+    /// ends on a fixed point of its floating-point iteration, which need not be the
+    /// command), so no index pulse and the same sensor levels.
+    #[inline(always)]
+    fn end_step(&mut self, dt: f64, comp_still: bool) {
         self.step_levels = self.levels;
-        // A fixed point of `step` with this command and period: the output stood still
-        // for two steps (no pulse speed or acceleration), the motor did not move (the
-        // plant's next position depends only on this one, the command and the period; a
-        // lag ends on a fixed point of its floating-point iteration, which need not be
-        // the command), so no index pulse and the same sensor levels, and no
-        // compensation state follows the motion.
-        self.resting = !self.comp.active()
+        self.resting = comp_still
             && self.out == self.prev_out
             && self.prev_delta == 0
             && self.last_move.0 == self.last_move.1
