@@ -50,19 +50,25 @@ fn matching(s: &[u8], open: usize) -> Option<usize> {
     None
 }
 
+/// The next `extern "C" fn` at or after byte `from` of `src`: the byte after its
+/// `fn `, and its name (`$name` in a family macro's expansion).
+fn next_extern_fn(src: &str, from: usize) -> Option<(usize, String)> {
+    const KEYWORDS: &str = "extern \"C\" fn ";
+    let start = from + src[from..].find(KEYWORDS)? + KEYWORDS.len();
+    let name = src[start..]
+        .chars()
+        .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '$')
+        .collect();
+    Some((start, name))
+}
+
 /// The names of the exported functions of one file whose body is not one boundary.
 fn offenders(src: &str) -> (usize, Vec<String>) {
     let b = src.as_bytes();
     let mut found = 0;
     let mut bad = Vec::new();
     let mut from = 0;
-    while let Some(k) = src[from..].find("extern \"C\" fn ") {
-        let start = from + k + "extern \"C\" fn ".len();
-        // `$name` in a family macro's expansion.
-        let name: String = src[start..]
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '$')
-            .collect();
+    while let Some((start, name)) = next_extern_fn(src, from) {
         // The parameter list, then the body's opening brace.
         let params = start + src[start..].find('(').expect("a parameter list");
         let close = matching(b, params).expect("a closed parameter list");
@@ -118,12 +124,7 @@ fn exported_names(src: &str, families: &[String]) -> Vec<String> {
     let b = src.as_bytes();
     let mut names = Vec::new();
     let mut from = 0;
-    while let Some(k) = src[from..].find("extern \"C\" fn ") {
-        let start = from + k + "extern \"C\" fn ".len();
-        let name: String = src[start..]
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '$')
-            .collect();
+    while let Some((start, name)) = next_extern_fn(src, from) {
         if !name.starts_with('$') {
             names.push(name);
         }
