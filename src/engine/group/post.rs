@@ -253,29 +253,35 @@ impl GroupState {
         }
     }
 
+    /// The filters between the reference and the output, when they have a stage.
+    fn output_filters(&self) -> Option<&Filters> {
+        self.post
+            .as_ref()
+            .map(|p| &p.filters)
+            .filter(|f| !f.stages.is_empty())
+    }
+
     /// The position the card outputs (the raw position after the filters).
     #[cold]
     #[inline(never)]
     pub(super) fn out_pos(&self) -> Axes {
-        match &self.post {
-            Some(p) if !p.filters.stages.is_empty() => {
-                std::array::from_fn(|i| self.pos[i] - p.filters.lag[i])
-            }
-            _ => self.pos,
+        match self.output_filters() {
+            Some(f) => std::array::from_fn(|i| self.pos[i] - f.lag[i]),
+            None => self.pos,
         }
     }
 
     /// Whether the output position and velocity are the reference's (no filter stage):
     /// [`GroupState::out_pos`] and [`GroupState::out_vel`] are then `pos` and `vel`.
     pub(super) fn output_is_reference(&self) -> bool {
-        !matches!(&self.post, Some(p) if !p.filters.stages.is_empty())
+        self.output_filters().is_none()
     }
 
     /// The output velocity (see [`GroupState::out_pos`]).
     pub(super) fn out_vel(&self) -> Axes {
-        match &self.post {
-            Some(p) if !p.filters.stages.is_empty() => p.filters.vel,
-            _ => self.vel,
+        match self.output_filters() {
+            Some(f) => f.vel,
+            None => self.vel,
         }
     }
 
