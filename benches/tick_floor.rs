@@ -89,14 +89,13 @@ fn engine_tid() -> libc::pid_t {
     panic!("no mccl-engine thread")
 }
 
-/// CPU time the engine thread has used, ns, read from its CPU-time clock, which the
-/// kernel brings up to date when read (the clock `pthread_getcpuclockid` gives, made
-/// from the thread id as glibc makes it: `(!tid << 3) | CPUCLOCK_PERTHREAD |
-/// CPUCLOCK_SCHED`). `/proc/<tid>/schedstat` is not: for a thread running on another
-/// CPU it lags until the scheduler's next tick, longer than a 1-group measurement.
-fn engine_cpu_ns() -> u64 {
-    let clock: libc::clockid_t = (!engine_tid() << 3) | 6;
-    cpu_clock_ns(clock)
+/// The CPU-time clock of the running engine's thread, which the kernel brings up to
+/// date when read (the clock `pthread_getcpuclockid` gives, made from the thread id as
+/// glibc makes it: `(!tid << 3) | CPUCLOCK_PERTHREAD | CPUCLOCK_SCHED`).
+/// `/proc/<tid>/schedstat` is not: for a thread running on another CPU it lags until the
+/// scheduler's next tick, longer than a 1-group measurement.
+fn engine_cpu_clock() -> libc::clockid_t {
+    (!engine_tid() << 3) | 6
 }
 
 /// The time on CPU-time clock `clock`, ns.
@@ -117,17 +116,17 @@ fn thread_cpu_ns() -> u64 {
 }
 
 /// Engine time per tick, µs, with or without a snapshot published every tick: (wall,
-/// CPU time of the engine thread).
-fn engine_tick_us(live: bool) -> (f64, f64) {
+/// CPU time of the engine thread, read on its clock `engine`).
+fn engine_tick_us(live: bool, engine: libc::clockid_t) -> (f64, f64) {
     let shared = MCCLPCI_IMP::system::active().expect("running system");
     shared
         .live_snapshots
         .store(live, std::sync::atomic::Ordering::Relaxed);
-    let c = engine_cpu_ns();
+    let c = cpu_clock_ns(engine);
     let t = Instant::now();
     MCC_TimeDelay(TICKS);
     let us = t.elapsed().as_secs_f64() / f64::from(TICKS) * 1e6;
-    let cpu = (engine_cpu_ns() - c) as f64 / f64::from(TICKS) / 1e3;
+    let cpu = (cpu_clock_ns(engine) - c) as f64 / f64::from(TICKS) / 1e3;
     shared
         .live_snapshots
         .store(false, std::sync::atomic::Ordering::Relaxed);
@@ -210,10 +209,11 @@ impl Rounds {
 fn measure(groups: u16) -> (Rounds, Rounds) {
     let (mut wall, mut cpu) = (Vec::new(), Vec::new());
     start(groups);
+    let engine = engine_cpu_clock();
     for round in 0..ROUNDS {
-        let (we, ce) = engine_tick_us(false);
+        let (we, ce) = engine_tick_us(false, engine);
         let (wf, cf) = floor_tick_us(usize::from(groups), 1.0 + f64::from(round));
-        let (wp, cp) = engine_tick_us(true);
+        let (wp, cp) = engine_tick_us(true, engine);
         wall.push(Round {
             engine: we,
             publishing: wp,
