@@ -58,6 +58,13 @@ impl GroupState {
         } else {
             self.pos[i]
         };
+        self.pulses_at(i, pos)
+    }
+
+    /// The pulses of axis `i` at output position `pos`: the reference position (with the
+    /// offset) times the pulses per UU, rounded halves away from zero.
+    #[inline]
+    fn pulses_at(&self, i: usize, pos: f64) -> i64 {
         round_pulses((pos + self.offset[i]) * self.axes[i].factor)
     }
 
@@ -89,7 +96,7 @@ impl GroupState {
                 continue;
             };
             let p = if plain {
-                round_pulses((self.pos[i] + self.offset[i]) * ax.factor)
+                self.pulses_at(i, self.pos[i])
             } else {
                 self.pulses(i)
             };
