@@ -322,21 +322,29 @@ impl GroupState {
         if self.running.len() == 1 {
             // The usual case, without the sums (the same operations as below).
             let r = &self.running[0];
-            let (mut p, mut v) = ([0.0; AXES], [0.0; AXES]);
-            r.cmd.sample_into(r.tau, &mut p, &mut v);
             let s = r.cmd.start();
+            let mut v = [0.0; AXES];
+            if self.base == s {
+                // The command starts where the group stands (nearly always): every
+                // axis takes the branch `p[i]` of the loop below, so the sample is the
+                // position.
+                r.cmd.sample_into(r.tau, &mut self.pos, &mut v);
+            } else {
+                let mut p = [0.0; AXES];
+                r.cmd.sample_into(r.tau, &mut p, &mut v);
+                // Branch-free, so that the loop vectorizes.
+                #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
+                for i in 0..AXES {
+                    let moved = self.base[i] + (p[i] - s[i]);
+                    self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
+                }
+            }
             let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
                 0.0
             } else {
                 self.rate.value
             };
-            // Branch-free, so that both loops vectorize. `0.0 +` as in the sums below
-            // (it turns -0.0 into 0.0).
-            #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
-            for i in 0..AXES {
-                let moved = self.base[i] + (p[i] - s[i]);
-                self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
-            }
+            // `0.0 +` as in the sums below (it turns -0.0 into 0.0).
             for (out, v) in self.vel.iter_mut().zip(v) {
                 *out = 0.0 + v * scale;
             }
