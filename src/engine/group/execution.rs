@@ -148,7 +148,9 @@ impl GroupState {
             return false;
         }
         let dtau = self.rate.value * dt;
-        let r = &self.running[0];
+        let Some(r) = self.running.front_mut() else {
+            return false;
+        };
         // `TickClock::own_time(dt, ..)` of a general or PtP command: dt / dt x dtau, and
         // dt / dt is exactly 1 for the (finite, positive) period.
         let tau = r.tau + if dt > 0.0 { dtau } else { 0.0 };
@@ -169,8 +171,16 @@ impl GroupState {
             }
             _ => return false,
         }
-        self.running[0].tau = tau;
-        self.compute_pos_vel();
+        r.tau = tau;
+        // `compute_pos_vel` with this one command, without finding it again.
+        place_single(
+            &mut self.pos,
+            &mut self.vel,
+            &self.base,
+            &r.cmd,
+            tau,
+            self.rate.value,
+        );
         // What `update_status` finds for a group running a motion command.
         self.status = c::GMS_RUNNING;
         true
@@ -319,40 +329,20 @@ impl GroupState {
     }
 
     fn compute_pos_vel(&mut self) {
-        if self.running.len() == 1 {
+        if let (1, Some(r)) = (self.running.len(), self.running.front()) {
             // The usual case, without the sums (the same operations as below).
-            let r = &self.running[0];
-            let s = r.cmd.start();
-            let mut v = [0.0; AXES];
-            if self.base == s {
-                // The command starts where the group stands (nearly always): every
-                // axis takes the branch `p[i]` of the loop below, so the sample is the
-                // position.
-                r.cmd.sample_into(r.tau, &mut self.pos, &mut v);
-            } else {
-                let mut p = [0.0; AXES];
-                r.cmd.sample_into(r.tau, &mut p, &mut v);
-                // Branch-free, so that the loop vectorizes.
-                #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
-                for i in 0..AXES {
-                    let moved = self.base[i] + (p[i] - s[i]);
-                    self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
-                }
-            }
-            let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
-                0.0
-            } else {
-                self.rate.value
-            };
-            // `0.0 +` as in the sums below (it turns -0.0 into 0.0).
-            for (out, v) in self.vel.iter_mut().zip(v) {
-                *out = 0.0 + v * scale;
-            }
+            place_single(
+                &mut self.pos,
+                &mut self.vel,
+                &self.base,
+                &r.cmd,
+                r.tau,
+                self.rate.value,
+            );
             return;
         }
         let mut pos = self.base;
         let mut vel = [0.0; AXES];
-        let only = self.running.len() == 1;
         for r in &self.running {
             let (p, v) = r.cmd.sample(r.tau);
             let s = r.cmd.start();
@@ -362,15 +352,44 @@ impl GroupState {
                 self.rate.value
             };
             for i in 0..AXES {
-                if only && self.base[i] == s[i] {
-                    pos[i] = p[i];
-                } else {
-                    pos[i] += p[i] - s[i];
-                }
+                pos[i] += p[i] - s[i];
                 vel[i] += v[i] * scale;
             }
         }
         self.pos = pos;
         self.vel = vel;
+    }
+}
+
+/// The position and velocity of a group whose one running command is `cmd`, at its own
+/// time `tau`: the group stood at `base` when the command started and runs at `rate`
+/// (`compute_pos_vel` with one command, also the cruise path's).
+#[inline(always)]
+fn place_single(pos: &mut Axes, vel: &mut Axes, base: &Axes, cmd: &Command, tau: f64, rate: f64) {
+    let s = cmd.start();
+    let mut v = [0.0; AXES];
+    if *base == s {
+        // The command starts where the group stands (nearly always): every axis takes
+        // the branch `p[i]` of the loop below, so the sample is the position.
+        cmd.sample_into(tau, pos, &mut v);
+    } else {
+        let mut p = [0.0; AXES];
+        cmd.sample_into(tau, &mut p, &mut v);
+        // An axis that starts where the group stands takes the sample as it is (adding
+        // and taking away the start could round); branch-free, so that it vectorizes.
+        #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
+        for i in 0..AXES {
+            let moved = base[i] + (p[i] - s[i]);
+            pos[i] = if base[i] == s[i] { p[i] } else { moved };
+        }
+    }
+    let scale = if matches!(cmd.plan, Plan::Delay(_)) {
+        0.0
+    } else {
+        rate
+    };
+    // `0.0 +` as in the sums of `compute_pos_vel` (it turns -0.0 into 0.0).
+    for (out, v) in vel.iter_mut().zip(v) {
+        *out = 0.0 + v * scale;
     }
 }
