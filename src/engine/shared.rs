@@ -225,12 +225,7 @@ impl Shared {
     pub fn publish(&self, g: &mut GroupState) {
         let cell = &self.snaps[g.index];
         if g.info_changed() {
-            let info = g.info();
-            cell.store_info(&info);
-            #[cfg(debug_assertions)]
-            {
-                g.published_info = Some(info);
-            }
+            publish_info(cell, g);
         } else {
             // An unchanged key must mean an unchanged info (a writer that forgot
             // `info_touched` would leave readers with a stale info).
@@ -279,6 +274,18 @@ impl Shared {
     /// (the state after a caught panic that may have touched any group).
     pub fn stop_all_for_internal_error(&self) {
         self.for_each_group(|g| g.stop_for(Some(safety::ERR_INTERNAL)));
+    }
+}
+
+/// The info part of [`Shared::publish`], out of line (it seldom changes): builds group
+/// `g`'s info and stores it in `cell`.
+#[inline(never)]
+fn publish_info(cell: &SnapshotCell, g: &mut GroupState) {
+    let info = g.info();
+    cell.store_info(&info);
+    #[cfg(debug_assertions)]
+    {
+        g.published_info = Some(info);
     }
 }
 

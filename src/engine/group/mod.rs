@@ -128,8 +128,8 @@ pub struct GroupState {
     queue_end: Axes,
     /// Command indices (`queue.rs`).
     cmd_index: CommandIndex,
-    /// The info key last published ([`GroupState::info_changed`]).
-    published_key: Option<status::InfoKey>,
+    /// The info key last published and how long it holds ([`GroupState::info_changed`]).
+    published_key: Option<status::PublishedKey>,
     /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
     pub track_limit: Axes,
     /// In-position settings (`MCC_SetInPos*`).

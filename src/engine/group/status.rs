@@ -124,8 +124,15 @@ impl GroupState {
         if self.output_is_reference() {
             cell.store_motion_parts(self.status, &self.pos, &self.vel, self.settings.compose);
         } else {
-            cell.store_motion(&self.motion());
+            self.store_filtered_motion(cell);
         }
+    }
+
+    /// [`GroupState::store_motion`] of a group with filter stages, out of line: the
+    /// motion it assembles would give every publication a stack frame.
+    #[inline(never)]
+    fn store_filtered_motion(&self, cell: &SnapshotCell) {
+        cell.store_motion(&self.motion());
     }
 
     /// The part of the published state that changes when commands start or end.
@@ -191,13 +198,83 @@ impl GroupState {
     /// if so, it counts as published from now on.
     #[inline]
     pub fn info_changed(&mut self) -> bool {
-        let key = self.info_key();
-        if self.published_key == Some(key) {
+        if self.published_key_holds() {
+            debug_assert_eq!(
+                self.published_key.map(|p| p.key),
+                Some(self.info_key()),
+                "group {}: the published key was taken to hold",
+                self.index
+            );
             return false;
         }
-        self.published_key = Some(key);
+        let key = self.info_key();
+        let holds_for = self.running.back().map_or(OWN_TIME_ANY, key_holds_for);
+        if self.published_key.is_some_and(|p| p.key == key) {
+            self.published_key = Some(PublishedKey { key, holds_for });
+            return false;
+        }
+        self.published_key = Some(PublishedKey { key, holds_for });
         true
     }
+
+    /// Whether [`GroupState::info_key`] is still the key last published, found without
+    /// building it: the words it reads straight from the group are the same, and the
+    /// running command at the back (the newest: `starts` changes whenever another one
+    /// starts) is still within the stretch of its own time over which its phase and
+    /// feed stay as published ([`key_holds_for`]).
+    #[inline]
+    fn published_key_holds(&self) -> bool {
+        let Some(p) = &self.published_key else {
+            return false;
+        };
+        let same_words = p.key.error == self.error
+            && p.key.queued == self.queue.len()
+            && p.key.starts == self.starts
+            && p.key.touched == self.info_touched;
+        same_words
+            && match self.running.back() {
+                Some(r) => p.key.running && r.tau >= p.holds_for.0 && r.tau < p.holds_for.1,
+                None => !p.key.running,
+            }
+    }
+}
+
+/// The info key last published ([`GroupState::info_changed`]) and the own times of the
+/// running command over which its time-dependent words (phase, feed) stay the same.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct PublishedKey {
+    key: InfoKey,
+    holds_for: (f64, f64),
+}
+
+/// The own-time range of a group with no running command: nothing depends on it.
+const OWN_TIME_ANY: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
+
+/// The own times `[from, until)` of running command `r`, from its own time now, over
+/// which [`motion_phase`] and [`info_feed`] give what they give now. Own time only moves
+/// forward while a command runs (a range that starts now also catches one that would
+/// not); the phase of a general motion changes at the end of the acceleration and at
+/// the start of the deceleration; a delay's feed (the time left) changes all the time,
+/// so its range is empty; the others stay the same. A NaN own time gives a range that
+/// nothing is in.
+fn key_holds_for(r: &Running) -> (f64, f64) {
+    let until = match &r.cmd.plan {
+        Plan::Path(m) => {
+            // The bounds of `motion_phase`.
+            let (accel_end, decel_start) =
+                (m.profile.acc_time().min(m.decel_start()), m.decel_start());
+            if r.tau < accel_end {
+                accel_end
+            } else if r.tau < decel_start {
+                decel_start
+            } else {
+                f64::INFINITY
+            }
+        }
+        Plan::Delay(_) => r.tau,
+        _ => f64::INFINITY,
+    };
+    (r.tau, until)
 }
 
 /// [`GroupState::info_key`].
@@ -235,5 +312,84 @@ fn info_feed(r: &Running) -> f64 {
     match r.cmd.plan {
         Plan::Delay(s) => ((s - r.tau) * 1000.0).max(0.0),
         _ => r.cmd.info_feed,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::GroupDef;
+    use crate::engine::command::AxisMech;
+
+    /// A group of eight unmapped axes, 1000 pulses per UU, feed 10 UU/s, 100 ms
+    /// acceleration and deceleration.
+    fn group() -> GroupState {
+        let def = GroupDef::new([0, 1, 2, 3, 4, 5, 6, 7], 0, 10).expect("group");
+        let axis = AxisMech {
+            channel: None,
+            factor: 1000.0,
+            safe_speed: 1.0,
+            high: 1e9,
+            low: -1e9,
+        };
+        let mut g = GroupState::new(0, def, [axis; AXES]);
+        g.settings.feed = 10.0;
+        g.settings.acc_ms = 100.0;
+        g.settings.dec_ms = 100.0;
+        g
+    }
+
+    #[test]
+    fn the_published_key_holds_exactly_while_the_info_stays_the_same() {
+        // A line of 10 UU along X at 10 UU/s with 100 ms ramps (T-curve): accelerating
+        // for 0.1 s, at speed until its deceleration starts at 1.0 s (10 UU = 10 UU/s x
+        // (T - 0.1 s), T = 1.1 s), decelerating to 1.1 s. Published every 1 ms tick, the
+        // info changes (and must be published) when the line starts, at 0.1 s (phase
+        // 0 -> 1), at 1.0 s (1 -> 2) and when it ends; on every other tick the key must
+        // be found to hold without being built.
+        let mut g = group();
+        let mut target = g.ctx().from;
+        target[0] = 10.0;
+        let cmd = g.ctx().line(target).expect("line");
+        g.enqueue(cmd).expect("queued");
+        let mut published = None;
+        let (mut changes, mut phases) = (Vec::new(), Vec::new());
+        for tick in 1..=1300 {
+            g.tick(0.001);
+            let holds = g.published_key_holds();
+            let changed = g.info_changed();
+            let info = g.info();
+            assert_eq!(
+                changed,
+                published.as_ref() != Some(&info),
+                "tick {tick}: published again exactly when the info changed"
+            );
+            if holds {
+                assert_eq!(
+                    g.published_key.map(|p| p.key),
+                    Some(g.info_key()),
+                    "tick {tick}"
+                );
+            }
+            if changed {
+                changes.push(tick);
+                phases.push((info.cmd.nType, info.cmd.nMotionPhase));
+                published = Some(info);
+            }
+        }
+        // The first tick starts the line (the first publication), then the two phase
+        // changes about 100 and 1000 ticks later, then the end about 1100 ticks in.
+        assert_eq!(changes.len(), 4, "changes at ticks {changes:?}");
+        assert_eq!(changes[0], 1);
+        assert!((99..=101).contains(&changes[1]), "{changes:?}");
+        assert!((999..=1001).contains(&changes[2]), "{changes:?}");
+        assert!((1099..=1102).contains(&changes[3]), "{changes:?}");
+        let line = crate::engine::command::ctype::LINE;
+        assert_eq!(
+            phases[..3],
+            [(line, 0), (line, 1), (line, 2)],
+            "phases 0, 1, 2"
+        );
+        assert_eq!(phases[3].0, -1, "nothing running at the end");
     }
 }
