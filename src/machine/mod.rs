@@ -689,7 +689,10 @@ impl Channel {
             && self.prev_delta == 0
             && self.last_move.0 == self.last_move.1
             && self.prev_levels == self.step_levels;
-        self.resting_dt = dt;
+        // Read only while resting (`step_commanded`): a moving channel skips the store.
+        if self.resting {
+            self.resting_dt = dt;
+        }
     }
 
     /// Sets the motor where the command is (for a channel that is stopped and reset).
