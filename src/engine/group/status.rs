@@ -171,12 +171,20 @@ impl GroupState {
     pub(super) fn info_key(&self) -> InfoKey {
         let back = self.running.back();
         InfoKey {
-            error: self.error,
-            queued: self.queue.len(),
-            starts: self.starts,
+            words: self.key_words(),
             running: back.is_some(),
             phase: back.map_or(0, motion_phase),
             feed: back.map_or(0, |r| info_feed(r).to_bits()),
+        }
+    }
+
+    /// The words of [`GroupState::info_key`] read straight from the group.
+    #[inline]
+    fn key_words(&self) -> KeyWords {
+        KeyWords {
+            error: self.error,
+            queued: self.queue.len(),
+            starts: self.starts,
             touched: self.info_touched,
         }
     }
@@ -229,11 +237,7 @@ impl GroupState {
         let Some(p) = &self.published_key else {
             return false;
         };
-        let same_words = p.key.error == self.error
-            && p.key.queued == self.queue.len()
-            && p.key.starts == self.starts
-            && p.key.touched == self.info_touched;
-        same_words
+        p.key.words == self.key_words()
             && match self.running.back() {
                 Some(r) => p.key.running && r.tau >= p.holds_for.0 && r.tau < p.holds_for.1,
                 None => !p.key.running,
@@ -282,12 +286,19 @@ fn key_holds_for(r: &Running) -> (f64, f64) {
 /// [`GroupState::info_key`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct InfoKey {
-    error: i32,
-    queued: usize,
-    starts: u64,
+    words: KeyWords,
+    /// What the running command at the back of `running` shows (none: false, 0, 0).
     running: bool,
     phase: i32,
     feed: u64,
+}
+
+/// The words of an [`InfoKey`] read straight from the group ([`GroupState::key_words`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct KeyWords {
+    error: i32,
+    queued: usize,
+    starts: u64,
     touched: u64,
 }
 
