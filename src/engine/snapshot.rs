@@ -89,17 +89,6 @@ impl GroupSnapshot {
 const MOTION_WORDS: usize = 1 + 8 + 8 + 1;
 const INFO_WORDS: usize = 2 + 15 + 8 + 8;
 
-fn motion_words(m: &Motion) -> [u64; MOTION_WORDS] {
-    let mut w = [0u64; MOTION_WORDS];
-    w[0] = m.status as u32 as u64;
-    for k in 0..8 {
-        w[1 + k] = m.pos[k].to_bits();
-        w[9 + k] = m.vel[k].to_bits();
-    }
-    w[17] = u64::from(m.compose);
-    w
-}
-
 fn motion_from(w: &[u64; MOTION_WORDS]) -> Motion {
     Motion {
         status: w[0] as u32 as i32,
@@ -215,12 +204,13 @@ pub struct SnapshotCell {
 impl SnapshotCell {
     /// Publishes the motion part. Callers must be serialised (they hold the group's lock).
     pub fn store_motion(&self, m: &Motion) {
-        self.motion.store(&motion_words(m));
+        self.store_motion_parts(m.status, &m.pos, &m.vel, m.compose);
     }
 
-    /// Publishes the motion part from its fields, as [`SnapshotCell::store_motion`]
-    /// stores the [`Motion`] they make, without assembling it first (this runs for every
-    /// group on every tick that publishes). Callers must be serialised.
+    /// Publishes the motion part from its fields, without assembling a [`Motion`] first
+    /// (this runs for every group on every tick that publishes): the status, the 8
+    /// positions, the 8 velocities and the compose mask, one word each, as
+    /// `motion_from` reads them. Callers must be serialised.
     #[inline]
     pub fn store_motion_parts(&self, status: i32, pos: &Axes, vel: &Axes, compose: u32) {
         self.motion.store_by(|w| {
@@ -262,7 +252,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn motion_stored_from_its_parts_reads_back_as_stored_whole() {
+    fn motion_stored_from_its_parts_lies_in_its_words_and_reads_back() {
         let mut m = Motion {
             status: -3,
             compose: 0b1000_0101,
@@ -272,11 +262,19 @@ mod tests {
             m.pos[k] = -1.5 * k as f64 + 0.25;
             m.vel[k] = 7.0 / (k as f64 + 1.0);
         }
-        let (a, b) = (SnapshotCell::default(), SnapshotCell::default());
-        a.store_motion(&m);
-        b.store_motion_parts(m.status, &m.pos, &m.vel, m.compose);
-        assert_eq!(a.motion.load(), b.motion.load());
-        assert_eq!(b.load_motion(), m);
+        let c = SnapshotCell::default();
+        c.store_motion_parts(m.status, &m.pos, &m.vel, m.compose);
+        // Word 0 the status (its 32 bits), 1..=8 the positions, 9..=16 the velocities,
+        // 17 the compose mask.
+        let mut words = [0u64; MOTION_WORDS];
+        words[0] = 0xFFFF_FFFD;
+        for k in 0..8 {
+            words[1 + k] = m.pos[k].to_bits();
+            words[9 + k] = m.vel[k].to_bits();
+        }
+        words[17] = 0b1000_0101;
+        assert_eq!(c.motion.load(), words);
+        assert_eq!(c.load_motion(), m);
     }
 
     #[test]
