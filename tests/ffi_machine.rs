@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{fresh, init_ms};
+use common::{enc, fresh, init_ms};
 use std::os::raw::c_long;
 use MCCLPCI_IMP::ffi::coordinate::*;
 use MCCLPCI_IMP::ffi::encoder::*;
@@ -29,14 +29,6 @@ fn x() -> f64 {
     // SAFETY: eight valid pointers.
     unsafe { MCC_GetCurPos(a, b, c, d, e, f, g, h, 0) };
     p[0]
-}
-
-fn enc(ch: u16) -> i64 {
-    let mut v: c_long = 0;
-    // SAFETY: valid pointer.
-    assert_eq!(unsafe { MCC_GetENCValue(&mut v, ch, 0) }, NO_ERR);
-    #[allow(clippy::useless_conversion)] // `long` is 32-bit on Windows
-    i64::from(v)
 }
 
 fn status() -> i32 {

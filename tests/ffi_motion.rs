@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{fresh, init_ms};
+use common::{enc, fresh, init_ms};
 use MCCLPCI_IMP::ffi::coordinate::*;
 use MCCLPCI_IMP::ffi::motion::*;
 use MCCLPCI_IMP::ffi::ptp::*;
@@ -143,6 +143,57 @@ fn two_groups_run_concurrently_and_finish_independently() {
     assert_eq!(status(1), GMS_STOP);
     assert_eq!(pos(0)[0], 1.0);
     assert_eq!(pos(1)[0], 3.0);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn a_channel_two_groups_map_follows_the_later_group() {
+    let _g = fresh();
+    // Group 0: X on channel 0, Y on channel 1. Group 1: X on channel 1 as well.
+    assert_eq!(MCC_CreateGroup(0, 1, -1, -1, -1, -1, -1, -1, 0), 0);
+    assert_eq!(MCC_CreateGroup(1, -1, -1, -1, -1, -1, -1, -1, 0), 1);
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    for g in 0..2 {
+        assert_eq!(MCC_SetFeedSpeed(10.0, g), 10.0);
+        ramps(0.0, g);
+    }
+    assert_eq!(line(1.0, 2.0, 0), 0); // √5 UU at 10 UU/s: 224 ms
+    assert_eq!(line(3.0, 0.0, 1), 0); // 300 ms
+    tick(400);
+    assert_eq!((status(0), status(1)), (GMS_STOP, GMS_STOP));
+    // Each group still moves its own axes to their ends: 500 pulses/UU (the default
+    // mechanism), 2 UU of Y = 1000 pulses, 3 UU of X = 1500.
+    assert_eq!(pulses(0)[..2], [500, 1000]);
+    assert_eq!(pulses(1)[0], 1500);
+    // The channels (the encoder counts a pulse each at x4, the default) follow the last
+    // axis mapping them, in group order: channel 0 only group 0's X, channel 1 group 1's X
+    // and not group 0's Y.
+    assert_eq!(enc(0), 500);
+    assert_eq!(enc(1), 1500);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}
+
+#[test]
+fn the_channels_follow_their_group_after_update_param() {
+    let _g = fresh();
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    ramps(0.0, 0);
+    assert_eq!(line(1.0, 0.0, 0), 0);
+    tick(200);
+    assert_eq!(enc(0), 500, "1 UU at 500 pulses/UU");
+    // MCC_UpdateParam resets the group: its position and pulses restart from 0 while
+    // the motor stays where it is (the encoder keeps counting it).
+    assert_eq!(MCC_UpdateParam(), NO_ERR);
+    assert_eq!((pos(0)[0], pulses(0)[0], enc(0)), (0.0, 0, 500));
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    ramps(0.0, 0);
+    assert_eq!(line(2.0, 0.0, 0), 0); // 200 ms
+    tick(300);
+    assert_eq!(status(0), GMS_STOP);
+    // 2 UU = 1000 pulses more, which the channel still receives after the reset.
+    assert_eq!(pulses(0)[0], 1000);
+    assert_eq!(enc(0), 1500);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 

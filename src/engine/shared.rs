@@ -4,7 +4,7 @@
 //! The tick ([`super::tick`]), the virtual-time polls ([`super::poll`]) and the go-home
 //! control ([`super::homing::control`]) are methods of it in their own files.
 
-use super::group::GroupState;
+use super::group::{Commanded, GroupState};
 use super::snapshot::{GroupSnapshot, SnapshotCell};
 use super::tick::tick_ns;
 use super::{axes_of, homing, isr, safety, trace};
@@ -29,12 +29,8 @@ pub struct Shared {
     /// fifth of the tick at 48 groups, issue #18). A program thread holds it only to
     /// queue or change one group, as it held that group's lock before.
     pub(super) groups: Mutex<Vec<GroupState>>,
-    /// Per position in `groups`: the axes whose pulses command their channel, one bit each.
-    /// Several groups may map the same channel; the tick sends it the pulses of the last
-    /// axis (in group order, then axis order) mapping it, so the others need none computed.
-    /// The mapping is fixed while the engine runs (a group's channels come from its
-    /// definition).
-    pub(super) commanding: Vec<u32>,
+    /// Number of running groups (their count in `groups`, readable without its lock).
+    group_count: usize,
     /// The length of a tick in ns, as the peripherals count it ([`super::tick::tick_ns`]).
     pub(super) tick_len_ns: u64,
     /// Published state per group slot.
@@ -126,11 +122,15 @@ impl Shared {
                 t.start_group(g, mac, &machine);
             }
         }
-        let commanding = commanding_axes(&gs);
+        let commanded = commanding_axes(&gs);
+        for (g, c) in gs.iter_mut().zip(commanded) {
+            g.commanded = c;
+        }
+        let group_count = gs.len();
         Shared {
             clock: Clock::new(mode, period),
             slots,
-            commanding,
+            group_count,
             tick_len_ns: tick_ns(period),
             last_poll: (0..GROUPS)
                 .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
@@ -190,7 +190,7 @@ impl Shared {
 
     /// Number of running groups (positions 0.. in the groups' lock).
     pub(super) fn group_count(&self) -> usize {
-        self.commanding.len()
+        self.group_count
     }
 
     /// Locks the group at position `n` of the running groups (not its slot): for the
@@ -289,24 +289,32 @@ fn publish_info(cell: &SnapshotCell, g: &mut GroupState) {
     }
 }
 
-/// [`Shared::commanding`] for `groups`: per group, the axes that are the last (in group
-/// order, then axis order) to map their channel.
-fn commanding_axes(groups: &[GroupState]) -> Vec<u32> {
+/// [`GroupState::commanded`] for `groups`: per group, the axes that are the last (in group
+/// order, then axis order) to map their channel, with the channel. An axis mapping
+/// another card than its group's (which `engine::axes_of` never makes) commands nothing.
+fn commanding_axes(groups: &[GroupState]) -> Vec<Commanded> {
     let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
     for (n, g) in groups.iter().enumerate() {
         for (i, ax) in g.axes.iter().enumerate() {
             if let Some((card, ch)) = ax.channel {
-                if let Some(c) = last.get_mut(card) {
-                    c[ch] = Some((n, i));
+                if let Some(c) = last.get_mut(card).and_then(|c| c.get_mut(ch)) {
+                    *c = Some((n, i));
                 }
             }
         }
     }
-    let mut out = vec![0u32; groups.len()];
-    for (n, i) in last.iter().flatten().flatten() {
-        out[*n] |= 1 << i;
-    }
-    out
+    groups
+        .iter()
+        .enumerate()
+        .map(|(n, g)| {
+            Commanded::new(g.axes.iter().enumerate().filter_map(|(i, ax)| {
+                let (card, ch) = ax.channel?;
+                let own = card == g.def.card.0;
+                let lasts = last.get(card)?.get(ch).copied().flatten() == Some((n, i));
+                (own && lasts).then_some((i, ch))
+            }))
+        })
+        .collect()
 }
 
 /// Locks `m` counting the caller in `wanted` while it may wait: the engine thread, which

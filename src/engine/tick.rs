@@ -64,7 +64,7 @@ impl Shared {
         let dry = self.dry_run.load(Ordering::Relaxed);
         let homed = self.tick_homing(machine, dt);
         let groups = &mut *held.groups;
-        for (n, g) in groups.iter_mut().enumerate() {
+        for g in groups.iter_mut() {
             g.tick(dt);
             g.kinematics_apply();
             crate::fault::point("group tick");
@@ -83,7 +83,7 @@ impl Shared {
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
-                g.command_channels(self.commanding[n], &mut machine.cards);
+                g.command_channels(&mut machine.cards);
             }
             if full {
                 self.publish(g);

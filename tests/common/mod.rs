@@ -19,6 +19,16 @@ use std::time::Duration;
 use MCCLPCI_IMP::vendor::consts::IMP_III_8_AXIS_PCI_CARD;
 use MCCLPCI_IMP::vendor::SYS_CARD_CONFIG;
 
+/// The encoder count of channel `ch` of card 0 (`MCC_GetENCValue`), which must succeed.
+pub fn enc(ch: u16) -> i64 {
+    let mut v: std::os::raw::c_long = 0;
+    // SAFETY: a valid pointer.
+    let r = unsafe { MCCLPCI_IMP::ffi::encoder::MCC_GetENCValue(&mut v, ch, 0) };
+    assert_eq!(r, MCCLPCI_IMP::vendor::consts::NO_ERR);
+    #[allow(clippy::useless_conversion)] // `long` is 32-bit on Windows
+    i64::from(v)
+}
+
 /// The library has one process-wide system: the tests of a file that use it run one at a
 /// time.
 static SERIAL: Mutex<()> = Mutex::new(());

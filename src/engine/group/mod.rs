@@ -27,6 +27,7 @@ use crate::planner::Axes;
 use crate::vendor::consts as c;
 use std::collections::VecDeque;
 
+mod commanded;
 pub mod custom;
 mod execution;
 pub mod external;
@@ -38,6 +39,7 @@ mod queue;
 mod rate;
 mod status;
 
+pub use commanded::Commanded;
 use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
@@ -116,6 +118,9 @@ pub struct GroupState {
     pub def: GroupDef,
     /// Mechanism facts per axis (from the parameters in effect).
     pub axes: [AxisMech; AXES],
+    /// The axes whose pulses command a channel, with the channel (set when the engine
+    /// starts, `engine::shared`: it depends on every group's mapping).
+    pub(in crate::engine) commanded: Commanded,
     /// Settings that queued commands capture.
     pub settings: Settings,
     /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
@@ -147,6 +152,7 @@ impl GroupState {
             index,
             def,
             axes,
+            commanded: Commanded::default(),
             settings: Settings::default(),
             blend_queued: false,
             override_pct: 100.0,
@@ -196,9 +202,12 @@ impl GroupState {
         let external = self.external.take();
         let notes = self.trace_notes.take();
         let custom = std::mem::take(&mut self.custom);
+        let commanded = self.commanded;
         *self = GroupState::new(self.index, self.def, axes);
         self.trace_notes = notes;
         self.custom = custom;
+        // The channels it commands depend on every group's mapping, which a reset keeps.
+        self.commanded = commanded;
         // An MC3B group stays on its device, rezeroed.
         if let Some(mut x) = external {
             x.rezero();

@@ -68,39 +68,30 @@ impl GroupState {
         round_pulses((pos + self.offset[i]) * self.axes[i].factor)
     }
 
-    /// Commands the channels of the axes in `axes` (a bit mask of this group's axes,
-    /// each mapped to a channel) with their pulses this tick ([`GroupState::pulses`]);
-    /// `cards` are the machine's channels. A group's axes map channels of its own card
-    /// (`engine::axes_of`); an axis mapping another, or a card not in `cards`, is passed
-    /// over.
+    /// Commands the channels this group commands (`commanded`: axes each with a channel
+    /// of its card) with their axes' pulses this tick ([`GroupState::pulses`]); `cards`
+    /// are the machine's channels. A card not in `cards` is passed over.
     ///
     /// One loop for the whole group, with what [`GroupState::pulses`] asks of every axis
     /// (kinematics, filters) and the card asked once: this runs every tick for every
     /// commanding group.
     #[inline]
-    pub fn command_channels(&self, axes: u32, cards: &mut [[Channel; AXES]]) {
-        let own = self.def.card.0;
-        let Some(chans) = cards.get_mut(own).filter(|_| axes != 0) else {
+    pub fn command_channels(&self, cards: &mut [[Channel; AXES]]) {
+        let commanded = &self.commanded;
+        let Some(chans) = cards
+            .get_mut(self.def.card.0)
+            .filter(|_| !commanded.is_empty())
+        else {
             return;
         };
-        let plain = self.kin.is_none() && self.post.is_none();
-        for (i, ax) in self.axes.iter().enumerate() {
-            if axes >> i & 1 == 0 {
-                continue;
+        if self.kin.is_none() && self.post.is_none() {
+            for (i, ch) in commanded.pairs() {
+                chans[ch].command(self.pulses_at(i, self.pos[i]));
             }
-            let Some((card, ch)) = ax.channel else {
-                continue;
-            };
-            debug_assert_eq!(card, own, "a group's axes map its own card's channels");
-            let Some(chan) = chans.get_mut(ch).filter(|_| card == own) else {
-                continue;
-            };
-            let p = if plain {
-                self.pulses_at(i, self.pos[i])
-            } else {
-                self.pulses(i)
-            };
-            chan.command(p);
+        } else {
+            for (i, ch) in commanded.pairs() {
+                chans[ch].command(self.pulses(i));
+            }
         }
     }
 

@@ -1,0 +1,72 @@
+//! The channels a group commands every tick: which of its axes send their pulses to
+//! which channel of its card.
+
+use crate::config::AXES;
+
+/// The axes of a group whose pulses command a channel of the group's card, each with
+/// that channel, in axis order.
+///
+/// Several groups may map the same channel; only the last axis (in group order, then
+/// axis order) mapping a channel commands it (the others' pulses would be overwritten
+/// in the same tick), so only that axis is listed. Built once when the engine starts
+/// (a group's channels come from its definition); the tick walks the list instead of
+/// testing every axis for a mapping.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Commanded {
+    /// `(axis, channel)`, each below `AXES`; the first `len` are the list.
+    pairs: [(u8, u8); AXES],
+    len: u8,
+}
+
+impl Commanded {
+    /// The list of `pairs` `(axis, channel)` below `AXES` (others are left out), in
+    /// the order given, at most `AXES` of them.
+    pub fn new(pairs: impl IntoIterator<Item = (usize, usize)>) -> Commanded {
+        let mut c = Commanded::default();
+        for (axis, chan) in pairs {
+            let (Ok(a), Ok(ch)) = (u8::try_from(axis), u8::try_from(chan)) else {
+                continue;
+            };
+            if axis < AXES && chan < AXES && usize::from(c.len) < AXES {
+                c.pairs[usize::from(c.len)] = (a, ch);
+                c.len += 1;
+            }
+        }
+        c
+    }
+
+    /// Whether no axis commands a channel.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The `(axis, channel)` pairs. Both are below `AXES`; the remainder makes that
+    /// visible to the compiler, so indexing an axis or a card's channels by them needs
+    /// no bounds check (`AXES` is a power of two: the remainder is a mask).
+    #[inline]
+    pub fn pairs(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.pairs
+            .iter()
+            .take(usize::from(self.len))
+            .map(|&(a, ch)| (usize::from(a) % AXES, usize::from(ch) % AXES))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keeps_the_pairs_in_order_and_leaves_out_what_is_out_of_range() {
+        let c = Commanded::new([(0, 3), (9, 1), (2, 8), (7, 7), (300, 0)]);
+        assert_eq!(c.pairs().collect::<Vec<_>>(), vec![(0, 3), (7, 7)]);
+        assert!(!c.is_empty());
+        assert!(Commanded::new([]).is_empty());
+    }
+
+    #[test]
+    fn holds_at_most_one_pair_per_axis() {
+        let c = Commanded::new((0..20).map(|i| (i % AXES, i % AXES)));
+        assert_eq!(c.pairs().count(), AXES);
+    }
+}
