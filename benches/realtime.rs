@@ -29,6 +29,11 @@
 //! a case's samples at 1 ms, and would otherwise set the p99 of whichever kind of chunk
 //! it hit. The ratio of all chunks pooled and that of each block are printed too.
 //!
+//! The p99 of each kind of wake-up is also printed per CPU it ran on (a vCPU the host
+//! serves worse than the other shows there). With `MCCL_RT_BENCH_AA` set, every engine
+//! chunk is replaced by a second reference chunk: the ratios then compare the reference
+//! with itself and show the spread the benchmark has on this machine (an A/A test).
+//!
 //! The main thread polls every 20 ms in both kinds of chunk and samples `/proc` each
 //! time: the host's steal time and the guest's interrupt time per CPU (`/proc/stat`, 10
 //! ms units), and the measured thread's CPU time, run-queue wait (`schedstat`) and page
@@ -129,6 +134,39 @@ fn record_stall(t: u64, late: u64, cpu_before: i32, cpu_after: i32, engine: bool
     }
 }
 
+/// CPUs the per-CPU lateness is kept for (a wake-up on a higher one counts for the last).
+const CPUS: usize = 8;
+
+/// Lateness per kind of wake-up (0: the reference loop's, 1: interrupt delivery) and
+/// CPU it ran on, over the whole run (a case reads what it added, [`by_cpu_since`]).
+/// Made before the first chunk, so the engine thread never allocates it.
+static BY_CPU: std::sync::OnceLock<Vec<LatencyHistogram>> = std::sync::OnceLock::new();
+
+fn by_cpu() -> &'static [LatencyHistogram] {
+    BY_CPU.get_or_init(|| (0..2 * CPUS).map(|_| LatencyHistogram::new()).collect())
+}
+
+/// Records `late` ns for a wake-up of `kind` on CPU `cpu`.
+fn record_by_cpu(kind: usize, cpu: i32, late: u64) {
+    let c = usize::try_from(cpu).unwrap_or(0).min(CPUS - 1);
+    if let Some(h) = by_cpu().get(kind * CPUS + c) {
+        h.record_ns(late);
+    }
+}
+
+/// What each per-CPU histogram gained since `then` (a snapshot of [`by_cpu`]).
+fn by_cpu_since(then: &[LatencyHistogram]) -> Vec<LatencyHistogram> {
+    by_cpu()
+        .iter()
+        .zip(then)
+        .map(|(now, then)| {
+            let h = LatencyHistogram::new();
+            h.merge_since(now, then);
+            h
+        })
+        .collect()
+}
+
 /// The thread a chunk measures (the reference loop or the engine), for `/proc`.
 static MEASURED_TID: AtomicI32 = AtomicI32::new(0);
 
@@ -139,6 +177,7 @@ fn reference(
     first: u64,
     ticks: u64,
     into: &Arc<LatencyHistogram>,
+    kind: usize,
 ) -> std::thread::JoinHandle<()> {
     let h = into.clone();
     std::thread::Builder::new()
@@ -169,6 +208,7 @@ fn reference(
                 if n >= LEAD_TICKS {
                     h.record_ns(late);
                     let c = cpu();
+                    record_by_cpu(kind, c, late);
                     if late >= STALL_NS && !stalled {
                         record_stall(now, late, last_cpu, c, false);
                     }
@@ -206,6 +246,7 @@ unsafe extern "C" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
     h.record_ns(late);
     ON_ENGINE.with(|e| e.set(true));
     let c = cpu();
+    record_by_cpu(1, c, late);
     let before = ENGINE_CPU.swap(c, Ordering::Relaxed);
     if MEASURED_TID.load(Ordering::Relaxed) == 0 {
         MEASURED_TID.store(gettid(), Ordering::Release);
@@ -315,18 +356,27 @@ fn poll(kind: usize, samples: &mut Vec<Sample>, done: &dyn Fn() -> bool) {
     }
 }
 
-/// One reference chunk: `ticks` deadlines measured into `h`.
+/// One reference chunk: `ticks` deadlines measured into `h`, its wake-ups counted per
+/// CPU as `kind` (0; 1 for the stand-in of an engine chunk in the A/A mode).
 fn reference_chunk(
     period_ns: u64,
     ticks: u64,
     h: &Arc<LatencyHistogram>,
     samples: &mut Vec<Sample>,
+    kind: usize,
 ) {
     MEASURED_TID.store(0, Ordering::Release);
     let first = mono_ns() + period_ns;
-    let r = reference(period_ns, first, ticks, h);
-    poll(0, samples, &|| r.is_finished());
+    let r = reference(period_ns, first, ticks, h, kind);
+    poll(kind, samples, &|| r.is_finished());
     r.join().unwrap();
+}
+
+/// `MCCL_RT_BENCH_AA` set: every engine chunk is replaced by a second reference chunk,
+/// so that the printed ratios show the spread the benchmark gives a thread against
+/// itself (what a ratio must exceed to say anything about the engine).
+fn aa_mode() -> bool {
+    std::env::var_os("MCCL_RT_BENCH_AA").is_some()
 }
 
 /// One engine chunk: `ticks` realtime ticks of `period_ms` with a TMR routine each tick,
@@ -447,6 +497,35 @@ fn set_policy(policy: libc::c_int, prio: libc::c_int) -> bool {
     unsafe { libc::pthread_setschedparam(libc::pthread_self(), policy, &p) == 0 }
 }
 
+/// The p99 lateness of each kind of wake-up on each CPU it ran on in the case, and how
+/// many it had there: a vCPU the host serves worse shows as a higher p99 there for
+/// whichever kind of chunk ran on it.
+fn print_by_cpu(h: &[LatencyHistogram]) {
+    let kind = |k: usize, name: &str| {
+        let cpus: Vec<String> = (0..CPUS)
+            .filter_map(|c| {
+                h.get(k * CPUS + c)
+                    .filter(|h| h.count() > 0)
+                    .map(|h| (c, h))
+            })
+            .map(|(c, h)| format!("cpu{c} {:.0} us ({})", h.quantile_us(0.99), h.count()))
+            .collect();
+        format!("{name} {}", cpus.join(", "))
+    };
+    println!(
+        "  p99 by CPU (wake-ups): {}; {}",
+        kind(0, "reference sleep"),
+        kind(
+            1,
+            if aa_mode() {
+                "second reference (A/A)"
+            } else {
+                "interrupt delivery"
+            }
+        )
+    );
+}
+
 /// Lists the stalls recorded since the case began, with the `/proc` samples around each.
 fn print_stalls(case_start: u64, samples: &[Sample]) {
     let n = STALL_N.load(Ordering::Relaxed);
@@ -539,17 +618,23 @@ fn case(policy: &str, period_ms: u16, loaded: bool) {
         u.store(0, Ordering::Relaxed);
     }
     let case_start = mono_ns();
+    let by_cpu_then: Vec<LatencyHistogram> = by_cpu().iter().map(|h| h.snapshot()).collect();
     for block in 0..BLOCKS {
         let r = Arc::new(LatencyHistogram::new());
         let t = LatencyHistogram::new();
         let i = Arc::new(LatencyHistogram::new());
         for pair in block * PAIRS / BLOCKS..(block + 1) * PAIRS / BLOCKS {
             for engine_now in [pair % 2 == 1, pair % 2 == 0] {
-                if engine_now {
+                if engine_now && aa_mode() {
+                    let a = Arc::new(LatencyHistogram::new());
+                    reference_chunk(period_ns, ticks, &a, &mut samples, 1);
+                    t.merge(&a);
+                    i.merge(&a);
+                } else if engine_now {
                     missed +=
                         engine_chunk(period_ms, ticks, &t, &i, &mut samples, pair + 1 == PAIRS);
                 } else {
-                    reference_chunk(period_ns, ticks, &r, &mut samples);
+                    reference_chunk(period_ns, ticks, &r, &mut samples, 0);
                 }
             }
         }
@@ -580,8 +665,13 @@ fn case(policy: &str, period_ms: u16, loaded: bool) {
         )
     };
     println!(
-        "  per period, the reference thread: {}; the engine thread: {}",
+        "  per period, the reference thread: {}; the {} thread: {}",
         per_deadline(0),
+        if aa_mode() {
+            "second reference"
+        } else {
+            "engine"
+        },
         per_deadline(1)
     );
     println!(
@@ -593,6 +683,7 @@ fn case(policy: &str, period_ms: u16, loaded: bool) {
             .join(" ")
     );
     print_stalls(case_start, &samples);
+    print_by_cpu(&by_cpu_since(&by_cpu_then));
     // The median of the blocks' ratios: a single host stall (100 ms and more seen on
     // this VM: the host does not run the vCPU) is more than 1 % of a case's samples at
     // 1 ms and would set the pooled p99 of whichever kind of chunk it hit.
@@ -625,6 +716,13 @@ fn main() {
         CHUNK.as_millis(),
         spin
     );
+    if aa_mode() {
+        println!(
+            "MCCL_RT_BENCH_AA: every engine chunk is a second reference chunk; the ratios below compare the reference with itself"
+        );
+    }
+    // The per-CPU histograms, made here so that no engine thread allocates them.
+    by_cpu();
     for fifo in [false, true] {
         let policy = if fifo {
             // The engine thread (MCCL_RT_PRIORITY) and the reference thread (the same
