@@ -145,12 +145,21 @@ impl Shared {
     /// After a tick that did not publish everything: if it ended the run (the waiting
     /// program resumes now), publishes every group (through `held` when the engine
     /// thread holds the locks).
+    #[inline]
     pub(super) fn end_of_run(&self, held: Option<&mut Held<'_>>) {
         if self.clock.last_of_run() {
-            match held {
-                Some(h) => h.groups.iter_mut().for_each(|g| self.publish(g)),
-                None => self.for_each_group(|_| {}),
-            }
+            self.publish_all(held);
+        }
+    }
+
+    /// Publishes every group (through `held` when the engine thread holds the locks).
+    /// Out of line: [`Shared::end_of_run`] is asked after most virtual ticks and finds a
+    /// run's last tick seldom.
+    #[inline(never)]
+    fn publish_all(&self, held: Option<&mut Held<'_>>) {
+        match held {
+            Some(h) => h.groups.iter_mut().for_each(|g| self.publish(g)),
+            None => self.for_each_group(|_| {}),
         }
     }
 

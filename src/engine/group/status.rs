@@ -206,6 +206,14 @@ impl GroupState {
             );
             return false;
         }
+        self.renew_published_key()
+    }
+
+    /// [`GroupState::info_changed`] once the quick check found the key may have changed:
+    /// builds it and keeps it with the stretch it holds for. Out of line: the quick check
+    /// is all most publications need.
+    #[inline(never)]
+    fn renew_published_key(&mut self) -> bool {
         let key = self.info_key();
         let holds_for = self.running.back().map_or(OWN_TIME_ANY, key_holds_for);
         // Two stores of the same record, not one after a `changed` flag: compiled that
