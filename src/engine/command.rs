@@ -208,8 +208,14 @@ impl AxisMech {
 }
 
 /// The motion settings of a group that queued commands capture (user manual §2.6).
+///
+/// `repr(C)` with `compose` first: publishing reads it every tick, and the group keeps
+/// its settings right after the published key, which publishing reads too.
 #[derive(Debug, Clone, PartialEq)]
+#[repr(C)]
 pub struct Settings {
+    /// The axes that compose a line's path speed (`MCC_SetComposeAxis`; X|Y|Z).
+    pub compose: u32,
     /// General-motion feed speed, UU/s (already clamped to the system maximum).
     pub feed: f64,
     /// General-motion acceleration time, ms.
@@ -232,8 +238,6 @@ pub struct Settings {
     pub ptp_dec_ms: Axes,
     /// Absolute (true) or incremental coordinates.
     pub absolute: bool,
-    /// The axes that compose a line's path speed (`MCC_SetComposeAxis`; X|Y|Z).
-    pub compose: u32,
     /// `MCC_EnableAccDecAfterIPO`: general motion is interpolated at the feed speed
     /// without acc/dec; the group's output filter accelerates and decelerates.
     pub acc_after_ipo: bool,

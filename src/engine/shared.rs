@@ -311,12 +311,15 @@ fn commanding_axes(groups: &[GroupState]) -> Vec<Commanded> {
         .iter()
         .enumerate()
         .map(|(n, g)| {
-            Commanded::new(g.axes.iter().enumerate().filter_map(|(i, ax)| {
-                let (card, ch) = ax.channel?;
-                let own = card == g.def.card.0;
-                let lasts = last.get(card)?.get(ch).copied().flatten() == Some((n, i));
-                (own && lasts).then_some((i, ch))
-            }))
+            Commanded::new(
+                g.def.card.0,
+                g.axes.iter().enumerate().filter_map(|(i, ax)| {
+                    let (card, ch) = ax.channel?;
+                    let own = card == g.def.card.0;
+                    let lasts = last.get(card)?.get(ch).copied().flatten() == Some((n, i));
+                    (own && lasts).then_some((i, ch))
+                }),
+            )
         })
         .collect()
 }

@@ -4,7 +4,7 @@
 use crate::config::AXES;
 
 /// The axes of a group whose pulses command a channel of the group's card, each with
-/// that channel, in axis order.
+/// that channel, in axis order, and the card.
 ///
 /// Several groups may map the same channel; only the last axis (in group order, then
 /// axis order) mapping a channel commands it (the others' pulses would be overwritten
@@ -16,13 +16,23 @@ pub struct Commanded {
     /// `(axis, channel)`, each below `AXES`; the first `len` are the list.
     pairs: [(u8, u8); AXES],
     len: u8,
+    /// The card of the channels (the group's), kept here so that the tick reads it with
+    /// the pairs (the group's definition is on a line of its own).
+    card: u8,
 }
 
 impl Commanded {
-    /// The list of `pairs` `(axis, channel)` below `AXES` (others are left out), in
-    /// the order given, at most `AXES` of them.
-    pub fn new(pairs: impl IntoIterator<Item = (usize, usize)>) -> Commanded {
-        let mut c = Commanded::default();
+    /// The list of `pairs` `(axis, channel)` below `AXES` (others are left out) of
+    /// channels on `card`, in the order given, at most `AXES` of them. A card past 255
+    /// (there are at most 12) gives an empty list.
+    pub fn new(card: usize, pairs: impl IntoIterator<Item = (usize, usize)>) -> Commanded {
+        let Ok(card) = u8::try_from(card) else {
+            return Commanded::default();
+        };
+        let mut c = Commanded {
+            card,
+            ..Commanded::default()
+        };
         for (axis, chan) in pairs {
             let (Ok(a), Ok(ch)) = (u8::try_from(axis), u8::try_from(chan)) else {
                 continue;
@@ -38,6 +48,11 @@ impl Commanded {
     /// Whether no axis commands a channel.
     pub fn is_empty(&self) -> bool {
         self.len == 0
+    }
+
+    /// The card of the channels.
+    pub fn card(&self) -> usize {
+        usize::from(self.card)
     }
 
     /// The `(axis, channel)` pairs. Both are below `AXES`; the remainder makes that
@@ -58,15 +73,17 @@ mod tests {
 
     #[test]
     fn keeps_the_pairs_in_order_and_leaves_out_what_is_out_of_range() {
-        let c = Commanded::new([(0, 3), (9, 1), (2, 8), (7, 7), (300, 0)]);
+        let c = Commanded::new(2, [(0, 3), (9, 1), (2, 8), (7, 7), (300, 0)]);
         assert_eq!(c.pairs().collect::<Vec<_>>(), vec![(0, 3), (7, 7)]);
+        assert_eq!(c.card(), 2);
         assert!(!c.is_empty());
-        assert!(Commanded::new([]).is_empty());
+        assert!(Commanded::new(0, []).is_empty());
+        assert!(Commanded::new(256, [(0, 0)]).is_empty());
     }
 
     #[test]
     fn holds_at_most_one_pair_per_axis() {
-        let c = Commanded::new((0..20).map(|i| (i % AXES, i % AXES)));
+        let c = Commanded::new(0, (0..20).map(|i| (i % AXES, i % AXES)));
         assert_eq!(c.pairs().count(), AXES);
     }
 }

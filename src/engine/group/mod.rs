@@ -58,9 +58,10 @@ pub const TIME_EPS: f64 = 1e-9;
 /// A group as the card runs it.
 ///
 /// `repr(C)` with the fields every tick reads first (status, flags, the running
-/// commands, the rate, the positions), so a tick touches a few cache lines of each
-/// group instead of lines spread over its 1.9 KB (issue #18); the settings that only
-/// queuing and status calls read come after.
+/// commands, the channels it commands, the rate, the positions), so a tick touches a few
+/// cache lines of each group instead of lines spread over its 1.8 KB (issue #18). Among
+/// them, the published key and the settings (the compose mask first), which a tick that
+/// publishes reads too. What only queuing and status calls read comes after.
 #[derive(Debug)]
 #[repr(C)]
 pub struct GroupState {
@@ -99,6 +100,13 @@ pub struct GroupState {
     kin: Option<Box<kinematics::Kinematics>>,
     running: VecDeque<Running>,
     queue: VecDeque<Command>,
+    /// The axes whose pulses command a channel, with the channel (set when the engine
+    /// starts, `engine::shared`: it depends on every group's mapping).
+    pub(in crate::engine) commanded: Commanded,
+    /// The info key last published and how long it holds ([`GroupState::info_changed`]).
+    published_key: Option<status::PublishedKey>,
+    /// Settings that queued commands capture (`compose` first, which publishing reads).
+    pub settings: Settings,
     /// Output changes the queue reached this tick (the engine makes them).
     outputs: Vec<Output>,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
@@ -118,11 +126,6 @@ pub struct GroupState {
     pub def: GroupDef,
     /// Mechanism facts per axis (from the parameters in effect).
     pub axes: [AxisMech; AXES],
-    /// The axes whose pulses command a channel, with the channel (set when the engine
-    /// starts, `engine::shared`: it depends on every group's mapping).
-    pub(in crate::engine) commanded: Commanded,
-    /// Settings that queued commands capture.
-    pub settings: Settings,
     /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
     pub blend_queued: bool,
     /// Override ratio, percent.
@@ -133,8 +136,6 @@ pub struct GroupState {
     queue_end: Axes,
     /// Command indices (`queue.rs`).
     cmd_index: CommandIndex,
-    /// The info key last published and how long it holds ([`GroupState::info_changed`]).
-    published_key: Option<status::PublishedKey>,
     /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
     pub track_limit: Axes,
     /// In-position settings (`MCC_SetInPos*`).

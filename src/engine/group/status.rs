@@ -79,7 +79,7 @@ impl GroupState {
     pub fn command_channels(&self, cards: &mut [[Channel; AXES]]) {
         let commanded = &self.commanded;
         let Some(chans) = cards
-            .get_mut(self.def.card.0)
+            .get_mut(commanded.card())
             .filter(|_| !commanded.is_empty())
         else {
             return;
