@@ -720,13 +720,11 @@ impl Channel {
     fn count_index(&mut self, from: f64, to: f64) {
         self.index_events = 0;
         self.last_move = (from, to);
-        if from == to {
-            return;
-        }
         // Whole-pulse positions (the ideal plant) use integer arithmetic; a lagging motor
         // between pulses rounds down to the pulse it has passed.
         if self.cell.holds(from) && self.cell.holds(to) {
-            // Both ends in one interval: no index pulse passed.
+            // Both ends in one interval (a motor that stood still too, nearly always: the
+            // interval is the one its last move ended in): no index pulse passed.
             return;
         }
         self.count_index_across(from, to);
@@ -1125,6 +1123,28 @@ mod tests {
         c.step(13, 0.001);
         assert_eq!(c.index_events, 1);
         assert_eq!(c.last_index_count, Some(12));
+    }
+
+    #[test]
+    fn a_motor_standing_still_passes_no_index_pulse_on_a_new_grid() {
+        // dwPPR 500, phase 100: 0 -> 600 passes the index pulses at 100 and 600.
+        let mut c = ch(ChannelSpec {
+            index_phase: 100,
+            ..Default::default()
+        });
+        c.step(600, 0.001);
+        assert_eq!((c.index_events, c.last_index_count), (2, Some(600)));
+        // A new grid drops the cached interval; standing at 600 (a move from 600 to 600)
+        // is looked up on the new grid and still passes nothing.
+        let mac = SYS_MAC_PARAM {
+            dwPPR: 4,
+            ..default_mac_param()
+        };
+        c.set_params(mac, default_encoder_config());
+        c.step(600, 0.001);
+        assert_eq!((c.index_events, c.last_index_count), (0, Some(600)));
+        c.step(600, 0.001);
+        assert_eq!(c.index_events, 0);
     }
 
     #[test]
