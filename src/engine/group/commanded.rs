@@ -82,7 +82,7 @@ mod tests {
     }
 
     #[test]
-    fn holds_at_most_one_pair_per_axis() {
+    fn holds_at_most_axes_pairs() {
         let c = Commanded::new(0, (0..20).map(|i| (i % AXES, i % AXES)));
         assert_eq!(c.pairs().count(), AXES);
     }

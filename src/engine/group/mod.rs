@@ -39,7 +39,7 @@ mod queue;
 mod rate;
 mod status;
 
-pub use commanded::Commanded;
+pub(crate) use commanded::Commanded;
 use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
