@@ -8,6 +8,7 @@ use crate::config::AXES;
 use crate::engine::command::Plan;
 use crate::engine::snapshot::{round_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
 use crate::machine::Channel;
+use crate::planner::PathMove;
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 
@@ -265,9 +266,7 @@ const OWN_TIME_ANY: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
 fn key_holds_for(r: &Running) -> (f64, f64) {
     let until = match &r.cmd.plan {
         Plan::Path(m) => {
-            // The bounds of `motion_phase`.
-            let (accel_end, decel_start) =
-                (m.profile.acc_time().min(m.decel_start()), m.decel_start());
+            let (accel_end, decel_start) = phase_bounds(m);
             if r.tau < accel_end {
                 accel_end
             } else if r.tau < decel_start {
@@ -306,9 +305,10 @@ struct KeyWords {
 fn motion_phase(r: &Running) -> i32 {
     match &r.cmd.plan {
         Plan::Path(m) => {
-            if r.tau < m.profile.acc_time().min(m.decel_start()) {
+            let (accel_end, decel_start) = phase_bounds(m);
+            if r.tau < accel_end {
                 0
-            } else if r.tau < m.decel_start() {
+            } else if r.tau < decel_start {
                 1
             } else {
                 2
@@ -316,6 +316,14 @@ fn motion_phase(r: &Running) -> i32 {
         }
         _ => 1,
     }
+}
+
+/// The own times at which a general motion's phase changes: the end of its acceleration
+/// (no later than the start of its deceleration) and the start of its deceleration. One
+/// place for [`motion_phase`] and for how long a published phase holds
+/// ([`key_holds_for`]).
+fn phase_bounds(m: &PathMove) -> (f64, f64) {
+    (m.profile.acc_time().min(m.decel_start()), m.decel_start())
 }
 
 /// `COMMAND_INFO.dfFeedSpeed` of a running command: its feed, or what is left of a delay
