@@ -35,6 +35,17 @@
 //! difference between the two kinds of chunk; the median of 9 needs five such blocks.
 //! A systematic excess of the engine shows in most blocks, so it is found as before.
 //!
+//! Both chunks of a pair run on one CPU (`MCCL_RT_CPU`, applied by the reference thread
+//! and by the engine thread alike), pairs 0 and 1 on the first CPU the process may use,
+//! 2 and 3 on the next, and so on around. Traced with ftrace (`scripts/rt-trace.sh`),
+//! the kernel takes as long to wake either thread on the same CPU, but the two vCPUs of
+//! a shared VM are served differently for seconds at a time (median 12 µs on one against
+//! 8 µs on the other in the same seconds), and an unpinned thread's CPU is chance: in one
+//! run the reference woke 10,584 times on the slow vCPU and 3,359 on the fast one, the
+//! engine half and half. Unpinned, that chance decided blocks; pinned, every block
+//! compares the two kinds on the same CPUs. `MCCL_RT_BENCH_PIN=0` leaves the threads
+//! where the kernel puts them; a program's own `MCCL_RT_CPU` pins every chunk there.
+//!
 //! The p99 of each kind of wake-up is also printed per CPU it ran on (a vCPU the host
 //! serves worse than the other shows there). With `MCCL_RT_BENCH_AA` set, every engine
 //! chunk is replaced by a second reference chunk: the ratios then compare the reference
@@ -630,6 +641,11 @@ fn case(policy: &str, period_ms: u16, loaded: bool) {
         let t = LatencyHistogram::new();
         let i = Arc::new(LatencyHistogram::new());
         for pair in block * PAIRS / BLOCKS..(block + 1) * PAIRS / BLOCKS {
+            if let Some(cpu) = pair_cpu(pair) {
+                // Read by both kinds of thread when they are set up (the reference's
+                // `setup_current_thread`, the engine's in `MCC_InitSystem`).
+                std::env::set_var("MCCL_RT_CPU", cpu.to_string());
+            }
             for engine_now in [pair % 2 == 1, pair % 2 == 0] {
                 if engine_now && aa_mode() {
                     let a = Arc::new(LatencyHistogram::new());
@@ -716,7 +732,57 @@ fn case(policy: &str, period_ms: u16, loaded: bool) {
     );
 }
 
+/// How the measured threads are placed: `None` when each pair is pinned by
+/// [`pair_cpu`]; `Some(why)` when they are not (the program's own `MCCL_RT_CPU`, or
+/// `MCCL_RT_BENCH_PIN=0`).
+fn placement() -> &'static Option<String> {
+    static P: std::sync::OnceLock<Option<String>> = std::sync::OnceLock::new();
+    P.get_or_init(|| {
+        if let Ok(cpu) = std::env::var("MCCL_RT_CPU") {
+            Some(format!("MCCL_RT_CPU={cpu} set: every chunk runs there"))
+        } else if std::env::var("MCCL_RT_BENCH_PIN").as_deref() == Ok("0") {
+            Some("MCCL_RT_BENCH_PIN=0: the threads run where the kernel puts them".into())
+        } else {
+            None
+        }
+    })
+}
+
+/// The CPUs this process may run on, read before any thread is pinned.
+fn allowed_cpus() -> &'static [usize] {
+    static CPUS_ALLOWED: std::sync::OnceLock<Vec<usize>> = std::sync::OnceLock::new();
+    CPUS_ALLOWED.get_or_init(|| {
+        // SAFETY: a zeroed cpu_set_t is a valid empty set; pid 0 is the calling thread,
+        // and the set is only read after the call filled it.
+        let v: Vec<usize> = unsafe {
+            let mut set: libc::cpu_set_t = std::mem::zeroed();
+            if libc::sched_getaffinity(0, std::mem::size_of::<libc::cpu_set_t>(), &mut set) != 0 {
+                return Vec::new();
+            }
+            (0..libc::CPU_SETSIZE as usize)
+                .filter(|&c| libc::CPU_ISSET(c, &set))
+                .collect()
+        };
+        v
+    })
+}
+
+/// The CPU both chunks of `pair` are pinned to (`MCCL_RT_CPU`, which the reference
+/// thread and the engine thread both apply), or `None` when the bench does not pin.
+/// Pairs 0 and 1 run on the first allowed CPU, 2 and 3 on the next, and so on around:
+/// each CPU gets as many reference-first pairs as engine-first ones, and every engine
+/// chunk is compared with reference chunks on the same CPU within a second of it.
+fn pair_cpu(pair: usize) -> Option<usize> {
+    if placement().is_some() {
+        return None;
+    }
+    let cpus = allowed_cpus();
+    cpus.get((pair / 2) % cpus.len().max(1)).copied()
+}
+
 fn main() {
+    // Read before anything is pinned.
+    allowed_cpus();
     // A filter argument (`cargo bench --bench realtime -- fifo-1ms`) runs only the
     // cases whose name contains it.
     let filter: Vec<String> = std::env::args()
@@ -729,6 +795,13 @@ fn main() {
         CHUNK.as_millis(),
         spin
     );
+    match placement() {
+        Some(why) => println!("{why}"),
+        None => println!(
+            "each pair of chunks pinned to one CPU (MCCL_RT_CPU), in turn over CPUs {:?}; MCCL_RT_BENCH_PIN=0 leaves them unpinned",
+            allowed_cpus()
+        ),
+    }
     if aa_mode() {
         println!(
             "MCCL_RT_BENCH_AA: every engine chunk is a second reference chunk; the ratios below compare the reference with itself"
