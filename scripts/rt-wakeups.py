@@ -83,7 +83,7 @@ def wakeups(path):
                 tid = int(field("next_pid", rest))
                 p = pending.pop(tid, None)
                 if p:
-                    kind, woke_on, steps = p
+                    kind, _timer_cpu, steps = p
                     steps["switch"] = t
                     yield tid, kind, cpu, steps
 
