@@ -111,6 +111,13 @@ impl Shared {
             .store(mode.unwrap_or(-1), Ordering::Release);
     }
 
+    /// Whether [`Shared::safety`] may read the channels this tick: a check of every moving
+    /// group is on, or a group has checks of its own.
+    pub(super) fn safety_reads_channels(&self, machine: &Machine, groups: &[GroupState]) -> bool {
+        global_checks(self.limit_check.load(Ordering::Relaxed), machine)
+            || groups.iter().any(GroupState::has_safety_checks)
+    }
+
     /// The checks that need the machine: emergency stop (0xF102), hardware limit
     /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
     /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
@@ -119,8 +126,7 @@ impl Shared {
         let limit_mode = self.limit_check.load(Ordering::Relaxed);
         // Checks every moving group needs; otherwise only groups with checks of their own
         // (tracking error, in-position) are looked at again.
-        let global =
-            limit_mode >= 0 || machine.emergency.iter().any(|&e| e) || machine.pulse_limits_set;
+        let global = global_checks(limit_mode, machine);
         for g in groups.iter_mut() {
             if !global && !g.has_safety_checks() {
                 continue;
@@ -154,6 +160,12 @@ impl Shared {
             }
         }
     }
+}
+
+/// Whether a check of every moving group is on: the hardware limit switches (`mode`
+/// from [`Shared::set_limit_check`], −1 off), an emergency stop, a pulse limit.
+fn global_checks(limit_mode: i32, machine: &Machine) -> bool {
+    limit_mode >= 0 || machine.emergency.iter().any(|&e| e) || machine.pulse_limits_set
 }
 
 #[cfg(test)]

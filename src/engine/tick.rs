@@ -30,6 +30,10 @@ impl Shared {
         {
             Ok(published) => published,
             Err(_) => {
+                // Channels with deferred steps up to date before the machine is let go.
+                if let Some(h) = held.as_mut() {
+                    h.machine.catch_up();
+                }
                 *held = None;
                 self.stop_all_for_internal_error();
                 interrupts.clear();
@@ -59,6 +63,8 @@ impl Shared {
         // operations a tick.
         let mut trace_guard = self.tracing.then(|| self.trace.lock());
         let mut trace = trace_guard.as_mut().and_then(|t| t.as_mut());
+        // The locks were kept from the last tick: no other thread looked in between.
+        let carried = held.is_some();
         let held = held.get_or_insert_with(|| Held::lock(self));
         let machine = &mut *held.machine;
         let dry = self.dry_run.load(Ordering::Relaxed);
@@ -105,18 +111,48 @@ impl Shared {
             }
         }
         let now_ns = t_ns;
+        // Ideal channels defer their steps (`machine::deferred`) on a tick whose locks
+        // were kept from the last one, with no view copied for an observer, no homing and
+        // no safety check that reads them, on a card whose triggers are not armed. Any
+        // other tick brings them up to date first.
+        let defer = carried
+            && !(full && self.view.wanted())
+            && homed.is_none()
+            && !self.safety_reads_channels(machine, groups);
+        if !defer {
+            machine.catch_up();
+        }
         let m = &mut *machine;
-        for (card, chans) in m.cards.iter_mut().enumerate() {
-            for chan in chans.iter_mut() {
-                chan.step_commanded(dt);
+        let pending = m.deferred();
+        let mut deferred = false;
+        let cards = m
+            .cards
+            .iter_mut()
+            .zip(m.triggers.iter_mut())
+            .zip(&m.settings);
+        for (card, ((chans, triggers), settings)) in cards.enumerate() {
+            let thresholds = settings.error_threshold;
+            let idle = !triggers.armed(&thresholds);
+            if defer && idle {
+                for chan in chans.iter_mut() {
+                    chan.step_or_defer(dt);
+                }
+                deferred = true;
+            } else {
+                if let Some(d) = pending {
+                    crate::machine::deferred::catch_up_card(chans, triggers, d);
+                }
+                for chan in chans.iter_mut() {
+                    chan.step_commanded(dt);
+                }
             }
-            let thresholds = m.settings[card].error_threshold;
-            if m.triggers[card].tick_idle(chans, &thresholds) {
+            if idle {
+                triggers.tick_idle(chans);
                 continue;
             }
             let prev: [crate::machine::SensorLevels; AXES] =
                 std::array::from_fn(|i| chans[i].prev_levels());
-            let fired = m.triggers[card].tick(chans, &prev, &thresholds, now_ns);
+            let fired = triggers.tick(chans, &prev, &thresholds, now_ns);
             if !fired.interrupts.is_empty() {
                 for &n in &fired.compares {
                     self.periph[card].lock().dac_trigger(n);
@@ -126,6 +162,8 @@ impl Shared {
                 }
             }
         }
+        // Every card that did not defer is up to date now.
+        machine.set_deferred(deferred.then_some(dt));
         self.safety(machine, groups, full, dt);
         if let Some(t) = trace {
             t.machine_events(t_ns, machine);
@@ -249,8 +287,10 @@ impl<'a> Held<'a> {
     }
 
     /// Unlocks both, handing each to a thread waiting for it if there is one (the engine
-    /// thread would otherwise take them back at its next tick before a woken thread runs).
-    fn release(self) {
+    /// thread would otherwise take them back at its next tick before a woken thread runs),
+    /// with every channel's deferred steps made first.
+    fn release(mut self) {
+        self.machine.catch_up();
         MutexGuard::unlock_fair(self.groups);
         MutexGuard::unlock_fair(self.machine);
     }

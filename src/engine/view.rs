@@ -95,6 +95,12 @@ impl ViewCell {
         self.wanted.store(on, Ordering::Relaxed);
     }
 
+    /// Whether an observer asked for copies (a tick that publishes may then read the
+    /// channels).
+    pub fn wanted(&self) -> bool {
+        self.wanted.load(Ordering::Relaxed)
+    }
+
     /// The last copy (waits only while the engine is writing one, a few µs).
     pub fn get(&self) -> View {
         self.view.lock().clone()
@@ -103,7 +109,7 @@ impl ViewCell {
     /// Whether this tick copies: an observer wants it, and [`VIEW_EVERY_NS`] passed since
     /// the last copy or the tick is the last of a run (virtual clocks).
     fn due(&self, last_of_run: bool) -> bool {
-        if !self.wanted.load(Ordering::Relaxed) {
+        if !self.wanted() {
             return false;
         }
         let now = crate::clock::monotonic_ns();

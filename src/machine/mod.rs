@@ -6,6 +6,7 @@
 //! motor was at `MCC_InitSystem` (machine coordinates).
 
 pub mod compensation;
+pub mod deferred;
 pub mod triggers;
 
 use crate::config::{encoder_multiplier, AXES};
@@ -13,6 +14,7 @@ use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
 use compensation::Compensation;
+use deferred::Deferred;
 
 /// Default and largest pulse speed and acceleration limits (ZH manual §2.6.4).
 pub const MAX_PULSE_LIMIT: i32 = 32767;
@@ -172,6 +174,8 @@ pub struct Channel {
     /// The index interval of the last position looked up (`index_interval`), or
     /// [`IndexCell::NONE`].
     cell: IndexCell,
+    /// Steps recorded and not yet made ([`deferred`]).
+    deferred: Deferred,
     levels: SensorLevels,
     prev_levels: SensorLevels,
     /// Levels at the end of the last step: a level forced between steps shows as an edge.
@@ -240,6 +244,7 @@ impl Channel {
             last_index_count: None,
             last_move: (0.0, 0.0),
             cell: IndexCell::NONE,
+            deferred: Deferred::NONE,
             latched: [false; 2],
             max_speed: MAX_PULSE_LIMIT,
             max_acc: MAX_PULSE_LIMIT,
@@ -267,6 +272,7 @@ impl Channel {
 
     /// The motor's position in UU of the axis (machine coordinates).
     pub fn position(&self) -> f64 {
+        self.assert_up_to_date();
         let f = self.factor();
         if f == 0.0 {
             0.0
@@ -310,6 +316,7 @@ impl Channel {
 
     /// The motor's position in pulses.
     pub fn actual_pulses(&self) -> f64 {
+        self.assert_up_to_date();
         self.actual
     }
 
@@ -320,17 +327,20 @@ impl Channel {
 
     /// Pulses commanded (without compensation).
     pub fn command_pulses(&self) -> i64 {
+        self.assert_up_to_date();
         self.cmd
     }
 
     /// Following error in pulses: output − motor (what `MCC_GetErrorCount` reports).
     pub fn error_count(&self) -> i64 {
+        self.assert_up_to_date();
         (self.out as f64 - self.actual).round() as i64
     }
 
     /// Pulses output in the last tick, and the change from the tick before (per-period
     /// pulse speed and acceleration).
     pub fn pulse_rate(&self) -> (i64, i64) {
+        self.assert_up_to_date();
         let d = self.out - self.prev_out;
         (d, d - self.prev_delta)
     }
@@ -368,6 +378,7 @@ impl Channel {
 
     /// The encoder count (`MCC_GetENCValue`).
     pub fn encoder(&self) -> i64 {
+        self.assert_up_to_date();
         self.raw_count() + self.enc_offset
     }
 
@@ -467,6 +478,7 @@ impl Channel {
 
     /// Sensor inputs of the previous step (for edge detection).
     pub fn prev_levels(&self) -> SensorLevels {
+        self.assert_up_to_date();
         self.prev_levels
     }
 
@@ -545,6 +557,14 @@ impl Channel {
             || self.spec.limit_minus.is_some()
             || self.forced.iter().any(Option::is_some);
         self.refresh_ideal();
+    }
+
+    /// Debug builds: a reader of what the steps make finds no step deferred (the engine
+    /// brings channels up to date before anything but its own tick can read them,
+    /// [`deferred`]).
+    #[inline(always)]
+    fn assert_up_to_date(&self) {
+        debug_assert!(!self.deferring(), "a channel read with its steps deferred");
     }
 
     /// Recomputes [`Channel::ideal`] after the compensation, the plant or the sensors
@@ -842,6 +862,8 @@ pub struct Machine {
     pub triggers: Vec<triggers::CardTriggers>,
     /// Some channel's pulse speed or acceleration limit is below the default.
     pub pulse_limits_set: bool,
+    /// The period of the steps channels defer, while some may ([`deferred`]).
+    deferred: Option<f64>,
 }
 
 /// Which pulse limit of the channels (user manual §2.7.3).
@@ -933,6 +955,7 @@ impl Machine {
             settings: vec![CardSettings::default(); n],
             triggers: vec![triggers::CardTriggers::default(); n],
             pulse_limits_set: false,
+            deferred: None,
         }
     }
 

@@ -328,7 +328,7 @@ impl CardTriggers {
     /// latches, closed-loop thresholds or a trigger-out (output or LED) holding. A card
     /// with nothing armed skips its tick (re-arming a compare rebases the counts).
     #[inline]
-    fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
+    pub fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
         // Whole-array comparisons: a few wide compares instead of a loop per array.
         self.comp_enabled != [false; AXES]
             || self.index_enabled != [false; AXES]
@@ -341,20 +341,15 @@ impl CardTriggers {
             || self.timed_outputs
     }
 
-    /// [`CardTriggers::tick`] for a card with nothing armed: only the index status
-    /// follows the channels (the tick raises nothing then). Returns false, having done
-    /// nothing, when something is armed.
+    /// [`CardTriggers::tick`] for a card with nothing [armed](CardTriggers::armed): only
+    /// the index status follows the channels (the tick raises nothing then).
     #[inline]
-    pub fn tick_idle(&mut self, chans: &[Channel; AXES], thresholds: &[(u16, u16); AXES]) -> bool {
-        if self.armed(thresholds) {
-            return false;
-        }
+    pub fn tick_idle(&mut self, chans: &[Channel; AXES]) {
         for (i, ch) in chans.iter().enumerate() {
             if ch.index_events > 0 {
                 self.index_status[i] = true;
             }
         }
-        true
     }
 
     /// One tick: `chans` after their step, `thresholds` the closed-loop error bounds,

@@ -1,0 +1,281 @@
+//! Deferred steps: while nothing but the engine's own tick can read a channel, an ideal
+//! channel only records what it is commanded, and is brought up to date, to the same
+//! fields its steps would have left, before anything reads it.
+//!
+//! The engine defers (see `Shared::tick`) only while it keeps the machine's lock from
+//! one tick to the next (the quiet virtual clock: no other thread can lock the machine
+//! in between), on ticks that publish nothing, and only on cards whose triggers are not
+//! armed, with no homing and no safety check that reads the channels. It brings every
+//! channel up to date ([`Machine::catch_up`]) before it lets go of the lock and before
+//! any tick that does not defer.
+//!
+//! What a step of an ideal channel leaves (see `Channel::step_ideal`) follows from the
+//! commands alone: the command, output and motor from the last one; the output's history
+//! (pulse speed and acceleration) from the last three; the last move, its index pulses
+//! and the rest flag from the last two; the levels stay (no sensor follows an ideal
+//! channel's motor, and only the program changes them otherwise, under the lock). Only
+//! the index status needs the steps in between: a step passes an index pulse when its two
+//! ends lie in different index intervals, and as the intervals grow with the position,
+//! some step of a run of them passed one exactly when the least and the greatest position
+//! of the run lie in different intervals. The last index pulse's count is kept only for
+//! the step that passed it (a latch reads it in that step, on a card whose triggers are
+//! armed, which does not defer).
+
+use super::triggers::CardTriggers;
+use super::{floor_i64, Channel, Machine, SensorLevels};
+use crate::config::AXES;
+
+/// What a channel stepping deferred keeps of the steps it did not make.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Deferred {
+    /// Steps deferred since the channel was last up to date (0: up to date).
+    steps: u64,
+    /// The outputs one and two steps before the latest.
+    history: (i64, i64),
+    /// The least and the greatest output of the deferred steps.
+    range: (i64, i64),
+    /// The motor's position before the first deferred step.
+    start: f64,
+    /// The levels at the end of the last step made (the previous levels after one
+    /// deferred step).
+    step_levels: SensorLevels,
+}
+
+impl Deferred {
+    /// Nothing deferred.
+    pub(super) const NONE: Deferred = Deferred {
+        steps: 0,
+        history: (0, 0),
+        range: (0, 0),
+        start: 0.0,
+        step_levels: SensorLevels {
+            home: false,
+            plus: false,
+            minus: false,
+        },
+    };
+}
+
+impl Channel {
+    /// [`Channel::step_commanded`] of a channel on a card that defers: an ideal channel
+    /// records the step, any other steps.
+    #[inline]
+    pub fn step_or_defer(&mut self, dt: f64) {
+        if self.ideal {
+            self.defer_step(dt);
+        } else {
+            self.step_commanded(dt);
+        }
+    }
+
+    /// Records a step of `dt` to the command set this tick instead of making it (a channel
+    /// at rest held at its command records nothing, as it would not step). Only the
+    /// output moves on; the command and the motor follow it when brought up to date.
+    #[inline]
+    fn defer_step(&mut self, dt: f64) {
+        let cmd = self.next;
+        if self.deferred.steps == 0 {
+            if self.resting && cmd == self.cmd && dt == self.resting_dt {
+                return;
+            }
+            // The first deferred step: what the steps before it left. The index pulses of
+            // the last step made were counted by the tick that made it.
+            self.deferred = Deferred {
+                steps: 0,
+                history: (self.prev_out, self.prev_out - self.prev_delta),
+                range: (cmd, cmd),
+                start: self.actual,
+                step_levels: self.step_levels,
+            };
+            self.index_events = 0;
+            self.resting = false;
+        }
+        let d = &mut self.deferred;
+        d.steps += 1;
+        d.history = (self.out, d.history.0);
+        self.out = cmd;
+        d.range = (d.range.0.min(cmd), d.range.1.max(cmd));
+    }
+
+    /// Whether steps are deferred.
+    pub fn deferring(&self) -> bool {
+        self.deferred.steps > 0
+    }
+
+    /// Brings a channel with deferred steps of `dt` up to date: every field as the steps
+    /// would have left it (but the last index count of a pulse passed before the last
+    /// step, see the module). Returns whether the deferred steps passed an index pulse.
+    pub fn catch_up(&mut self, dt: f64) -> bool {
+        let d = self.deferred;
+        if d.steps == 0 {
+            return false;
+        }
+        self.deferred.steps = 0;
+        // The last step, from the state the one before it left (`begin_step`); the
+        // output is the last step's already.
+        let from = if d.steps == 1 {
+            self.prev_levels = d.step_levels;
+            d.start
+        } else {
+            self.prev_levels = self.levels;
+            d.history.0 as f64
+        };
+        self.prev_out = d.history.0;
+        self.prev_delta = d.history.0 - d.history.1;
+        self.cmd = self.out;
+        self.actual = self.out as f64;
+        self.count_index(from + self.base, self.actual + self.base);
+        self.end_step(dt, true);
+        // The positions the steps passed: where they began, and the outputs.
+        let lo = d.start.min(d.range.0 as f64) + self.base;
+        let hi = d.start.max(d.range.1 as f64) + self.base;
+        let (spacing, phase) = self.index_grid();
+        let interval = |x: f64| (floor_i64(x) - phase).div_euclid(spacing);
+        interval(lo) != interval(hi)
+    }
+}
+
+/// [`Machine::catch_up`] of one card's channels: `dt` the deferred steps' period.
+pub fn catch_up_card(chans: &mut [Channel; AXES], triggers: &mut CardTriggers, dt: f64) {
+    for (ch, chan) in chans.iter_mut().enumerate() {
+        if chan.catch_up(dt) {
+            triggers.index_status[ch] = true;
+        }
+    }
+}
+
+impl Machine {
+    /// Notes whether channels of the machine defer steps of `dt` after this tick (`None`:
+    /// every channel is up to date).
+    pub fn set_deferred(&mut self, dt: Option<f64>) {
+        self.deferred = dt;
+    }
+
+    /// Brings every channel with deferred steps up to date; the index status of a channel
+    /// whose deferred steps passed an index pulse latches. Nothing to do (one check) when
+    /// no channel defers.
+    #[inline]
+    pub fn catch_up(&mut self) {
+        if let Some(dt) = self.deferred.take() {
+            self.catch_up_all(dt);
+        }
+    }
+
+    #[inline(never)]
+    fn catch_up_all(&mut self, dt: f64) {
+        for (chans, triggers) in self.cards.iter_mut().zip(self.triggers.iter_mut()) {
+            catch_up_card(chans, triggers, dt);
+        }
+    }
+
+    /// The period of the steps deferred, when some channel defers.
+    pub fn deferred(&self) -> Option<f64> {
+        self.deferred
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::{default_encoder_config, default_mac_param};
+    use crate::machine::ChannelSpec;
+    use crate::vendor::SYS_MAC_PARAM;
+
+    /// A channel as `Debug` shows it, without what only deferring keeps and the last index
+    /// count (compared where it is read, below).
+    fn shown(c: &Channel) -> String {
+        let mut c = c.clone();
+        c.deferred = Deferred::NONE;
+        c.last_index_count = None;
+        format!("{c:?}")
+    }
+
+    #[test]
+    fn deferred_steps_leave_what_the_steps_leave() {
+        // Two copies of an ideal channel with an index pulse every 4 counts: one steps
+        // every command, the other defers runs of 1, 2, 3, ... 9 commands and is brought
+        // up to date after each run. Commands: a pseudo-random walk of small, zero and
+        // large steps (so runs cross pulses, stand still, come back within one interval,
+        // rest). After each run every field is the same (but the last index count, which
+        // must be the same whenever the last step passed a pulse, the only time it is
+        // read), and the deferred run passed a pulse exactly when one of the steps did.
+        // A counter restart between runs moves the frame.
+        let mac = SYS_MAC_PARAM {
+            dwPPR: 4,
+            ..default_mac_param()
+        };
+        let mut a = Channel::new(ChannelSpec::default(), mac, default_encoder_config());
+        assert!(a.ideal);
+        let mut b = a.clone();
+        let (mut seed, mut cmd) = (7u64, 0i64);
+        let (mut runs, mut passed_runs, mut resting_runs) = (0, 0, 0);
+        for run in 0..3000usize {
+            let len = 1 + run % 9;
+            let mut passed = false;
+            for _ in 0..len {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                cmd += match seed >> 61 {
+                    0..=2 => 0,
+                    3 => 1,
+                    4 => -1,
+                    5 => ((seed >> 20) % 7) as i64 - 3,
+                    _ => ((seed >> 20) % 41) as i64 - 20,
+                };
+                a.command(cmd);
+                a.step_commanded(0.001);
+                passed |= a.index_events > 0;
+                b.command(cmd);
+                b.step_or_defer(0.001);
+            }
+            let deferred = b.deferring();
+            let b_passed = b.catch_up(0.001);
+            assert!(!b.deferring());
+            assert_eq!(shown(&a), shown(&b), "run {run}");
+            assert_eq!(b_passed, passed, "run {run}: an index pulse passed");
+            if a.index_events > 0 {
+                assert_eq!(a.last_index_count, b.last_index_count, "run {run}");
+            }
+            runs += usize::from(deferred);
+            passed_runs += usize::from(passed);
+            resting_runs += usize::from(a.resting);
+            if run % 500 == 499 {
+                a.rezero();
+                b.rezero();
+            }
+        }
+        // The walk covered each case many times.
+        assert!(runs > 2000, "{runs} runs deferred");
+        assert!(
+            passed_runs > 500 && passed_runs < runs,
+            "{passed_runs} of {runs}"
+        );
+        assert!(resting_runs > 50, "{resting_runs} runs ended at rest");
+    }
+
+    #[test]
+    fn a_channel_at_rest_defers_nothing() {
+        // At rest at 0: a deferred step with the same command records nothing, so the
+        // channel stays up to date; a new command starts deferring.
+        let mut c = Channel::new(
+            ChannelSpec::default(),
+            default_mac_param(),
+            default_encoder_config(),
+        );
+        for _ in 0..3 {
+            c.step_commanded(0.001);
+        }
+        assert!(c.resting);
+        c.step_or_defer(0.001);
+        assert!(!c.deferring());
+        c.command(5);
+        c.step_or_defer(0.001);
+        assert!(c.deferring());
+        assert!(!c.catch_up(0.001), "no pulse between 0 and 5 (every 2000)");
+        assert_eq!(
+            (c.command_pulses(), c.output_pulses(), c.actual_pulses()),
+            (5, 5, 5.0)
+        );
+    }
+}
