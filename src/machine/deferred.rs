@@ -4,8 +4,9 @@
 //!
 //! The engine defers (see `Shared::tick`) only while it keeps the machine's lock from
 //! one tick to the next (the quiet virtual clock: no other thread can lock the machine
-//! in between), on ticks that publish nothing, and only on cards whose triggers are not
-//! armed, with no homing and no safety check that reads the channels. It brings every
+//! in between), on ticks that copy no view for an observer (the panel), and only on
+//! cards whose triggers are not armed, with no homing and no safety check that reads
+//! the channels. It brings every
 //! channel up to date ([`Machine::catch_up`]) before it lets go of the lock and before
 //! any tick that does not defer.
 //!
