@@ -133,9 +133,11 @@ impl Shared {
         for (card, ((chans, triggers), settings)) in cards.enumerate() {
             let thresholds = settings.error_threshold;
             let idle = !triggers.armed(&thresholds);
+            // Whether a channel of the card stepped (its index pulses to note).
+            let mut stepped = false;
             if defer && idle {
                 for chan in chans.iter_mut() {
-                    chan.step_or_defer(dt);
+                    stepped |= chan.step_or_defer(dt);
                 }
                 deferred = true;
             } else {
@@ -145,9 +147,12 @@ impl Shared {
                 for chan in chans.iter_mut() {
                     chan.step_commanded(dt);
                 }
+                stepped = true;
             }
             if idle {
-                triggers.tick_idle(chans);
+                if stepped {
+                    triggers.tick_idle(chans);
+                }
                 continue;
             }
             let prev: [crate::machine::SensorLevels; AXES] =

@@ -59,13 +59,16 @@ impl Deferred {
 
 impl Channel {
     /// [`Channel::step_commanded`] of a channel on a card that defers: an ideal channel
-    /// records the step, any other steps.
+    /// records the step, any other steps. Returns whether it stepped (only then can it
+    /// have passed an index pulse this tick: a channel deferring or at rest has none).
     #[inline]
-    pub fn step_or_defer(&mut self, dt: f64) {
+    pub fn step_or_defer(&mut self, dt: f64) -> bool {
         if self.ideal {
             self.defer_step(dt);
+            false
         } else {
             self.step_commanded(dt);
+            true
         }
     }
 
