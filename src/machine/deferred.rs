@@ -23,7 +23,7 @@
 //! armed, which does not defer).
 
 use super::triggers::CardTriggers;
-use super::{floor_i64, Channel, Machine, SensorLevels};
+use super::{Channel, Machine, SensorLevels};
 use crate::config::AXES;
 
 /// What a channel stepping deferred keeps of the steps it did not make.
@@ -115,6 +115,12 @@ impl Channel {
             return false;
         }
         self.deferred.steps = 0;
+        // The positions the steps passed: where they began, and the outputs. Looked up
+        // before the last step's count, which leaves the interval of where it ended
+        // cached, as the steps would have.
+        let lo = d.start.min(d.range.0 as f64) + self.base;
+        let hi = d.start.max(d.range.1 as f64) + self.base;
+        let passed = self.index_interval(lo) != self.index_interval(hi);
         // The last step, from the state the one before it left (`begin_step`); the
         // output is the last step's already.
         let from = if d.steps == 1 {
@@ -130,12 +136,7 @@ impl Channel {
         self.actual = self.out as f64;
         self.count_index(from + self.base, self.actual + self.base);
         self.end_step(dt, true);
-        // The positions the steps passed: where they began, and the outputs.
-        let lo = d.start.min(d.range.0 as f64) + self.base;
-        let hi = d.start.max(d.range.1 as f64) + self.base;
-        let (spacing, phase) = self.index_grid();
-        let interval = |x: f64| (floor_i64(x) - phase).div_euclid(spacing);
-        interval(lo) != interval(hi)
+        passed
     }
 }
 
