@@ -19,6 +19,10 @@ pub struct Commanded {
     /// The card of the channels (the group's), kept here so that the tick reads it with
     /// the pairs (the group's definition is on a line of its own).
     card: u8,
+    /// Whether the list is every axis to the channel of its own number, `(0, 0)` to
+    /// `(7, 7)`: the usual group on a card of its own, which the tick commands without
+    /// looking the pairs up ([`Commanded::is_identity`]).
+    identity: bool,
 }
 
 impl Commanded {
@@ -42,7 +46,17 @@ impl Commanded {
                 c.len += 1;
             }
         }
+        c.identity = usize::from(c.len) == AXES
+            && c.pairs.iter().enumerate().all(|(i, &(a, ch))| {
+                usize::from(a) == i && usize::from(ch) == i
+            });
         c
+    }
+
+    /// Whether axis `i` commands channel `i`, for every axis.
+    #[inline]
+    pub fn is_identity(&self) -> bool {
+        self.identity
     }
 
     /// Whether no axis commands a channel.
@@ -79,6 +93,19 @@ mod tests {
         assert!(!c.is_empty());
         assert!(Commanded::new(0, []).is_empty());
         assert!(Commanded::new(256, [(0, 0)]).is_empty());
+    }
+
+    #[test]
+    fn every_axis_to_its_own_channel_is_the_identity() {
+        assert!(Commanded::new(1, (0..AXES).map(|i| (i, i))).is_identity());
+        // Seven of the eight, one swapped, one out of range, or in another order: not.
+        assert!(!Commanded::new(1, (0..AXES - 1).map(|i| (i, i))).is_identity());
+        let swapped = (0..AXES).map(|i| (i, if i < 2 { 1 - i } else { i }));
+        assert!(!Commanded::new(1, swapped).is_identity());
+        let out = (0..AXES).map(|i| (i, if i == 7 { 8 } else { i }));
+        assert!(!Commanded::new(1, out).is_identity());
+        assert!(!Commanded::new(1, (0..AXES).rev().map(|i| (i, i))).is_identity());
+        assert!(!Commanded::new(0, []).is_identity());
     }
 
     #[test]

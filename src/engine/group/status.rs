@@ -86,8 +86,15 @@ impl GroupState {
             return;
         };
         if self.kin.is_none() && self.post.is_none() {
-            for (i, ch) in commanded.pairs() {
-                chans[ch].command(self.pulses_at(i, self.pos[i]));
+            if commanded.is_identity() {
+                // Every axis to its own channel: no pair to look up, the same pulses.
+                for (i, chan) in chans.iter_mut().enumerate() {
+                    chan.command(self.pulses_at(i, self.pos[i]));
+                }
+            } else {
+                for (i, ch) in commanded.pairs() {
+                    chans[ch].command(self.pulses_at(i, self.pos[i]));
+                }
             }
         } else {
             for (i, ch) in commanded.pairs() {
