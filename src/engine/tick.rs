@@ -7,6 +7,7 @@ use super::homing::control::apply_homing;
 use super::shared::Shared;
 use super::{command, isr, snapshot};
 use crate::config::AXES;
+use crate::machine::deferred::Recording;
 use crate::machine::Machine;
 use parking_lot::MutexGuard;
 use std::sync::atomic::Ordering;
@@ -124,6 +125,8 @@ impl Shared {
         }
         let m = &mut *machine;
         let pending = m.deferred();
+        let recorded = m.recording();
+        let mut recording = Recording::default();
         let mut deferred = false;
         let cards = m
             .cards
@@ -131,14 +134,34 @@ impl Shared {
             .zip(m.triggers.iter_mut())
             .zip(&m.settings);
         for (card, ((chans, triggers), settings)) in cards.enumerate() {
-            let thresholds = settings.error_threshold;
-            let idle = !triggers.armed(&thresholds);
+            let idle = held
+                .idle_cards
+                .idle(card, || !triggers.armed(&settings.error_threshold));
             // Whether a channel of the card stepped (its index pulses to note).
             let mut stepped = false;
             if defer && idle {
-                for chan in chans.iter_mut() {
-                    stepped |= chan.step_or_defer(dt);
+                // The channels that recorded at the last tick record again without
+                // asking; the others step or start recording.
+                let known = recorded.card(card);
+                let mut now = known;
+                if known == 0xFF {
+                    // Every channel records (the card's whole machine moving).
+                    for chan in chans.iter_mut() {
+                        chan.record_step();
+                    }
+                } else {
+                    for (ch, chan) in chans.iter_mut().enumerate() {
+                        if known >> ch & 1 == 1 {
+                            chan.record_step();
+                        } else {
+                            stepped |= chan.step_or_defer(dt);
+                            if chan.deferring() {
+                                now |= 1 << ch;
+                            }
+                        }
+                    }
                 }
+                recording.set_card(card, now);
                 deferred = true;
             } else {
                 if let Some(d) = pending {
@@ -157,6 +180,7 @@ impl Shared {
             }
             let prev: [crate::machine::SensorLevels; AXES] =
                 std::array::from_fn(|i| chans[i].prev_levels());
+            let thresholds = settings.error_threshold;
             let fired = triggers.tick(chans, &prev, &thresholds, now_ns);
             if !fired.interrupts.is_empty() {
                 for &n in &fired.compares {
@@ -168,7 +192,7 @@ impl Shared {
             }
         }
         // Every card that did not defer is up to date now.
-        machine.set_deferred(deferred.then_some(dt));
+        machine.set_deferred(deferred.then_some(dt), recording);
         self.safety(machine, groups, full, dt);
         if let Some(t) = trace {
             t.machine_events(t_ns, machine);
@@ -281,6 +305,8 @@ pub(super) struct Held<'a> {
     // Fields drop in order: the groups, then the machine (the reverse of locking).
     groups: MutexGuard<'a, Vec<GroupState>>,
     machine: MutexGuard<'a, Machine>,
+    /// The cards found with nothing armed since the locks were taken.
+    idle_cards: IdleCards,
 }
 
 impl<'a> Held<'a> {
@@ -288,7 +314,11 @@ impl<'a> Held<'a> {
     fn lock(shared: &'a Shared) -> Held<'a> {
         let machine = shared.machine.lock();
         let groups = shared.groups.lock();
-        Held { groups, machine }
+        Held {
+            groups,
+            machine,
+            idle_cards: IdleCards::default(),
+        }
     }
 
     /// Unlocks both, handing each to a thread waiting for it if there is one (the engine
@@ -298,6 +328,35 @@ impl<'a> Held<'a> {
         self.machine.catch_up();
         MutexGuard::unlock_fair(self.groups);
         MutexGuard::unlock_fair(self.machine);
+    }
+}
+
+/// The cards a tick found with nothing armed ([`CardTriggers::armed`]) while the engine
+/// holds the machine's lock.
+///
+/// What arms a card (compares, index and input interrupts, latches, closed-loop
+/// thresholds) only the program sets, under the machine's lock; the tick itself only
+/// disarms (a trigger-out's hold ends), and a card with nothing armed runs no trigger
+/// tick at all. So a card found idle stays idle for as long as the engine keeps the lock,
+/// and the next tick need not look again; a card found armed is looked at every tick.
+///
+/// [`CardTriggers::armed`]: crate::machine::triggers::CardTriggers::armed
+#[derive(Debug, Default, Clone, Copy)]
+struct IdleCards([bool; crate::config::CARDS]);
+
+impl IdleCards {
+    /// Whether `card` has nothing armed: known, or found by `look` (and then known from
+    /// now on, if so; a card past the last is always looked at).
+    #[inline]
+    fn idle(&mut self, card: usize, look: impl FnOnce() -> bool) -> bool {
+        match self.0.get_mut(card) {
+            Some(true) => true,
+            Some(known) => {
+                *known = look();
+                *known
+            }
+            None => look(),
+        }
     }
 }
 
@@ -311,4 +370,37 @@ pub(super) fn release(held: &mut Option<Held<'_>>) {
 /// The length of a tick in ns, as the peripherals count it.
 pub(super) fn tick_ns(period: Duration) -> u64 {
     u64::try_from(period.as_nanos()).unwrap_or(u64::MAX)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::IdleCards;
+
+    #[test]
+    fn a_card_found_idle_is_not_looked_at_again_an_armed_one_is() {
+        let mut idle = IdleCards::default();
+        let mut looks = 0;
+        let mut look = |answer: bool| {
+            looks += 1;
+            answer
+        };
+        // Card 2 armed: looked at every time; card 5 idle: once; a card past the last:
+        // every time.
+        let past = crate::config::CARDS;
+        assert!(!idle.idle(2, || look(false)));
+        assert!(!idle.idle(2, || look(false)));
+        assert!(idle.idle(5, || look(true)));
+        assert!(idle.idle(5, || look(false)), "known idle: not asked");
+        assert!(idle.idle(2, || look(true)));
+        assert!(
+            idle.idle(2, || look(false)),
+            "found idle: known from then on"
+        );
+        assert!(idle.idle(past, || look(true)));
+        assert!(
+            !idle.idle(past, || look(false)),
+            "past the last card: always asked"
+        );
+        assert_eq!(looks, 6);
+    }
 }

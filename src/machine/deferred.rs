@@ -24,7 +24,7 @@
 
 use super::triggers::CardTriggers;
 use super::{Channel, Machine, SensorLevels};
-use crate::config::AXES;
+use crate::config::{AXES, CARDS};
 
 /// What a channel stepping deferred keeps of the steps it did not make.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -94,6 +94,22 @@ impl Channel {
             self.index_events = 0;
             self.resting = false;
         }
+        self.record();
+    }
+
+    /// [`Channel::step_or_defer`] of a channel known to record its steps (an ideal
+    /// channel with steps deferred since it was last brought up to date, see
+    /// [`Recording`]): the step recorded without asking.
+    #[inline]
+    pub fn record_step(&mut self) {
+        debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
+        self.record();
+    }
+
+    /// Records this tick's command as a deferred step.
+    #[inline]
+    fn record(&mut self) {
+        let cmd = self.next;
         let d = &mut self.deferred;
         d.steps += 1;
         d.history = (self.out, d.history.0);
@@ -140,6 +156,34 @@ impl Channel {
     }
 }
 
+/// The channels that recorded a deferred step at the last tick and so record the next
+/// one without asking ([`Channel::record_step`]): ideal, with steps deferred since they
+/// were last brought up to date. A byte a card, bit n for channel n.
+///
+/// The tick that defers builds it afresh; bringing channels up to date empties it, and
+/// nothing else can change what it records: a channel's being ideal changes only with
+/// the program's settings, made under the machine's lock, which the engine lets go of
+/// only after bringing every channel up to date.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Recording([u8; CARDS]);
+
+impl Recording {
+    /// The channels of `card` that record (bit `ch`).
+    #[inline]
+    pub fn card(&self, card: usize) -> u8 {
+        self.0.get(card).copied().unwrap_or(0)
+    }
+
+    /// Notes that the channels `mask` of `card` record (a card past the last is left
+    /// out: it never records).
+    #[inline]
+    pub fn set_card(&mut self, card: usize, mask: u8) {
+        if let Some(m) = self.0.get_mut(card) {
+            *m = mask;
+        }
+    }
+}
+
 /// [`Machine::catch_up`] of one card's channels: `dt` the deferred steps' period.
 pub fn catch_up_card(chans: &mut [Channel; AXES], triggers: &mut CardTriggers, dt: f64) {
     for (ch, chan) in chans.iter_mut().enumerate() {
@@ -151,9 +195,14 @@ pub fn catch_up_card(chans: &mut [Channel; AXES], triggers: &mut CardTriggers, d
 
 impl Machine {
     /// Notes whether channels of the machine defer steps of `dt` after this tick (`None`:
-    /// every channel is up to date).
-    pub fn set_deferred(&mut self, dt: Option<f64>) {
+    /// every channel is up to date), and which of them [record](Recording).
+    pub fn set_deferred(&mut self, dt: Option<f64>, recording: Recording) {
         self.deferred = dt;
+        self.recording = if dt.is_some() {
+            recording
+        } else {
+            Recording::default()
+        };
     }
 
     /// Brings every channel with deferred steps up to date; the index status of a channel
@@ -162,6 +211,7 @@ impl Machine {
     #[inline]
     pub fn catch_up(&mut self) {
         if let Some(dt) = self.deferred.take() {
+            self.recording = Recording::default();
             self.catch_up_all(dt);
         }
     }
@@ -176,6 +226,11 @@ impl Machine {
     /// The period of the steps deferred, when some channel defers.
     pub fn deferred(&self) -> Option<f64> {
         self.deferred
+    }
+
+    /// The channels that recorded a deferred step at the last tick ([`Recording`]).
+    pub fn recording(&self) -> Recording {
+        self.recording
     }
 }
 
@@ -281,6 +336,51 @@ mod tests {
         assert_eq!(
             (c.command_pulses(), c.output_pulses(), c.actual_pulses()),
             (5, 5, 5.0)
+        );
+    }
+
+    #[test]
+    fn a_recorded_step_is_the_deferred_step() {
+        // Two recording channels, commanded alike: one asks (`step_or_defer`), the other
+        // records without asking (`record_step`); they stay equal, up to date too.
+        let mut asks = Channel::new(
+            ChannelSpec::default(),
+            default_mac_param(),
+            default_encoder_config(),
+        );
+        asks.command(3);
+        asks.step_or_defer(0.001);
+        let mut records = asks.clone();
+        for cmd in [7, 4, 4, -2, 9] {
+            asks.command(cmd);
+            records.command(cmd);
+            asks.step_or_defer(0.001);
+            records.record_step();
+            assert_eq!(format!("{asks:?}"), format!("{records:?}"), "at {cmd}");
+        }
+        assert_eq!(asks.catch_up(0.001), records.catch_up(0.001));
+        assert_eq!(format!("{asks:?}"), format!("{records:?}"));
+    }
+
+    #[test]
+    fn recording_keeps_eight_channels_a_card() {
+        let mut r = Recording::default();
+        r.set_card(0, 0b1010_0001);
+        r.set_card(CARDS - 1, 0xFF);
+        r.set_card(3, 0x7F);
+        r.set_card(CARDS, 0xFF);
+        let mut expected = vec![0; CARDS + 1];
+        (expected[0], expected[3], expected[CARDS - 1]) = (0xA1, 0x7F, 0xFF);
+        assert_eq!(
+            (0..=CARDS).map(|c| r.card(c)).collect::<Vec<_>>(),
+            expected,
+            "a card past the last never records"
+        );
+        // Replacing a card's channels leaves its neighbours.
+        r.set_card(3, 0x01);
+        assert_eq!(
+            (r.card(0), r.card(3), r.card(CARDS - 1)),
+            (0xA1, 0x01, 0xFF)
         );
     }
 }

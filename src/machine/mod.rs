@@ -864,6 +864,8 @@ pub struct Machine {
     pub pulse_limits_set: bool,
     /// The period of the steps channels defer, while some may ([`deferred`]).
     deferred: Option<f64>,
+    /// The channels known to record their deferred steps ([`deferred::Recording`]).
+    recording: deferred::Recording,
 }
 
 /// Which pulse limit of the channels (user manual §2.7.3).
@@ -956,6 +958,7 @@ impl Machine {
             triggers: vec![triggers::CardTriggers::default(); n],
             pulse_limits_set: false,
             deferred: None,
+            recording: deferred::Recording::default(),
         }
     }
 

@@ -47,9 +47,10 @@ impl Commanded {
             }
         }
         c.identity = usize::from(c.len) == AXES
-            && c.pairs.iter().enumerate().all(|(i, &(a, ch))| {
-                usize::from(a) == i && usize::from(ch) == i
-            });
+            && c.pairs
+                .iter()
+                .enumerate()
+                .all(|(i, &(a, ch))| usize::from(a) == i && usize::from(ch) == i);
         c
     }
 
