@@ -127,6 +127,9 @@ impl GroupState {
             for r in self.running.iter_mut() {
                 r.tau += clock.own_time(dt, &r.cmd);
             }
+            if let Some(r) = self.running.back() {
+                self.newest_own_time = r.tau;
+            }
         }
         self.settle(&clock);
         self.finish_abort();
@@ -172,6 +175,7 @@ impl GroupState {
             _ => return false,
         }
         r.tau = tau;
+        self.newest_own_time = tau;
         // `compute_pos_vel` with this one command, without finding it again.
         place_single(
             &mut self.pos,
@@ -197,7 +201,7 @@ impl GroupState {
                 self.retarget_rate();
             }
         }
-        self.starts = self.starts.wrapping_add(1);
+        self.info_touched();
         self.cmd_index.ld = self.cmd_index.ld.wrapping_add(1);
         self.cmd_index.last_started = Some((cmd.index, self.cmd_index.ld));
         self.note(Note::Start {
@@ -208,6 +212,7 @@ impl GroupState {
             self.single_block_credit = false;
         }
         self.running.push_back(Running { cmd, tau });
+        self.newest_own_time = tau;
     }
 
     /// Software over-travel (user manual §2.6.1): with the check on, an axis never goes

@@ -83,10 +83,15 @@ pub struct GroupState {
     pub ot_check: [bool; AXES],
     /// Group index (0..95).
     pub index: usize,
-    /// Commands started since the group was made (the info key's command identity).
-    starts: u64,
-    /// Changes of the info the key does not see by itself ([`GroupState::info_touched`]).
-    info_touched: u64,
+    /// Changes of the info other than its queue length and its running command's phase
+    /// and feed: a command started, the error record set or cleared, the running
+    /// command's end or the offset changed ([`GroupState::info_touched`]).
+    info_changes: u64,
+    /// The own time of the newest running command (the back of `running`), kept by every
+    /// writer of an own time, for the published key's check
+    /// ([`GroupState::info_changed`]): finding the back of the deque cost it 11
+    /// instructions a publication. Meaningless while nothing runs.
+    newest_own_time: f64,
     /// The info last published, kept in test builds to check the key against it.
     #[cfg(debug_assertions)]
     pub(crate) published_info: Option<super::snapshot::Info>,
@@ -178,8 +183,8 @@ impl GroupState {
             cmd_index: CommandIndex::default(),
             status: c::GMS_STOP,
             published_key: None,
-            starts: 0,
-            info_touched: 0,
+            info_changes: 0,
+            newest_own_time: 0.0,
             #[cfg(debug_assertions)]
             published_info: None,
             ot_check: [false; AXES],
@@ -263,6 +268,7 @@ impl GroupState {
         if self.error == 0 {
             self.note(super::trace::Note::ErrorSet(code));
             self.error = code;
+            self.info_touched();
         }
     }
 
@@ -270,6 +276,7 @@ impl GroupState {
     pub fn clear_error(&mut self) {
         if self.error != 0 {
             self.note(super::trace::Note::ErrorCleared(self.error));
+            self.info_touched();
         }
         self.error = 0;
         self.update_status();

@@ -165,7 +165,8 @@ impl GroupState {
     /// What [`GroupState::info`] depends on that can change while the group runs: equal
     /// keys mean equal infos, so publishing compares these few words instead of building
     /// and comparing the whole info every tick. The rest of the info changes only with a
-    /// command start (counted by `starts`) or a reset (which publishes afresh).
+    /// command start (counted with the other changes, [`GroupState::info_touched`]) or
+    /// a reset (which publishes afresh).
     #[inline]
     pub(super) fn info_key(&self) -> InfoKey {
         let back = self.running.back();
@@ -181,19 +182,18 @@ impl GroupState {
     #[inline]
     fn key_words(&self) -> KeyWords {
         KeyWords {
-            error: self.error,
             queued: self.queue.len(),
-            starts: self.starts,
-            touched: self.info_touched,
+            changes: self.info_changes,
         }
     }
 
-    /// Records a change of what the info shows that is not one of the key's own words:
-    /// the running command's end (custom motion) or the offset between user and
+    /// Records a change of what the info shows other than the queue's length and the
+    /// running command's phase and feed: a command started, the error record set or
+    /// cleared, the running command's end (custom motion), the offset between user and
     /// reference positions. Every writer of those calls it; test builds check after
     /// every publication that an unchanged key really means an unchanged info.
     pub(super) fn info_touched(&mut self) {
-        self.info_touched = self.info_touched.wrapping_add(1);
+        self.info_changes = self.info_changes.wrapping_add(1);
     }
 
     /// The whole published state (as readers see it).
@@ -236,18 +236,26 @@ impl GroupState {
 
     /// Whether [`GroupState::info_key`] is still the key last published, found without
     /// building it: the words it reads straight from the group are the same, and the
-    /// running command at the back (the newest: `starts` changes whenever another one
-    /// starts) is still within the stretch of its own time over which its phase and
-    /// feed stay as published ([`key_holds_for`]).
+    /// running command at the back (the newest: the count of changes moves whenever
+    /// another one starts), whose own time is kept as `newest_own_time`, is still within
+    /// the stretch over which its phase and feed stay as published ([`key_holds_for`]).
     #[inline]
     fn published_key_holds(&self) -> bool {
         let Some(p) = &self.published_key else {
             return false;
         };
+        debug_assert_eq!(
+            self.running.back().map(|r| r.tau.to_bits()),
+            (!self.running.is_empty()).then_some(self.newest_own_time.to_bits()),
+            "group {}: newest_own_time is stale",
+            self.index
+        );
+        let tau = self.newest_own_time;
         p.key.words == self.key_words()
-            && match self.running.back() {
-                Some(r) => p.key.running && r.tau >= p.holds_for.0 && r.tau < p.holds_for.1,
-                None => !p.key.running,
+            && if self.running.is_empty() {
+                !p.key.running
+            } else {
+                p.key.running && tau >= p.holds_for.0 && tau < p.holds_for.1
             }
     }
 }
@@ -301,10 +309,10 @@ pub(super) struct InfoKey {
 /// The words of an [`InfoKey`] read straight from the group ([`GroupState::key_words`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct KeyWords {
-    error: i32,
+    /// Commands queued.
     queued: usize,
-    starts: u64,
-    touched: u64,
+    /// [`GroupState::info_touched`]'s count.
+    changes: u64,
 }
 
 /// `COMMAND_INFO.nMotionPhase` of a running command: 0 accelerating, 1 at speed, 2
