@@ -121,7 +121,9 @@ impl Shared {
     /// The checks that need the machine: emergency stop (0xF102), hardware limit
     /// switches (0xF701 + axis in the `_GEN_ERR` modes), tracking error (0xF801 + axis),
     /// pulse speed and acceleration limits (0xF203, 0xF204). A check that trips stops the
-    /// group at once (its queue is dropped).
+    /// group at once (its queue is dropped). With no check to make
+    /// ([`Shared::safety_reads_channels`] false) it does nothing, and the tick does not
+    /// call it.
     pub(super) fn safety(&self, machine: &Machine, groups: &mut [GroupState], full: bool, dt: f64) {
         let limit_mode = self.limit_check.load(Ordering::Relaxed);
         // Checks every moving group needs; otherwise only groups with checks of their own

@@ -55,7 +55,8 @@ impl Shared {
     fn tick<'a>(&'a self, held: &mut Option<Held<'a>>, interrupts: &mut isr::Collected) -> bool {
         let dt = self.clock.period_s();
         let n = self.clock.ticks();
-        let t_ns = self.running_tick_end_ns();
+        // The virtual time the trace and the triggers see, made only where they look.
+        let t_ns = || self.running_tick_end_ns();
         let full = !self.clock.mode().virtual_time()
             || self.live_snapshots.load(Ordering::Relaxed)
             || n % PUBLISH_EVERY == 0
@@ -98,8 +99,8 @@ impl Shared {
                 self.status[g.index].store(g.status(), Ordering::Release);
             }
             if let Some(t) = trace.as_deref_mut() {
-                t.row(t_ns, g);
-                t.group_events(t_ns, g);
+                t.row(t_ns(), g);
+                t.group_events(t_ns(), g);
             }
         }
         if let Some(h) = &homed {
@@ -111,15 +112,14 @@ impl Shared {
                 }
             }
         }
-        let now_ns = t_ns;
+        // Whether a safety check reads the channels this tick (and `Shared::safety` has
+        // anything to do).
+        let checks = self.safety_reads_channels(machine, groups);
         // Ideal channels defer their steps (`machine::deferred`) on a tick whose locks
         // were kept from the last one, with no view copied for an observer, no homing and
         // no safety check that reads them, on a card whose triggers are not armed. Any
         // other tick brings them up to date first.
-        let defer = carried
-            && !(full && self.view.wanted())
-            && homed.is_none()
-            && !self.safety_reads_channels(machine, groups);
+        let defer = carried && !(full && self.view.wanted()) && homed.is_none() && !checks;
         if !defer {
             machine.catch_up();
         }
@@ -181,7 +181,7 @@ impl Shared {
             let prev: [crate::machine::SensorLevels; AXES] =
                 std::array::from_fn(|i| chans[i].prev_levels());
             let thresholds = settings.error_threshold;
-            let fired = triggers.tick(chans, &prev, &thresholds, now_ns);
+            let fired = triggers.tick(chans, &prev, &thresholds, t_ns());
             if !fired.interrupts.is_empty() {
                 for &n in &fired.compares {
                     self.periph[card].lock().dac_trigger(n);
@@ -193,11 +193,13 @@ impl Shared {
         }
         // Every card that did not defer is up to date now.
         machine.set_deferred(deferred.then_some(dt), recording);
-        self.safety(machine, groups, full, dt);
+        if checks {
+            self.safety(machine, groups, full, dt);
+        }
         if let Some(t) = trace {
-            t.machine_events(t_ns, machine);
+            t.machine_events(t_ns(), machine);
             if let Some(h) = &homed {
-                t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
+                t.home_events(t_ns(), h.card, h.phase.0, h.phase.1, h.finished);
             }
         }
         if full {
