@@ -254,6 +254,7 @@ impl GroupState {
             let Some(done) = self.running.pop_front() else {
                 return;
             };
+            self.info_touched();
             self.note(Note::End {
                 index: done.cmd.index,
                 ctype: done.cmd.ctype,

@@ -260,12 +260,15 @@ impl Host for GroupState {
         for _ in 0..n {
             if let Some(done) = self.running.pop_front() {
                 self.base = done.cmd.target;
+                self.info_touched();
             }
         }
     }
 
     fn drop_first(&mut self) {
-        self.running.pop_front();
+        if self.running.pop_front().is_some() {
+            self.info_touched();
+        }
     }
 
     fn job_ended(&mut self) {
@@ -284,6 +287,7 @@ impl Host for GroupState {
 
     fn clear_running(&mut self) {
         self.running.clear();
+        self.info_touched();
     }
 
     fn zero_offset(&mut self, i: usize) {

@@ -109,7 +109,7 @@ pub struct GroupState {
     /// starts, `engine::shared`: it depends on every group's mapping).
     pub(in crate::engine) commanded: Commanded,
     /// The info key last published and how long it holds ([`GroupState::info_changed`]).
-    published_key: Option<status::PublishedKey>,
+    published_key: status::PublishedKey,
     /// Settings that queued commands capture (`compose` first, which publishing reads).
     pub settings: Settings,
     /// Output changes the queue reached this tick (the engine makes them).
@@ -182,7 +182,7 @@ impl GroupState {
             error: 0,
             cmd_index: CommandIndex::default(),
             status: c::GMS_STOP,
-            published_key: None,
+            published_key: status::PublishedKey::NONE,
             info_changes: 0,
             newest_own_time: 0.0,
             #[cfg(debug_assertions)]

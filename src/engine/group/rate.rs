@@ -131,6 +131,7 @@ impl GroupState {
         self.inpos_wait = None;
         self.note_stopped();
         self.running.clear();
+        self.info_touched();
         self.queue.clear();
         self.post_stopped();
         self.base = self.pos;

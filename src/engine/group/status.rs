@@ -79,10 +79,12 @@ impl GroupState {
     #[inline]
     pub fn command_channels(&self, cards: &mut [[Channel; AXES]]) {
         let commanded = &self.commanded;
-        let Some(chans) = cards
-            .get_mut(commanded.card())
-            .filter(|_| !commanded.is_empty())
-        else {
+        // Most groups sharing a card's channels command none of them (the last mapping
+        // wins): asked first, before the card is looked up.
+        if commanded.is_empty() {
+            return;
+        }
+        let Some(chans) = cards.get_mut(commanded.card()) else {
             return;
         };
         if self.kin.is_none() && self.post.is_none() {
@@ -207,8 +209,8 @@ impl GroupState {
     pub fn info_changed(&mut self) -> bool {
         if self.published_key_holds() {
             debug_assert_eq!(
-                self.published_key.map(|p| p.key),
-                Some(self.info_key()),
+                self.published_key.key,
+                self.info_key(),
                 "group {}: the published key was taken to hold",
                 self.index
             );
@@ -223,63 +225,79 @@ impl GroupState {
     #[inline(never)]
     fn renew_published_key(&mut self) -> bool {
         let key = self.info_key();
-        let holds_for = self.running.back().map_or(OWN_TIME_ANY, key_holds_for);
+        let until = self.running.back().map_or(f64::INFINITY, key_holds_until);
+        let renewed = PublishedKey {
+            key,
+            until,
+            published: true,
+        };
         // Two stores of the same record, not one after a `changed` flag: compiled that
         // way, every publication paid 4 instructions more (callgrind).
-        if self.published_key.is_some_and(|p| p.key == key) {
-            self.published_key = Some(PublishedKey { key, holds_for });
+        if self.published_key.published && self.published_key.key == key {
+            self.published_key = renewed;
             return false;
         }
-        self.published_key = Some(PublishedKey { key, holds_for });
+        self.published_key = renewed;
         true
     }
 
     /// Whether [`GroupState::info_key`] is still the key last published, found without
-    /// building it: the words it reads straight from the group are the same, and the
-    /// running command at the back (the newest: the count of changes moves whenever
-    /// another one starts), whose own time is kept as `newest_own_time`, is still within
-    /// the stretch over which its phase and feed stay as published ([`key_holds_for`]).
+    /// building it: the words it reads straight from the group are the same (so no
+    /// command started or ended since: each counts as a change), and the own time of
+    /// the running command at the back, kept as `newest_own_time`, has not reached the
+    /// end of the stretch over which its phase and feed stay as published
+    /// ([`key_holds_until`]); with no command running that end is infinite. Nothing was
+    /// published yet: the end is −∞, which no own time is below.
     #[inline]
     fn published_key_holds(&self) -> bool {
-        let Some(p) = &self.published_key else {
-            return false;
-        };
+        let p = &self.published_key;
         debug_assert_eq!(
             self.running.back().map(|r| r.tau.to_bits()),
             (!self.running.is_empty()).then_some(self.newest_own_time.to_bits()),
             "group {}: newest_own_time is stale",
             self.index
         );
-        let tau = self.newest_own_time;
-        p.key.words == self.key_words()
-            && if self.running.is_empty() {
-                !p.key.running
-            } else {
-                p.key.running && tau >= p.holds_for.0 && tau < p.holds_for.1
-            }
+        p.key.words == self.key_words() && self.newest_own_time < p.until
     }
 }
 
-/// The info key last published ([`GroupState::info_changed`]) and the own times of the
-/// running command over which its time-dependent words (phase, feed) stay the same.
+/// The info key last published ([`GroupState::info_changed`]) and the own time of the
+/// running command up to which its time-dependent words (phase, feed) stay the same.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct PublishedKey {
     key: InfoKey,
-    holds_for: (f64, f64),
+    /// Own times below this hold the key ([`key_holds_until`]); −∞ before the first
+    /// publication.
+    until: f64,
+    /// Whether `key` was published (not [`PublishedKey::NONE`]).
+    published: bool,
 }
 
-/// The own-time range of a group with no running command: nothing depends on it.
-const OWN_TIME_ANY: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
+impl PublishedKey {
+    /// Nothing published yet: no own time holds it.
+    pub(super) const NONE: PublishedKey = PublishedKey {
+        key: InfoKey {
+            words: KeyWords {
+                queued: 0,
+                changes: 0,
+            },
+            running: false,
+            phase: 0,
+            feed: 0,
+        },
+        until: f64::NEG_INFINITY,
+        published: false,
+    };
+}
 
-/// The own times `[from, until)` of running command `r`, from its own time now, over
-/// which [`motion_phase`] and [`info_feed`] give what they give now. Own time only moves
-/// forward while a command runs (a range that starts now also catches one that would
-/// not); the phase of a general motion changes at the end of the acceleration and at
-/// the start of the deceleration; a delay's feed (the time left) changes all the time,
-/// so its range is empty; the others stay the same. A NaN own time gives a range that
-/// nothing is in.
-fn key_holds_for(r: &Running) -> (f64, f64) {
-    let until = match &r.cmd.plan {
+/// The own time of running command `r` up to which [`motion_phase`] and [`info_feed`]
+/// give what they give now. Own time only moves forward while a command runs (so only
+/// the end of the stretch is to check); the phase of a general motion changes at the end
+/// of the acceleration and at the start of the deceleration; a delay's feed (the time
+/// left) changes all the time, so its stretch ends now; the others stay the same. A
+/// NaN own time gives an end that no own time is below.
+fn key_holds_until(r: &Running) -> f64 {
+    match &r.cmd.plan {
         Plan::Path(m) => {
             let (accel_end, decel_start) = phase_bounds(m);
             if r.tau < accel_end {
@@ -292,8 +310,7 @@ fn key_holds_for(r: &Running) -> (f64, f64) {
         }
         Plan::Delay(_) => r.tau,
         _ => f64::INFINITY,
-    };
-    (r.tau, until)
+    }
 }
 
 /// [`GroupState::info_key`].
@@ -400,11 +417,7 @@ mod tests {
                 "tick {tick}: published again exactly when the info changed"
             );
             if holds {
-                assert_eq!(
-                    g.published_key.map(|p| p.key),
-                    Some(g.info_key()),
-                    "tick {tick}"
-                );
+                assert_eq!(g.published_key.key, g.info_key(), "tick {tick}");
             }
             if changed {
                 changes.push(tick);
