@@ -112,10 +112,10 @@ impl Shared {
     }
 
     /// Whether [`Shared::safety`] may read the channels this tick: a check of every moving
-    /// group is on, or a group has checks of its own.
-    pub(super) fn safety_reads_channels(&self, machine: &Machine, groups: &[GroupState]) -> bool {
-        global_checks(self.limit_check.load(Ordering::Relaxed), machine)
-            || groups.iter().any(GroupState::has_safety_checks)
+    /// group is on, or a group has checks of its own (`group_checks`: some group's
+    /// [`GroupState::has_safety_checks`], which the tick gathers as it ticks them).
+    pub(super) fn safety_reads_channels(&self, machine: &Machine, group_checks: bool) -> bool {
+        group_checks || global_checks(self.limit_check.load(Ordering::Relaxed), machine)
     }
 
     /// The checks that need the machine: emergency stop (0xF102), hardware limit

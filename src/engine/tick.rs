@@ -72,6 +72,8 @@ impl Shared {
         let dry = self.dry_run.load(Ordering::Relaxed);
         let homed = self.tick_homing(machine, dt);
         let groups = &mut *held.groups;
+        // Whether a group has safety checks of its own, once every group has ticked.
+        let mut group_checks = false;
         for g in groups.iter_mut() {
             g.tick(dt);
             g.kinematics_apply();
@@ -102,6 +104,7 @@ impl Shared {
                 t.row(t_ns(), g);
                 t.group_events(t_ns(), g);
             }
+            group_checks |= g.has_safety_checks();
         }
         if let Some(h) = &homed {
             // The homed channels get the homing's position, grouped or not, dry run or not.
@@ -114,7 +117,7 @@ impl Shared {
         }
         // Whether a safety check reads the channels this tick (and `Shared::safety` has
         // anything to do).
-        let checks = self.safety_reads_channels(machine, groups);
+        let checks = self.safety_reads_channels(machine, group_checks);
         // Ideal channels defer their steps (`machine::deferred`) on a tick whose locks
         // were kept from the last one, with no view copied for an observer, no homing and
         // no safety check that reads them, on a card whose triggers are not armed. Any
