@@ -73,20 +73,28 @@ fn start(groups: u16) {
     MCC_TimeDelay(400); // past the acceleration: the groups cruise from here on
 }
 
-/// The thread id of the engine thread (named `mccl-engine`).
+/// The thread id of the engine thread (named `mccl-engine`). The engine of the system
+/// closed before this one was joined, but a joined thread leaves `/proc/self/task` a
+/// moment after its join returns: until it has, two are listed (and the old one's CPU
+/// clock fails), so this waits for one, up to 5 s.
 fn engine_tid() -> libc::pid_t {
-    for e in std::fs::read_dir("/proc/self/task")
-        .expect("/proc")
-        .flatten()
-    {
-        let comm = std::fs::read_to_string(e.path().join("comm")).unwrap_or_default();
-        if comm.trim() == "mccl-engine" {
-            if let Some(tid) = e.file_name().to_str().and_then(|t| t.parse().ok()) {
-                return tid;
-            }
+    let deadline = Instant::now() + std::time::Duration::from_secs(5);
+    loop {
+        let engines: Vec<libc::pid_t> = std::fs::read_dir("/proc/self/task")
+            .expect("/proc")
+            .flatten()
+            .filter(|e| {
+                std::fs::read_to_string(e.path().join("comm"))
+                    .is_ok_and(|c| c.trim() == "mccl-engine")
+            })
+            .filter_map(|e| e.file_name().to_str()?.parse().ok())
+            .collect();
+        match engines[..] {
+            [tid] => return tid,
+            _ if Instant::now() > deadline => panic!("engine threads: {engines:?}"),
+            _ => std::thread::sleep(std::time::Duration::from_millis(1)),
         }
     }
-    panic!("no mccl-engine thread")
 }
 
 /// The CPU-time clock of the running engine's thread, which the kernel brings up to
