@@ -150,14 +150,14 @@ impl Shared {
                 if known == 0xFF {
                     // Every channel records (the card's whole machine moving).
                     for chan in chans.iter_mut() {
-                        chan.record_step();
+                        chan.record_step(n);
                     }
                 } else {
                     for (ch, chan) in chans.iter_mut().enumerate() {
                         if known >> ch & 1 == 1 {
-                            chan.record_step();
+                            chan.record_step(n);
                         } else {
-                            stepped |= chan.step_or_defer(dt);
+                            stepped |= chan.step_or_defer(dt, n);
                             if chan.deferring() {
                                 now |= 1 << ch;
                             }

@@ -27,12 +27,21 @@ use super::{Channel, Machine, SensorLevels};
 use crate::config::{AXES, CARDS};
 
 /// What a channel stepping deferred keeps of the steps it did not make.
+///
+/// The steps of a run are numbered by the engine's tick (consecutive: a card that does
+/// not defer at a tick brings its channels up to date first). Step `n` records its
+/// output in `outputs[n % 4]`, which also holds the two outputs before the run's first
+/// step, so that the last three outputs are always there; the run is `first..=last`.
+/// Recording a step is then two stores and the range, whatever the run's length.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Deferred {
-    /// Steps deferred since the channel was last up to date (0: up to date).
-    steps: u64,
-    /// The outputs one and two steps before the latest.
-    history: (i64, i64),
+    /// Whether steps are deferred (the channel is not up to date).
+    active: bool,
+    /// The number of the run's first step and of its latest.
+    first: u64,
+    last: u64,
+    /// The outputs of the latest steps, step `n`'s at `n % 4`.
+    outputs: [i64; 4],
     /// The least and the greatest output of the deferred steps.
     range: (i64, i64),
     /// The motor's position before the first deferred step.
@@ -45,8 +54,10 @@ pub(super) struct Deferred {
 impl Deferred {
     /// Nothing deferred.
     pub(super) const NONE: Deferred = Deferred {
-        steps: 0,
-        history: (0, 0),
+        active: false,
+        first: 0,
+        last: 0,
+        outputs: [0; 4],
         range: (0, 0),
         start: 0.0,
         step_levels: SensorLevels {
@@ -58,13 +69,14 @@ impl Deferred {
 }
 
 impl Channel {
-    /// [`Channel::step_commanded`] of a channel on a card that defers: an ideal channel
-    /// records the step, any other steps. Returns whether it stepped (only then can it
-    /// have passed an index pulse this tick: a channel deferring or at rest has none).
+    /// [`Channel::step_commanded`] of a channel on a card that defers, at the engine's
+    /// tick `n`: an ideal channel records the step, any other steps. Returns whether it
+    /// stepped (only then can it have passed an index pulse this tick: a channel
+    /// deferring or at rest has none).
     #[inline]
-    pub fn step_or_defer(&mut self, dt: f64) -> bool {
+    pub fn step_or_defer(&mut self, dt: f64, n: u64) -> bool {
         if self.ideal {
-            self.defer_step(dt);
+            self.defer_step(dt, n);
             false
         } else {
             self.step_commanded(dt);
@@ -76,50 +88,65 @@ impl Channel {
     /// at rest held at its command records nothing, as it would not step). Only the
     /// output moves on; the command and the motor follow it when brought up to date.
     #[inline]
-    fn defer_step(&mut self, dt: f64) {
-        let cmd = self.next;
-        if self.deferred.steps == 0 {
-            if self.resting && cmd == self.cmd && dt == self.resting_dt {
+    fn defer_step(&mut self, dt: f64, n: u64) {
+        if !self.deferred.active {
+            if self.resting && self.next == self.cmd && dt == self.resting_dt {
                 return;
             }
-            // The first deferred step: what the steps before it left. The index pulses of
-            // the last step made were counted by the tick that made it.
-            self.deferred = Deferred {
-                steps: 0,
-                history: (self.prev_out, self.prev_out - self.prev_delta),
-                range: (cmd, cmd),
-                start: self.actual,
-                step_levels: self.step_levels,
-            };
-            self.index_events = 0;
-            self.resting = false;
+            self.begin_deferring(n);
         }
-        self.record();
+        self.record(n);
+    }
+
+    /// Before the first deferred step, `n`: what the steps before it left (the two
+    /// outputs before it, in the slots of the two steps before it). The index pulses of
+    /// the last step made were counted by the tick that made it. Out of line: inlined,
+    /// its slots were worked out ahead of every tick's recording loop.
+    #[inline(never)]
+    fn begin_deferring(&mut self, n: u64) {
+        let mut outputs = [0; 4];
+        outputs[slot(n.wrapping_sub(1))] = self.out;
+        outputs[slot(n.wrapping_sub(2))] = self.prev_out;
+        self.deferred = Deferred {
+            active: true,
+            first: n,
+            last: n,
+            outputs,
+            range: (self.next, self.next),
+            start: self.actual,
+            step_levels: self.step_levels,
+        };
+        self.index_events = 0;
+        self.resting = false;
     }
 
     /// [`Channel::step_or_defer`] of a channel known to record its steps (an ideal
     /// channel with steps deferred since it was last brought up to date, see
     /// [`Recording`]): the step recorded without asking.
     #[inline]
-    pub fn record_step(&mut self) {
+    pub fn record_step(&mut self, n: u64) {
         debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
-        self.record();
+        debug_assert_eq!(
+            self.deferred.last.wrapping_add(1),
+            n,
+            "steps not consecutive"
+        );
+        self.record(n);
     }
 
-    /// Records this tick's command as a deferred step.
+    /// Records this tick's command as deferred step `n`.
     #[inline]
-    fn record(&mut self) {
+    fn record(&mut self, n: u64) {
         let cmd = self.next;
         let d = &mut self.deferred;
-        d.steps += 1;
-        d.history = (self.out, d.history.0);
-        self.out = cmd;
+        d.outputs[slot(n)] = cmd;
+        d.last = n;
         d.range = (d.range.0.min(cmd), d.range.1.max(cmd));
     }
 
     /// Whether steps are deferred.
     pub fn deferring(&self) -> bool {
-        self.deferred.steps > 0
+        self.deferred.active
     }
 
     /// Brings a channel with deferred steps of `dt` up to date: every field as the steps
@@ -127,10 +154,16 @@ impl Channel {
     /// step, see the module). Returns whether the deferred steps passed an index pulse.
     pub fn catch_up(&mut self, dt: f64) -> bool {
         let d = self.deferred;
-        if d.steps == 0 {
+        if !d.active {
             return false;
         }
-        self.deferred.steps = 0;
+        self.deferred.active = false;
+        // The last output and the two before it.
+        self.out = d.outputs[slot(d.last)];
+        let history = (
+            d.outputs[slot(d.last.wrapping_sub(1))],
+            d.outputs[slot(d.last.wrapping_sub(2))],
+        );
         // The positions the steps passed: where they began, and the outputs. Looked up
         // before the last step's count, which leaves the interval of where it ended
         // cached, as the steps would have.
@@ -139,21 +172,27 @@ impl Channel {
         let passed = self.index_interval(lo) != self.index_interval(hi);
         // The last step, from the state the one before it left (`begin_step`); the
         // output is the last step's already.
-        let from = if d.steps == 1 {
+        let from = if d.last == d.first {
             self.prev_levels = d.step_levels;
             d.start
         } else {
             self.prev_levels = self.levels;
-            d.history.0 as f64
+            history.0 as f64
         };
-        self.prev_out = d.history.0;
-        self.prev_delta = d.history.0 - d.history.1;
+        self.prev_out = history.0;
+        self.prev_delta = history.0 - history.1;
         self.cmd = self.out;
         self.actual = self.out as f64;
         self.count_index(from + self.base, self.actual + self.base);
         self.end_step(dt, true);
         passed
     }
+}
+
+/// The slot of deferred step `n` in [`Deferred::outputs`].
+#[inline]
+fn slot(n: u64) -> usize {
+    (n % 4) as usize
 }
 
 /// The channels that recorded a deferred step at the last tick and so record the next
@@ -268,6 +307,9 @@ mod tests {
         assert!(a.ideal);
         let mut b = a.clone();
         let (mut seed, mut cmd) = (7u64, 0i64);
+        // The engine's tick numbers the steps; starting near the end of the u64 range,
+        // the ~15,000 steps wrap around it.
+        let mut n = u64::MAX - 7000;
         let (mut runs, mut passed_runs, mut resting_runs) = (0, 0, 0);
         for run in 0..3000usize {
             let len = 1 + run % 9;
@@ -287,7 +329,8 @@ mod tests {
                 a.step_commanded(0.001);
                 passed |= a.index_events > 0;
                 b.command(cmd);
-                b.step_or_defer(0.001);
+                b.step_or_defer(0.001, n);
+                n = n.wrapping_add(1);
             }
             let deferred = b.deferring();
             let b_passed = b.catch_up(0.001);
@@ -327,10 +370,10 @@ mod tests {
             c.step_commanded(0.001);
         }
         assert!(c.resting);
-        c.step_or_defer(0.001);
+        c.step_or_defer(0.001, 0);
         assert!(!c.deferring());
         c.command(5);
-        c.step_or_defer(0.001);
+        c.step_or_defer(0.001, 1);
         assert!(c.deferring());
         assert!(!c.catch_up(0.001), "no pulse between 0 and 5 (every 2000)");
         assert_eq!(
@@ -349,13 +392,13 @@ mod tests {
             default_encoder_config(),
         );
         asks.command(3);
-        asks.step_or_defer(0.001);
+        asks.step_or_defer(0.001, 10);
         let mut records = asks.clone();
-        for cmd in [7, 4, 4, -2, 9] {
+        for (n, cmd) in (11..).zip([7, 4, 4, -2, 9]) {
             asks.command(cmd);
             records.command(cmd);
-            asks.step_or_defer(0.001);
-            records.record_step();
+            asks.step_or_defer(0.001, n);
+            records.record_step(n);
             assert_eq!(format!("{asks:?}"), format!("{records:?}"), "at {cmd}");
         }
         assert_eq!(asks.catch_up(0.001), records.catch_up(0.001));
