@@ -230,7 +230,7 @@ impl Host for GroupState {
     }
 
     fn pop_front(&mut self) -> Option<Command> {
-        self.queue.pop_front()
+        self.pop_queued()
     }
 
     fn apply_switch(&mut self) {
@@ -249,7 +249,7 @@ impl Host for GroupState {
             Plan::Output(o) => self.outputs.push(o),
             _ => return,
         }
-        self.queue.pop_front();
+        self.pop_queued();
     }
 
     fn start(&mut self, cmd: Command) {

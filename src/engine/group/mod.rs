@@ -83,9 +83,10 @@ pub struct GroupState {
     pub ot_check: [bool; AXES],
     /// Group index (0..95).
     pub index: usize,
-    /// Changes of the info other than its queue length and its running command's phase
-    /// and feed: a command started, the error record set or cleared, the running
-    /// command's end or the offset changed ([`GroupState::info_touched`]).
+    /// Changes of the info other than its running command's phase and feed: a command
+    /// queued, taken from the queue, started or ended, the queue dropped, the error
+    /// record set or cleared, the running command's end or the offset changed
+    /// ([`GroupState::info_touched`]).
     info_changes: u64,
     /// The own time of the newest running command (the back of `running`), kept by every
     /// writer of an own time, for the published key's check

@@ -81,6 +81,7 @@ impl GroupState {
         crate::fault::point("enqueue");
         let idx = cmd.index;
         self.queue.push_back(cmd);
+        self.info_touched();
         self.update_status();
         Ok(idx)
     }
@@ -137,26 +138,37 @@ impl GroupState {
     pub(super) fn pop_next(&mut self) -> Option<Command> {
         while let Some(front) = self.queue.front() {
             match front.plan {
-                Plan::Blend(on) => {
-                    self.blend_on = on;
-                    self.queue.pop_front();
-                }
+                Plan::Blend(on) => self.blend_on = on,
                 Plan::InPos(on, mask) => {
                     if on {
                         self.inpos_mask |= mask;
                     } else {
                         self.inpos_mask &= !mask;
                     }
-                    self.queue.pop_front();
                 }
-                Plan::Output(o) => {
-                    self.outputs.push(o);
-                    self.queue.pop_front();
-                }
-                _ => return self.queue.pop_front(),
+                Plan::Output(o) => self.outputs.push(o),
+                _ => return self.pop_queued(),
             }
+            self.pop_queued();
         }
         None
+    }
+
+    /// Takes the front of the queue (its length is part of the published info).
+    pub(super) fn pop_queued(&mut self) -> Option<Command> {
+        let cmd = self.queue.pop_front();
+        if cmd.is_some() {
+            self.info_touched();
+        }
+        cmd
+    }
+
+    /// Drops every queued command (its length is part of the published info).
+    pub(super) fn clear_queue(&mut self) {
+        if !self.queue.is_empty() {
+            self.queue.clear();
+            self.info_touched();
+        }
     }
 
     /// The next queued motion/delay command's plan, looking past queued switches.

@@ -107,7 +107,7 @@ impl GroupState {
             dec_s,
             block_end: at_block_end,
         });
-        self.queue.clear();
+        self.clear_queue();
         self.rate.pending_override = None;
         if at_block_end {
             self.queue_end = self.running.back().map_or(self.pos, |r| r.cmd.target);
@@ -132,7 +132,7 @@ impl GroupState {
         self.note_stopped();
         self.running.clear();
         self.info_touched();
-        self.queue.clear();
+        self.clear_queue();
         self.post_stopped();
         self.base = self.pos;
         self.queue_end = self.pos;

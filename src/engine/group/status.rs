@@ -184,16 +184,16 @@ impl GroupState {
     #[inline]
     fn key_words(&self) -> KeyWords {
         KeyWords {
-            queued: self.queue.len(),
             changes: self.info_changes,
         }
     }
 
-    /// Records a change of what the info shows other than the queue's length and the
-    /// running command's phase and feed: a command started, the error record set or
-    /// cleared, the running command's end (custom motion), the offset between user and
-    /// reference positions. Every writer of those calls it; test builds check after
-    /// every publication that an unchanged key really means an unchanged info.
+    /// Records a change of what the info shows other than the running command's phase
+    /// and feed: the queue's length (`enqueue`, `pop_queued`, `clear_queue`), a command
+    /// started or ended, the error record set or cleared, the running command's end
+    /// (custom motion), the offset between user and reference positions. Every writer of
+    /// those calls it; test builds check after every publication that an unchanged key
+    /// really means an unchanged info.
     pub(super) fn info_touched(&mut self) {
         self.info_changes = self.info_changes.wrapping_add(1);
     }
@@ -277,10 +277,7 @@ impl PublishedKey {
     /// Nothing published yet: no own time holds it.
     pub(super) const NONE: PublishedKey = PublishedKey {
         key: InfoKey {
-            words: KeyWords {
-                queued: 0,
-                changes: 0,
-            },
+            words: KeyWords { changes: 0 },
             running: false,
             phase: 0,
             feed: 0,
@@ -326,8 +323,6 @@ pub(super) struct InfoKey {
 /// The words of an [`InfoKey`] read straight from the group ([`GroupState::key_words`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct KeyWords {
-    /// Commands queued.
-    queued: usize,
     /// [`GroupState::info_touched`]'s count.
     changes: u64,
 }
