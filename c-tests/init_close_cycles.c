@@ -30,6 +30,22 @@ static double now_ms(void)
     return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
 }
 
+/* The thread count once joined threads have left it, within 5 s. pthread_join returns
+ * when the kernel clears the thread's id, a moment before the thread stops being counted
+ * in /proc/self/status: read at once, the last cycle's joined engine thread could still
+ * be counted. Returns the count then (the caller compares it with `want`). */
+static long threads_after_joins(long want)
+{
+    struct timespec ms = {0, 1000000};
+    long now = status_field("Threads:");
+    int i;
+    for (i = 0; i < 5000 && now != want; i++) {
+        nanosleep(&ms, NULL);
+        now = status_field("Threads:");
+    }
+    return now;
+}
+
 static int cmp(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -61,7 +77,7 @@ int main(int argc, char **argv)
         if (i == warm) rss_warm = status_field("VmRSS:");
     }
     {
-        long threads1 = status_field("Threads:");
+        long threads1 = threads_after_joins(threads0);
         long rss1 = status_field("VmRSS:");
         qsort(t, (size_t)n, sizeof(double), cmp);
         printf("%d init/close cycles: median %.3f ms, p99 %.3f ms, max %.3f ms\n",
