@@ -85,8 +85,9 @@ impl Channel {
     }
 
     /// Records a step of `dt` to the command set this tick instead of making it (a channel
-    /// at rest held at its command records nothing, as it would not step). Only the
-    /// output moves on; the command and the motor follow it when brought up to date.
+    /// at rest held at its command records nothing, as it would not step). Nothing of
+    /// the channel moves on: its output, command and motor follow the recorded steps
+    /// when it is brought up to date.
     #[inline]
     fn defer_step(&mut self, dt: f64, n: u64) {
         if !self.deferred.active {
@@ -94,6 +95,8 @@ impl Channel {
                 return;
             }
             self.begin_deferring(n);
+        } else {
+            self.debug_assert_next(n);
         }
         self.record(n);
     }
@@ -126,12 +129,19 @@ impl Channel {
     #[inline]
     pub fn record_step(&mut self, n: u64) {
         debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
+        self.debug_assert_next(n);
+        self.record(n);
+    }
+
+    /// Debug builds: step `n` follows the run's latest (the slots hold the last three
+    /// outputs only for consecutive steps).
+    #[inline]
+    fn debug_assert_next(&self, n: u64) {
         debug_assert_eq!(
             self.deferred.last.wrapping_add(1),
             n,
             "steps not consecutive"
         );
-        self.record(n);
     }
 
     /// Records this tick's command as deferred step `n`.
