@@ -165,7 +165,7 @@ impl GroupState {
     }
 
     /// What [`GroupState::info`] depends on that can change while the group runs: equal
-    /// keys mean equal infos, so publishing compares these few words instead of building
+    /// keys mean equal infos, so publishing compares a count of changes instead of building
     /// and comparing the whole info every tick. The rest of the info changes only with a
     /// command start (counted with the other changes, [`GroupState::info_touched`]) or
     /// a reset (which publishes afresh).
@@ -173,18 +173,10 @@ impl GroupState {
     pub(super) fn info_key(&self) -> InfoKey {
         let back = self.running.back();
         InfoKey {
-            words: self.key_words(),
+            changes: self.info_changes,
             running: back.is_some(),
             phase: back.map_or(0, motion_phase),
             feed: back.map_or(0, |r| info_feed(r).to_bits()),
-        }
-    }
-
-    /// The words of [`GroupState::info_key`] read straight from the group.
-    #[inline]
-    fn key_words(&self) -> KeyWords {
-        KeyWords {
-            changes: self.info_changes,
         }
     }
 
@@ -242,9 +234,9 @@ impl GroupState {
     }
 
     /// Whether [`GroupState::info_key`] is still the key last published, found without
-    /// building it: the words it reads straight from the group are the same (so no
-    /// command started or ended since: each counts as a change), and the own time of
-    /// the running command at the back, kept as `newest_own_time`, has not reached the
+    /// building it: the count of changes is the same (so no command started or ended
+    /// since: each counts as a change), and the own time of the running command at the
+    /// back, kept as `newest_own_time`, has not reached the
     /// end of the stretch over which its phase and feed stay as published
     /// ([`key_holds_until`]); with no command running that end is infinite. Nothing was
     /// published yet: the end is −∞, which no own time is below.
@@ -257,7 +249,7 @@ impl GroupState {
             "group {}: newest_own_time is stale",
             self.index
         );
-        p.key.words == self.key_words() && self.newest_own_time < p.until
+        p.key.changes == self.info_changes && self.newest_own_time < p.until
     }
 }
 
@@ -277,7 +269,7 @@ impl PublishedKey {
     /// Nothing published yet: no own time holds it.
     pub(super) const NONE: PublishedKey = PublishedKey {
         key: InfoKey {
-            words: KeyWords { changes: 0 },
+            changes: 0,
             running: false,
             phase: 0,
             feed: 0,
@@ -313,18 +305,12 @@ fn key_holds_until(r: &Running) -> f64 {
 /// [`GroupState::info_key`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct InfoKey {
-    words: KeyWords,
+    /// [`GroupState::info_touched`]'s count.
+    changes: u64,
     /// What the running command at the back of `running` shows (none: false, 0, 0).
     running: bool,
     phase: i32,
     feed: u64,
-}
-
-/// The words of an [`InfoKey`] read straight from the group ([`GroupState::key_words`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct KeyWords {
-    /// [`GroupState::info_touched`]'s count.
-    changes: u64,
 }
 
 /// `COMMAND_INFO.nMotionPhase` of a running command: 0 accelerating, 1 at speed, 2
