@@ -20,20 +20,12 @@ fn threads() -> Vec<String> {
     v
 }
 
-/// This process's threads once those that were joined have left `/proc`, within 5 s.
-/// Joining a thread returns when the kernel has cleared its thread id, a moment before
-/// it takes the thread's entry out of `/proc/self/task`: read at once, a joined thread
-/// could still be listed (1 run in 2 of this test on a 2-CPU VM, before and after the
-/// same change of the engine). The threads never listed again are what is compared.
+/// This process's threads once those that were joined have left `/proc`
+/// ([`common::threads_settled`]: `pthread_join` returns a moment before the kernel takes
+/// the joined thread's entry out; read at once, it could still be listed).
 fn threads_after_joins(expected: &[String]) -> Vec<String> {
-    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(5);
-    loop {
-        let now = threads();
-        if now == expected || std::time::Instant::now() > deadline {
-            return now;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(1));
-    }
+    common::threads_settled(expected.len());
+    threads()
 }
 
 #[test]
