@@ -27,13 +27,17 @@ use MCCLPCI_IMP::planner::{Path, PathMove, Shape};
 use MCCLPCI_IMP::vendor::consts::*;
 use MCCLPCI_IMP::vendor::SYS_CARD_CONFIG;
 
-/// Ticks per engine measurement (1 ms each).
-const TICKS: u32 = 2_000;
+/// Group-ticks a round's engine measurement runs (1 ms ticks): 2,000 ticks of 48 groups,
+/// [`MAX_ROUND_TICKS`] of 1 group (see [`round_ticks`]).
+const ROUND_GROUP_TICKS: u32 = 96_000;
+/// The most ticks a round runs: the rounds of 1 group, 2 × 31 × 20,000 ticks, stay
+/// within the line.
+const MAX_ROUND_TICKS: u32 = 20_000;
 /// Alternating rounds: each measures the engine, the floor and the engine publishing.
 const ROUNDS: u32 = 31;
 /// Line length per axis (UU) and feed (UU/s): X, Y and Z compose the path, 10000·√3 UU
-/// at 10 UU/s, about 1732 s (1,732,000 ticks; the rounds run 124,400 and the profile
-/// mode 150,400), so the groups cruise through every measurement.
+/// at 10 UU/s, about 1732 s (1,732,000 ticks; the rounds of 1 group run 1,242,400 and
+/// the profile mode 150,400), so the groups cruise through every measurement.
 const LEN: f64 = 10_000.0;
 const FEED: f64 = 10.0;
 /// Ticks of the profile mode (`MCCL_TICK_FLOOR_PROFILE`).
@@ -125,16 +129,28 @@ fn thread_cpu_ns() -> u64 {
 
 /// Engine time per tick, µs, with or without a snapshot published every tick: (wall,
 /// CPU time of the engine thread, read on its clock `engine`).
-fn engine_tick_us(live: bool, engine: libc::clockid_t) -> (f64, f64) {
+/// Ticks per engine measurement of `groups` groups, the floor's the same.
+///
+/// Every call of `MCC_TimeDelay` costs the engine a fixed amount besides its ticks (its
+/// thread woken, the run's end published, the program woken; measured by
+/// [`call_cost_us`], about 5.5 µs of engine CPU time on this VM), which 2,000 ticks of 1
+/// group (about 0.2 ms) would carry as 3 % of the tick: a round of 1 group runs
+/// 20,000 ticks, and the call's cost is printed on its own. At 48 groups 2,000 ticks
+/// carry it as 0.2 %, and a longer round would run the host's speed changes into it.
+fn round_ticks(groups: u16) -> u32 {
+    (ROUND_GROUP_TICKS / u32::from(groups.max(1))).min(MAX_ROUND_TICKS)
+}
+
+fn engine_tick_us(live: bool, engine: libc::clockid_t, ticks: u32) -> (f64, f64) {
     let shared = MCCLPCI_IMP::system::active().expect("running system");
     shared
         .live_snapshots
         .store(live, std::sync::atomic::Ordering::Relaxed);
     let c = cpu_clock_ns(engine);
     let t = Instant::now();
-    MCC_TimeDelay(TICKS);
-    let us = t.elapsed().as_secs_f64() / f64::from(TICKS) * 1e6;
-    let cpu = (cpu_clock_ns(engine) - c) as f64 / f64::from(TICKS) / 1e3;
+    MCC_TimeDelay(ticks);
+    let us = t.elapsed().as_secs_f64() / f64::from(ticks) * 1e6;
+    let cpu = (cpu_clock_ns(engine) - c) as f64 / f64::from(ticks) / 1e3;
     shared
         .live_snapshots
         .store(false, std::sync::atomic::Ordering::Relaxed);
@@ -143,7 +159,7 @@ fn engine_tick_us(live: bool, engine: libc::clockid_t) -> (f64, f64) {
 
 /// Floor time per tick, µs: `groups` moves of 8 axes sampled and rounded to pulses:
 /// (wall, CPU time of this thread).
-fn floor_tick_us(groups: usize, t0: f64) -> (f64, f64) {
+fn floor_tick_us(groups: usize, t0: f64, ticks: u32) -> (f64, f64) {
     let start = [0.0; 8];
     let end = [LEN; 8];
     let moves: Vec<PathMove> = (0..groups)
@@ -157,7 +173,7 @@ fn floor_tick_us(groups: usize, t0: f64) -> (f64, f64) {
     let mut pulses = vec![[0i64; 8]; groups];
     let c = thread_cpu_ns();
     let t = Instant::now();
-    for k in 0..TICKS {
+    for k in 0..ticks {
         let tk = t0 + f64::from(k) * 1e-3;
         for (m, p) in moves.iter().zip(pulses.iter_mut()) {
             m.sample_into(black_box(tk), &mut pos, &mut vel);
@@ -168,8 +184,8 @@ fn floor_tick_us(groups: usize, t0: f64) -> (f64, f64) {
         black_box(&mut pulses);
         black_box(&vel);
     }
-    let wall = t.elapsed().as_secs_f64() / f64::from(TICKS) * 1e6;
-    let cpu = (thread_cpu_ns() - c) as f64 / f64::from(TICKS) / 1e3;
+    let wall = t.elapsed().as_secs_f64() / f64::from(ticks) * 1e6;
+    let cpu = (thread_cpu_ns() - c) as f64 / f64::from(ticks) / 1e3;
     (wall, cpu)
 }
 
@@ -213,15 +229,43 @@ impl Rounds {
     }
 }
 
-/// The rounds of `groups` groups: (wall time, CPU time).
-fn measure(groups: u16) -> (Rounds, Rounds) {
+/// Engine CPU time of one call of `MCC_TimeDelay(1)`, µs (median of 31 batches of 200
+/// calls): one tick and what every call costs besides its ticks.
+fn call_cost_us(engine: libc::clockid_t) -> f64 {
+    const CALLS: u32 = 200;
+    median(
+        (0..ROUNDS)
+            .map(|_| {
+                let c = cpu_clock_ns(engine);
+                for _ in 0..CALLS {
+                    MCC_TimeDelay(1);
+                }
+                (cpu_clock_ns(engine) - c) as f64 / f64::from(CALLS) / 1e3
+            })
+            .collect(),
+    )
+}
+
+/// What the rounds of some groups gave.
+struct Measured {
+    /// Timed by wall time.
+    wall: Rounds,
+    /// Timed by the CPU time of the thread that runs it.
+    cpu: Rounds,
+    /// [`call_cost_us`] with the groups moving.
+    call_us: f64,
+}
+
+/// The rounds of `groups` groups.
+fn measure(groups: u16) -> Measured {
     let (mut wall, mut cpu) = (Vec::new(), Vec::new());
     start(groups);
     let engine = engine_cpu_clock();
+    let ticks = round_ticks(groups);
     for round in 0..ROUNDS {
-        let (we, ce) = engine_tick_us(false, engine);
-        let (wf, cf) = floor_tick_us(usize::from(groups), 1.0 + f64::from(round));
-        let (wp, cp) = engine_tick_us(true, engine);
+        let (we, ce) = engine_tick_us(false, engine, ticks);
+        let (wf, cf) = floor_tick_us(usize::from(groups), 1.0 + f64::from(round), ticks);
+        let (wp, cp) = engine_tick_us(true, engine, ticks);
         wall.push(Round {
             engine: we,
             publishing: wp,
@@ -233,12 +277,17 @@ fn measure(groups: u16) -> (Rounds, Rounds) {
             floor: cf,
         });
     }
+    let call_us = call_cost_us(engine);
     assert!(
         (0..groups).all(|g| MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus(g) == GMS_RUNNING),
         "every group still moving during the measurement"
     );
     MCC_CloseSystem();
-    (Rounds(wall), Rounds(cpu))
+    Measured {
+        wall: Rounds(wall),
+        cpu: Rounds(cpu),
+        call_us,
+    }
 }
 
 /// `MCCL_TICK_FLOOR_PROFILE=<groups>[,live]`: only the engine, `groups` groups for
@@ -269,15 +318,15 @@ fn main() {
     if let Ok(spec) = std::env::var("MCCL_TICK_FLOOR_PROFILE") {
         return profile(&spec);
     }
-    let (wall48, cpu48) = measure(48);
-    let (wall1, cpu1) = measure(1);
+    let m48 = measure(48);
+    let m1 = measure(1);
+    let (cpu48, cpu1) = (&m48.cpu, &m1.cpu);
     println!(
-        "tick cost, CPU time of the thread that runs it (medians of {ROUNDS} alternating rounds of {TICKS} ticks):"
+        "tick cost, CPU time of the thread that runs it (medians of {ROUNDS} alternating rounds of {} ticks at 48 groups, {} at 1 group):",
+        round_ticks(48),
+        round_ticks(1)
     );
-    for (name, r) in [
-        ("48 groups x 8 axes", &cpu48),
-        ("1 group x 8 axes  ", &cpu1),
-    ] {
+    for (name, r) in [("48 groups x 8 axes", cpu48), ("1 group x 8 axes  ", cpu1)] {
         println!(
             "  {name}: engine {:.3} us, publishing every tick {:.3} us, floor {:.4} us",
             r.median(|r| r.engine),
@@ -299,14 +348,18 @@ fn main() {
     );
     println!(
         "wall time: engine/floor 48 groups {:.2}, 1 group {:.2}; publishing {:.2}, {:.2}",
-        wall48.ratio(),
-        wall1.ratio(),
-        wall48.ratio_publishing(),
-        wall1.ratio_publishing()
+        m48.wall.ratio(),
+        m1.wall.ratio(),
+        m48.wall.ratio_publishing(),
+        m1.wall.ratio_publishing()
+    );
+    println!(
+        "one call of MCC_TimeDelay(1), 1 group moving: {:.2} us of engine CPU time (the tick and what every call costs besides its ticks; for information)",
+        m1.call_us
     );
     println!(
         "fast clock: {:.0}x real time at 48 groups, {:.0}x at 1 group (1 ms ticks, wall time; for information)",
-        1e3 / wall48.median(|r| r.engine),
-        1e3 / wall1.median(|r| r.engine)
+        1e3 / m48.wall.median(|r| r.engine),
+        1e3 / m1.wall.median(|r| r.engine)
     );
 }
