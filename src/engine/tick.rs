@@ -7,7 +7,7 @@ use super::homing::control::apply_homing;
 use super::shared::Shared;
 use super::{command, isr, snapshot};
 use crate::config::AXES;
-use crate::machine::deferred::Recording;
+use crate::machine::deferred::{DeferredSteps, Recording};
 use crate::machine::Machine;
 use parking_lot::MutexGuard;
 use std::sync::atomic::Ordering;
@@ -197,7 +197,7 @@ impl Shared {
             }
         }
         // Every card that did not defer is up to date now.
-        machine.set_deferred(deferred.then_some(dt), recording);
+        machine.set_deferred(deferred.then_some(DeferredSteps { dt, last: n }), recording);
         if checks {
             self.safety(machine, groups, full, dt);
         }

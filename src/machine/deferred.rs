@@ -33,15 +33,16 @@ use crate::config::{AXES, CARDS};
 /// The steps of a run are numbered by the engine's tick (consecutive: a card that does
 /// not defer at a tick brings its channels up to date first). Step `n` records its
 /// output in `outputs[n % 4]`, which also holds the two outputs before the run's first
-/// step, so that the last three outputs are always there; the run is `first..=last`.
-/// Recording a step is then two stores and the range, whatever the run's length.
+/// step, so that the last three outputs are always there. The run is `first..=` the
+/// machine's last deferred step ([`DeferredSteps::last`]): every channel that defers
+/// records at every tick that defers. Recording a step is then one store and the
+/// window's check, whatever the run's length.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Deferred {
     /// Whether steps are deferred (the channel is not up to date).
     active: bool,
-    /// The number of the run's first step and of its latest.
+    /// The number of the run's first step.
     first: u64,
-    last: u64,
     /// The outputs of the latest steps, step `n`'s at `n % 4`.
     outputs: [i64; 4],
     /// Outputs that lie in the index interval of `start`, as [`OutputWindow`] checks
@@ -62,7 +63,6 @@ impl Deferred {
     pub(super) const NONE: Deferred = Deferred {
         active: false,
         first: 0,
-        last: 0,
         outputs: [0; 4],
         window: OutputWindow::NONE,
         passed: false,
@@ -82,6 +82,7 @@ impl Channel {
     /// deferring or at rest has none).
     #[inline]
     pub fn step_or_defer(&mut self, dt: f64, n: u64) -> bool {
+        // (The steps of a run are consecutive: `Machine::set_deferred` asserts it.)
         if self.ideal {
             self.defer_step(dt, n);
             false
@@ -102,8 +103,6 @@ impl Channel {
                 return;
             }
             self.begin_deferring(n);
-        } else {
-            self.debug_assert_next(n);
         }
         self.record(n);
     }
@@ -121,7 +120,6 @@ impl Channel {
         self.deferred = Deferred {
             active: true,
             first: n,
-            last: n,
             outputs,
             window,
             passed: false,
@@ -138,19 +136,7 @@ impl Channel {
     #[inline]
     pub fn record_step(&mut self, n: u64) {
         debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
-        self.debug_assert_next(n);
         self.record(n);
-    }
-
-    /// Debug builds: step `n` follows the run's latest (the slots hold the last three
-    /// outputs only for consecutive steps).
-    #[inline]
-    fn debug_assert_next(&self, n: u64) {
-        debug_assert_eq!(
-            self.deferred.last.wrapping_add(1),
-            n,
-            "steps not consecutive"
-        );
     }
 
     /// Records this tick's command as deferred step `n`.
@@ -159,7 +145,6 @@ impl Channel {
         let cmd = self.next;
         let d = &mut self.deferred;
         d.outputs[slot(n)] = cmd;
-        d.last = n;
         if !d.window.holds(cmd) {
             self.look_outside_window(cmd);
         }
@@ -205,25 +190,27 @@ impl Channel {
         self.deferred.active
     }
 
-    /// Brings a channel with deferred steps of `dt` up to date: every field as the steps
-    /// would have left it (but the last index count of a pulse passed before the last
-    /// step, see the module). Returns whether the deferred steps passed an index pulse.
-    pub fn catch_up(&mut self, dt: f64) -> bool {
+    /// Brings a channel with deferred steps up to date (`steps`: their period and the
+    /// number of the last): every field as the steps would have left it (but the last
+    /// index count of a pulse passed before the last step, see the module). Returns
+    /// whether the deferred steps passed an index pulse.
+    pub fn catch_up(&mut self, steps: DeferredSteps) -> bool {
+        let DeferredSteps { dt, last } = steps;
         let d = self.deferred;
         if !d.active {
             return false;
         }
         self.deferred.active = false;
         // The last output and the two before it.
-        self.out = d.outputs[slot(d.last)];
+        self.out = d.outputs[slot(last)];
         let history = (
-            d.outputs[slot(d.last.wrapping_sub(1))],
-            d.outputs[slot(d.last.wrapping_sub(2))],
+            d.outputs[slot(last.wrapping_sub(1))],
+            d.outputs[slot(last.wrapping_sub(2))],
         );
         let passed = d.passed;
         // The last step, from the state the one before it left (`begin_step`); the
         // output is the last step's already.
-        let from = if d.last == d.first {
+        let from = if last == d.first {
             self.prev_levels = d.step_levels;
             d.start
         } else {
@@ -238,6 +225,16 @@ impl Channel {
         self.end_step(dt, true);
         passed
     }
+}
+
+/// The steps channels defer while the engine keeps the machine's lock: their period and
+/// the number (the engine's tick) of the latest.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeferredSteps {
+    /// The period of the steps, s.
+    pub dt: f64,
+    /// The number of the latest step.
+    pub last: u64,
 }
 
 /// Outputs `first..=last` as one check: `output - first`, as u64, below `len`.
@@ -308,21 +305,33 @@ impl Recording {
     }
 }
 
-/// [`Machine::catch_up`] of one card's channels: `dt` the deferred steps' period.
-pub fn catch_up_card(chans: &mut [Channel; AXES], triggers: &mut CardTriggers, dt: f64) {
+/// [`Machine::catch_up`] of one card's channels.
+pub fn catch_up_card(
+    chans: &mut [Channel; AXES],
+    triggers: &mut CardTriggers,
+    steps: DeferredSteps,
+) {
     for (ch, chan) in chans.iter_mut().enumerate() {
-        if chan.catch_up(dt) {
+        if chan.catch_up(steps) {
             triggers.index_status[ch] = true;
         }
     }
 }
 
 impl Machine {
-    /// Notes whether channels of the machine defer steps of `dt` after this tick (`None`:
+    /// Notes whether channels of the machine defer `steps` after this tick (`None`:
     /// every channel is up to date), and which of them [record](Recording).
-    pub fn set_deferred(&mut self, dt: Option<f64>, recording: Recording) {
-        self.deferred = dt;
-        self.recording = if dt.is_some() {
+    pub fn set_deferred(&mut self, steps: Option<DeferredSteps>, recording: Recording) {
+        // The slots hold the last three outputs only for consecutive steps.
+        if let (Some(before), Some(now)) = (self.deferred, steps) {
+            debug_assert_eq!(
+                before.last.wrapping_add(1),
+                now.last,
+                "steps not consecutive"
+            );
+        }
+        self.deferred = steps;
+        self.recording = if steps.is_some() {
             recording
         } else {
             Recording::default()
@@ -334,21 +343,21 @@ impl Machine {
     /// no channel defers.
     #[inline]
     pub fn catch_up(&mut self) {
-        if let Some(dt) = self.deferred.take() {
+        if let Some(steps) = self.deferred.take() {
             self.recording = Recording::default();
-            self.catch_up_all(dt);
+            self.catch_up_all(steps);
         }
     }
 
     #[inline(never)]
-    fn catch_up_all(&mut self, dt: f64) {
+    fn catch_up_all(&mut self, steps: DeferredSteps) {
         for (chans, triggers) in self.cards.iter_mut().zip(self.triggers.iter_mut()) {
-            catch_up_card(chans, triggers, dt);
+            catch_up_card(chans, triggers, steps);
         }
     }
 
-    /// The period of the steps deferred, when some channel defers.
-    pub fn deferred(&self) -> Option<f64> {
+    /// The steps deferred, when some channel defers.
+    pub fn deferred(&self) -> Option<DeferredSteps> {
         self.deferred
     }
 
@@ -364,6 +373,11 @@ mod tests {
     use crate::config::{default_encoder_config, default_mac_param};
     use crate::machine::ChannelSpec;
     use crate::vendor::SYS_MAC_PARAM;
+
+    /// Deferred steps of 1 ms, the last numbered `last`.
+    fn steps(last: u64) -> DeferredSteps {
+        DeferredSteps { dt: 0.001, last }
+    }
 
     /// A channel as `Debug` shows it, without what only deferring keeps and the last index
     /// count (compared where it is read, below).
@@ -418,7 +432,7 @@ mod tests {
                 n = n.wrapping_add(1);
             }
             let deferred = b.deferring();
-            let b_passed = b.catch_up(0.001);
+            let b_passed = b.catch_up(steps(n.wrapping_sub(1)));
             assert!(!b.deferring());
             assert_eq!(shown(&a), shown(&b), "run {run}");
             assert_eq!(b_passed, passed, "run {run}: an index pulse passed");
@@ -478,7 +492,7 @@ mod tests {
                     }
                     assert!(b.deferring() || to == from);
                     let what = format!("shift {shift}, {from} -> {to}");
-                    assert_eq!(b.catch_up(0.001), passed, "{what}");
+                    assert_eq!(b.catch_up(steps(n - 1)), passed, "{what}");
                     assert_eq!(shown(&a), shown(&b), "{what}");
                     runs += 1;
                     passed_runs += usize::from(passed);
@@ -510,7 +524,10 @@ mod tests {
         c.command(5);
         c.step_or_defer(0.001, 1);
         assert!(c.deferring());
-        assert!(!c.catch_up(0.001), "no pulse between 0 and 5 (every 2000)");
+        assert!(
+            !c.catch_up(steps(1)),
+            "no pulse between 0 and 5 (every 2000)"
+        );
         assert_eq!(
             (c.command_pulses(), c.output_pulses(), c.actual_pulses()),
             (5, 5, 5.0)
@@ -536,8 +553,22 @@ mod tests {
             records.record_step(n);
             assert_eq!(format!("{asks:?}"), format!("{records:?}"), "at {cmd}");
         }
-        assert_eq!(asks.catch_up(0.001), records.catch_up(0.001));
+        assert_eq!(asks.catch_up(steps(15)), records.catch_up(steps(15)));
         assert_eq!(format!("{asks:?}"), format!("{records:?}"));
+    }
+
+    #[test]
+    #[cfg(debug_assertions)]
+    #[should_panic(expected = "steps not consecutive")]
+    fn a_deferred_tick_that_skips_a_number_is_caught_in_debug_builds() {
+        // The runs' last step is the machine's: a tick missed between two deferring
+        // ticks would leave the slots of the last three outputs wrong.
+        let mac = [[default_mac_param(); AXES]; CARDS];
+        let enc = [[default_encoder_config(); AXES]; CARDS];
+        let mut m = Machine::new(&mac, &enc, |_, _| ChannelSpec::default(), |_| false, 1);
+        m.set_deferred(Some(steps(5)), Recording::default());
+        m.set_deferred(Some(steps(6)), Recording::default());
+        m.set_deferred(Some(steps(8)), Recording::default());
     }
 
     #[test]

@@ -862,8 +862,8 @@ pub struct Machine {
     pub triggers: Vec<triggers::CardTriggers>,
     /// Some channel's pulse speed or acceleration limit is below the default.
     pub pulse_limits_set: bool,
-    /// The period of the steps channels defer, while some may ([`deferred`]).
-    deferred: Option<f64>,
+    /// The steps channels defer, while some may ([`deferred`]).
+    deferred: Option<deferred::DeferredSteps>,
     /// The channels known to record their deferred steps ([`deferred::Recording`]).
     recording: deferred::Recording,
 }
