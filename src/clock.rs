@@ -418,6 +418,14 @@ impl Clock {
         }
     }
 
+    /// Under a virtual clock, during a tick: whether the tick after it is granted already
+    /// and is not the last of its run. Never under the realtime clock.
+    pub fn next_is_inside_run(&self) -> bool {
+        self.mode.virtual_time()
+            && !self.stop.load(Ordering::Acquire)
+            && self.ticks().saturating_add(2) < self.run_until.load(Ordering::Acquire)
+    }
+
     /// Under a virtual clock: whether the tick now running is the last one granted (the
     /// waiting program resumes after it). Always true in realtime mode.
     pub fn last_of_run(&self) -> bool {

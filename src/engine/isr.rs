@@ -183,22 +183,26 @@ impl Shared {
     /// Runs every card's peripherals for one tick of `dt_ns` and takes the causes raised
     /// since the last delivery into `out` (cleared first). A watchdog that expired resets
     /// its card here (its groups abort and record [`ERR_WATCHDOG_RESET`], servo-on and
-    /// position-ready go off).
+    /// position-ready go off). Returns whether every card was idle (nothing ran, no group
+    /// was touched).
     #[inline]
     pub fn tick_peripherals(
         &self,
         dt_ns: u64,
         out: &mut Collected,
         groups: &mut [super::group::GroupState],
-    ) {
+    ) -> bool {
         out.clear();
+        let mut idle = true;
         for (card, p) in self.periph.iter().enumerate() {
             if p.count_idle_tick() {
                 // Runs when the card is next locked (see `PeriphCell`).
                 continue;
             }
+            idle = false;
             self.tick_busy_card(card, p, dt_ns, out, groups);
         }
+        idle
     }
 
     /// [`Shared::tick_peripherals`] of a card that is not idle: its tick under its lock.

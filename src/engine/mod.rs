@@ -20,6 +20,7 @@
 //! one card), `group/` (one group), `thread.rs` (real-time settings of the thread).
 
 pub mod command;
+mod cruise;
 pub mod custom;
 pub mod cycle;
 pub mod group;

@@ -150,30 +150,40 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
                 return;
             }
             Next::Tick => {
-                let published = shared.tick_or_recover(&mut held, &mut interrupts);
-                // Quiet: no stage below has anything to run, and the locks stay held into
-                // the next tick.
-                let quiet = shared.quiet_between_ticks();
-                if !quiet {
-                    super::tick::release(&mut held);
-                    // The program's kinematics for the next tick, without any lock.
-                    shared.kinematics_stage();
-                }
-                shared.check_watch();
-                if !published {
-                    shared.end_of_run(held.as_mut());
-                }
-                if !quiet {
-                    if shared.tracing && !interrupts.is_empty() {
-                        shared.trace_interrupts(&interrupts);
+                // A tick, and while each ends quiet with the next one a cruise tick
+                // (`cruise.rs`), the ticks after it, back to back.
+                let mut cruise = false;
+                loop {
+                    let published = shared.tick_or_recover(&mut held, &mut interrupts, cruise);
+                    // Quiet: no stage below has anything to run, and the locks stay held
+                    // into the next tick.
+                    let quiet = shared.quiet_between_ticks();
+                    if !quiet {
+                        super::tick::release(&mut held);
+                        // The program's kinematics for the next tick, without any lock.
+                        shared.kinematics_stage();
                     }
-                    // Custom-motion callbacks, then the interrupt callbacks collected in
-                    // the tick, run here without any lock.
-                    shared.custom_stage();
-                    shared.isr.deliver(&interrupts, &shared.clock);
-                    shared.call_cycle_routines();
+                    shared.check_watch();
+                    if !published {
+                        shared.end_of_run(held.as_mut());
+                    }
+                    if !quiet {
+                        if shared.tracing && !interrupts.is_empty() {
+                            shared.trace_interrupts(&interrupts);
+                        }
+                        // Custom-motion callbacks, then the interrupt callbacks collected
+                        // in the tick, run here without any lock.
+                        shared.custom_stage();
+                        shared.isr.deliver(&interrupts, &shared.clock);
+                        shared.call_cycle_routines();
+                    }
+                    // Asked before the tick is counted: the next one is then due at once.
+                    cruise = quiet && shared.cruise_next(&mut held);
+                    shared.clock.tick_done();
+                    if !cruise {
+                        break;
+                    }
                 }
-                shared.clock.tick_done();
             }
         }
     }

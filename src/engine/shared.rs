@@ -90,6 +90,11 @@ pub struct Shared {
     pub(super) trace: Mutex<Option<trace::Trace>>,
     /// Whether `trace` is `Some` (read without its lock on every tick).
     pub(super) tracing: bool,
+    /// Whether quiet ticks may be cruise ticks (`cruise.rs`; `MCCL_CRUISE=0` turns them
+    /// off).
+    pub(super) cruise_enabled: bool,
+    /// The cruise ticks run (written by the engine thread alone).
+    pub(super) cruise_ticks: AtomicU64,
     /// What an observer (the browser panel) sees beyond the snapshots (`view.rs`).
     pub view: super::view::ViewCell,
 }
@@ -161,6 +166,8 @@ impl Shared {
             mc3b_cards: AtomicU32::new(0),
             mc3b_home_card: AtomicI32::new(-1),
             tracing: trace.is_some(),
+            cruise_enabled: super::cruise::enabled_by_env(),
+            cruise_ticks: AtomicU64::new(0),
             trace: Mutex::new(trace),
             view: super::view::ViewCell::default(),
         }

@@ -8,7 +8,7 @@ use super::shared::Shared;
 use super::{command, isr, snapshot};
 use crate::config::AXES;
 use crate::machine::deferred::{DeferredSteps, Recording};
-use crate::machine::Machine;
+use crate::machine::{Channel, Machine};
 use parking_lot::MutexGuard;
 use std::sync::atomic::Ordering;
 use std::time::Duration;
@@ -18,17 +18,23 @@ use std::time::Duration;
 pub const PUBLISH_EVERY: u64 = 16;
 
 impl Shared {
-    /// [`Shared::tick`], and after a panic inside it (a defect of the library) a defined
-    /// state instead of a dead engine thread: every group stops where it stands, drops
-    /// its queue and records [`safety::ERR_INTERNAL`]; the clock goes on. The locks the
-    /// tick held were released while unwinding (parking_lot locks do not poison).
+    /// [`Shared::tick`] (or with `cruise`, when the locks are held, a
+    /// [cruise tick](Shared::cruise_tick)), and after a panic inside it (a defect of the
+    /// library) a defined state instead of a dead engine thread: every group stops where
+    /// it stands, drops its queue and records [`safety::ERR_INTERNAL`]; the clock goes on.
+    /// The locks the tick held were released while unwinding (parking_lot locks do not
+    /// poison).
     pub(super) fn tick_or_recover<'a>(
         &'a self,
         held: &mut Option<Held<'a>>,
         interrupts: &mut isr::Collected,
+        cruise: bool,
     ) -> bool {
-        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.tick(held, interrupts)))
-        {
+        let tick = || match held.as_mut() {
+            Some(h) if cruise => self.cruise_tick(h, interrupts),
+            _ => self.tick(held, interrupts),
+        };
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(tick)) {
             Ok(published) => published,
             Err(_) => {
                 // Channels with deferred steps up to date before the machine is let go.
@@ -68,6 +74,8 @@ impl Shared {
         // The locks were kept from the last tick: no other thread looked in between.
         let carried = held.is_some();
         let held = held.get_or_insert_with(|| Held::lock(self));
+        // What this tick changes, no cruise plan made before it covers.
+        held.cruise = 0;
         let machine = &mut *held.machine;
         let dry = self.dry_run.load(Ordering::Relaxed);
         let homed = self.tick_homing(machine, dt);
@@ -95,11 +103,7 @@ impl Shared {
             if !dry {
                 g.command_channels(&mut machine.cards);
             }
-            if full {
-                self.publish(g);
-            } else {
-                self.status[g.index].store(g.status(), Ordering::Release);
-            }
+            self.publish_or_status(g, full);
             if let Some(t) = trace.as_deref_mut() {
                 t.row(t_ns(), g);
                 t.group_events(t_ns(), g);
@@ -141,33 +145,11 @@ impl Shared {
                 .idle_cards
                 .idle(card, || !triggers.armed(&settings.error_threshold));
             // Whether a channel of the card stepped (its index pulses to note).
-            let mut stepped = false;
-            if defer && idle {
-                // The channels that recorded at the last tick record again without
-                // asking; the others step or start recording.
-                let known = recorded.card(card);
-                let mut now = known;
-                if known == 0xFF {
-                    // Every channel records (the card's whole machine moving): a loop of
-                    // its own, without the bit tests, which LLVM unrolls (the loop
-                    // below alone made the 1-group tick 118 instructions longer).
-                    for chan in chans.iter_mut() {
-                        chan.record_step(n);
-                    }
-                } else {
-                    for (ch, chan) in chans.iter_mut().enumerate() {
-                        if known >> ch & 1 == 1 {
-                            chan.record_step(n);
-                        } else {
-                            stepped |= chan.step_or_defer(dt, n);
-                            if chan.deferring() {
-                                now |= 1 << ch;
-                            }
-                        }
-                    }
-                }
+            let stepped = if defer && idle {
+                let (stepped, now) = defer_idle_card(chans, recorded.card(card), dt, n);
                 recording.set_card(card, now);
                 deferred = true;
+                stepped
             } else {
                 if let Some(d) = pending {
                     crate::machine::deferred::catch_up_card(chans, triggers, d);
@@ -175,8 +157,8 @@ impl Shared {
                 for chan in chans.iter_mut() {
                     chan.step_commanded(dt);
                 }
-                stepped = true;
-            }
+                true
+            };
             if idle {
                 if stepped {
                     triggers.tick_idle(chans);
@@ -306,14 +288,53 @@ impl Shared {
     }
 }
 
+/// The steps of an idle card's channels on a tick that defers, tick `n` of `dt`: the
+/// channels that recorded at the last tick (`known`, bit n for channel n) record again
+/// without asking; the others step or start recording. Returns whether a channel stepped
+/// (its index pulses to note) and the channels recording now.
+#[inline(always)]
+pub(super) fn defer_idle_card(
+    chans: &mut [Channel; AXES],
+    known: u8,
+    dt: f64,
+    n: u64,
+) -> (bool, u8) {
+    let (mut stepped, mut now) = (false, known);
+    if known == 0xFF {
+        // Every channel records (the card's whole machine moving): a loop of its own,
+        // without the bit tests, which LLVM unrolls (the loop below alone made the
+        // 1-group tick 118 instructions longer).
+        for chan in chans.iter_mut() {
+            chan.record_step(n);
+        }
+    } else {
+        for (ch, chan) in chans.iter_mut().enumerate() {
+            if known >> ch & 1 == 1 {
+                chan.record_step(n);
+            } else {
+                stepped |= chan.step_or_defer(dt, n);
+                if chan.deferring() {
+                    now |= 1 << ch;
+                }
+            }
+        }
+    }
+    (stepped, now)
+}
+
 /// The machine's and the groups' locks as the engine thread holds them through a tick
 /// and, while [`Shared::quiet_between_ticks`], from one virtual tick to the next.
 pub(super) struct Held<'a> {
     // Fields drop in order: the groups, then the machine (the reverse of locking).
-    groups: MutexGuard<'a, Vec<GroupState>>,
-    machine: MutexGuard<'a, Machine>,
+    pub(super) groups: MutexGuard<'a, Vec<GroupState>>,
+    pub(super) machine: MutexGuard<'a, Machine>,
     /// The cards found with nothing armed since the locks were taken.
-    idle_cards: IdleCards,
+    pub(super) idle_cards: IdleCards,
+    /// How many more ticks the groups cruise for certain ([`Shared::cruise_next`]), as
+    /// planned since the last tick that was not a cruise tick.
+    pub(super) cruise: u32,
+    /// Quiet ticks to let pass before planning again, after a plan found none.
+    pub(super) replan_in: u32,
 }
 
 impl<'a> Held<'a> {
@@ -325,6 +346,8 @@ impl<'a> Held<'a> {
             groups,
             machine,
             idle_cards: IdleCards::default(),
+            cruise: 0,
+            replan_in: 0,
         }
     }
 
@@ -349,13 +372,13 @@ impl<'a> Held<'a> {
 ///
 /// [`CardTriggers::armed`]: crate::machine::triggers::CardTriggers::armed
 #[derive(Debug, Default, Clone, Copy)]
-struct IdleCards([bool; crate::config::CARDS]);
+pub(super) struct IdleCards([bool; crate::config::CARDS]);
 
 impl IdleCards {
     /// Whether `card` has nothing armed: known, or found by `look` (and then known from
     /// now on, if so; a card past the last is always looked at).
     #[inline]
-    fn idle(&mut self, card: usize, look: impl FnOnce() -> bool) -> bool {
+    pub(super) fn idle(&mut self, card: usize, look: impl FnOnce() -> bool) -> bool {
         match self.0.get_mut(card) {
             Some(true) => true,
             Some(known) => {

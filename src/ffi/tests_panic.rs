@@ -101,3 +101,51 @@ fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
     assert!(stopped_at >= before && stopped_at < 10.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
+
+#[test]
+fn a_panic_in_a_cruise_tick_stops_every_group_and_the_clock_goes_on() {
+    // As above, in a tick of a quiet run that only moves the group along (a cruise tick,
+    // `engine/cruise.rs`): the run of 50 ticks cruises from its second tick on.
+    let _g = fresh();
+    assert_eq!(init_ms(1, 1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    assert_eq!(line_x(10.0), 0);
+    MCC_TimeDelay(300);
+    let shared = crate::system::active().unwrap();
+    let cruised = shared.cruise_ticks();
+    let before = x(0);
+    assert!(before > 0.0 && before < 10.0, "moving: X = {before}");
+
+    crate::fault::arm("cruise tick");
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        MCC_TimeDelay(50);
+        let _ = tx.send(());
+    });
+    assert!(
+        rx.recv_timeout(Duration::from_secs(20)).is_ok(),
+        "the engine still ticks after a panic in a cruise tick"
+    );
+    // The point is passed only in cruise ticks (and idle groups cruise on after it).
+    assert!(crate::fault::fired());
+    assert!(shared.cruise_ticks() > cruised);
+    assert_eq!(MCC_GetErrorCode(0), ERR_INTERNAL);
+    assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    let stopped_at = x(0);
+    MCC_TimeDelay(100);
+    assert_eq!(x(0), stopped_at, "the group stands");
+    assert!(stopped_at > before && stopped_at < 10.0);
+    // The channel was brought up to date: its encoder follows the group's pulses.
+    let (mut enc, mut p) = (0, [0; 8]);
+    let [a, b, c, d, e, f, g, h] = &mut p;
+    // SAFETY: valid pointers.
+    unsafe {
+        assert_eq!(super::encoder::MCC_GetENCValue(&mut enc, 0, 0), NO_ERR);
+        assert_eq!(
+            super::coordinate::MCC_GetPulsePos(a, b, c, d, e, f, g, h, 0),
+            NO_ERR
+        );
+    }
+    assert_eq!(enc, p[0]);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
+}

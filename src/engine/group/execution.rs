@@ -49,6 +49,64 @@ impl TickClock {
     }
 }
 
+/// What a cruising tick adds to its command's own time: `TickClock::own_time(dt, ..)` of
+/// a general or PtP command, dt / dt x `dtau`, and dt / dt is exactly 1 for the (finite,
+/// positive) period.
+#[inline]
+fn cruise_step(dt: f64, dtau: f64) -> f64 {
+    if dt > 0.0 {
+        dtau
+    } else {
+        0.0
+    }
+}
+
+/// The own time of `plan` from which a tick may do more than cruise (what `settle` and
+/// `try_blend` act on): its end, and with blending on, the start of its deceleration;
+/// `None` for commands that do not cruise.
+#[inline]
+fn cruise_end(plan: &Plan, blend_on: bool) -> Option<f64> {
+    match plan {
+        Plan::Path(m) => {
+            let end = m.duration() - TIME_EPS;
+            Some(if blend_on {
+                end.min(m.decel_start() - TIME_EPS)
+            } else {
+                end
+            })
+        }
+        Plan::Ptp(p) => Some(p.duration() - TIME_EPS),
+        _ => None,
+    }
+}
+
+/// How many of the sums `tau + step`, `tau + step + step`, ..., each rounded as the ticks
+/// add them, are certainly below `end`, up to `max` (0 when unsure).
+///
+/// Each sum below `2·end` is rounded by at most `u = end · 2^-52` (half an ulp of `2·end`),
+/// so after `k` additions the sum is at most `tau + k·(step + u)`. `k = room / (step +
+/// u) - 1`, with `room` the exact `end - tau` less its own rounding and a margin, keeps
+/// that below `end`; the division's rounding is what the 1 taken off covers.
+fn sums_below(tau: f64, step: f64, end: f64, max: u32) -> u32 {
+    if !(tau >= 0.0 && step >= 0.0 && end.is_finite() && tau < end) {
+        return 0;
+    }
+    let u = end * f64::EPSILON;
+    let room = (end - tau) * (1.0 - 1e-9) - u;
+    if room <= 0.0 {
+        return 0;
+    }
+    let k = (room / (step + u)).floor() - 1.0;
+    if k >= f64::from(max) {
+        max
+    } else if k >= 1.0 {
+        // 1 <= k < max: a whole number that fits.
+        k as u32
+    } else {
+        0
+    }
+}
+
 /// A command being executed and its own time.
 #[derive(Debug, Clone)]
 pub(super) struct Running {
@@ -140,6 +198,36 @@ impl GroupState {
         self.update_status();
     }
 
+    /// How many of the next ticks, up to `max`, are certain to take the cruising or the
+    /// idle path ([`GroupState::tick_cruising`], [`GroupState::tick_idle`]) and to change
+    /// nothing the rest of the engine's tick looks at: no output changes, no safety check,
+    /// no go home result, the status unchanged. 0 when the next tick may do more. Only the
+    /// program changes what this depends on (under the groups' lock), besides the ticks.
+    pub fn quiet_ticks_ahead(&self, dt: f64, max: u32) -> u32 {
+        if !self.steady() || self.has_outputs() || self.has_safety_checks() {
+            return 0;
+        }
+        if self.running.is_empty() {
+            let idle = self.queue.is_empty() && self.inpos_wait.is_none();
+            // An idle group's status is `GMS_STOP` already after one idle tick.
+            return if idle && self.status == c::GMS_STOP {
+                max
+            } else {
+                0
+            };
+        }
+        let Some(r) = self.running.front() else {
+            return 0;
+        };
+        if self.running.len() != 1 || self.status != c::GMS_RUNNING {
+            return 0;
+        }
+        match cruise_end(&r.cmd.plan, self.blend_on) {
+            Some(end) => sums_below(r.tau, cruise_step(dt, self.rate.value * dt), end, max),
+            None => 0,
+        }
+    }
+
     /// The tick of a [steady](GroupState::steady) group in the middle of one general or
     /// PtP command: only the command's own time advances and the position is sampled.
     /// Returns false, having changed nothing, when the tick may do more (start, blend,
@@ -154,25 +242,12 @@ impl GroupState {
         let Some(r) = self.running.front_mut() else {
             return false;
         };
-        // `TickClock::own_time(dt, ..)` of a general or PtP command: dt / dt x dtau, and
-        // dt / dt is exactly 1 for the (finite, positive) period.
-        let tau = r.tau + if dt > 0.0 { dtau } else { 0.0 };
-        match &r.cmd.plan {
-            // What `settle` and `try_blend` would act on: the end of the command, and
-            // with blending on, the start of its deceleration.
-            Plan::Path(m) => {
-                if tau >= m.duration() - TIME_EPS
-                    || (self.blend_on && tau >= m.decel_start() - TIME_EPS)
-                {
-                    return false;
-                }
-            }
-            Plan::Ptp(p) => {
-                if tau >= p.duration() - TIME_EPS {
-                    return false;
-                }
-            }
-            _ => return false,
+        let tau = r.tau + cruise_step(dt, dtau);
+        // (A NaN end holds no tick back.)
+        match cruise_end(&r.cmd.plan, self.blend_on) {
+            Some(end) if tau >= end => return false,
+            Some(_) => {}
+            None => return false,
         }
         r.tau = tau;
         self.newest_own_time = tau;
@@ -397,5 +472,67 @@ fn place_single(pos: &mut Axes, vel: &mut Axes, base: &Axes, cmd: &Command, tau:
     // `0.0 +` as in the sums of `compute_pos_vel` (it turns -0.0 into 0.0).
     for (out, v) in vel.iter_mut().zip(v) {
         *out = 0.0 + v * scale;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::sums_below;
+
+    #[test]
+    fn sums_below_promises_only_sums_below_the_end_and_nearly_all_of_them() {
+        // Pseudo-random own times, steps and ends: 1 ms ticks at rates from 0 to 2x,
+        // commands from 10 ms to 2^40 s, started anywhere before their end. The sums are
+        // made as the ticks make them: every sum promised is below the end, and the
+        // promise falls short of the truth by at most 2 (no more than the margin).
+        let mut seed = 99u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let max = 64;
+        let (mut promised, mut near_end) = (0u64, 0);
+        for case in 0..20_000 {
+            let end = 0.01 * 2f64.powf(next() * 47.0);
+            let step = if case % 50 == 0 { 0.0 } else { 0.002 * next() };
+            // Mostly close to the end, where it matters.
+            let tau = if case % 2 == 0 {
+                end * next()
+            } else {
+                (end - step * 70.0 * next()).max(0.0)
+            };
+            let k = sums_below(tau, step, end, max);
+            let mut sum = tau;
+            let mut below = 0;
+            while below < max {
+                sum += step;
+                if sum >= end {
+                    break;
+                }
+                below += 1;
+            }
+            assert!(
+                k <= below,
+                "tau {tau}, step {step}, end {end}: promised {k}, {below} below"
+            );
+            assert!(
+                below - k <= 2 || end * f64::EPSILON * 64.0 > step,
+                "tau {tau}, step {step}, end {end}: promised {k}, {below} below"
+            );
+            promised += u64::from(k);
+            near_end += usize::from(below < max);
+        }
+        assert!(
+            promised > 20_000 * 20 && near_end > 5_000,
+            "{promised}, {near_end}"
+        );
+        // What is not a cruise: NaN, a start at or past the end, a negative step.
+        assert_eq!(sums_below(f64::NAN, 0.001, 1.0, max), 0);
+        assert_eq!(sums_below(1.0, 0.001, 1.0, max), 0);
+        assert_eq!(sums_below(0.5, -0.001, 1.0, max), 0);
+        assert_eq!(sums_below(0.5, 0.001, f64::INFINITY, max), 0);
+        assert_eq!(sums_below(0.5, 0.0, 1.0, max), max);
     }
 }

@@ -76,7 +76,7 @@ impl GroupState {
     /// One loop for the whole group, with what [`GroupState::pulses`] asks of every axis
     /// (kinematics, filters) and the card asked once: this runs every tick for every
     /// commanding group.
-    #[inline]
+    #[inline(always)]
     pub fn command_channels(&self, cards: &mut [[Channel; AXES]]) {
         let commanded = &self.commanded;
         // Most groups sharing a card's channels command none of them (the last mapping

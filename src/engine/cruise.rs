@@ -1,0 +1,171 @@
+//! Cruise ticks: the ticks of a quiet virtual run in which every group only moves along
+//! (or stands idle), run without the checks of a full tick that cannot come true.
+//!
+//! Under a virtual clock with nothing between ticks ([`Shared::quiet_between_ticks`]) the
+//! engine thread keeps the machine's and the groups' locks from one tick to the next, so
+//! only the ticks change the groups and the channels. When every group is certain, for
+//! some ticks ahead, to cruise in the middle of one command or to stand idle
+//! ([`GroupState::quiet_ticks_ahead`]), and the machine has nothing to do that such a
+//! tick would need (no card armed, no safety check, no homing, no trace), those ticks
+//! are cruise ticks: each group's tick, its channels commanded, the channels' steps
+//! deferred, the status or the snapshot published, the peripherals: what
+//! [`Shared::tick`] does on that tick, in the same order, and nothing it would find
+//! nothing to do for. What the other threads may change at any time (a lock wanted, a
+//! routine registered, a limit check, a view asked for, the end of the run) is asked
+//! before every tick, as the full tick asks it.
+//!
+//! `MCCL_CRUISE=0` turns cruise ticks off (every tick full), to compare.
+
+use super::group::GroupState;
+use super::homing::HOME_BUSY;
+use super::isr;
+use super::shared::Shared;
+use super::tick::{defer_idle_card, Held, PUBLISH_EVERY};
+use crate::machine::deferred::{DeferredSteps, Recording};
+use std::sync::atomic::Ordering;
+
+/// The most ticks one plan covers: the plan costs a few operations a group a tick at this
+/// length.
+const PLAN_TICKS: u32 = 64;
+
+/// After a plan that found no cruise tick ahead, the quiet ticks that pass before the next
+/// plan: a group that cannot cruise (starting, blending, ramping its rate, checking its
+/// position) stays so for some ticks, and a plan asks every group.
+const REPLAN_AFTER: u32 = 8;
+
+/// Whether cruise ticks are on for engines started from now on: `MCCL_CRUISE` unset or
+/// anything but `0`.
+pub(super) fn enabled_by_env() -> bool {
+    std::env::var("MCCL_CRUISE").map_or(true, |v| v.trim() != "0")
+}
+
+impl Shared {
+    /// At the end of a quiet tick, before it is counted: whether the next tick is a cruise
+    /// tick. It must be inside the run and not its last (which publishes everything), with
+    /// no homing, no limit check and no view to copy; the groups and the machine are
+    /// planned for when the last plan ran out (see [`Shared::plan_cruise`]).
+    pub(super) fn cruise_next(&self, held: &mut Option<Held<'_>>) -> bool {
+        let Some(h) = held.as_mut() else {
+            return false;
+        };
+        if !self.cruise_enabled || !self.clock.next_is_inside_run() {
+            return false;
+        }
+        if self.home_status.load(Ordering::Acquire) == HOME_BUSY
+            || self.limit_check.load(Ordering::Relaxed) >= 0
+        {
+            return false;
+        }
+        let next = self.clock.ticks().wrapping_add(1);
+        if self.publishes_everything(next) && self.view.wanted() {
+            return false;
+        }
+        if h.cruise == 0 {
+            if h.replan_in > 0 {
+                h.replan_in -= 1;
+                return false;
+            }
+            h.cruise = self.plan_cruise(h);
+            if h.cruise == 0 {
+                h.replan_in = REPLAN_AFTER;
+            }
+        }
+        h.cruise > 0
+    }
+
+    /// Whether virtual tick `n` (not the last of its run) publishes every snapshot, as
+    /// [`Shared::tick`] decides it.
+    #[inline]
+    fn publishes_everything(&self, n: u64) -> bool {
+        self.live_snapshots.load(Ordering::Relaxed) || n % PUBLISH_EVERY == 0
+    }
+
+    /// How many ticks from the next are cruise ticks for the groups and the machine (0:
+    /// the next is not): what only the program changes (under the locks `held` holds) or
+    /// the ticks themselves. Every card idle (nothing armed), no safety check reading the
+    /// channels, no trace, every group quiet ahead.
+    fn plan_cruise(&self, held: &mut Held<'_>) -> u32 {
+        let machine = &*held.machine;
+        if self.tracing || self.safety_reads_channels(machine, false) {
+            return 0;
+        }
+        let cards = machine.triggers.iter().zip(&machine.settings).enumerate();
+        for (card, (triggers, settings)) in cards {
+            let idle = held
+                .idle_cards
+                .idle(card, || !triggers.armed(&settings.error_threshold));
+            if !idle {
+                return 0;
+            }
+        }
+        let dt = self.clock.period_s();
+        let mut ahead = PLAN_TICKS;
+        for g in held.groups.iter() {
+            ahead = ahead.min(g.quiet_ticks_ahead(dt, ahead));
+            if ahead == 0 {
+                break;
+            }
+        }
+        ahead
+    }
+
+    /// A cruise tick (see the module): what [`Shared::tick`] does on a tick with the
+    /// locks carried over, no homing, no safety check, no trace, every card idle and
+    /// deferring, every group cruising or idle, and no view copied. Returns whether it
+    /// published everything.
+    pub(super) fn cruise_tick(&self, held: &mut Held<'_>, interrupts: &mut isr::Collected) -> bool {
+        let dt = self.clock.period_s();
+        let n = self.clock.ticks();
+        let full = self.publishes_everything(n);
+        let dry = self.dry_run.load(Ordering::Relaxed);
+        held.cruise = held.cruise.saturating_sub(1);
+        // One writer: a load and a store, no read-modify-write.
+        let ran = self.cruise_ticks.load(Ordering::Relaxed);
+        self.cruise_ticks
+            .store(ran.wrapping_add(1), Ordering::Relaxed);
+        let machine = &mut *held.machine;
+        let groups = &mut *held.groups;
+        for g in groups.iter_mut() {
+            debug_assert!(g.quiet_ticks_ahead(dt, 1) == 1, "group {} cruises", g.index);
+            g.tick(dt);
+            crate::fault::point("cruise tick");
+            // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
+            if !dry {
+                g.command_channels(&mut machine.cards);
+            }
+            self.publish_or_status(g, full);
+        }
+        let recorded = machine.recording();
+        let mut recording = Recording::default();
+        let cards = machine.cards.iter_mut().zip(machine.triggers.iter_mut());
+        for (card, (chans, triggers)) in cards.enumerate() {
+            let (stepped, now) = defer_idle_card(chans, recorded.card(card), dt, n);
+            recording.set_card(card, now);
+            if stepped {
+                triggers.tick_idle(chans);
+            }
+        }
+        machine.set_deferred(Some(DeferredSteps { dt, last: n }), recording);
+        // Peripherals after the groups (lock order: groups, then a card's peripherals). A
+        // card that ran (a timer, a watchdog) may have reset groups: plan again.
+        if !self.tick_peripherals(self.tick_len_ns, interrupts, groups) {
+            held.cruise = 0;
+        }
+        full
+    }
+
+    /// How many ticks of this engine were cruise ticks (for tests and benchmarks).
+    pub fn cruise_ticks(&self) -> u64 {
+        self.cruise_ticks.load(Ordering::Relaxed)
+    }
+
+    /// Publishes `g` on a tick that publishes everything, else its status.
+    #[inline(always)]
+    pub(super) fn publish_or_status(&self, g: &mut GroupState, full: bool) {
+        if full {
+            self.publish(g);
+        } else if let Some(s) = self.status.get(g.index) {
+            s.store(g.status(), Ordering::Release);
+        }
+    }
+}
