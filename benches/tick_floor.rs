@@ -308,10 +308,14 @@ fn profile(spec: &str) {
         .live_snapshots
         .store(live, std::sync::atomic::Ordering::Relaxed);
     let t = Instant::now();
+    let cruised = shared.cruise_ticks();
     MCC_TimeDelay(PROFILE_TICKS);
     let us = t.elapsed().as_secs_f64() / f64::from(PROFILE_TICKS) * 1e6;
+    let cruised = shared.cruise_ticks() - cruised;
     MCC_CloseSystem();
-    println!("profile: {groups} groups, live {live}: engine {us:.3} us per tick");
+    println!(
+        "profile: {groups} groups, live {live}: engine {us:.3} us per tick, {cruised} of {PROFILE_TICKS} ticks cruise ticks"
+    );
 }
 
 fn main() {

@@ -14,6 +14,12 @@
 //! routine registered, a limit check, a view asked for, the end of the run) is asked
 //! before every tick, as the full tick asks it.
 //!
+//! A group cruises only while the info it last published holds (its key, see
+//! `group/status.rs`), so that a cruise tick that publishes stores the motion part
+//! without looking at the info: after a command starts or ends, or its phase changes,
+//! the group waits for the next full tick that publishes (at most [`PUBLISH_EVERY`]
+//! ticks under a quiet virtual clock).
+//!
 //! `MCCL_CRUISE=0` turns cruise ticks off (every tick full), to compare.
 
 use super::group::GroupState;
@@ -133,7 +139,12 @@ impl Shared {
             if !dry {
                 g.command_channels(&mut machine.cards);
             }
-            self.publish_or_status(g, full);
+            // The plan holds the info unchanged (the published key holds).
+            if full {
+                self.publish_motion(g);
+            } else {
+                self.publish_or_status(g, false);
+            }
         }
         let recorded = machine.recording();
         let mut recording = Recording::default();

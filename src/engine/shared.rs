@@ -227,6 +227,20 @@ impl Shared {
         Ok(self.snaps[usize::from(g)].load())
     }
 
+    /// Publishes the motion part and the status of a group whose info is known unchanged
+    /// since it was published (its key holds; call with its lock held): what
+    /// [`Shared::publish`] does then, without looking.
+    #[inline(always)]
+    pub fn publish_motion(&self, g: &GroupState) {
+        debug_assert!(g.published_key_holds(), "group {}: info unchanged", g.index);
+        if let Some(cell) = self.snaps.get(g.index) {
+            g.store_motion(cell);
+        }
+        if let Some(s) = self.status.get(g.index) {
+            s.store(g.status(), Ordering::Release);
+        }
+    }
+
     /// Publishes a group's state (call with its lock held): the info part when its key
     /// changed, the motion part and the status.
     ///

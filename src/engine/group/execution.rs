@@ -199,14 +199,18 @@ impl GroupState {
     }
 
     /// How many of the next ticks, up to `max`, are certain to take the cruising or the
-    /// idle path ([`GroupState::tick_cruising`], [`GroupState::tick_idle`]) and to change
+    /// idle path (`GroupState::tick_cruising`, `GroupState::tick_idle`) and to change
     /// nothing the rest of the engine's tick looks at: no output changes, no safety check,
-    /// no go home result, the status unchanged. 0 when the next tick may do more. Only the
+    /// no go home result, the status unchanged, the published info unchanged (its key
+    /// holds, so a publication need not look). 0 when the next tick may do more. Only the
     /// program changes what this depends on (under the groups' lock), besides the ticks.
     pub fn quiet_ticks_ahead(&self, dt: f64, max: u32) -> u32 {
         if !self.steady() || self.has_outputs() || self.has_safety_checks() {
             return 0;
         }
+        let Some(key_until) = self.published_key_holds_below() else {
+            return 0;
+        };
         if self.running.is_empty() {
             let idle = self.queue.is_empty() && self.inpos_wait.is_none();
             // An idle group's status is `GMS_STOP` already after one idle tick.
@@ -223,7 +227,10 @@ impl GroupState {
             return 0;
         }
         match cruise_end(&r.cmd.plan, self.blend_on) {
-            Some(end) => sums_below(r.tau, cruise_step(dt, self.rate.value * dt), end, max),
+            Some(end) => {
+                let end = end.min(key_until);
+                sums_below(r.tau, cruise_step(dt, self.rate.value * dt), end, max)
+            }
             None => 0,
         }
     }

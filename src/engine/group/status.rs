@@ -241,7 +241,7 @@ impl GroupState {
     /// ([`key_holds_until`]); with no command running that end is infinite. Nothing was
     /// published yet: the end is −∞, which no own time is below.
     #[inline]
-    fn published_key_holds(&self) -> bool {
+    pub(in crate::engine) fn published_key_holds(&self) -> bool {
         let p = &self.published_key;
         debug_assert_eq!(
             self.running.back().map(|r| r.tau.to_bits()),
@@ -250,6 +250,13 @@ impl GroupState {
             self.index
         );
         p.key.changes == self.info_changes && self.newest_own_time < p.until
+    }
+
+    /// While the published key holds, the own time of the running command from which it
+    /// may not ([`GroupState::published_key_holds`]); `None` when it does not hold now.
+    pub(super) fn published_key_holds_below(&self) -> Option<f64> {
+        self.published_key_holds()
+            .then_some(self.published_key.until)
     }
 }
 
