@@ -69,9 +69,11 @@ fn a_panic_while_queueing_stops_the_group_with_a_record_and_the_next_move_is_exa
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
-#[test]
-fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
-    let _g = fresh();
+/// Group 0 moving along X on a 1 ms card, 300 ticks into a 10 UU line; fault `point`
+/// armed, a delay of `ticks` on another thread (without recovery the engine thread dies
+/// and the delay waits forever). Returns X before and where the group stopped, having
+/// checked that it stopped with `ERR_INTERNAL` and stands.
+fn stops_after_a_fault_at(point: &'static str, ticks: u32) -> (f64, f64) {
     assert_eq!(init_ms(1, 1), NO_ERR);
     assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
     assert_eq!(line_x(10.0), 0);
@@ -81,16 +83,15 @@ fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
     let before = x(0);
     assert!(before > 0.0 && before < 10.0, "moving: X = {before}");
 
-    crate::fault::arm("group tick");
-    // Without recovery the engine thread dies and this delay waits forever.
+    crate::fault::arm(point);
     let (tx, rx) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
-        MCC_TimeDelay(10);
+        MCC_TimeDelay(ticks);
         let _ = tx.send(());
     });
     assert!(
         rx.recv_timeout(Duration::from_secs(20)).is_ok(),
-        "the engine still ticks after a panic in its tick"
+        "the engine still ticks after a panic at {point}"
     );
     assert!(crate::fault::fired());
     assert_eq!(MCC_GetErrorCode(0), ERR_INTERNAL);
@@ -98,6 +99,13 @@ fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
     let stopped_at = x(0);
     MCC_TimeDelay(100);
     assert_eq!(x(0), stopped_at, "the group stands");
+    (before, stopped_at)
+}
+
+#[test]
+fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
+    let _g = fresh();
+    let (before, stopped_at) = stops_after_a_fault_at("group tick", 10);
     assert!(stopped_at >= before && stopped_at < 10.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
@@ -105,35 +113,10 @@ fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
 #[test]
 fn a_panic_in_a_cruise_tick_stops_every_group_and_the_clock_goes_on() {
     // As above, in a tick of a quiet run that only moves the group along (a cruise tick,
-    // `engine/cruise.rs`): the run of 50 ticks cruises from its second tick on.
+    // `engine/cruise.rs`, the only place the point is passed): the run of 50 ticks
+    // cruises from its second tick on.
     let _g = fresh();
-    assert_eq!(init_ms(1, 1), NO_ERR);
-    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
-    assert_eq!(line_x(10.0), 0);
-    MCC_TimeDelay(300);
-    let shared = crate::system::active().unwrap();
-    let cruised = shared.cruise_ticks();
-    let before = x(0);
-    assert!(before > 0.0 && before < 10.0, "moving: X = {before}");
-
-    crate::fault::arm("cruise tick");
-    let (tx, rx) = std::sync::mpsc::channel();
-    std::thread::spawn(move || {
-        MCC_TimeDelay(50);
-        let _ = tx.send(());
-    });
-    assert!(
-        rx.recv_timeout(Duration::from_secs(20)).is_ok(),
-        "the engine still ticks after a panic in a cruise tick"
-    );
-    // The point is passed only in cruise ticks (and idle groups cruise on after it).
-    assert!(crate::fault::fired());
-    assert!(shared.cruise_ticks() > cruised);
-    assert_eq!(MCC_GetErrorCode(0), ERR_INTERNAL);
-    assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
-    let stopped_at = x(0);
-    MCC_TimeDelay(100);
-    assert_eq!(x(0), stopped_at, "the group stands");
+    let (before, stopped_at) = stops_after_a_fault_at("cruise tick", 50);
     assert!(stopped_at > before && stopped_at < 10.0);
     // The channel was brought up to date: its encoder follows the group's pulses.
     let (mut enc, mut p) = (0, [0; 8]);
