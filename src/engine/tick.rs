@@ -126,7 +126,11 @@ impl Shared {
         // were kept from the last one, with no view copied for an observer, no homing and
         // no safety check that reads them, on a card whose triggers are not armed. Any
         // other tick brings them up to date first.
-        let defer = carried && !(full && self.view.wanted()) && homed.is_none() && !checks;
+        // Whether an observer's view may be copied this tick: asked once, so that a view
+        // asked for in the middle of the tick waits for the next one instead of reading
+        // channels this tick left deferred.
+        let view = full && self.view.wanted();
+        let defer = carried && !view && homed.is_none() && !checks;
         if !defer {
             machine.catch_up();
         }
@@ -189,7 +193,7 @@ impl Shared {
                 t.home_events(t_ns(), h.card, h.phase.0, h.phase.1, h.finished);
             }
         }
-        if full {
+        if view {
             self.publish_view(machine, groups, self.clock.last_of_run());
         }
         drop(trace_guard);
