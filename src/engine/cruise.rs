@@ -8,7 +8,7 @@
 //! ([`GroupState::quiet_ticks_ahead`]), and the machine has nothing to do that such a
 //! tick would need (no card armed, no safety check, no homing, no trace), those ticks
 //! are cruise ticks: each group's tick, its channels commanded, the channels' steps
-//! deferred, the status or the snapshot published, the peripherals: what
+//! deferred, the status or the motion part published, the peripherals: what
 //! [`Shared::tick`] does on that tick, in the same order, and nothing it would find
 //! nothing to do for. What the other threads may change at any time (a lock wanted, a
 //! routine registered, a limit check, a view asked for, the end of the run) is asked
@@ -22,7 +22,6 @@
 //!
 //! `MCCL_CRUISE=0` turns cruise ticks off (every tick full), to compare.
 
-use super::group::GroupState;
 use super::homing::HOME_BUSY;
 use super::isr;
 use super::shared::Shared;
@@ -143,7 +142,7 @@ impl Shared {
             if full {
                 self.publish_motion(g);
             } else {
-                self.publish_or_status(g, false);
+                self.store_status(g);
             }
         }
         let recorded = machine.recording();
@@ -168,15 +167,5 @@ impl Shared {
     /// How many ticks of this engine were cruise ticks (for tests and benchmarks).
     pub fn cruise_ticks(&self) -> u64 {
         self.cruise_ticks.load(Ordering::Relaxed)
-    }
-
-    /// Publishes `g` on a tick that publishes everything, else its status.
-    #[inline(always)]
-    pub(super) fn publish_or_status(&self, g: &mut GroupState, full: bool) {
-        if full {
-            self.publish(g);
-        } else if let Some(s) = self.status.get(g.index) {
-            s.store(g.status(), Ordering::Release);
-        }
     }
 }

@@ -146,19 +146,11 @@ impl Shared {
                     (mask & (1 << i) != 0 && f > 0.0).then(|| chan.error_count() as f64 / f)
                 });
                 g.check_inpos(&errs, dt);
-                if full {
-                    self.publish(g);
-                } else {
-                    self.status[g.index].store(g.status(), Ordering::Release);
-                }
+                self.publish_or_status(g, full);
             }
             if let Some(code) = check(g, machine, limit_mode) {
                 g.stop_for(code.record);
-                if full {
-                    self.publish(g);
-                } else {
-                    self.status[g.index].store(g.status(), Ordering::Release);
-                }
+                self.publish_or_status(g, full);
             }
         }
     }

@@ -236,6 +236,22 @@ impl Shared {
         if let Some(cell) = self.snaps.get(g.index) {
             g.store_motion(cell);
         }
+        self.store_status(g);
+    }
+
+    /// Publishes `g` on a tick that publishes everything, else its status.
+    #[inline(always)]
+    pub(super) fn publish_or_status(&self, g: &mut GroupState, full: bool) {
+        if full {
+            self.publish(g);
+        } else {
+            self.store_status(g);
+        }
+    }
+
+    /// Stores a group's status where status calls read it without the snapshot.
+    #[inline(always)]
+    pub(super) fn store_status(&self, g: &GroupState) {
         if let Some(s) = self.status.get(g.index) {
             s.store(g.status(), Ordering::Release);
         }
@@ -258,7 +274,7 @@ impl Shared {
             debug_assert_eq!(g.published_info, Some(g.info()), "group {}", g.index);
         }
         g.store_motion(cell);
-        self.status[g.index].store(g.status(), Ordering::Release);
+        self.store_status(g);
     }
 
     /// Checks that `card` is one of the cards passed to `MCC_InitSystem`.
