@@ -15,6 +15,10 @@
 //! Latencies are measured over batches of 100 calls (the clock's own cost is ~20 ns, too
 //! close to one call); the median and p99 are over 2000 batches, per call.
 
+#[cfg(feature = "panel")]
+#[path = "support/engine_thread.rs"]
+mod engine_thread;
+
 use std::time::Instant;
 use MCCLPCI_IMP::ffi::coordinate::MCC_GetCurPos;
 use MCCLPCI_IMP::ffi::motion::{MCC_Line, MCC_SetFeedSpeed};
@@ -174,25 +178,6 @@ fn main() {
     panel_hostile_lateness();
 }
 
-/// CPU time the engine thread has used, ns (`/proc/self/task/*/schedstat` of the thread
-/// named `mccl-engine`): the engine's own work, without the time it waited for a CPU
-/// while other threads (the panel's, the client's, the host's) ran.
-#[cfg(feature = "panel")]
-fn engine_cpu_ns() -> u64 {
-    for e in std::fs::read_dir("/proc/self/task").unwrap().flatten() {
-        let comm = std::fs::read_to_string(e.path().join("comm")).unwrap_or_default();
-        if comm.trim() == "mccl-engine" {
-            let st = std::fs::read_to_string(e.path().join("schedstat")).unwrap_or_default();
-            return st
-                .split(' ')
-                .next()
-                .and_then(|v| v.parse().ok())
-                .unwrap_or(0);
-        }
-    }
-    panic!("no mccl-engine thread")
-}
-
 /// Engine CPU time per tick, µs, over 30,000 ticks (1 ms) of 48 moving groups publishing
 /// every tick, as under the realtime clock.
 #[cfg(feature = "panel")]
@@ -202,9 +187,10 @@ fn tick_cpu_us() -> f64 {
         .live_snapshots
         .store(true, std::sync::atomic::Ordering::Relaxed);
     MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(1);
-    let c = engine_cpu_ns();
+    let engine = engine_thread::engine_cpu_clock();
+    let c = engine_thread::cpu_clock_ns(engine);
     MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(30_000);
-    (engine_cpu_ns() - c) as f64 / 30_000.0 / 1e3
+    (engine_thread::cpu_clock_ns(engine) - c) as f64 / 30_000.0 / 1e3
 }
 
 /// Engine CPU per tick without a panel, with one and no client, and with a client reading the event

@@ -17,6 +17,10 @@
 //! measurements taken a millisecond apart cancels that. The medians of the costs
 //! themselves are printed too.
 
+#[path = "support/engine_thread.rs"]
+mod engine_thread;
+
+use engine_thread::{cpu_clock_ns, engine_cpu_clock, thread_cpu_ns};
 use std::hint::black_box;
 use std::time::Instant;
 use MCCLPCI_IMP::engine::snapshot::round_pulses;
@@ -75,56 +79,6 @@ fn start(groups: u16) {
         assert!(MCC_Line(LEN, LEN, LEN, LEN, LEN, LEN, LEN, LEN, g, IMP_AXIS_ALL) >= 0);
     }
     MCC_TimeDelay(400); // past the acceleration: the groups cruise from here on
-}
-
-/// The thread id of the engine thread (named `mccl-engine`). The engine of the system
-/// closed before this one was joined, but a joined thread leaves `/proc/self/task` a
-/// moment after its join returns: until it has, two are listed (and the old one's CPU
-/// clock fails), so this waits for one, up to 5 s.
-fn engine_tid() -> libc::pid_t {
-    let deadline = Instant::now() + std::time::Duration::from_secs(5);
-    loop {
-        let engines: Vec<libc::pid_t> = std::fs::read_dir("/proc/self/task")
-            .expect("/proc")
-            .flatten()
-            .filter(|e| {
-                std::fs::read_to_string(e.path().join("comm"))
-                    .is_ok_and(|c| c.trim() == "mccl-engine")
-            })
-            .filter_map(|e| e.file_name().to_str()?.parse().ok())
-            .collect();
-        match engines[..] {
-            [tid] => return tid,
-            _ if Instant::now() > deadline => panic!("engine threads: {engines:?}"),
-            _ => std::thread::sleep(std::time::Duration::from_millis(1)),
-        }
-    }
-}
-
-/// The CPU-time clock of the running engine's thread, which the kernel brings up to
-/// date when read (the clock `pthread_getcpuclockid` gives, made from the thread id as
-/// glibc makes it: `(!tid << 3) | CPUCLOCK_PERTHREAD | CPUCLOCK_SCHED`).
-/// `/proc/<tid>/schedstat` is not: for a thread running on another CPU it lags until the
-/// scheduler's next tick, longer than a 1-group measurement.
-fn engine_cpu_clock() -> libc::clockid_t {
-    (!engine_tid() << 3) | 6
-}
-
-/// The time on CPU-time clock `clock`, ns.
-fn cpu_clock_ns(clock: libc::clockid_t) -> u64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: a valid timespec to write; an invalid clock only makes the call fail.
-    let rc = unsafe { libc::clock_gettime(clock, &mut ts) };
-    assert_eq!(rc, 0, "clock_gettime of CPU clock {clock}");
-    u64::try_from(ts.tv_sec).unwrap_or(0) * 1_000_000_000 + u64::try_from(ts.tv_nsec).unwrap_or(0)
-}
-
-/// CPU time the calling thread has used, ns.
-fn thread_cpu_ns() -> u64 {
-    cpu_clock_ns(libc::CLOCK_THREAD_CPUTIME_ID)
 }
 
 /// Engine time per tick, µs, with or without a snapshot published every tick: (wall,
