@@ -75,11 +75,13 @@ fn start_all_moving(len: f64) {
 }
 
 fn main() {
-    // `MCCL_BENCH_ONLY=panel-hostile cargo bench --bench engine`: only that line.
+    // `MCCL_BENCH_ONLY=panel-hostile` (or `=panel-cost`) `cargo bench --bench engine`:
+    // only that line.
     #[cfg(feature = "panel")]
-    if std::env::var("MCCL_BENCH_ONLY").as_deref() == Ok("panel-hostile") {
-        panel_hostile_lateness();
-        return;
+    match std::env::var("MCCL_BENCH_ONLY").as_deref() {
+        Ok("panel-hostile") => return panel_hostile_lateness(),
+        Ok("panel-cost") => return panel_cost(),
+        _ => {}
     }
     // Engine cost and fast-clock ratio: 48 groups, 8 axes each, all moving for 10 s of
     // virtual time (10,000 ticks of 1 ms).
