@@ -128,6 +128,29 @@ pub fn monotonic_ns() -> u64 {
     s.saturating_mul(1_000_000_000).saturating_add(ns)
 }
 
+/// Now on a monotonic clock that may lag by up to a scheduler tick (1–10 ms), ns: for
+/// spacing things tens of ms apart. Reading it costs a fifth of [`monotonic_ns`] (about
+/// 6.5 ns against 32 ns on the development VM), which matters to a tick of 0.1 µs. Where
+/// there is no coarse clock (or it fails) it is [`monotonic_ns`]: the same time base.
+pub(crate) fn coarse_monotonic_ns() -> u64 {
+    #[cfg(any(target_os = "linux", target_os = "android"))]
+    {
+        let mut ts = libc::timespec {
+            tv_sec: 0,
+            tv_nsec: 0,
+        };
+        // SAFETY: `ts` is a valid, writable timespec; CLOCK_MONOTONIC_COARSE exists on
+        // every Linux since 2.6.32 (answered by the vDSO, no system call).
+        let rc = unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC_COARSE, &mut ts) };
+        if rc == 0 {
+            let s = u64::try_from(ts.tv_sec).unwrap_or(0);
+            let ns = u64::try_from(ts.tv_nsec).unwrap_or(0);
+            return s.saturating_mul(1_000_000_000).saturating_add(ns);
+        }
+    }
+    monotonic_ns()
+}
+
 /// Sleeps until `ns` on the monotonic clock (absolute: a late wake-up does not push the
 /// next deadline). Returns early on a signal; the caller checks the time again.
 pub fn sleep_until_ns(ns: u64) {

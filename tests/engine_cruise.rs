@@ -178,3 +178,79 @@ fn a_program_reads_the_same_with_cruise_ticks_and_without() {
         );
     }
 }
+
+/// An observer looking (the browser panel wants views) while every tick publishes
+/// (callbacks registered, `live_snapshots`) still leaves the ticks between its copies
+/// cruise ticks: a view is copied at most every `VIEW_EVERY_NS` (20 ms) of real time and
+/// at the last tick of a run, and only the tick that copies one needs its channels up to
+/// date.
+///
+/// One group runs a line of 100 UU at 10 UU/s (10 s), past its acceleration (300 ms by
+/// default) before the watched runs of 2,000 ticks start, so every tick of them is in the
+/// middle of one command. Without an observer 1,998 of them cruise: the run's first tick
+/// takes the locks and the last publishes everything; both are full ticks. With one,
+/// each copy takes the tick that copies out of the cruise ticks, and the plan after it
+/// may begin a tick late: at most 3 ticks a copy. Over `ms` of real time at most
+/// `ms / 20 + 1` copies fall due besides the last tick's. So at least
+/// `1998 - 3 * (ms / 20 + 1)` cruise. (Before a tick asked whether a copy is due rather
+/// than whether an observer looks, it made every tick a full one: 0 cruise ticks.) The
+/// last copy shows the channels where the program's pulse positions say they are.
+#[test]
+fn an_observer_looking_leaves_the_ticks_between_its_copies_cruising() {
+    let _g = fresh();
+    std::env::set_var("MCCL_CLOCK", "fast");
+    std::env::remove_var("MCCL_CRUISE");
+    let g = MCC_CreateGroup(0, 1, 2, 3, 4, 5, 6, 7, 0) as u16;
+    let mut cfg = cards(1);
+    // SAFETY: one valid card description.
+    assert_eq!(unsafe { MCC_InitSystem(1, cfg.as_mut_ptr(), 1) }, NO_ERR);
+    MCC_SetFeedSpeed(10.0, g);
+    assert!(MCC_Line(100.0, 50.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, g, IMP_AXIS_ALL) >= 0);
+    MCC_TimeDelay(400);
+    let shared = MCCLPCI_IMP::system::active().expect("running");
+    shared
+        .live_snapshots
+        .store(true, std::sync::atomic::Ordering::Relaxed);
+    // Cruise ticks in 2,000 ticks, and the real time they took, ms.
+    let watch = || {
+        let before = shared.cruise_ticks();
+        let t = std::time::Instant::now();
+        MCC_TimeDelay(2000);
+        (
+            shared.cruise_ticks() - before,
+            t.elapsed().as_millis() as u64,
+        )
+    };
+    let (alone, _) = watch();
+    assert_eq!(alone, 1998, "without an observer");
+    shared.view.want(true);
+    let (cruised, ms) = watch();
+    let least = 1998u64.saturating_sub(3 * (ms / 20 + 1));
+    assert!(
+        cruised >= least,
+        "{cruised} of 2000 ticks cruised in {ms} ms with an observer (at least {least})"
+    );
+    let view = shared.view.get();
+    assert!(view.made, "the run's last tick copied a view");
+    let mut q = [0 as c_long; 8];
+    let [a, b, c, d, e, f, h, i] = &mut q;
+    // SAFETY: eight valid pointers.
+    assert_eq!(
+        unsafe { MCC_GetPulsePos(a, b, c, d, e, f, h, i, g) },
+        NO_ERR
+    );
+    let shown: Vec<i64> = view.cards[0].channels.iter().map(|c| c.pulses).collect();
+    #[allow(clippy::useless_conversion)] // `long` is 32-bit on Windows
+    let read: Vec<i64> = q.iter().map(|&p| i64::from(p)).collect();
+    assert_eq!(shown, read, "the view shows the pulses the program reads");
+    // 4.4 s at 10 UU/s less half the 0.3 s acceleration: 42.5 UU along the line, whose
+    // x is 2/sqrt(5) of it: 38.01 UU, 19,006 pulses (500 a UU), y half that. A tick moves
+    // x by 4.5 pulses: within two ticks.
+    assert!((read[0] - 19_006).abs() <= 9, "the group moved: {read:?}");
+    assert!(
+        (read[0] - 2 * read[1]).abs() <= 1,
+        "along the line: {read:?}"
+    );
+    shared.view.want(false);
+    MCC_CloseSystem();
+}

@@ -62,7 +62,7 @@ impl Shared {
             return false;
         }
         let next = self.clock.ticks().wrapping_add(1);
-        if self.publishes_everything(next) && self.view.wanted() {
+        if self.publishes_everything(next) && self.view.may_be_due() {
             return false;
         }
         if h.cruise == 0 {

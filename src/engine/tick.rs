@@ -126,10 +126,10 @@ impl Shared {
         // were kept from the last one, with no view copied for an observer, no homing and
         // no safety check that reads them, on a card whose triggers are not armed. Any
         // other tick brings them up to date first.
-        // Whether an observer's view may be copied this tick: asked once, so that a view
-        // asked for in the middle of the tick waits for the next one instead of reading
-        // channels this tick left deferred.
-        let view = full && self.view.wanted();
+        // Whether this tick copies a view for an observer: decided once, here, so that a
+        // view asked for in the middle of the tick waits for the next one instead of
+        // reading channels this tick left deferred. The ticks between copies defer.
+        let view = full && self.view.due(self.clock.last_of_run());
         let defer = carried && !view && homed.is_none() && !checks;
         if !defer {
             machine.catch_up();
@@ -194,7 +194,7 @@ impl Shared {
             }
         }
         if view {
-            self.publish_view(machine, groups, self.clock.last_of_run());
+            self.publish_view(machine, groups);
         }
         drop(trace_guard);
         // Peripherals after the groups (lock order: groups, then a card's peripherals).

@@ -7,14 +7,18 @@
 //! waiting program reads next is shown); the observer reads the copy. Neither side ever waits for
 //! the other: the engine skips a copy while the observer is reading the last one.
 //!
-//! Without an observer the tick only loads one atomic flag.
+//! Without an observer the tick only loads one atomic flag. With one, a tick that
+//! publishes everything also reads the coarse monotonic clock; only a tick that copies
+//! brings the channels' deferred steps up to date, so the ticks between copies stay as
+//! cheap as without an observer (deferred steps, cruise ticks).
 
 use crate::config::{AXES, GROUPS};
 use crate::machine::Machine;
 use parking_lot::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-/// Real time between two copies: 20 ms, at most 50 copies a second.
+/// Real time between two copies: 20 ms, at most 50 copies a second (read on the coarse
+/// monotonic clock, so give or take its resolution, a few ms).
 pub const VIEW_EVERY_NS: u64 = 20_000_000;
 
 /// One channel as the card sees it.
@@ -95,10 +99,16 @@ impl ViewCell {
         self.wanted.store(on, Ordering::Relaxed);
     }
 
-    /// Whether an observer asked for copies (a tick that publishes may then read the
-    /// channels).
+    /// Whether an observer asked for copies.
     pub fn wanted(&self) -> bool {
         self.wanted.load(Ordering::Relaxed)
+    }
+
+    /// Whether a copy may be due at the next tick that publishes everything, without
+    /// counting it as made: what decides that a tick ahead is no cruise tick (which
+    /// copies nothing). Between copies an observer costs the ticks nothing but this.
+    pub(super) fn may_be_due(&self) -> bool {
+        self.wanted() && crate::clock::coarse_monotonic_ns() >= self.next_ns.load(Ordering::Relaxed)
     }
 
     /// The last copy (waits only while the engine is writing one, a few µs).
@@ -107,12 +117,14 @@ impl ViewCell {
     }
 
     /// Whether this tick copies: an observer wants it, and [`VIEW_EVERY_NS`] passed since
-    /// the last copy or the tick is the last of a run (virtual clocks).
-    fn due(&self, last_of_run: bool) -> bool {
+    /// the last copy or the tick is the last of a run (virtual clocks). Asked once, at
+    /// the start of a tick that publishes everything; a `true` counts as the copy made
+    /// (the next is due [`VIEW_EVERY_NS`] later), so the tick must then copy.
+    pub(super) fn due(&self, last_of_run: bool) -> bool {
         if !self.wanted() {
             return false;
         }
-        let now = crate::clock::monotonic_ns();
+        let now = crate::clock::coarse_monotonic_ns();
         if last_of_run || now >= self.next_ns.load(Ordering::Relaxed) {
             self.next_ns
                 .store(now.saturating_add(VIEW_EVERY_NS), Ordering::Relaxed);
@@ -124,16 +136,9 @@ impl ViewCell {
 }
 
 impl super::Shared {
-    /// At the end of a tick (machine locked by the caller): copies the view when due.
-    pub(super) fn publish_view(
-        &self,
-        machine: &Machine,
-        running: &[super::group::GroupState],
-        last_of_run: bool,
-    ) {
-        if !self.view.due(last_of_run) {
-            return;
-        }
+    /// At the end of a tick whose start found a copy [due](ViewCell::due) (machine
+    /// locked by the caller, every channel up to date): copies the view.
+    pub(super) fn publish_view(&self, machine: &Machine, running: &[super::group::GroupState]) {
         let cards = (0..self.cards)
             .map(|cd| self.card_view(machine, cd))
             .collect();
