@@ -227,6 +227,15 @@ impl Shared {
         Ok(self.snaps[usize::from(g)].load())
     }
 
+    /// The last published command position of group `g` (user coordinates, UU), read
+    /// without the rest of its snapshot.
+    pub fn position(&self, g: u16) -> McclResult<crate::planner::Axes> {
+        if !self.has_group(g) {
+            return Err(McclError::Group);
+        }
+        Ok(self.snaps[usize::from(g)].load_pos())
+    }
+
     /// Publishes the motion part and the status of a group whose info is known unchanged
     /// since it was published (its key holds; call with its lock held): what
     /// [`Shared::publish`] does then, without looking.

@@ -175,19 +175,29 @@ impl<const N: usize> SeqWords<N> {
     }
 
     fn load(&self) -> [u64; N] {
+        self.read(|cells| {
+            let mut w = [0u64; N];
+            for (v, cell) in w.iter_mut().zip(cells) {
+                *v = cell.load(Ordering::Relaxed);
+            }
+            w
+        })
+    }
+
+    /// What `read` makes of the words (relaxed loads of any of them) as one write left
+    /// them: `read` runs again while a write is in progress or came in between.
+    #[inline]
+    fn read<R>(&self, read: impl Fn(&[AtomicU64; N]) -> R) -> R {
         loop {
             let s1 = self.seq.load(Ordering::Acquire);
             if s1 & 1 == 1 {
                 std::hint::spin_loop();
                 continue;
             }
-            let mut w = [0u64; N];
-            for (v, cell) in w.iter_mut().zip(&self.words) {
-                *v = cell.load(Ordering::Relaxed);
-            }
+            let r = read(&self.words);
             fence(Ordering::Acquire);
             if self.seq.load(Ordering::Relaxed) == s1 {
-                return w;
+                return r;
             }
         }
     }
@@ -245,6 +255,13 @@ impl SnapshotCell {
     pub fn load_motion(&self) -> Motion {
         motion_from(&self.motion.load())
     }
+
+    /// Reads only the command position (user coordinates, UU): the 8 words of it, not the
+    /// rest of the snapshot (`MCC_GetCurPos`, which programs call in tight loops).
+    pub fn load_pos(&self) -> Axes {
+        self.motion
+            .read(|w| std::array::from_fn(|k| f64::from_bits(w[1 + k].load(Ordering::Relaxed))))
+    }
 }
 
 #[cfg(test)]
@@ -275,6 +292,7 @@ mod tests {
         words[17] = 0b1000_0101;
         assert_eq!(c.motion.load(), words);
         assert_eq!(c.load_motion(), m);
+        assert_eq!(c.load_pos(), m.pos);
     }
 
     #[test]
@@ -337,6 +355,8 @@ mod tests {
         for _ in 0..20_000 {
             let s = cell.load();
             assert!(s.pos.iter().chain(s.vel.iter()).all(|&x| x == s.pos[0]));
+            let p = cell.load_pos();
+            assert!(p.iter().all(|&x| x == p[0]), "{p:?}");
         }
         writer.join().unwrap();
     }

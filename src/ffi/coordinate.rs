@@ -31,8 +31,10 @@ pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
 fn cur_pos(g: WORD) -> McclResult<[f64; 8]> {
     let shared = system::active()?;
     shared.poll_position(g);
-    let s = shared.snapshot(g)?;
-    Ok(super::kinematics::cur_pos(g)?.unwrap_or(s.pos))
+    match super::kinematics::cur_pos(&shared, g)? {
+        Some(cart) => Ok(cart),
+        None => shared.position(g),
+    }
 }
 
 /// The pulse position of group `g` per axis; for a kinematic group its joints' pulses.

@@ -9,6 +9,7 @@ use crate::engine::command::{Command, Ctx};
 use crate::engine::group::kinematics::joint_command;
 use crate::engine::group::GroupState;
 use crate::engine::kinematics::{init_extension, Extension, JointMove, KinFns};
+use crate::engine::Shared;
 use crate::error::{McclError, McclResult};
 use crate::planner::{Axes, Path, PlanError, Plane, PtpMove};
 use crate::system;
@@ -104,8 +105,7 @@ pub extern "C" fn MCC_SetPreProcessMotionCommandCallback(
 /// (without taking its lock while no group of the system is kinematic).
 /// A failing forward kinematics stops the group with 0xF105 and the read fails with
 /// `COMMAND_NOTACCEPTED_ERR`.
-pub(super) fn cur_pos(g: WORD) -> McclResult<Option<Axes>> {
-    let shared = system::active()?;
+pub(super) fn cur_pos(shared: &Shared, g: WORD) -> McclResult<Option<Axes>> {
     if !shared.kinematics_on.load(Ordering::Acquire) {
         return Ok(None);
     }
