@@ -221,19 +221,17 @@ impl Shared {
 
     /// The last published state of group `g`, without locking.
     pub fn snapshot(&self, g: u16) -> McclResult<GroupSnapshot> {
-        if !self.has_group(g) {
-            return Err(McclError::Group);
-        }
-        Ok(self.snaps[usize::from(g)].load())
+        Ok(self.published(g)?.load())
     }
 
-    /// The last published command position of group `g` (user coordinates, UU), read
-    /// without the rest of its snapshot.
-    pub fn position(&self, g: u16) -> McclResult<crate::planner::Axes> {
+    /// Where group `g` publishes its snapshot, for a status call that reads only the part
+    /// it returns ([`SnapshotCell::load_status`], [`SnapshotCell::load_pos`], ...): a
+    /// call that programs repeat in tight loops should not pay for the whole snapshot.
+    pub fn published(&self, g: u16) -> McclResult<&SnapshotCell> {
         if !self.has_group(g) {
             return Err(McclError::Group);
         }
-        Ok(self.snaps[usize::from(g)].load_pos())
+        self.snaps.get(usize::from(g)).ok_or(McclError::Group)
     }
 
     /// Publishes the motion part and the status of a group whose info is known unchanged

@@ -77,13 +77,24 @@ impl GroupSnapshot {
             error: i.error,
             queued: i.queued,
             pos: m.pos,
-            ref_pos: std::array::from_fn(|k| m.pos[k] + i.offset[k]),
-            pulses: std::array::from_fn(|k| round_pulses((m.pos[k] + i.offset[k]) * i.factor[k])),
+            ref_pos: ref_pos_of(&m.pos, &i.offset),
+            pulses: pulses_of(&m.pos, &i.offset, &i.factor),
             vel: m.vel,
             path_speed: crate::planner::compose::composed_speed(&m.vel, m.compose),
             cmd: i.cmd,
         }
     }
+}
+
+/// The reference position of user position `pos` (UU): `pos` plus the offset.
+fn ref_pos_of(pos: &Axes, offset: &Axes) -> Axes {
+    std::array::from_fn(|k| pos[k] + offset[k])
+}
+
+/// The pulse position of user position `pos`: its reference position times the pulses
+/// per UU, rounded.
+fn pulses_of(pos: &Axes, offset: &Axes, factor: &Axes) -> [i64; 8] {
+    std::array::from_fn(|k| round_pulses((pos[k] + offset[k]) * factor[k]))
 }
 
 const MOTION_WORDS: usize = 1 + 8 + 8 + 1;
@@ -262,6 +273,43 @@ impl SnapshotCell {
         self.motion
             .read(|w| std::array::from_fn(|k| f64::from_bits(w[1 + k].load(Ordering::Relaxed))))
     }
+
+    /// Reads only the motion status (`GMS_*`), one word (`MCC_GetMotionStatus`, the call
+    /// programs wait on).
+    pub fn load_status(&self) -> i32 {
+        self.motion
+            .read(|w| w[0].load(Ordering::Relaxed) as u32 as i32)
+    }
+
+    /// Reads only the info part.
+    pub fn load_info(&self) -> Info {
+        info_from(&self.info.load())
+    }
+
+    /// Reads the reference position (UU) from the position and the info's offsets, as
+    /// [`SnapshotCell::load`] makes it (`MCC_GetCurRefPos`).
+    pub fn load_ref_pos(&self) -> Axes {
+        let (offset, _) = self.load_frame();
+        ref_pos_of(&self.load_pos(), &offset)
+    }
+
+    /// Reads the pulse position from the position and the info's offsets and pulses per
+    /// UU, as [`SnapshotCell::load`] makes it (`MCC_GetPulsePos`).
+    pub fn load_pulses(&self) -> [i64; 8] {
+        let (offset, factor) = self.load_frame();
+        pulses_of(&self.load_pos(), &offset, &factor)
+    }
+
+    /// The info's offsets (reference minus user position) and pulses per UU, per axis.
+    fn load_frame(&self) -> (Axes, Axes) {
+        self.info.read(|w| {
+            let word = |i: usize| f64::from_bits(w[i].load(Ordering::Relaxed));
+            (
+                std::array::from_fn(|k| word(17 + k)),
+                std::array::from_fn(|k| word(25 + k)),
+            )
+        })
+    }
 }
 
 #[cfg(test)]
@@ -293,6 +341,7 @@ mod tests {
         assert_eq!(c.motion.load(), words);
         assert_eq!(c.load_motion(), m);
         assert_eq!(c.load_pos(), m.pos);
+        assert_eq!(c.load_status(), -3);
     }
 
     #[test]
@@ -328,6 +377,11 @@ mod tests {
         assert_eq!(s.pulses[7], 4500);
         assert_eq!(s.cmd, i.cmd);
         assert_eq!(cell.load_motion(), m);
+        assert_eq!(cell.load_info(), i);
+        assert_eq!(cell.load_status(), 2);
+        assert_eq!(cell.load_pos(), m.pos);
+        assert_eq!(cell.load_ref_pos(), s.ref_pos);
+        assert_eq!(cell.load_pulses(), s.pulses);
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! Coordinate management (user manual §2.6.1, §2.6.5; vendor header "Coordinate
 //! Management").
 
-use super::{axis_mask, group_snapshot, index, with_group};
+use super::{axis_mask, index, with_group};
 use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
@@ -33,14 +33,18 @@ fn cur_pos(g: WORD) -> McclResult<[f64; 8]> {
     shared.poll_position(g);
     match super::kinematics::cur_pos(&shared, g)? {
         Some(cart) => Ok(cart),
-        None => shared.position(g),
+        None => Ok(shared.published(g)?.load_pos()),
     }
 }
 
 /// The pulse position of group `g` per axis; for a kinematic group its joints' pulses.
 fn pulse_pos(g: WORD) -> McclResult<[i64; 8]> {
-    let s = group_snapshot(g)?;
-    Ok(super::kinematics::joint_pulses(g)?.unwrap_or(s.pulses))
+    let shared = system::active()?;
+    let published = shared.published(g)?;
+    match super::kinematics::joint_pulses(&shared, g)? {
+        Some(joints) => Ok(joints),
+        None => Ok(published.load_pulses()),
+    }
 }
 
 per_axis_getters! {
@@ -52,7 +56,7 @@ per_axis_getters! {
     /// Current command position in reference coordinates: the user coordinates before
     /// `MCC_DefinePos`/`MCC_DefineOrigin` moved them (UU).
     MCC_GetCurRefPos(f64; wGroupIndex)
-        = group_snapshot(wGroupIndex).map(|s| s.ref_pos);
+        = system::active().and_then(|s| Ok(s.published(wGroupIndex)?.load_ref_pos()));
     /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
     /// sign reversed when wPosToEncoderDir = 1.
     MCC_GetPulsePos(c_long; wGroupIndex)

@@ -126,8 +126,7 @@ pub(super) fn cur_pos(shared: &Shared, g: WORD) -> McclResult<Option<Axes>> {
 /// For `MCC_GetPulsePos` on a kinematic group: its joints' pulses (the published
 /// snapshot derives pulses from the Cartesian position); `None` for another group. Takes
 /// the group's lock only while some group of the system is kinematic.
-pub(super) fn joint_pulses(g: WORD) -> McclResult<Option<[i64; 8]>> {
-    let shared = system::active()?;
+pub(super) fn joint_pulses(shared: &Shared, g: WORD) -> McclResult<Option<[i64; 8]>> {
     if !shared.kinematics_on.load(Ordering::Acquire) {
         return Ok(None);
     }

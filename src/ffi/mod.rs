@@ -490,11 +490,6 @@ pub unsafe fn write_outs<T, const N: usize>(
     Ok(crate::vendor::consts::NO_ERR)
 }
 
-/// The published snapshot of running group `g` (no engine lock; see `Shared::snapshot`).
-pub fn group_snapshot(g: u16) -> McclResult<crate::engine::snapshot::GroupSnapshot> {
-    crate::system::active()?.snapshot(g)
-}
-
 /// Writes `N` results through outputs made by [`Out::each`].
 pub fn write_each<T, const N: usize>(outs: [Out<T>; N], v: [T; N]) {
     for (o, x) in outs.into_iter().zip(v) {

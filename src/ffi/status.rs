@@ -13,10 +13,11 @@ use std::os::raw::c_int;
 pub extern "C" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let shared = system::active()?;
-        let status = shared.snapshot(wGroupIndex)?.status;
+        let published = shared.published(wGroupIndex)?;
+        let status = published.load_status();
         if status != c::GMS_STOP {
             shared.poll(wGroupIndex, status);
-            return Ok(shared.snapshot(wGroupIndex)?.status);
+            return Ok(published.load_status());
         }
         Ok(status)
     }
@@ -28,7 +29,7 @@ pointer_fns! {
     /// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
     /// started since `MCC_ResetCommandIndexLD`.
     MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex)
-        = write_out(pstCurCommand, || Ok(system::active()?.snapshot(wGroupIndex)?.cmd));
+        = write_out(pstCurCommand, || Ok(system::active()?.published(wGroupIndex)?.load_info().cmd));
     /// Commands queued and not yet started (the running one is not counted).
     MCC_GetCommandCount(pnCmdCount: c_int; wGroupIndex) = write_out(pnCmdCount, || {
         let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
@@ -134,7 +135,7 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
 /// The group's error record (0 when none; codes in docs/vendor-interface.md).
 #[no_mangle]
 pub extern "C" fn MCC_GetErrorCode(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { Ok(system::active()?.snapshot(wGroupIndex)?.error) }
+    ffi_boundary! { Ok(system::active()?.published(wGroupIndex)?.load_info().error) }
 }
 
 /// Clears the group's error record; queued commands run again.

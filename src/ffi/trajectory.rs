@@ -121,8 +121,8 @@ pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let s = system::active()?.snapshot(wGroupIndex)?;
-        Ok(c_int::from(s.status != c::GMS_DELAYING))
+        let status = system::active()?.published(wGroupIndex)?.load_status();
+        Ok(c_int::from(status != c::GMS_DELAYING))
     }
 }
 
