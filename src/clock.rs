@@ -114,18 +114,10 @@ enum Source {
     Fake(std::sync::Arc<tests::FakeTime>),
 }
 
-/// Now on the monotonic clock, ns (the clock `Instant` reads on Linux).
+/// Now on the monotonic clock, ns (the clock `Instant` reads on Linux). CLOCK_MONOTONIC
+/// always exists; were the call to fail, this reads 0.
 pub fn monotonic_ns() -> u64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid, writable timespec; CLOCK_MONOTONIC always exists (the
-    // call is answered by the vDSO, no system call).
-    unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) };
-    let s = u64::try_from(ts.tv_sec).unwrap_or(0);
-    let ns = u64::try_from(ts.tv_nsec).unwrap_or(0);
-    s.saturating_mul(1_000_000_000).saturating_add(ns)
+    clock_ns(libc::CLOCK_MONOTONIC).unwrap_or(0)
 }
 
 /// Now on a monotonic clock that may lag by up to a scheduler tick (1–10 ms), ns: for
@@ -133,22 +125,30 @@ pub fn monotonic_ns() -> u64 {
 /// 6.5 ns against 32 ns on the development VM), which matters to a tick of 0.1 µs. Where
 /// there is no coarse clock (or it fails) it is [`monotonic_ns`]: the same time base.
 pub(crate) fn coarse_monotonic_ns() -> u64 {
+    // CLOCK_MONOTONIC_COARSE exists on every Linux since 2.6.32.
     #[cfg(any(target_os = "linux", target_os = "android"))]
-    {
-        let mut ts = libc::timespec {
-            tv_sec: 0,
-            tv_nsec: 0,
-        };
-        // SAFETY: `ts` is a valid, writable timespec; CLOCK_MONOTONIC_COARSE exists on
-        // every Linux since 2.6.32 (answered by the vDSO, no system call).
-        let rc = unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC_COARSE, &mut ts) };
-        if rc == 0 {
-            let s = u64::try_from(ts.tv_sec).unwrap_or(0);
-            let ns = u64::try_from(ts.tv_nsec).unwrap_or(0);
-            return s.saturating_mul(1_000_000_000).saturating_add(ns);
-        }
+    if let Some(ns) = clock_ns(libc::CLOCK_MONOTONIC_COARSE) {
+        return ns;
     }
     monotonic_ns()
+}
+
+/// Now on clock `id`, ns (`None` if the call fails). The monotonic clocks are answered by
+/// the vDSO, without a system call.
+#[inline]
+fn clock_ns(id: libc::clockid_t) -> Option<u64> {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec; an unknown clock only makes the call
+    // fail.
+    if unsafe { libc::clock_gettime(id, &mut ts) } != 0 {
+        return None;
+    }
+    let s = u64::try_from(ts.tv_sec).unwrap_or(0);
+    let ns = u64::try_from(ts.tv_nsec).unwrap_or(0);
+    Some(s.saturating_mul(1_000_000_000).saturating_add(ns))
 }
 
 /// Sleeps until `ns` on the monotonic clock (absolute: a late wake-up does not push the
