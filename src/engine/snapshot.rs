@@ -69,6 +69,14 @@ pub fn round_pulses(x: f64) -> i64 {
     }
 }
 
+impl Motion {
+    /// The tangential (path) speed, UU/s: the speeds of the compose axes combined
+    /// ([`crate::planner::compose::composed_speed`]).
+    pub fn path_speed(&self) -> f64 {
+        crate::planner::compose::composed_speed(&self.vel, self.compose)
+    }
+}
+
 impl GroupSnapshot {
     /// Assembles a snapshot from its two parts (pulses and reference position derived).
     pub fn from_parts(m: &Motion, i: &Info) -> GroupSnapshot {
@@ -80,7 +88,7 @@ impl GroupSnapshot {
             ref_pos: ref_pos_of(&m.pos, &i.offset),
             pulses: pulses_of(&m.pos, &i.offset, &i.factor),
             vel: m.vel,
-            path_speed: crate::planner::compose::composed_speed(&m.vel, m.compose),
+            path_speed: m.path_speed(),
             cmd: i.cmd,
         }
     }

@@ -1,7 +1,7 @@
 //! Coordinate management (user manual §2.6.1, §2.6.5; vendor header "Coordinate
 //! Management").
 
-use super::{axis_mask, index, with_group};
+use super::{axis_mask, index, read_published, with_group};
 use crate::error::McclResult;
 use crate::system;
 use crate::vendor::consts as c;
@@ -56,7 +56,7 @@ per_axis_getters! {
     /// Current command position in reference coordinates: the user coordinates before
     /// `MCC_DefinePos`/`MCC_DefineOrigin` moved them (UU).
     MCC_GetCurRefPos(f64; wGroupIndex)
-        = system::active().and_then(|s| Ok(s.published(wGroupIndex)?.load_ref_pos()));
+        = read_published(wGroupIndex, |p| p.load_ref_pos());
     /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
     /// sign reversed when wPosToEncoderDir = 1.
     MCC_GetPulsePos(c_long; wGroupIndex)

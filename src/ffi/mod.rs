@@ -490,6 +490,15 @@ pub unsafe fn write_outs<T, const N: usize>(
     Ok(crate::vendor::consts::NO_ERR)
 }
 
+/// What `read` takes from the published snapshot of running group `g` (no engine lock;
+/// see `Shared::published`): each status getter reads only the words it returns.
+pub fn read_published<R>(
+    g: u16,
+    read: impl FnOnce(&crate::engine::snapshot::SnapshotCell) -> R,
+) -> McclResult<R> {
+    Ok(read(crate::system::active()?.published(g)?))
+}
+
 /// Writes `N` results through outputs made by [`Out::each`].
 pub fn write_each<T, const N: usize>(outs: [Out<T>; N], v: [T; N]) {
     for (o, x) in outs.into_iter().zip(v) {

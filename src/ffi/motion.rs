@@ -1,7 +1,9 @@
 //! General motion: line, arc, circle and helix commands and their settings (user manual
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
-use super::{axis_mask, finite, finite8, queue, queue_curve, shape, shape_char, with_group};
+use super::{
+    axis_mask, finite, finite8, queue, queue_curve, read_published, shape, shape_char, with_group,
+};
 use crate::error::{McclError, McclResult};
 use crate::planner::{Axes, Path, Plane};
 use crate::system;
@@ -121,16 +123,13 @@ settings_getters! {
 /// The current tangential speed (UU/s): X/Y/Z path speed, or the fastest aux axis.
 #[no_mangle]
 pub extern "C" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! {
-        let m = system::active()?.published(wGroupIndex)?.load_motion();
-        Ok(crate::planner::compose::composed_speed(&m.vel, m.compose))
-    }
+    ffi_boundary! { read_published(wGroupIndex, |p| p.load_motion().path_speed()) }
 }
 
 per_axis_getters! {
     /// The current speed of every axis, UU/s (signed).
     MCC_GetSpeed(f64; wGroupIndex)
-        = system::active().and_then(|s| Ok(s.published(wGroupIndex)?.load_motion().vel));
+        = read_published(wGroupIndex, |p| p.load_motion().vel);
 }
 
 fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {

@@ -1,6 +1,6 @@
 //! Motion status (user manual §2.6.5; vendor header "Motion Status").
 
-use super::write_out;
+use super::{read_published, write_out};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -29,7 +29,7 @@ pointer_fns! {
     /// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
     /// started since `MCC_ResetCommandIndexLD`.
     MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex)
-        = write_out(pstCurCommand, || Ok(system::active()?.published(wGroupIndex)?.load_info().cmd));
+        = write_out(pstCurCommand, || read_published(wGroupIndex, |p| p.load_info().cmd));
     /// Commands queued and not yet started (the running one is not counted).
     MCC_GetCommandCount(pnCmdCount: c_int; wGroupIndex) = write_out(pnCmdCount, || {
         let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
@@ -135,7 +135,7 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
 /// The group's error record (0 when none; codes in docs/vendor-interface.md).
 #[no_mangle]
 pub extern "C" fn MCC_GetErrorCode(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { Ok(system::active()?.published(wGroupIndex)?.load_info().error) }
+    ffi_boundary! { read_published(wGroupIndex, |p| p.load_info().error) }
 }
 
 /// Clears the group's error record; queued commands run again.

@@ -18,7 +18,7 @@ pub extern "C" fn MCC_TimeDelay(dwTime: DWORD) {
     }
 }
 
-use super::{queue, with_group};
+use super::{queue, read_published, with_group};
 use crate::card::rio::{set_ix, ARIO_SLAVES, RIO_PORTS};
 use crate::engine::command::Plan;
 use crate::error::McclError;
@@ -121,7 +121,7 @@ pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let status = system::active()?.published(wGroupIndex)?.load_status();
+        let status = read_published(wGroupIndex, |p| p.load_status())?;
         Ok(c_int::from(status != c::GMS_DELAYING))
     }
 }
