@@ -370,9 +370,9 @@ pub struct Config {
     pub units: [i32; GROUPS],
 }
 
-/// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s. The manuals
-/// give no default; this one is high enough not to clamp any example's feed speed.
-pub(crate) const DEFAULT_SYS_MAX_SPEED: f64 = 100_000.0;
+/// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s: 100, as the
+/// vendor's library reads right after init (the manuals give none).
+pub(crate) const DEFAULT_SYS_MAX_SPEED: f64 = 100.0;
 
 impl Default for Config {
     fn default() -> Self {

@@ -28,7 +28,9 @@ the raw form back byte for byte; `encode` checks that it does.
 
 Comparison: integers (pulses, status, error records, queue, command fields, int returns)
 must be equal; doubles equal within 1e-9 relative (1e-9 absolute near 0): the freedom the
-order of floating-point operations needs, far below a pulse.
+order of floating-point operations needs, far below a pulse. Speeds (the distance of a
+period over the period) also within 1e-8 UU/s absolute: a difference of 1e-11 UU in a
+position (the last digits of a circle's centre computed another way) over a 1 ms period.
 """
 import argparse
 import os
@@ -39,6 +41,7 @@ import tempfile
 FIELDS = ("s", "e", "q", "p", "c", "r", "v", "f", "k")
 VECTORS = ("p", "c", "r", "v", "f", "k")
 REL = 1e-9
+SPEED_ABS = 1e-8
 
 
 def parse_t(line):
@@ -225,8 +228,9 @@ def parse_raw(lines):
     return run
 
 
-def close(a, b):
-    """Two tokens agree: equal text, or equal integers, or doubles within REL."""
+def close(a, b, abs_tol=0.0):
+    """Two tokens agree: equal text, or equal integers, or doubles within REL (or
+    `abs_tol`)."""
     if a == b:
         return True
     try:
@@ -237,11 +241,12 @@ def close(a, b):
         return True
     if "." not in a + b and "e" not in (a + b).lower() and "n" not in (a + b).lower():
         return False  # two different integers
-    return abs(x - y) <= REL * max(1.0, abs(x), abs(y))
+    d = abs(x - y)
+    return d <= REL * max(1.0, abs(x), abs(y)) or d <= abs_tol
 
 
-def tokens_agree(a, b):
-    return len(a) == len(b) and all(close(x, y) for x, y in zip(a, b))
+def tokens_agree(a, b, abs_tol=0.0):
+    return len(a) == len(b) and all(close(x, y, abs_tol) for x, y in zip(a, b))
 
 
 FIELD_NAMES = {
@@ -332,7 +337,8 @@ def compare(vendor, ours, dep):
                 rep.add("group %d recorded" % g, tick, ra is not None, rb is not None)
                 continue
             for key in FIELDS:
-                if not tokens_agree(ra[key], rb[key]):
+                tol = SPEED_ABS if key in ("v", "f") else 0.0
+                if not tokens_agree(ra[key], rb[key], tol):
                     rep.add("group %d %s" % (g, FIELD_NAMES[key]), tick,
                             " ".join(ra[key]), " ".join(rb[key]))
         calls(tick, a["calls"], b["calls"])

@@ -5,7 +5,7 @@
 
 use crate::config::{range, AXES};
 use crate::error::{McclError, McclResult};
-use crate::planner::{Axes, Path, PathMove, PlanError, Plane, Profile, PtpMove, Shape};
+use crate::planner::{ramp_periods, Axes, Path, PathMove, PlanError, Plane, PtpMove, Shape};
 use crate::vendor::SYS_MAC_PARAM;
 
 /// `COMMAND_INFO.nType` codes (user manual §2.6.5).
@@ -22,16 +22,28 @@ pub mod ctype {
     pub const HELIX_CW: i32 = 4;
     /// Counter-clockwise helix.
     pub const HELIX_CCW: i32 = 5;
-    /// Motion delay.
-    pub const DELAY: i32 = 6;
-    /// Enable blending.
-    pub const BLEND_ON: i32 = 7;
+    /// Motion delay (the user manual says 6; the vendor's library shows 8, and the
+    /// blending and in-position switches two above the manual's numbers too).
+    pub const DELAY: i32 = 8;
+    /// Enable blending (the vendor's type: a queued command of one period).
+    pub const BLEND_ON: i32 = 9;
     /// Disable blending.
-    pub const BLEND_OFF: i32 = 8;
+    pub const BLEND_OFF: i32 = 10;
     /// Enable in-position check.
-    pub const INPOS_ON: i32 = 9;
+    pub const INPOS_ON: i32 = 11;
     /// Disable in-position check.
-    pub const INPOS_OFF: i32 = 10;
+    pub const INPOS_OFF: i32 = 12;
+}
+
+/// What kind of curve a command is (its `COMMAND_INFO.nType`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Curve {
+    /// Through a point to an end (`MCC_ArcXY`, `MCC_ArcXYZ`).
+    ThreePoint,
+    /// About a center (`MCC_ArcThetaXY`, `MCC_CircleXY`).
+    Arc,
+    /// A helix.
+    Helix,
 }
 
 /// How a command moves (or what it switches).
@@ -41,8 +53,8 @@ pub enum Plan {
     Path(PathMove),
     /// Point-to-point (and jog): per-axis profiles.
     Ptp(PtpMove),
-    /// Wait this many seconds.
-    Delay(f64),
+    /// Wait this many periods.
+    Delay(u64),
     /// Queued blending switch.
     Blend(bool),
     /// Queued in-position switch for the axes in the mask.
@@ -53,6 +65,9 @@ pub enum Plan {
     Custom(super::group::custom::CustomMove),
     /// A joint move of a kinematic group (`MCC_PtP_V6`, `super::kinematics`).
     Joint(Box<super::kinematics::JointMove>),
+    /// A command the vendor's library accepts and fails when it starts (an arc or circle
+    /// with no geometry): it records this error record and stops the group.
+    Fault(i32),
 }
 
 /// An output a queued command sets: the bits of `mask` take those of `value`.
@@ -102,17 +117,6 @@ pub struct Command {
 }
 
 impl Command {
-    /// Duration of the plan in its own time (seconds); markers take none.
-    pub fn duration(&self) -> f64 {
-        match &self.plan {
-            Plan::Path(m) => m.duration(),
-            Plan::Ptp(p) => p.duration(),
-            Plan::Delay(s) => *s,
-            Plan::Custom(m) => m.duration(),
-            Plan::Joint(j) => j.duration(),
-            Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => 0.0,
-        }
-    }
 
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
@@ -120,27 +124,6 @@ impl Command {
             self.plan,
             Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_) | Plan::Joint(_)
         )
-    }
-
-    /// Position and velocity (per unit of the command's own time) at time `t`.
-    #[inline]
-    pub fn sample(&self, t: f64) -> (Axes, Axes) {
-        match &self.plan {
-            Plan::Path(m) => m.sample(t),
-            Plan::Ptp(p) => p.sample(t),
-            Plan::Custom(m) => m.sample(),
-            Plan::Joint(j) => (j.cart_at(t), [0.0; AXES]),
-            _ => (self.target, [0.0; AXES]),
-        }
-    }
-
-    /// [`Command::sample`] written in place.
-    #[inline(always)]
-    pub fn sample_into(&self, t: f64, pos: &mut Axes, vel: &mut Axes) {
-        match &self.plan {
-            Plan::Path(m) => m.sample_into(t, pos, vel),
-            _ => (*pos, *vel) = self.sample(t),
-        }
     }
 
     /// Where the plan starts.
@@ -243,10 +226,11 @@ pub struct Settings {
     pub acc_after_ipo: bool,
 }
 
-/// General-motion feed speed before `MCC_SetFeedSpeed` (UU/s). The manuals give none.
-pub const DEFAULT_FEED: f64 = 10.0;
-/// PtP ratio before `MCC_SetPtPSpeed` (percent). The manuals give none.
-pub const DEFAULT_PTP_RATIO: f64 = 10.0;
+/// General-motion feed speed before `MCC_SetFeedSpeed` (UU/s): the vendor's library
+/// reads 1 right after init (the manuals give none).
+pub const DEFAULT_FEED: f64 = 1.0;
+/// PtP ratio before `MCC_SetPtPSpeed` (percent): the vendor's library reads 1.
+pub const DEFAULT_PTP_RATIO: f64 = 1.0;
 /// Acc/dec time of every kind of motion before it is set (ms, user manual §2.6.2).
 pub const DEFAULT_ACC_DEC_MS: f64 = 300.0;
 
@@ -256,11 +240,12 @@ impl Default for Settings {
             feed: DEFAULT_FEED,
             acc_ms: DEFAULT_ACC_DEC_MS,
             dec_ms: DEFAULT_ACC_DEC_MS,
-            acc: Shape::T,
-            dec: Shape::T,
+            // The vendor's library starts with S curves everywhere.
+            acc: Shape::S,
+            dec: Shape::S,
             ptp_ratio: DEFAULT_PTP_RATIO,
-            ptp_acc: [Shape::T; AXES],
-            ptp_dec: [Shape::T; AXES],
+            ptp_acc: [Shape::S; AXES],
+            ptp_dec: [Shape::S; AXES],
             ptp_acc_ms: [DEFAULT_ACC_DEC_MS; AXES],
             ptp_dec_ms: [DEFAULT_ACC_DEC_MS; AXES],
             absolute: true,
@@ -270,7 +255,7 @@ impl Default for Settings {
     }
 }
 
-fn plan_err(e: PlanError) -> McclError {
+pub(crate) fn plan_err(e: PlanError) -> McclError {
     match e {
         PlanError::BadArc | PlanError::BadParameter(_) => McclError::Parameter,
     }
@@ -287,6 +272,8 @@ pub struct Ctx<'a> {
     pub from: Axes,
     /// Reference position − user position per axis (`MCC_DefinePos` moves it).
     pub offset: Axes,
+    /// The interpolation period, seconds (moves are planned in whole periods).
+    pub period_s: f64,
 }
 
 impl Ctx<'_> {
@@ -350,27 +337,40 @@ impl Ctx<'_> {
         Ok(())
     }
 
+    /// The acceleration and deceleration of general motion and point-to-point, in
+    /// periods ([`ramp_periods`]), and what `COMMAND_INFO` shows of them (ms).
+    fn ramps(&self) -> ((u32, u32), (f64, f64)) {
+        let s = self.settings;
+        let (na, nd) = if s.acc_after_ipo {
+            (0, 0)
+        } else {
+            ramp_periods(s.acc_ms, s.dec_ms, self.period_ms())
+        };
+        let p = self.period_ms();
+        ((na, nd), (f64::from(na) * p, f64::from(nd) * p))
+    }
+
+    /// The period in milliseconds.
+    fn period_ms(&self) -> f64 {
+        self.period_s * 1000.0
+    }
+
     fn general(&self, path: Path, ctype: i32) -> McclResult<Command> {
         let s = self.settings;
         // After-interpolation acc/dec: the interpolation runs at the feed speed from the
         // first period to the last; the group's filter makes the ramps.
-        let (acc_s, dec_s) = if s.acc_after_ipo {
-            (0.0, 0.0)
-        } else {
-            (s.acc_ms / 1000.0, s.dec_ms / 1000.0)
-        };
-        let profile =
-            Profile::new(path.length(), s.feed, acc_s, dec_s, s.acc, s.dec).map_err(plan_err)?;
-        self.check_reach(&path.extent(), profile.duration())?;
-        let target = path.end();
+        let (ramps, (acc_ms, dec_ms)) = self.ramps();
+        let mv = PathMove::new(path, s.feed, ramps, (s.acc, s.dec), self.period_s);
+        self.check_reach(&mv.path.extent(), mv.periods() as f64 * self.period_s)?;
+        let target = mv.path.end();
         Ok(Command {
             index: 0,
             ctype,
             info_feed: s.feed,
             target,
-            acc_ms: s.acc_ms,
-            dec_ms: s.dec_ms,
-            plan: Plan::Path(PathMove { path, profile }),
+            acc_ms,
+            dec_ms,
+            plan: Plan::Path(mv),
             posture: None,
         })
     }
@@ -384,46 +384,76 @@ impl Ctx<'_> {
         self.general(path, ctype::LINE)
     }
 
-    /// An arc, circle or helix path already built from `self.from`.
-    pub fn curve(&self, path: Path, helix: bool) -> McclResult<Command> {
+    /// An arc, circle or helix path already built from `self.from`. A three-point arc
+    /// reports `ARC_CCW` whichever way it turns, as the vendor's library does.
+    pub fn curve(&self, path: Path, kind: Curve) -> McclResult<Command> {
         let ccw = path.is_ccw().unwrap_or(true);
-        let ctype = match (helix, ccw) {
-            (false, false) => ctype::ARC_CW,
-            (false, true) => ctype::ARC_CCW,
-            (true, false) => ctype::HELIX_CW,
-            (true, true) => ctype::HELIX_CCW,
+        let ctype = match (kind, ccw) {
+            (Curve::ThreePoint, _) => ctype::ARC_CCW,
+            (Curve::Arc, false) => ctype::ARC_CW,
+            (Curve::Arc, true) => ctype::ARC_CCW,
+            (Curve::Helix, false) => ctype::HELIX_CW,
+            (Curve::Helix, true) => ctype::HELIX_CCW,
         };
         self.general(path, ctype)
     }
 
+    /// A curve whose geometry is bad (`kind` as [`Ctx::curve`] would report it): queued
+    /// like any, it records `code` when it starts (the vendor's library accepts it).
+    pub fn fault(&self, kind: Curve, code: i32) -> Command {
+        let ctype = match kind {
+            Curve::Helix => ctype::HELIX_CCW,
+            _ => ctype::ARC_CCW,
+        };
+        Command {
+            index: 0,
+            ctype,
+            info_feed: self.settings.feed,
+            target: self.from,
+            acc_ms: 0.0,
+            dec_ms: 0.0,
+            plan: Plan::Fault(code),
+            posture: None,
+        }
+    }
+
     /// Point-to-point to `target` at `ratio` percent of each axis's safe speed;
-    /// `sync`: all axes end together (MCC_SyncPtP).
+    /// `sync`: all axes end together (MCC_SyncPtP). Every axis ramps with the group's
+    /// acceleration and deceleration (the vendor's library does not use the PtP times and
+    /// types, which it keeps and reports).
     pub fn ptp(&self, target: Axes, ratio: f64, sync: bool) -> McclResult<Command> {
         let s = self.settings;
         let speed: Axes = std::array::from_fn(|i| self.axes[i].safe_speed * ratio / 100.0);
-        let acc: Axes = s.ptp_acc_ms.map(|ms| ms / 1000.0);
-        let dec: Axes = s.ptp_dec_ms.map(|ms| ms / 1000.0);
+        let (ramps, (acc_ms, dec_ms)) = self.ramps();
         let mv = PtpMove::new(
-            &self.from, &target, &speed, &acc, &dec, &s.ptp_acc, &s.ptp_dec, sync,
+            &self.from,
+            &target,
+            &speed,
+            &[ramps; AXES],
+            &[(s.acc, s.dec); AXES],
+            self.period_s,
+            sync,
         )
         .map_err(plan_err)?;
         let extent: [(f64, f64); AXES] =
             std::array::from_fn(|i| (self.from[i].min(target[i]), self.from[i].max(target[i])));
-        self.check_reach(&extent, mv.duration())?;
+        self.check_reach(&extent, mv.periods() as f64 * self.period_s)?;
         Ok(Command {
             index: 0,
             ctype: ctype::PTP,
             info_feed: ratio,
             target: mv.end(),
-            acc_ms: s.ptp_acc_ms[0],
-            dec_ms: s.ptp_dec_ms[0],
+            acc_ms,
+            dec_ms,
             plan: Plan::Ptp(mv),
             posture: None,
         })
     }
 
-    /// A delay of `ms` milliseconds.
+    /// A delay of `ms` milliseconds: whole periods, rounded up.
     pub fn delay(&self, ms: f64) -> Command {
+        let p = self.period_ms();
+        let periods = if p > 0.0 { (ms / p).ceil().max(0.0) as u64 } else { 0 };
         Command {
             index: 0,
             ctype: ctype::DELAY,
@@ -431,7 +461,7 @@ impl Ctx<'_> {
             target: self.from,
             acc_ms: 0.0,
             dec_ms: 0.0,
-            plan: Plan::Delay(ms / 1000.0),
+            plan: Plan::Delay(periods),
             posture: None,
         }
     }

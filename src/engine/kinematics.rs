@@ -171,7 +171,7 @@ pub fn init_extension(f: INIT_EXTENSION, ext: &Extension) {
 
 /// `MCC_PtP_V6`: a point-to-point move of the joints. It is planned when it starts, from
 /// the joints then (which the Cartesian moves before it leave only at run time), with
-/// the group's PtP settings captured when it was queued; all joints start and end
+/// the group's ramps and speeds captured when it was queued; all joints start and end
 /// together. Its Cartesian end is the forward kinematics of its target, computed when it
 /// was queued.
 #[derive(Debug, Clone)]
@@ -184,14 +184,12 @@ pub struct JointMove {
     pub cart_end: Axes,
     /// Per-joint speed, UU/s.
     pub speed: Axes,
-    /// Acceleration time per joint, s.
-    pub acc: Axes,
-    /// Deceleration time per joint, s.
-    pub dec: Axes,
-    /// Acceleration shape per joint.
-    pub acc_shape: [Shape; AXES],
-    /// Deceleration shape per joint.
-    pub dec_shape: [Shape; AXES],
+    /// Acceleration and deceleration periods.
+    pub ramps: (u32, u32),
+    /// Acceleration and deceleration shapes.
+    pub shapes: (Shape, Shape),
+    /// The interpolation period, s.
+    pub period_s: f64,
     /// The move, once planned from the joints where it started.
     pub planned: Option<PtpMove>,
 }
@@ -203,29 +201,28 @@ impl JointMove {
             from,
             &self.target,
             &self.speed,
-            &self.acc,
-            &self.dec,
-            &self.acc_shape,
-            &self.dec_shape,
+            &[self.ramps; AXES],
+            &[self.shapes; AXES],
+            self.period_s,
             true,
         )
     }
 
-    /// Own-time duration (0 until planned).
-    pub fn duration(&self) -> f64 {
-        self.planned.as_ref().map_or(0.0, PtpMove::duration)
+    /// Periods it lasts (0 until planned).
+    pub fn periods(&self) -> u64 {
+        self.planned.as_ref().map_or(0, PtpMove::periods)
     }
 
-    /// The joints at own time `t`.
-    pub fn joints_at(&self, t: f64) -> Axes {
-        self.planned.as_ref().map_or(self.target, |m| m.sample(t).0)
+    /// The joints after `k` periods.
+    pub fn joints_at(&self, k: u64) -> Axes {
+        self.planned.as_ref().map_or(self.target, |m| m.position(k))
     }
 
-    /// The group's Cartesian command position at own time `t`: the start until the
+    /// The group's Cartesian command position after `k` periods: the start until the
     /// joints arrive, then the end (the Cartesian path of a joint move is whatever the
     /// joints make of it; `MCC_GetCurPos` reads it through the forward kinematics).
-    pub fn cart_at(&self, t: f64) -> Axes {
-        if t >= self.duration() - super::group::TIME_EPS {
+    pub fn cart_at(&self, k: u64) -> Axes {
+        if k >= self.periods() {
             self.cart_end
         } else {
             self.cart_start

@@ -119,7 +119,7 @@ impl Shared {
         let mut gs = Vec::with_capacity(groups.len());
         for (n, (i, d)) in groups.iter().enumerate() {
             slots[*i] = Some(n);
-            gs.push(GroupState::new(*i, *d, axes_of(d, mac)));
+            gs.push(GroupState::new(*i, *d, axes_of(d, mac), period.as_secs_f64()));
         }
         let mut trace = trace;
         if let Some(t) = trace.as_mut() {

@@ -25,7 +25,9 @@ pub struct GroupSnapshot {
     pub vel: Axes,
     /// Tangential (path) speed (UU/s).
     pub path_speed: f64,
-    /// The command being executed (type -1 when none).
+    /// Whether a command is being executed.
+    pub running: bool,
+    /// The command being executed (or the last one started).
     pub cmd: COMMAND_INFO,
 }
 
@@ -38,10 +40,8 @@ pub struct Motion {
     pub pos: Axes,
     /// Velocity per axis (UU/s).
     pub vel: Axes,
-    /// The axes whose speeds compose the path speed (`MCC_SetComposeAxis`; X/Y/Z by
-    /// default): the path speed is derived from `vel` when read
-    /// ([`crate::planner::compose::composed_speed`]), not computed on every tick.
-    pub compose: u32,
+    /// The feed speed of the last period (UU/s, `MCC_GetCurFeedSpeed`).
+    pub feed: f64,
 }
 
 /// The part of a snapshot that changes when commands start, end or are queued.
@@ -51,6 +51,9 @@ pub struct Info {
     pub error: i32,
     /// Commands queued and not yet started.
     pub queued: i32,
+    /// Whether a command is being executed (`cmd` is then it; otherwise `cmd` names the
+    /// last one started).
+    pub running: bool,
     /// The command being executed.
     pub cmd: COMMAND_INFO,
     /// Reference position minus user position, per axis (UU).
@@ -60,7 +63,7 @@ pub struct Info {
 }
 
 /// Rounds to the nearest whole pulse (halves away from zero) with a float-to-int
-/// conversion instead of a libm call: this runs for every axis on every tick.
+/// conversion instead of a libm call (an MC3B's step counts).
 pub fn round_pulses(x: f64) -> i64 {
     if x >= 0.0 {
         (x + 0.5) as i64
@@ -69,11 +72,40 @@ pub fn round_pulses(x: f64) -> i64 {
     }
 }
 
+/// A tenth of a millionth of a pulse: how far short of a whole pulse a position may fall
+/// and still count it (the vendor's library, measured: 1 − 1e-7 pulse counts, 1 − 1.5e-7
+/// does not).
+const PULSE_TOLERANCE: f64 = 1e-7;
+
+/// The pulse count of a position `x` pulses from zero, as the vendor's library counts:
+/// the whole pulses toward zero, a position within [`PULSE_TOLERANCE`] short of a whole
+/// pulse counting it (so that a position computed a rounding error short of a whole
+/// pulse is not a pulse short). A float-to-int conversion: this runs for every axis on
+/// every tick.
+#[inline]
+pub fn whole_pulses(x: f64) -> i64 {
+    if x >= 0.0 {
+        (x + PULSE_TOLERANCE) as i64
+    } else {
+        (x - PULSE_TOLERANCE) as i64
+    }
+}
+
+/// A pulse count in user units: what `MCC_GetCurPos` reads (the vendor's library reports
+/// whole pulses); a position of an axis with no pulses per unit stays as it is.
+#[inline]
+pub fn pulses_to_pos(p: i64, factor: f64, exact: f64) -> f64 {
+    if factor != 0.0 {
+        p as f64 / factor
+    } else {
+        exact
+    }
+}
+
 impl Motion {
-    /// The tangential (path) speed, UU/s: the speeds of the compose axes combined
-    /// ([`crate::planner::compose::composed_speed`]).
+    /// The feed speed of the last period (UU/s).
     pub fn path_speed(&self) -> f64 {
-        crate::planner::compose::composed_speed(&self.vel, self.compose)
+        self.feed
     }
 }
 
@@ -84,36 +116,45 @@ impl GroupSnapshot {
             status: m.status,
             error: i.error,
             queued: i.queued,
-            pos: m.pos,
-            ref_pos: ref_pos_of(&m.pos, &i.offset),
+            pos: pos_of(&m.pos, &i.offset, &i.factor),
+            ref_pos: ref_of(&m.pos, &i.offset, &i.factor),
             pulses: pulses_of(&m.pos, &i.offset, &i.factor),
             vel: m.vel,
             path_speed: m.path_speed(),
+            running: i.running,
             cmd: i.cmd,
         }
     }
 }
 
-/// The reference position of user position `pos` (UU): `pos` plus the offset.
-fn ref_pos_of(pos: &Axes, offset: &Axes) -> Axes {
-    std::array::from_fn(|k| pos[k] + offset[k])
+/// The pulse position of user position `pos`: its reference position times the pulses
+/// per UU, in whole pulses ([`whole_pulses`]).
+fn pulses_of(pos: &Axes, offset: &Axes, factor: &Axes) -> [i64; 8] {
+    std::array::from_fn(|k| whole_pulses((pos[k] + offset[k]) * factor[k]))
 }
 
-/// The pulse position of user position `pos`: its reference position times the pulses
-/// per UU, rounded.
-fn pulses_of(pos: &Axes, offset: &Axes, factor: &Axes) -> [i64; 8] {
-    std::array::from_fn(|k| round_pulses((pos[k] + offset[k]) * factor[k]))
+/// The reference position a program reads of user position `pos`: its pulses in units.
+fn ref_of(pos: &Axes, offset: &Axes, factor: &Axes) -> Axes {
+    let p = pulses_of(pos, offset, factor);
+    std::array::from_fn(|k| pulses_to_pos(p[k], factor[k], pos[k] + offset[k]))
+}
+
+/// The user position a program reads of user position `pos`: the reference position it
+/// reads less the offset.
+fn pos_of(pos: &Axes, offset: &Axes, factor: &Axes) -> Axes {
+    let r = ref_of(pos, offset, factor);
+    std::array::from_fn(|k| if offset[k] == 0.0 { r[k] } else { r[k] - offset[k] })
 }
 
 const MOTION_WORDS: usize = 1 + 8 + 8 + 1;
-const INFO_WORDS: usize = 2 + 15 + 8 + 8;
+const INFO_WORDS: usize = 2 + 15 + 8 + 8 + 1;
 
 fn motion_from(w: &[u64; MOTION_WORDS]) -> Motion {
     Motion {
         status: w[0] as u32 as i32,
         pos: std::array::from_fn(|k| f64::from_bits(w[1 + k])),
         vel: std::array::from_fn(|k| f64::from_bits(w[9 + k])),
-        compose: w[17] as u32,
+        feed: f64::from_bits(w[17]),
     }
 }
 
@@ -134,6 +175,7 @@ fn info_words(i: &Info) -> [u64; INFO_WORDS] {
     w[14] = c.dfDectime.to_bits();
     w[15] = c.nMotionPhase as u32 as u64;
     w[16] = c.nCommandIndex_LD as u32 as u64;
+    w[33] = u64::from(i.running);
     w
 }
 
@@ -153,6 +195,7 @@ fn info_from(w: &[u64; INFO_WORDS]) -> Info {
         },
         offset: std::array::from_fn(|k| f64::from_bits(w[17 + k])),
         factor: std::array::from_fn(|k| f64::from_bits(w[25 + k])),
+        running: w[33] != 0,
     }
 }
 
@@ -233,22 +276,22 @@ pub struct SnapshotCell {
 impl SnapshotCell {
     /// Publishes the motion part. Callers must be serialised (they hold the group's lock).
     pub fn store_motion(&self, m: &Motion) {
-        self.store_motion_parts(m.status, &m.pos, &m.vel, m.compose);
+        self.store_motion_parts(m.status, &m.pos, &m.vel, m.feed);
     }
 
     /// Publishes the motion part from its fields, without assembling a [`Motion`] first
     /// (this runs for every group on every tick that publishes): the status, the 8
-    /// positions, the 8 velocities and the compose mask, one word each, as
-    /// `motion_from` reads them. Callers must be serialised.
+    /// positions, the 8 velocities and the feed speed, one word each, as `motion_from`
+    /// reads them. Callers must be serialised.
     #[inline]
-    pub fn store_motion_parts(&self, status: i32, pos: &Axes, vel: &Axes, compose: u32) {
+    pub fn store_motion_parts(&self, status: i32, pos: &Axes, vel: &Axes, feed: f64) {
         self.motion.store_by(|w| {
             w[0].store(status as u32 as u64, Ordering::Relaxed);
             for k in 0..8 {
                 w[1 + k].store(pos[k].to_bits(), Ordering::Relaxed);
                 w[9 + k].store(vel[k].to_bits(), Ordering::Relaxed);
             }
-            w[17].store(u64::from(compose), Ordering::Relaxed);
+            w[17].store(feed.to_bits(), Ordering::Relaxed);
         });
     }
 
@@ -275,11 +318,19 @@ impl SnapshotCell {
         motion_from(&self.motion.load())
     }
 
-    /// Reads only the command position (user coordinates, UU): the 8 words of it, not the
-    /// rest of the snapshot (`MCC_GetCurPos`, which programs call in tight loops).
-    pub fn load_pos(&self) -> Axes {
+    /// Reads only the exact command position (user coordinates, UU): the 8 words of it,
+    /// not the rest of the snapshot.
+    pub fn load_exact_pos(&self) -> Axes {
         self.motion
             .read(|w| std::array::from_fn(|k| f64::from_bits(w[1 + k].load(Ordering::Relaxed))))
+    }
+
+    /// Reads the command position a program reads (`MCC_GetCurPos`, which programs call
+    /// in tight loops): its whole pulses in user units, from the position's 8 words and
+    /// the info's frame.
+    pub fn load_pos(&self) -> Axes {
+        let (offset, factor) = self.load_frame();
+        pos_of(&self.load_exact_pos(), &offset, &factor)
     }
 
     /// Reads only the motion status (`GMS_*`), one word (`MCC_GetMotionStatus`, the call
@@ -297,15 +348,15 @@ impl SnapshotCell {
     /// Reads the reference position (UU) from the position and the info's offsets, as
     /// [`SnapshotCell::load`] makes it (`MCC_GetCurRefPos`).
     pub fn load_ref_pos(&self) -> Axes {
-        let (offset, _) = self.load_frame();
-        ref_pos_of(&self.load_pos(), &offset)
+        let (offset, factor) = self.load_frame();
+        ref_of(&self.load_exact_pos(), &offset, &factor)
     }
 
     /// Reads the pulse position from the position and the info's offsets and pulses per
     /// UU, as [`SnapshotCell::load`] makes it (`MCC_GetPulsePos`).
     pub fn load_pulses(&self) -> [i64; 8] {
         let (offset, factor) = self.load_frame();
-        pulses_of(&self.load_pos(), &offset, &factor)
+        pulses_of(&self.load_exact_pos(), &offset, &factor)
     }
 
     /// The info's offsets (reference minus user position) and pulses per UU, per axis.

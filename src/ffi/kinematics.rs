@@ -5,6 +5,7 @@
 
 use super::motion::direction;
 use super::{finite, finite8, with_group, ERR_BAD_ARC};
+use crate::engine::command::Curve;
 use crate::engine::command::{Command, Ctx};
 use crate::engine::group::kinematics::joint_command;
 use crate::engine::group::GroupState;
@@ -147,22 +148,20 @@ fn queue_v6(
     })
 }
 
-/// Queues a V6 arc or circle; a degenerate one records 0xF104, as `MCC_Arc*` do.
+/// Queues a V6 arc or circle (`kind`); a degenerate one records 0xF104 when it starts,
+/// as `MCC_Arc*` do.
 fn queue_v6_curve(
     g: WORD,
     posture: DWORD,
+    kind: Curve,
     plan: impl FnOnce(&Ctx<'_>) -> Result<Path, PlanError>,
 ) -> McclResult<c_int> {
     with_group(g, |grp| {
-        let path = match plan(&grp.ctx()) {
-            Ok(p) => p,
-            Err(PlanError::BadArc) => {
-                grp.set_error(ERR_BAD_ARC);
-                return Err(McclError::Parameter);
-            }
+        let mut cmd = match plan(&grp.ctx()) {
+            Ok(path) => grp.ctx().curve(path, kind)?,
+            Err(PlanError::BadArc) => grp.ctx().fault(kind, ERR_BAD_ARC),
             Err(_) => return Err(McclError::Parameter),
         };
-        let mut cmd = grp.ctx().curve(path, false)?;
         cmd.posture = Some(posture);
         grp.enqueue(cmd)
     })
@@ -232,7 +231,7 @@ pub extern "C" fn MCC_Line_V6(
 /// (x1, y1, z1), the orientation going linearly to (rx, ry, rz) (components outside
 /// `dwAxisMask` stay).
 macro_rules! two_point_curves_v6 {
-    ($($(#[$doc:meta])* $name:ident => $path:path;)*) => {$(
+    ($($(#[$doc:meta])* $name:ident => $path:path, $kind:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
         pub extern "C" fn $name(
@@ -245,7 +244,7 @@ macro_rules! two_point_curves_v6 {
                 let (p1, p2) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?);
                 let r = finite3([rx, ry, rz])?;
                 let m = super::axis_mask(dwAxisMask)?;
-                queue_v6_curve(wGroupIndex, posture, |ctx| {
+                queue_v6_curve(wGroupIndex, posture, $kind, |ctx| {
                     let (p1, p2) = (point3(ctx, p1), point3(ctx, p2));
                     let aux = orientation(ctx, r, Some(m));
                     check_curve(ctx, &[p1, p2], &aux)?;
@@ -259,10 +258,10 @@ macro_rules! two_point_curves_v6 {
 two_point_curves_v6! {
     /// 3-D arc from the current point through (x0, y0, z0) to (x1, y1, z1), the orientation
     /// going linearly to (rx, ry, rz) (components outside `dwAxisMask` stay).
-    MCC_Arc_V6 => Path::arc_3pt_xyz;
+    MCC_Arc_V6 => Path::arc_3pt_xyz, Curve::ThreePoint;
     /// Full circle from the current point through (x0, y0, z0) and (x1, y1, z1) back to
     /// it; the orientation goes linearly to (rx, ry, rz) over the turn.
-    MCC_Circle_V6 => Path::circle_3pt_xyz;
+    MCC_Circle_V6 => Path::circle_3pt_xyz, Curve::Arc;
 }
 
 /// Arc of `theta` degrees (> 0 counter-clockwise seen from the tip of the normal) about
@@ -288,7 +287,7 @@ pub extern "C" fn MCC_ArcTheta_V6(
         let (center, normal) = (finite3([cx, cy, cz])?, finite3([nv0, nv1, nv2])?);
         let (theta, r) = (finite(theta)?, finite3([rx, ry, rz])?);
         let m = super::axis_mask(dwAxisMask)?;
-        queue_v6_curve(wGroupIndex, posture, |ctx| {
+        queue_v6_curve(wGroupIndex, posture, Curve::Arc, |ctx| {
             let center = point3(ctx, center);
             let aux = orientation(ctx, r, Some(m));
             check_curve(ctx, &[center], &aux)?;
@@ -308,7 +307,7 @@ fn circle_plane(
     let c2 = super::motion::finite2(c2)?;
     let r = finite3(r)?;
     let ccw = direction(dir)?;
-    queue_v6_curve(g, posture, |ctx| {
+    queue_v6_curve(g, posture, Curve::Arc, |ctx| {
         let center = ctx.resolve_plane(plane, c2);
         let aux = orientation(ctx, r, None);
         let (ia, ib, n) = plane.axes();
@@ -386,10 +385,9 @@ fn joint_plan(g: &GroupState, args: &Axes, m: u32) -> McclResult<JointPlan> {
         cart_start: queue_end,
         cart_end: queue_end,
         speed,
-        acc: s.ptp_acc_ms.map(|ms| ms / 1000.0),
-        dec: s.ptp_dec_ms.map(|ms| ms / 1000.0),
-        acc_shape: s.ptp_acc,
-        dec_shape: s.ptp_dec,
+        ramps: crate::planner::ramp_periods(s.acc_ms, s.dec_ms, g.period_ms()),
+        shapes: (s.acc, s.dec),
+        period_s: g.period_ms() / 1000.0,
         planned: None,
     };
     // The numbers are checked here (the move is planned again where it starts).
@@ -402,8 +400,8 @@ fn joint_plan(g: &GroupState, args: &Axes, m: u32) -> McclResult<JointPlan> {
         queue_end,
         mv,
         ratio,
-        acc_ms: s.ptp_acc_ms[0],
-        dec_ms: s.ptp_dec_ms[0],
+        acc_ms: s.acc_ms,
+        dec_ms: s.dec_ms,
     })
 }
 

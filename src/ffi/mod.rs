@@ -558,24 +558,22 @@ pub fn queue(
     })
 }
 
-/// Like [`queue`] for arcs, circles and helices: geometry errors record 0xF104.
+/// Like [`queue`] for arcs, circles and helices. A curve with no geometry (coincident or
+/// collinear points, a zero radius) is queued all the same and records 0xF104 when it
+/// starts, as the vendor's library does.
 pub fn queue_curve(
     g: u16,
     plan: impl FnOnce(
         &crate::engine::command::Ctx<'_>,
     ) -> Result<crate::planner::Path, crate::planner::PlanError>,
-    helix: bool,
+    kind: crate::engine::command::Curve,
 ) -> McclResult<c_int> {
     with_group(g, |grp| {
-        let path = match plan(&grp.ctx()) {
-            Ok(p) => p,
-            Err(crate::planner::PlanError::BadArc) => {
-                grp.set_error(ERR_BAD_ARC);
-                return Err(McclError::Parameter);
-            }
+        let cmd = match plan(&grp.ctx()) {
+            Ok(path) => grp.ctx().curve(path, kind)?,
+            Err(crate::planner::PlanError::BadArc) => grp.ctx().fault(kind, ERR_BAD_ARC),
             Err(_) => return Err(McclError::Parameter),
         };
-        let cmd = grp.ctx().curve(path, helix)?;
         grp.enqueue(cmd)
     })
 }
@@ -606,6 +604,14 @@ pub fn shape_char(s: crate::planner::Shape) -> std::os::raw::c_char {
         crate::planner::Shape::T => b'T',
         crate::planner::Shape::S => b'S',
     }) as std::os::raw::c_char
+}
+
+/// A shape as the vendor's getters answer it: 0 'T', 1 'S'.
+pub fn shape_code(s: crate::planner::Shape) -> c_int {
+    match s {
+        crate::planner::Shape::T => 0,
+        crate::planner::Shape::S => 1,
+    }
 }
 
 /// A count as the vendor's `WORD` outputs report it: at most 65535.

@@ -2,9 +2,10 @@
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
 use super::{
-    axis_mask, finite, finite8, queue, queue_curve, read_published, shape, shape_char, with_group,
+    axis_mask, finite, finite8, queue, queue_curve, read_published, shape, shape_code, with_group,
 };
 use crate::error::{McclError, McclResult};
+use crate::engine::command::Curve;
 use crate::planner::{Axes, Path, Plane};
 use crate::system;
 use crate::vendor::consts as c;
@@ -13,18 +14,19 @@ use std::os::raw::{c_char, c_int};
 
 use crate::config::range::time_ms;
 
+/// `byCirDir`: counter-clockwise (true) or clockwise.
 pub(super) fn direction(byCirDir: BYTE) -> McclResult<bool> {
-    match i32::from(byCirDir) {
-        c::CIR_CW => Ok(false),
-        c::CIR_CCW => Ok(true),
-        _ => Err(McclError::Parameter),
-    }
+    // `CIR_CW` (0) or anything else: counter-clockwise, as the vendor's library takes it.
+    Ok(i32::from(byCirDir) != c::CIR_CW)
 }
 
-/// A feed speed from C: in the speed range, then at most the system maximum
-/// (`MCC_SetSysMaxSpeed`).
+/// A feed speed from C, as the vendor's library takes it: its size (−1 is 1), not 0, at
+/// most the speed range's top, then at most the system maximum (`MCC_SetSysMaxSpeed`).
 pub(super) fn feed_speed(v: f64) -> McclResult<f64> {
-    let v = crate::config::range::speed(v)?;
+    let v = v.abs();
+    if !(v > 0.0) || v > crate::config::range::MAX_SPEED {
+        return Err(McclError::Parameter);
+    }
     Ok(system::config(|c| c.feed_speed(v)))
 }
 
@@ -82,7 +84,17 @@ macro_rules! settings_getters {
 
 /// The ratio of point-to-point speed: a percentage in (0, 100].
 fn ptp_ratio(r: f64) -> McclResult<f64> {
-    crate::config::range::percent(r, 100.0)
+    if r > 0.0 && r <= 100.0 {
+        Ok(r)
+    } else {
+        Err(McclError::Parameter)
+    }
+}
+
+/// An acc or dec time from C, ms: in the time range, kept in whole ms (rounded up) as the
+/// vendor's library keeps it.
+fn ramp_ms(t: f64) -> McclResult<f64> {
+    Ok(crate::planner::whole_ms(time_ms(t)?))
 }
 
 settings_setters! {
@@ -91,25 +103,28 @@ settings_setters! {
     /// Deceleration shape of general motion: 'T' or 'S'.
     MCC_SetDecType(cDecType: c_char) = shape => dec;
     /// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
-    MCC_SetAccTime(dfAccTime: f64) = time_ms => acc_ms;
-    /// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300).
-    MCC_SetDecTime(dfDecTime: f64) = time_ms => dec_ms;
+    /// Kept in whole ms, rounded up.
+    MCC_SetAccTime(dfAccTime: f64) = ramp_ms => acc_ms;
+    /// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300), kept
+    /// in whole ms, rounded up.
+    MCC_SetDecTime(dfDecTime: f64) = ramp_ms => dec_ms;
 }
 
 speed_setters! {
-    /// Feed speed of following general motion, UU/s (1e-6..=1e9). A speed above
-    /// `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed speed now in effect.
+    /// Feed speed of following general motion, UU/s (> 0; a negative one counts by its
+    /// size). A speed above `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed
+    /// speed now in effect.
     MCC_SetFeedSpeed(dfFeedSpeed) = feed_speed => feed;
     /// Point-to-point speed ratio, percent of each axis's maximum safe speed
-    /// (0.01 <= r <= 100). Returns the ratio now in effect.
+    /// (0 < r <= 100). Returns the ratio now in effect.
     MCC_SetPtPSpeed(dfRatio) = ptp_ratio => ptp_ratio;
 }
 
 settings_getters! {
-    /// The acceleration shape as its character code ('T' = 84, 'S' = 83).
-    MCC_GetAccType -> c_int = |s| c_int::from(shape_char(s.acc) as u8);
-    /// The deceleration shape as its character code.
-    MCC_GetDecType -> c_int = |s| c_int::from(shape_char(s.dec) as u8);
+    /// The acceleration shape: 0 'T', 1 'S' (as the vendor's library answers).
+    MCC_GetAccType -> c_int = |s| shape_code(s.acc);
+    /// The deceleration shape: 0 'T', 1 'S'.
+    MCC_GetDecType -> c_int = |s| shape_code(s.dec);
     /// The acceleration time, ms.
     MCC_GetAccTime -> f64 = |s| s.acc_ms;
     /// The deceleration time, ms.
@@ -279,7 +294,7 @@ pub(super) struct About {
 /// and checked against the position range before `build` runs with them.
 pub(super) fn queue_about(
     at: About,
-    helix: bool,
+    kind: Curve,
     g: WORD,
     build: impl FnOnce(
         &crate::engine::command::Ctx<'_>,
@@ -295,7 +310,7 @@ pub(super) fn queue_about(
         check_plane(ctx, at.plane, &[c], aux)?;
         build(ctx, c, aux)
     };
-    queue_curve(g, plan, helix)
+    queue_curve(g, plan, kind)
 }
 
 fn arc(
@@ -318,7 +333,7 @@ fn arc(
             check_plane(ctx, plane, &[r, e], aux)?;
             Path::arc_3pt(plane, &ctx.from, r, e, aux)
         },
-        false,
+        Curve::ThreePoint,
     )
 }
 
@@ -379,7 +394,7 @@ fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResu
             check_plane(ctx, Plane::XY, &[], aux)?;
             Path::arc_3pt_xyz(&ctx.from, rr, ee, aux)
         },
-        false,
+        Curve::ThreePoint,
     )
 }
 
@@ -423,7 +438,7 @@ fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_i
         c: cxy,
         aux: None,
     };
-    queue_about(at, false, g, |ctx, c, _| {
+    queue_about(at, Curve::Arc, g, |ctx, c, _| {
         Path::arc_theta(plane, &ctx.from, c, theta)
     })
 }
@@ -452,7 +467,7 @@ plane_arcs_theta! {
 
 fn circle(at: About, dir: BYTE, g: WORD) -> McclResult<c_int> {
     let ccw = direction(dir)?;
-    queue_about(at, false, g, |ctx, c, aux| {
+    queue_about(at, Curve::Arc, g, |ctx, c, aux| {
         Path::circle(at.plane, &ctx.from, c, ccw, aux)
     })
 }
@@ -498,7 +513,7 @@ plane_circles! {
 
 fn helical(at: About, pitch: f64, theta: f64, g: WORD) -> McclResult<c_int> {
     let (pitch, theta) = (finite(pitch)?, finite(theta)?);
-    queue_about(at, true, g, |ctx, c, aux| {
+    queue_about(at, Curve::Helix, g, |ctx, c, aux| {
         Path::helix(at.plane, &ctx.from, c, pitch, theta, aux)
     })
 }
@@ -565,7 +580,7 @@ pub(super) fn queue_spiral(
 ) -> McclResult<c_int> {
     let (pos, pitch) = (finite(s.pos)?, finite(s.pitch)?);
     let ccw = direction(s.dir)?;
-    queue_about(s.at, true, g, |ctx, c, _| {
+    queue_about(s.at, Curve::Helix, g, |ctx, c, _| {
         let n = s.at.plane.axes().2;
         let to = ctx.resolve_axis(n, pos);
         ctx.check_points(&[(n, to)])?;

@@ -1,7 +1,12 @@
 //! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; vendor header
 //! "Point-to-Point Motion").
 
-use super::{shape, shape_char, with_group};
+use super::{shape, shape_code, with_group};
+
+/// A shape as a `char` output: 0 'T', 1 'S'.
+fn shape_byte(s: crate::planner::Shape) -> c_char {
+    shape_code(s) as c_char
+}
 use crate::engine::command::Settings;
 use crate::error::{McclError, McclResult};
 use crate::vendor::WORD;
@@ -47,12 +52,12 @@ per_axis_setters! {
 }
 
 per_axis_getters! {
-    /// Reads the PtP acceleration shapes.
+    /// Reads the PtP acceleration shapes: 0 'T', 1 'S' (as the vendor's library answers).
     MCC_GetPtPAccType(c_char; wGroupIndex)
-        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_char)));
-    /// Reads the PtP deceleration shapes.
+        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_byte)));
+    /// Reads the PtP deceleration shapes: 0 'T', 1 'S'.
     MCC_GetPtPDecType(c_char; wGroupIndex)
-        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_char)));
+        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_byte)));
     /// Reads the PtP acceleration times, ms.
     MCC_GetPtPAccTime(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms));
     /// Reads the PtP deceleration times, ms.

@@ -28,8 +28,17 @@ pointer_fns! {
     /// 0..10), index, feed speed (PtP: ratio; delay: ms left), target, acc/dec times,
     /// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
     /// started since `MCC_ResetCommandIndexLD`.
-    MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex)
-        = write_out(pstCurCommand, || read_published(wGroupIndex, |p| p.load_info().cmd));
+    /// With nothing running it writes the index of the last command started and returns
+    /// `RUN_TIME_ERR`, as the vendor's library does.
+    MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex) = {
+        let info = read_published(wGroupIndex, |p| p.load_info())?;
+        write_out(pstCurCommand, || Ok(info.cmd))?;
+        if info.running {
+            Ok(crate::vendor::consts::NO_ERR)
+        } else {
+            Err(crate::error::McclError::RunTime)
+        }
+    };
     /// Commands queued and not yet started (the running one is not counted).
     MCC_GetCommandCount(pnCmdCount: c_int; wGroupIndex) = write_out(pnCmdCount, || {
         let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;

@@ -54,7 +54,7 @@ pub extern "C" fn MCC_AbortMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
 pub extern "C" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let t = crate::config::range::time_ms(dfDecTime)?;
-        super::update_group(wGroupIndex, |g| g.abort(t / 1000.0, false))
+        super::update_group(wGroupIndex, |g| g.abort(t, false))
     }
 }
 
@@ -110,32 +110,43 @@ pub extern "C" fn MCC_CheckBlend(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued))) }
 }
 
-/// Queues a delay of `dwTime` ms before the next command (`GMS_DELAYING` meanwhile).
-/// Returns the command index.
+/// Queues a delay of `dwTime` ms (> 0) before the next command (`GMS_DELAYING`
+/// meanwhile). Returns the command index.
 #[no_mangle]
 pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { queue(wGroupIndex, |ctx| Ok(ctx.delay(f64::from(dwTime)))) }
+    ffi_boundary! {
+        if dwTime == 0 {
+            return Err(McclError::Parameter);
+        }
+        queue(wGroupIndex, |ctx| Ok(ctx.delay(f64::from(dwTime))))
+    }
 }
 
-/// 0 while the group is delaying, 1 otherwise (the sense of `MCC_CheckBlend`).
+/// 1 while the group is delaying, 0 otherwise (as the vendor's library answers).
 #[no_mangle]
 pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let status = read_published(wGroupIndex, |p| p.load_status())?;
-        Ok(c_int::from(status != c::GMS_DELAYING))
+        Ok(c_int::from(status == c::GMS_DELAYING))
     }
 }
 
+/// An override ratio, percent: any positive finite number (the vendor's library takes
+/// 0.001 and 5000 alike), at most [`MAX_OVERRIDE`] (a larger one could not be planned).
 fn override_rate(r: f64) -> Result<f64, McclError> {
-    crate::config::range::percent(r, MAX_OVERRIDE)
+    if r.is_finite() && r > 0.0 && r <= MAX_OVERRIDE {
+        Ok(r)
+    } else {
+        Err(McclError::Parameter)
+    }
 }
 
 /// Largest override ratio accepted, percent.
-pub const MAX_OVERRIDE: f64 = 1000.0;
+pub const MAX_OVERRIDE: f64 = 1.0e6;
 
-/// Scales the running and all later motion to `dfRate` percent of the planned speed
-/// (0.01 <= rate <= 1000), ramping with the acc (faster) or dec (slower) time. Returns the
-/// rate now in effect.
+/// Scales the running and all later motion to `dfRate` percent of the planned speed from
+/// the next period: what runs re-plans the rest of its length from its speed with its
+/// acc and dec times. Returns `dfRate`.
 #[no_mangle]
 pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
@@ -161,10 +172,11 @@ pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: 
     }
 }
 
-/// The override ratio, percent.
+/// The override ratio in effect (1.0 = 100 %, as the vendor's library reports it; a new
+/// one from the period after it was set).
 #[no_mangle]
 pub extern "C" fn MCC_GetOverrideRate(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.override_pct)) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.override_pct / 100.0)) }
 }
 
 /// With `bFix` TRUE the override no longer changes speeds (motion runs at 100 %).

@@ -20,24 +20,24 @@
 #![warn(missing_docs)]
 
 mod axis1d;
-mod blend;
 pub mod compose;
 mod cone;
 mod path;
+mod path_move;
 mod profile;
 mod ptp;
 mod ramp;
+mod ticks;
 
-#[cfg(test)]
-mod tests;
 
 pub use axis1d::Axis1D;
-pub use blend::{blended_position, blended_velocity, PathMove};
+pub use path_move::PathMove;
 pub use cone::ConeSeg;
 pub use path::{ArcSeg, LineSeg, Path, Plane};
 pub use profile::Profile;
 pub use ptp::{ptp_axis_speed, PtpMove};
 pub use ramp::RateRamp;
+pub use ticks::{ramp_periods, smoothstep, whole_ms, TickProfile};
 
 /// Positions (or velocities) of the eight axes X, Y, Z, U, V, W, A, B (index 0..8).
 pub type Axes = [f64; 8];

@@ -167,10 +167,15 @@ impl LineSeg {
 
 impl ArcSeg {
     /// Finish an arc: set length and validate. `end` must already hold the exact end.
+    ///
+    /// The length the feed applies to is the arc in its plane (`r·|θ|`): a helix's rise
+    /// comes on top, as the vendor's library times it.
     fn finish(mut self) -> ArcSeg {
-        let xyz = ((self.radius * self.sweep).powi(2) + self.rise * self.rise).sqrt();
-        self.length = if xyz > 0.0 {
-            xyz
+        let arc = (self.radius * self.sweep).abs();
+        self.length = if arc > 0.0 {
+            arc
+        } else if self.rise != 0.0 {
+            self.rise.abs()
         } else {
             aux_travel(&self.start, &self.end)
         };
@@ -238,6 +243,32 @@ impl Path {
             delta,
             dir,
         })
+    }
+
+    /// Whether X, Y and Z stand still along the path (its length is then the longest
+    /// auxiliary travel, see [`Path`]).
+    pub fn aux_only(&self) -> bool {
+        match self {
+            Path::Line(l) => l.delta[..XYZ].iter().all(|d| *d == 0.0),
+            _ => false,
+        }
+    }
+
+    /// The auxiliary axis with the longest travel (the path of an
+    /// [`aux-only`](Path::aux_only) line); X for any other path.
+    pub fn lead_axis(&self) -> usize {
+        match self {
+            Path::Line(l) if self.aux_only() => {
+                let mut best = XYZ;
+                for i in XYZ..NUM_AXES {
+                    if l.delta[i].abs() > l.delta[best].abs() {
+                        best = i;
+                    }
+                }
+                best
+            }
+            _ => 0,
+        }
     }
 
     /// [`Path::line`] with input validation: `BadParameter` if any coordinate
@@ -408,9 +439,10 @@ impl Path {
 
     /// Helix about `center` (plane coordinates) through the signed angle
     /// `theta_deg` (`MCC_HelicalXY_Z(cx, cy, pitch, theta)` etc.): the plane part
-    /// is the arc of [`Path::arc_theta`], the normal axis moves `pitch·theta/360`
-    /// in total, linearly in the angle. Path length is
-    /// `sqrt((r·|θ|)² + (pitch·θ/360)²)` with `θ` in radians.
+    /// is the arc of [`Path::arc_theta`], the normal axis moves `pitch·|theta|/360`
+    /// in total (the pitch's sign gives the direction, whichever way it turns, as the
+    /// vendor's library moves it), linearly in the angle. Path length is the plane
+    /// arc's, `r·|θ|` with `θ` in radians.
     ///
     /// Errors: `BadArc` for zero radius, `BadParameter` for NaN/inf.
     pub fn helix(
@@ -423,7 +455,7 @@ impl Path {
     ) -> Result<Path, PlanError> {
         check_finite(pitch, "helix pitch")?;
         check_finite(theta_deg, "helix angle")?;
-        let rise = pitch * theta_deg / 360.0;
+        let rise = pitch * theta_deg.abs() / 360.0;
         check_finite(rise, "helix pitch")?;
         let seg = theta_arc(plane, start, center, theta_deg, rise, aux_end)?;
         Ok(Path::Helix(seg))

@@ -354,6 +354,81 @@ static void line_ramp_halfms(int t)
     }
 }
 
+/* Where the pulse count turns over, finer: each line ends every axis a fraction of a
+ * millionth of a pulse short of (or past) a whole pulse. */
+static void pulse_epsilon2(int t)
+{
+    static const double delta[8] = {1.5e-7, 2e-7, 3e-7, 4e-7, 5e-7, 6e-7, 7e-7, 8e-7};
+    double d[8];
+    int step = t / 100;
+    if (t % 100 != 0 || step > 3)
+        return;
+    for (int i = 0; i < 8; i++) {
+        double whole = step % 2 ? -(2 + step) : 2 + step;
+        double off = step < 2 ? -delta[i] : delta[i];
+        d[i] = (whole + (whole > 0 ? off : -off)) / 1000;
+    }
+    if (t == 0)
+        vd_profile('T', 10, 10, 10);
+    LINE8(0, d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7]);
+}
+
+/* How acc/dec times become whole periods: one short line a pair of times. */
+static void ramp_rules(int t)
+{
+    static const double pairs[][2] = {{1, 2}, {2, 3}, {3, 3}, {2.5, 2.5}, {0.4, 0.4},
+                                      {1, 1}, {3, 8}, {7, 2}, {4.4, 4.6}, {0, 3}};
+    int i = t / 40;
+    if (t % 40 != 0 || i >= 10)
+        return;
+    CI(MCC_SetAccTime, pairs[i][0], 0);
+    CI(MCC_SetDecTime, pairs[i][1], 0);
+    vd_note("GetAccTime %.17g", V(MCC_GetAccTime)(0));
+    vd_note("GetDecTime %.17g", V(MCC_GetDecTime)(0));
+    LINE(0, i % 2 ? 0 : 0.1, 0, 0);
+}
+
+static void ramp_rules_p10(int t)
+{
+    static const double pairs[][2] = {{30, 50}, {20, 40}, {10, 10}, {15, 15},
+                                      {10, 30}, {40, 10}, {25, 25}, {0, 20}};
+    int i = t / 20;
+    if (t % 20 != 0 || i >= 8)
+        return;
+    CI(MCC_SetAccTime, pairs[i][0], 0);
+    CI(MCC_SetDecTime, pairs[i][1], 0);
+    LINE(0, i % 2 ? 0 : 0.3, 0, 0);
+}
+
+static void ramp_rules_s(int t)
+{
+    static const double pairs[][2] = {{1, 2}, {2, 3}, {3, 8}, {7, 2}};
+    int i = t / 40;
+    if (t % 40 != 0 || i >= 4)
+        return;
+    if (t == 0) {
+        CI(MCC_SetAccType, 'S', 0);
+        CI(MCC_SetDecType, 'S', 0);
+    }
+    CI(MCC_SetAccTime, pairs[i][0], 0);
+    CI(MCC_SetDecTime, pairs[i][1], 0);
+    LINE(0, i % 2 ? 0 : 0.1, 0, 0);
+}
+
+/* Blending when the first line's deceleration and the second's acceleration differ. */
+static void blend_times(int t)
+{
+    if (t == 0) {
+        CI(MCC_EnableBlend, 0);
+        vd_profile('T', 20, 60, 10);
+        LINE(0, 1, 0, 0);
+        vd_profile('T', 30, 10, 5);
+        LINE(0, 1, 0.5, 0);
+        vd_profile('S', 80, 40, 8);
+        LINE(0, 0.5, 0.5, 0);
+    }
+}
+
 const Scenario vd_lines[] = {
     SCEN(line_t_long, std3, 0, 4000),
     SCEN(line_s_long, std3, 0, 4000),
@@ -410,5 +485,10 @@ const Scenario vd_lines[] = {
     SCEN(pulse_epsilon, std8_ppr1000, 400, 4000),
     {"line_ramp_fraction", std3_p10, line_ramp_fraction, 100, 500, 0},
     SCEN(line_ramp_halfms, std3, 30, 500),
+    SCEN(pulse_epsilon2, std8_ppr1000, 300, 4000),
+    SCEN(ramp_rules, std3, 360, 4000),
+    {"ramp_rules_p10", std3_p10, ramp_rules_p10, 140, 1000, 0},
+    SCEN(ramp_rules_s, std3, 120, 4000),
+    SCEN(blend_times, std3, 0, 4000),
     SCEN_END,
 };

@@ -48,7 +48,7 @@ PTP_CASE(ptp_50, 50, 50, 50, PTP(0, 10, 5, 2))
 PTP_CASE(ptp_100, 100, 50, 50, PTP(0, 10, 5, 2))
 PTP_CASE(ptp_short, 50, 100, 100, PTP(0, 0.01, 0.003, 0))
 PTP_CASE(ptp_asym, 20, 20, 150, PTP(0, 2, -1, 0.5))
-PTP_CASE(ptp_over_100, 150, 50, 50, PTP(0, 5, 0, 0))
+PTP_CASE(ptp_over_100, 150, 50, 50, PTP(0, 0.05, 0, 0))
 PTP_CASE(ptp_rpm, 50, 50, 50, PTP(0, 5, 5, 5))
 PTP_CASE(ptp_frac, 20, 50, 50, PTP(0, 1, 1, 1))
 PTP_CASE(syncptp_50, 50, 50, 50, CI(MCC_SyncPtP, 10, 5, 2, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL))
@@ -189,6 +189,90 @@ static void jog_conti(int t)
         CI(MCC_AbortMotionEx, 0.02, 0);
 }
 
+/* Jog with the axis given as a number 0..7 (the vendor's cAxis). */
+static void jog_num_pulse(int t)
+{
+    if (t == 0) {
+        CI(MCC_SetAccTime, 50, 0);
+        CI(MCC_SetDecTime, 50, 0);
+        CI(MCC_JogPulse, 100, 0, 0);
+    }
+    if (t == 200)
+        CI(MCC_JogPulse, -37, 1, 0);
+    if (t == 400) {
+        CI(MCC_JogPulse, 500, 2, 0);
+        CI(MCC_JogPulse, 500, 2, 0);
+    }
+    if (t == 900)
+        CI(MCC_AbortMotionEx, 0.01, 0);
+    if (t == 950)
+        CI(MCC_JogPulse, 2047, 0, 0);
+    if (t == 1400) {
+        CI(MCC_JogPulse, 2048, 1, 0);
+        CI(MCC_JogPulse, 0, 1, 0);
+        CI(MCC_JogPulse, 5, 8, 0);
+        CI(MCC_JogPulse, 5, -1, 0);
+    }
+}
+
+static void jog_num_space(int t)
+{
+    if (t == 0) {
+        CI(MCC_SetAccTime, 50, 0);
+        CI(MCC_SetDecTime, 80, 0);
+        CI(MCC_JogSpace, 0.5, 30, 0, 0);
+    }
+    if (t == 300)
+        LINE(0, 0, 0, 0);
+    if (t == 310)
+        CI(MCC_AbortMotionEx, 0.01, 0);
+    if (t == 400)
+        CI(MCC_JogSpace, -0.25, 80, 2, 0);
+    if (t == 700) {
+        CI(MCC_AbortMotionEx, 0.01, 0);
+        CI(MCC_JogSpace, 0.01, 50, 1, 0);
+    }
+    if (t == 900) {
+        CI(MCC_JogSpace, 0.01, 0, 1, 0);
+        CI(MCC_JogSpace, 0.01, 101, 1, 0);
+        CI(MCC_JogSpace, 0.01, -5, 1, 0);
+    }
+}
+
+static void jog_num_conti(int t)
+{
+    if (t == 0) {
+        CI(MCC_SetAccTime, 50, 0);
+        CI(MCC_SetDecTime, 80, 0);
+        CI(MCC_JogConti, 1, 20, 0, 0);
+    }
+    if (t == 300)
+        CI(MCC_AbortMotion, 0, 0);
+    if (t == 400)
+        CI(MCC_JogConti, -1, 40, 1, 0);
+    if (t == 600)
+        CI(MCC_AbortMotionEx, 0.02, 0);
+    if (t == 700)
+        CI(MCC_JogConti, 1, 10, 2, 0);
+    if (t == 800)
+        CI(MCC_HoldMotion, 0, 0);
+    if (t == 900)
+        CI(MCC_ContiMotion, 0);
+    if (t == 1000)
+        CI(MCC_AbortMotionEx, 0.05, 0);
+}
+
+/* The feed speed a PtP reports: axes of different distances and speeds. */
+static void ptp_feed_axis(int t)
+{
+    if (t == 0) {
+        CD(MCC_SetPtPSpeed, 20, 0);
+        PTP(0, 0.5, 2, 1);
+    }
+    if (t == 400)
+        PTP(0, 0, 0, -1);
+}
+
 static void jog_bad_axis(int t)
 {
     if (t == 0) {
@@ -229,5 +313,9 @@ const Scenario vd_ptp[] = {
     SCEN(jog_space_short, std3, 0, 4000),
     SCEN(jog_conti, std3, 700, 4000),
     SCEN(jog_bad_axis, std3, 0, 2000),
+    SCEN(jog_num_pulse, std3, 1400, 4000),
+    SCEN(jog_num_space, std3, 900, 4000),
+    SCEN(jog_num_conti, std3, 1000, 4000),
+    SCEN(ptp_feed_axis, rpm3, 400, 4000),
     SCEN_END,
 };

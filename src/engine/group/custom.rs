@@ -1,17 +1,19 @@
 //! A group's side of custom motion (the stage is in `engine/custom.rs`): the running
 //! custom command's state, what the stage calls next, and storing what it returned.
 //!
-//! A custom command's own time does not advance in the tick (`execution.rs` gives it no
-//! time): the stage advances it, one period ahead, when it asks the callback for the next
-//! position. It ends (its duration becomes 0, so the tick after retires it at the offset
-//! the callback gave last) when the callback returns FALSE, sets `*AbortThisCommand`, or
-//! the profile reaches the total distance.
+//! A custom command does not advance in the tick (`execution.rs` leaves it to its stage):
+//! the stage moves its track ([`super::track::Track`], the library's profile along the
+//! total distance) one period ahead when it asks the callback for the next position. It
+//! ends (the tick after retires it at the offset the callback gave last) when the
+//! callback returns FALSE, sets `*AbortThisCommand`, or the track reaches the total
+//! distance. A hold, a continue and an override act on the track as on any motion's.
 
 use super::GroupState;
 use crate::config::{range, AXES};
 use crate::engine::command::{Command, Ctx, Plan};
 use crate::engine::custom::{CustomSpec, Interp, CTYPE_CUSTOM, ERR_CUSTOM_MOTION};
-use crate::planner::{Axes, Profile, Shape};
+use super::track::Track;
+use crate::planner::{ramp_periods, Axes, Shape, TickProfile};
 use std::os::raw::c_int;
 use std::sync::Arc;
 
@@ -38,11 +40,10 @@ pub struct CustomMove {
 #[derive(Debug, Clone, Default)]
 struct Run {
     started: bool,
-    profile: Option<Profile>,
+    /// The profile along the total distance, once `start` returned it.
+    track: Option<Track>,
     /// The total distance `start` returned.
     tot: f64,
-    /// Own time of the offset stored (the position of the coming tick).
-    tau: f64,
     /// Distance of the offset stored.
     dist: f64,
     /// Offset from the start for the coming tick.
@@ -57,13 +58,19 @@ struct Run {
 }
 
 impl CustomMove {
-    /// Duration in own time: unknown (infinite) until the stage ends it, then 0.
-    pub fn duration(&self) -> f64 {
-        if self.run.ended {
-            0.0
-        } else {
-            f64::INFINITY
-        }
+    /// Whether the stage ended it.
+    pub fn ended(&self) -> bool {
+        self.run.ended
+    }
+
+    /// Its track, once its total distance is known.
+    pub(super) fn track_mut(&mut self) -> Option<&mut Track> {
+        self.run.track.as_mut()
+    }
+
+    /// Whether an override changes its speed (`bOverrideMotion`).
+    pub fn follows_override(&self) -> bool {
+        self.spec.override_motion
     }
 
     /// Position and velocity per own time: the start plus the offset stored.
@@ -110,7 +117,7 @@ fn translate(cmd: &mut Command, d: &Axes) {
                 *s += d;
             }
         }
-        Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) => {}
+        Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) | Plan::Fault(_) => {}
         // A joint move (MCC_PtP_V6) goes to the joints it names, wherever the curve ended:
         // neither it nor its target moves.
         Plan::Joint(_) => return,
@@ -123,7 +130,6 @@ fn translate(cmd: &mut Command, d: &Axes) {
 /// One period's step the stage computed: applied if the command still runs.
 #[derive(Debug, Clone, Copy)]
 pub struct Step {
-    tau_next: f64,
     dist: f64,
     last: bool,
     /// The offset stored now (what the callback's output starts as).
@@ -266,19 +272,18 @@ impl GroupState {
         let blend_on = self.blend_on;
         let (index, m) = self.custom_running(Some(id))?;
         let len = if m.infinite() { INFINITE_LEN } else { tot };
-        let profile = if tot.is_finite() && tot >= 0.0 {
-            Profile::new(len, feed, acc_ms / 1000.0, dec_ms / 1000.0, m.acc, m.dec).ok()
-        } else {
-            None
-        };
-        let Some(profile) = profile else {
+        let period_ms = dt * 1000.0;
+        let ramps = ramp_periods(acc_ms, dec_ms, period_ms);
+        let shapes = (m.acc, m.dec);
+        if !(tot.is_finite() && tot >= 0.0 && feed > 0.0) {
             self.stop_for(Some(ERR_CUSTOM_MOTION));
             return None;
-        };
+        }
+        let profile = TickProfile::plan(len, 0.0, feed, ramps.0, ramps.1, shapes, dt);
         // Both ramp shapes cover half the peak speed times their time.
-        let interval = 0.5 * profile.peak_speed() * profile.acc_time();
+        let interval = 0.5 * profile.speed() * f64::from(ramps.0) * dt;
         m.run.tot = tot;
-        m.run.profile = Some(profile);
+        m.run.track = Some(Track::new(profile, feed, ramps, shapes));
         if m.spec.blending.is_some() && blend_on {
             m.run.interval = interval;
             return Some(Call::BlendStart {
@@ -298,40 +303,17 @@ impl GroupState {
         self.custom_step(dt)
     }
 
-    /// Own time the running custom command advances in the coming tick: the group's
-    /// time scale over one period, predicted on a copy; without `bOverrideMotion` the
-    /// override ratio is divided out (hold, continue and abort ramps still count).
-    fn custom_dtau(&mut self, dt: f64, override_motion: bool) -> f64 {
-        let saved = self.rate;
-        let d = self.advance_rate(dt);
-        self.rate = saved;
-        if override_motion || self.fixed_speed {
-            return d;
-        }
-        match self.rate.ramp_ends() {
-            // A hold or abort: from the rate it had to 0.
-            Some((r0, 0.0)) if r0 > 0.0 => d / r0,
-            // A continue: from 0 to the rate it returns to.
-            Some((0.0, r1)) if r1 > 0.0 => d / r1,
-            Some(_) => dt,
-            None if self.rate.value == 0.0 => 0.0,
-            None => dt,
-        }
-    }
-
     /// The interpolation call for the coming tick.
-    fn custom_step(&mut self, dt: f64) -> Option<Call> {
-        let override_motion = self.custom_running(None)?.1.spec.override_motion;
-        let dtau = self.custom_dtau(dt, override_motion);
+    fn custom_step(&mut self, _dt: f64) -> Option<Call> {
         let cur = self.pos;
         let (index, m) = self.custom_running(None)?;
-        let profile = m.run.profile.as_ref()?;
-        let tau_next = m.run.tau + dtau;
-        let last = !m.infinite() && tau_next >= profile.duration() - super::TIME_EPS;
+        let mut next = *m.run.track.as_ref()?;
+        next.step();
+        let last = !m.infinite() && next.arrived();
         let dist = if last {
-            profile.len()
+            m.run.tot
         } else {
-            profile.sample(tau_next).0.max(m.run.dist)
+            next.dist().max(m.run.dist)
         };
         let blend = m.run.blending && !m.run.blend_done;
         Some(Call::Interp {
@@ -343,7 +325,6 @@ impl GroupState {
             tot: m.run.tot,
             blend,
             step: Step {
-                tau_next,
                 dist,
                 last,
                 offset_now: m.run.offset,
@@ -378,16 +359,11 @@ impl GroupState {
             self.stop_for(Some(ERR_CUSTOM_MOTION));
             return false;
         }
-        let dtau = step.tau_next - m.run.tau;
-        m.run.vel = std::array::from_fn(|i| {
-            if dtau > 0.0 {
-                (next[i] - m.run.offset[i]) / dtau
-            } else {
-                0.0
-            }
-        });
+        m.run.vel = [0.0; AXES];
         m.run.offset = next;
-        m.run.tau = step.tau_next;
+        if let Some(t) = m.run.track.as_mut() {
+            t.step();
+        }
         m.run.dist = step.dist;
         let ended = !ok || abort || step.last;
         let blending = m.run.blending && !m.run.blend_done;

@@ -1,159 +1,375 @@
-//! Execution of the running commands, tick by tick (the model is in the module's
-//! documentation, [`super`]): own time per command, starting, blending, retiring, and
-//! sampling the position; the software over-travel check.
+//! Execution of the queued commands, period by period, the way the vendor's library runs
+//! them (measured with its DLL; docs/decisions.md "Motion as the vendor's library runs
+//! it"):
+//!
+//! - An idle group takes its next command at the start of a period and moves it in the
+//!   same period. A general motion moves for its profile's periods, then shows phase 21
+//!   for one period at rest, and the next command starts the period after; a
+//!   point-to-point move stands still one period more (its feed speed still the last),
+//!   then shows speed 0; a delay waits its periods; a blending switch takes one period.
+//! - With blending on, the next general motion starts in the period the running one
+//!   starts to decelerate; both ramps of the overlap are S ramps and the displacements
+//!   add. The one blended out ends without a period of rest.
+//! - After the last command the status reads `GMS_RUNNING` for one more period.
+//! - A hold or a timed abort decelerates what runs ([`Track::stop`]); stopped, the group
+//!   shows phase 22, reads `GMS_HOLD` from the third period, and a timed abort then
+//!   drops everything.
+//! - The speeds a program reads are the distances of the last period over the period.
 
+use super::track::{Phase, Track};
 use super::GroupState;
-use super::{InPosWait, Mode, ERR_OVER_TRAVEL, TIME_EPS};
+use super::{InPosWait, Mode, ERR_OVER_TRAVEL};
 use crate::config::AXES;
 use crate::engine::command::{Command, Plan};
 use crate::engine::trace::Note;
-use crate::planner::Axes;
+use crate::planner::{Axes, Shape};
 use crate::vendor::consts as c;
 
-/// Converts between real time within a tick and a command's own time: general and PtP
-/// motion run at the group's rate, delays in real time (paused while held).
-#[derive(Debug, Clone, Copy)]
-struct TickClock {
-    dt: f64,
-    dtau: f64,
-    delay_dt: f64,
-}
+/// Periods a point-to-point move stays after its last axis arrived: one unchanged, one
+/// with the master axis's speed 0.
+const PTP_ENDING: u8 = 2;
 
-impl TickClock {
-    fn per_tick(&self, cmd: &Command) -> f64 {
-        match cmd.plan {
-            Plan::Delay(_) => self.delay_dt,
-            // Advanced by the custom-motion stage (`custom.rs`).
-            Plan::Custom(_) => 0.0,
-            _ => self.dtau,
-        }
-    }
+/// Held periods from which the status reads `GMS_HOLD` (a timed abort then ends).
+pub(super) const HOLD_SHOWN_AFTER: u32 = 3;
 
-    /// `real` seconds of this tick, in `cmd`'s own time.
-    fn own_time(&self, real: f64, cmd: &Command) -> f64 {
-        if self.dt > 0.0 {
-            real / self.dt * self.per_tick(cmd)
-        } else {
-            0.0
-        }
-    }
+/// Periods a jog by pulses keeps the group running: the jump, then two at rest.
+pub(super) const JUMP_PERIODS: u8 = 3;
 
-    /// `own` time of `cmd` within this tick, in real seconds.
-    fn real_time(&self, own: f64, cmd: &Command) -> f64 {
-        let per = self.per_tick(cmd);
-        if per > 0.0 {
-            (own / per * self.dt).min(self.dt)
-        } else {
-            0.0
-        }
-    }
-}
-
-/// What a cruising tick adds to its command's own time: `TickClock::own_time(dt, ..)` of
-/// a general or PtP command, dt / dt x `dtau`, and dt / dt is exactly 1 for the (finite,
-/// positive) period.
-#[inline]
-fn cruise_step(dt: f64, dtau: f64) -> f64 {
-    if dt > 0.0 {
-        dtau
-    } else {
-        0.0
-    }
-}
-
-/// The own time of `plan` from which a tick may do more than cruise (what `settle` and
-/// `try_blend` act on): its end, and with blending on, the start of its deceleration;
-/// `None` for commands that do not cruise.
-#[inline]
-fn cruise_end(plan: &Plan, blend_on: bool) -> Option<f64> {
-    match plan {
-        Plan::Path(m) => {
-            let end = m.duration() - TIME_EPS;
-            Some(if blend_on {
-                end.min(m.decel_start() - TIME_EPS)
-            } else {
-                end
-            })
-        }
-        Plan::Ptp(p) => Some(p.duration() - TIME_EPS),
-        _ => None,
-    }
-}
-
-/// How many of the sums `tau + step`, `tau + step + step`, ..., each rounded as the ticks
-/// add them, are certainly below `end`, up to `max` (0 when unsure).
-///
-/// Each sum below `2·end` is rounded by at most `u = end · 2^-52` (half an ulp of `2·end`),
-/// so after `k` additions the sum is at most `tau + k·(step + u)`. `k = room / (step +
-/// u) - 1`, with `room` the exact `end - tau` less its own rounding and a margin, keeps
-/// that below `end`; the division's rounding is what the 1 taken off covers.
-fn sums_below(tau: f64, step: f64, end: f64, max: u32) -> u32 {
-    if !(tau >= 0.0 && step >= 0.0 && end.is_finite() && tau < end) {
-        return 0;
-    }
-    let u = end * f64::EPSILON;
-    let room = (end - tau) * (1.0 - 1e-9) - u;
-    if room <= 0.0 {
-        return 0;
-    }
-    let k = (room / (step + u)).floor() - 1.0;
-    if k >= f64::from(max) {
-        max
-    } else if k >= 1.0 {
-        // 1 <= k < max: a whole number that fits.
-        k as u32
-    } else {
-        0
-    }
-}
-
-/// A command being executed and its own time.
+/// How a running command advances.
 #[derive(Debug, Clone)]
-pub(super) struct Running {
-    pub(super) cmd: Command,
-    pub(super) tau: f64,
+pub(super) enum Progress {
+    /// General motion (and a synchronised PtP: `sync` is its master axis): one track
+    /// along the path (the master's travel).
+    Path { track: Track, sync: Option<usize> },
+    /// Point-to-point: a track per moving axis (`moving`, one bit each), `master` the
+    /// axis arriving last.
+    Axes {
+        tracks: Box<[Track; AXES]>,
+        moving: u32,
+        master: usize,
+    },
+    /// A delay: periods left.
+    Delay { left: u64 },
+    /// A blending switch, or a motion that does not move: one period.
+    Switch,
+    /// Custom motion and robot joint moves: their stages advance them.
+    Staged,
+}
+
+/// Where a running command is in its life.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Stage {
+    /// Moving along its plan (or a re-plan).
+    Moving,
+    /// Decelerating to a stop: a hold, or a timed abort.
+    Stopping { abort: bool },
+    /// Stopped by a hold or a timed abort, for `periods`.
+    Held { periods: u32, abort: bool },
+    /// Arrived: periods it is still shown before it is retired.
+    Ending { left: u8 },
+}
+
+/// A command being executed.
+#[derive(Debug, Clone)]
+pub(crate) struct Running {
+    pub(crate) cmd: Command,
+    pub(super) progress: Progress,
+    pub(super) stage: Stage,
+    /// Periods it has run (its own clock; the published key's stretches count in it).
+    pub(super) periods: u64,
+    /// The type of the general motion it blended into, while that one still decelerates.
+    pub(super) blended_from: Option<i32>,
+    /// Set at the end of its last period: retired at the start of the next one, then with
+    /// (`true`) or without a period of `GMS_RUNNING` if nothing follows.
+    pub(super) finished: Option<bool>,
+}
+
+impl Running {
+    fn new(cmd: Command) -> Running {
+        let progress = match &cmd.plan {
+            Plan::Path(m) if m.profile.is_empty() => Progress::Switch,
+            Plan::Path(m) => Progress::Path {
+                track: Track::new(m.profile, m.feed, m.ramps, m.shapes),
+                sync: None,
+            },
+            Plan::Ptp(p) if p.periods() == 0 => Progress::Switch,
+            Plan::Ptp(p) if p.is_sync() => {
+                let i = p.master();
+                let prof = *p.profile(i);
+                Progress::Path {
+                    track: Track::new(prof, prof.speed(), ramps_of(&prof), shapes_of(&cmd)),
+                    sync: Some(i),
+                }
+            }
+            Plan::Ptp(p) => {
+                let mut moving = 0;
+                let tracks = Box::new(std::array::from_fn(|i| {
+                    let prof = *p.profile(i);
+                    if !prof.is_empty() {
+                        moving |= 1 << i;
+                    }
+                    Track::new(prof, prof.speed(), ramps_of(&prof), shapes_of(&cmd))
+                }));
+                Progress::Axes {
+                    tracks,
+                    moving,
+                    master: p.master(),
+                }
+            }
+            Plan::Delay(n) => Progress::Delay { left: *n },
+            Plan::Custom(_) | Plan::Joint(_) => Progress::Staged,
+            Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) | Plan::Fault(_) => Progress::Switch,
+        };
+        Running {
+            cmd,
+            progress,
+            stage: Stage::Moving,
+            periods: 0,
+            blended_from: None,
+            finished: None,
+        }
+    }
+
+    /// The general-motion track, if it is one.
+    pub(super) fn path_track(&self) -> Option<&Track> {
+        match &self.progress {
+            Progress::Path { track, .. } => Some(track),
+            _ => None,
+        }
+    }
+
+    /// Every track it has (one for general motion and custom motion, one per moving axis
+    /// for PtP).
+    fn tracks_mut(&mut self) -> impl Iterator<Item = &mut Track> {
+        let (one, many, moving): (Option<&mut Track>, Option<&mut [Track; AXES]>, u32) =
+            match (&mut self.progress, &mut self.cmd.plan) {
+                (Progress::Path { track, .. }, _) => (Some(track), None, 0),
+                (Progress::Axes { tracks, moving, .. }, _) => {
+                    (None, Some(&mut **tracks), *moving)
+                }
+                (Progress::Staged, Plan::Custom(m)) => (m.track_mut(), None, 0),
+                _ => (None, None, 0),
+            };
+        one.into_iter().chain(
+            many.into_iter()
+                .flat_map(|t| t.iter_mut())
+                .enumerate()
+                .filter(move |(i, _)| moving & (1 << i) != 0)
+                .map(|(_, t)| t),
+        )
+    }
+
+    /// Every track decelerates to a stop over `dec_s` ([`Track::stop`]).
+    pub(super) fn stop_tracks(&mut self, dec_s: f64) {
+        for t in self.tracks_mut() {
+            t.stop(dec_s);
+        }
+    }
+
+    /// Every track runs what is left from rest ([`Track::resume`]).
+    pub(super) fn resume_tracks(&mut self) {
+        for t in self.tracks_mut() {
+            if !t.arrived() {
+                t.resume();
+            }
+        }
+    }
+
+    /// Every track re-plans its rest at its feed times `ratio` ([`Track::retarget`]); a
+    /// custom motion only when it follows the override.
+    pub(super) fn retarget_tracks(&mut self, ratio: f64) {
+        if matches!(&self.cmd.plan, Plan::Custom(m) if !m.follows_override()) {
+            return;
+        }
+        for t in self.tracks_mut() {
+            if !t.arrived() && !t.in_final_decel() {
+                t.retarget(ratio);
+            }
+        }
+    }
+
+    /// A new feed for a general motion, at `ratio`.
+    pub(super) fn set_feed(&mut self, feed: f64, ratio: f64) {
+        if let Progress::Path { track, sync: None } = &mut self.progress {
+            if !track.arrived() {
+                track.set_base_feed(feed, ratio);
+            }
+        }
+    }
+
+    /// Whether it moves axes along tracks of its own (general motion or PtP).
+    pub(super) fn has_tracks(&self) -> bool {
+        matches!(self.progress, Progress::Path { .. } | Progress::Axes { .. })
+    }
+
+    /// Whether a hold stops it: it moves along tracks (its own or its stage's).
+    pub(super) fn holds(&self) -> bool {
+        self.has_tracks() || matches!(self.cmd.plan, Plan::Custom(_))
+    }
+
+    /// Where it has taken the axes (its own start plus its displacement).
+    fn position(&self) -> Axes {
+        match (&self.progress, &self.cmd.plan) {
+            (Progress::Path { track, sync: None }, Plan::Path(m)) => m.path.point(track.dist()),
+            (Progress::Path { track, sync: Some(_) }, Plan::Ptp(p)) => {
+                let frac = if track.len() > 0.0 {
+                    track.dist() / track.len()
+                } else {
+                    1.0
+                };
+                let (s, e) = (p.start(), p.end());
+                if track.arrived() {
+                    e
+                } else {
+                    std::array::from_fn(|i| s[i] + (e[i] - s[i]) * frac)
+                }
+            }
+            (Progress::Axes { tracks, moving, .. }, Plan::Ptp(p)) => {
+                let (s, e) = (p.start(), p.end());
+                std::array::from_fn(|i| {
+                    if moving & (1 << i) == 0 || tracks[i].arrived() {
+                        e[i]
+                    } else {
+                        s[i] + p.sign(i) * tracks[i].dist()
+                    }
+                })
+            }
+            (_, Plan::Custom(m)) => m.sample().0,
+            (_, Plan::Joint(j)) => j.cart_at(self.periods),
+            _ => self.cmd.target,
+        }
+    }
+
+    /// Whether it has ended its motion (all its tracks arrived).
+    fn arrived(&self) -> bool {
+        match &self.progress {
+            Progress::Path { track, .. } => track.arrived(),
+            Progress::Axes { tracks, moving, .. } => (0..AXES)
+                .filter(|i| moving & (1 << i) != 0)
+                .all(|i| tracks[i].arrived()),
+            Progress::Delay { left } => *left == 0,
+            Progress::Switch => self.periods >= 1,
+            Progress::Staged => match &self.cmd.plan {
+                Plan::Custom(m) => m.ended(),
+                Plan::Joint(j) => self.periods >= j.periods(),
+                _ => false,
+            },
+        }
+    }
+
+    /// Whether its tracks are all at rest at the end of a stop.
+    fn stopped(&mut self) -> bool {
+        self.tracks_mut().all(|t| t.stretch_done())
+    }
+}
+
+/// The ramp periods a PtP track re-plans with.
+fn ramps_of(p: &crate::planner::TickProfile) -> (u32, u32) {
+    (p.acc_periods(), p.dec_periods())
+}
+
+/// The ramp shapes a command's tracks re-plan with.
+fn shapes_of(cmd: &Command) -> (Shape, Shape) {
+    match &cmd.plan {
+        Plan::Path(m) => m.shapes,
+        Plan::Ptp(p) => p.shapes(),
+        _ => (Shape::S, Shape::S),
+    }
 }
 
 impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
-        if self.steady() && (self.tick_cruising(dt) || self.tick_idle()) {
+        if self.running.is_empty()
+            && self.queue.is_empty()
+            && self.jump.is_none()
+            && self.steady()
+            && self.lag == 0
+        {
+            if let Some((pct, _)) = self.override_next.take() {
+                self.override_pct = pct;
+            }
+            // Idle: nothing moves; the status is STOP (unless an error holds the queue).
+            self.vel_hold_idle();
+            self.update_status();
             return;
         }
         self.tick_full(dt);
     }
 
-    /// Whether the group's tick can take one of the short paths: not homing, no
-    /// external executor, filters or kinematics, not held or aborting, no rate ramp and
-    /// no over-travel check.
+    /// Whether the group's tick is only its commands: not homing, no external executor,
+    /// filters or kinematics, no over-travel check, not in an in-position check.
     fn steady(&self) -> bool {
         self.homing == 0
             && self.external.is_none()
             && self.post.is_none()
             && self.kin.is_none()
-            && self.mode == Mode::Normal
-            && self.rate.ramp.is_none()
             && self.ot_check == [false; AXES]
+            && self.inpos_wait.is_none()
     }
 
-    /// The tick of a [steady](GroupState::steady) group with nothing to do: no command
-    /// running or queued and no in-position check. The full tick would only set the
-    /// position to where the finished commands left it and the status to `GMS_STOP`;
-    /// this does just that. Returns false, having changed nothing, otherwise.
-    fn tick_idle(&mut self) -> bool {
-        if !self.running.is_empty() || !self.queue.is_empty() || self.inpos_wait.is_some() {
-            return false;
+    /// An idle period: the speeds stay as the last command left them, the feed speed
+    /// reads 0.
+    fn vel_hold_idle(&mut self) {
+        self.feed_now = 0.0;
+    }
+
+    /// How many of the next ticks, up to `max`, change nothing but positions and speeds:
+    /// no command starts or ends, no phase changes, no output, no safety check, the
+    /// status and the published info stay as they are. Only the program changes what this
+    /// depends on (under the groups' lock), besides the ticks.
+    pub fn quiet_ticks_ahead(&self, _dt: f64, max: u32) -> u32 {
+        if !self.steady()
+            || self.has_outputs()
+            || self.has_safety_checks()
+            || self.override_next.is_some()
+        {
+            return 0;
         }
-        // `compute_pos_vel` with no running command, and `update_status` of a group
-        // with nothing active and not held.
-        self.pos = self.base;
-        self.vel = [0.0; AXES];
-        self.status = c::GMS_STOP;
-        true
+        if self.published_key_holds_below().is_none() {
+            return 0;
+        }
+        if self.running.is_empty() {
+            let idle = self.queue.is_empty() && self.jump.is_none() && self.lag == 0;
+            return if idle && self.status == c::GMS_STOP {
+                max
+            } else {
+                0
+            };
+        }
+        if self.running.len() != 1 || self.status != c::GMS_RUNNING {
+            return 0;
+        }
+        let Some(r) = self.running.front() else {
+            return 0;
+        };
+        if r.stage != Stage::Moving {
+            return 0;
+        }
+        let ahead = match &r.progress {
+            Progress::Path { track, .. } => {
+                // The phase changes at the end of the acceleration and at the start of
+                // the deceleration; with blending on a next command may start there.
+                let to_cruise = track.periods_to_cruise();
+                let edge = if to_cruise > 0 {
+                    to_cruise
+                } else {
+                    track.periods_to_decel()
+                };
+                if edge == 0 {
+                    track.periods_left()
+                } else {
+                    edge
+                }
+            }
+            _ => 0,
+        };
+        // The tick that reaches an edge may change the info: stop one short of it.
+        let ahead = ahead.saturating_sub(1);
+        u32::try_from(ahead).unwrap_or(u32::MAX).min(max)
     }
 
-    /// [`GroupState::tick`] when the group does more than cruise or stand idle: kept out
-    /// of line, so that the short paths, nearly every tick of most groups, stay small.
+    /// [`GroupState::tick`] when the group does more than stand idle.
     #[inline(never)]
     fn tick_full(&mut self, dt: f64) {
         if self.homing != 0 && self.external.is_none() {
@@ -167,125 +383,193 @@ impl GroupState {
         if self.post.is_some() {
             return self.tick_post(dt);
         }
-        // Software over-travel compares with the position before the tick (only needed,
-        // and so only copied, when a check is on).
-        let before = (self.ot_check != [false; AXES]).then_some(self.pos);
-        let dtau = self.advance_rate(dt);
-        let delay_dt = if self.mode == Mode::Held { 0.0 } else { dt };
-        let clock = TickClock { dt, dtau, delay_dt };
-        if self.running.is_empty() {
-            // An idle group starts its next command at the start of the tick.
-            if self.may_start() {
-                if let Some(cmd) = self.pop_next() {
-                    let tau = clock.own_time(dt, &cmd);
-                    self.start(cmd, tau);
+        self.tick_commands(dt);
+    }
+
+    /// The commands' period: retire what ended in the last one, start, advance, blend,
+    /// stop; the position and the speeds; the status.
+    pub(super) fn tick_commands(&mut self, dt: f64) {
+        let before = self.pos;
+        let mut vel_mask: u32 = 0;
+        let mut zero_mask: u32 = 0;
+        self.apply_override();
+        // What ended in the last period goes.
+        let mut i = 0;
+        let mut lag = false;
+        while i < self.running.len() {
+            match self.running[i].finished {
+                Some(l) => {
+                    lag |= l;
+                    self.retire(i);
+                }
+                None => i += 1,
+            }
+        }
+        if self.running.is_empty() && lag {
+            self.lag = 1;
+        }
+        if let Some((d, left)) = self.jump.take() {
+            // A jog by pulses: the jump in its first period, then two at rest.
+            if left == JUMP_PERIODS {
+                for i in 0..AXES {
+                    self.base[i] += d[i];
                 }
             }
-        } else {
-            for r in self.running.iter_mut() {
-                r.tau += clock.own_time(dt, &r.cmd);
-            }
-            if let Some(r) = self.running.back() {
-                self.newest_own_time = r.tau;
+            if left > 1 {
+                self.jump = Some((d, left - 1));
             }
         }
-        self.settle(&clock);
-        self.finish_abort();
-        self.compute_pos_vel();
-        if let Some(before) = before {
+        let mut started = false;
+        if self.running.is_empty() && self.may_start() {
+            if let Some(cmd) = self.pop_next() {
+                self.start(cmd);
+                self.lag = 0;
+                started = true;
+            }
+        }
+        let mut abort_done = false;
+        let n = self.running.len();
+        for idx in 0..n {
+            let newest = idx + 1 == n;
+            let r = &mut self.running[idx];
+            r.periods += 1;
+            match r.stage {
+                Stage::Moving => {
+                    if r.arrived() && r.has_tracks() {
+                        // The period after arriving: at rest, shown as ending.
+                        let left = if matches!(r.progress, Progress::Axes { .. }) {
+                            PTP_ENDING
+                        } else {
+                            1
+                        };
+                        r.stage = Stage::Ending { left };
+                    } else {
+                        advance(r, &mut vel_mask);
+                        let ends = match r.progress {
+                            Progress::Delay { left } => left == 0,
+                            Progress::Switch => true,
+                            Progress::Staged => r.arrived(),
+                            _ => false,
+                        };
+                        if ends {
+                            let empty = matches!(&r.cmd.plan, Plan::Path(_) | Plan::Ptp(_));
+                            r.finished = Some(!empty);
+                        } else if !newest && r.has_tracks() && r.arrived() {
+                            // Blended out: it goes without a period of rest.
+                            r.finished = Some(false);
+                        }
+                    }
+                }
+                Stage::Stopping { abort } => {
+                    if r.stopped() {
+                        r.stage = Stage::Held { periods: 1, abort };
+                        zero_mask = u32::MAX;
+                    } else {
+                        advance(r, &mut vel_mask);
+                    }
+                }
+                Stage::Held { periods, abort } => {
+                    r.stage = Stage::Held {
+                        periods: periods + 1,
+                        abort,
+                    };
+                    zero_mask = u32::MAX;
+                }
+                Stage::Ending { .. } => {}
+            }
+            if let Stage::Ending { left } = r.stage {
+                match (&r.progress, left) {
+                    (Progress::Axes { master, .. }, 1) => zero_mask |= 1 << master,
+                    (Progress::Axes { .. }, _) => {}
+                    _ => zero_mask = u32::MAX,
+                }
+                if left <= 1 {
+                    r.finished = Some(true);
+                } else {
+                    r.stage = Stage::Ending { left: left - 1 };
+                }
+            }
+            if let Stage::Held { periods, abort: true } = r.stage {
+                abort_done |= periods >= HOLD_SHOWN_AFTER;
+            }
+        }
+        if abort_done {
+            // The timed abort's last period: everything goes in the next.
+            for r in self.running.iter_mut() {
+                r.finished = Some(false);
+            }
+            self.clear_queue();
+        }
+        self.try_blend(&mut vel_mask, started);
+        self.compute_pos();
+        self.compute_vel(&before, dt, vel_mask, zero_mask);
+        if self.ot_check != [false; AXES] {
             self.check_over_travel(&before);
         }
+        self.newest_own_time = self.running.back().map_or(0.0, |r| r.periods as f64);
         self.update_status();
+        if self.running.is_empty() && self.jump.is_none() {
+            self.lag = self.lag.saturating_sub(1);
+        }
     }
 
-    /// How many of the next ticks, up to `max`, are certain to take the cruising or the
-    /// idle path (`GroupState::tick_cruising`, `GroupState::tick_idle`) and to change
-    /// nothing the rest of the engine's tick looks at: no output changes, no safety check,
-    /// no go home result, the status unchanged, the published info unchanged (its key
-    /// holds, so a publication need not look). 0 when the next tick may do more. Only the
-    /// program changes what this depends on (under the groups' lock), besides the ticks.
-    pub fn quiet_ticks_ahead(&self, dt: f64, max: u32) -> u32 {
-        if !self.steady() || self.has_outputs() || self.has_safety_checks() {
-            return 0;
+    /// Blending: when the newest general motion has just started to decelerate and the
+    /// next queued motion is general too, starts it now.
+    fn try_blend(&mut self, vel_mask: &mut u32, just_started: bool) {
+        if !self.blend_on || !self.may_start() {
+            return;
         }
-        let Some(key_until) = self.published_key_holds_below() else {
-            return 0;
+        let Some(last) = self.running.back() else {
+            return;
         };
-        if self.running.is_empty() {
-            let idle = self.queue.is_empty() && self.inpos_wait.is_none();
-            // An idle group's status is `GMS_STOP` already after one idle tick.
-            return if idle && self.status == c::GMS_STOP {
-                max
-            } else {
-                0
-            };
+        if last.stage != Stage::Moving || !matches!(last.cmd.plan, Plan::Path(_)) {
+            return;
         }
-        let Some(r) = self.running.front() else {
-            return 0;
+        let Some(track) = last.path_track() else {
+            return;
         };
-        if self.running.len() != 1 || self.status != c::GMS_RUNNING {
-            return 0;
+        // The first period of its deceleration (one that decelerates from its first
+        // period runs that period alone).
+        if track.decel_periods_done() != 1 || just_started {
+            return;
         }
-        match cruise_end(&r.cmd.plan, self.blend_on) {
-            Some(end) => {
-                let end = end.min(key_until);
-                sums_below(r.tau, cruise_step(dt, self.rate.value * dt), end, max)
+        if !matches!(self.peek_motion(), Some(Plan::Path(m)) if !m.profile.is_empty()) {
+            return;
+        }
+        let from = last.cmd.ctype;
+        let Some(next) = self.pop_next() else {
+            return;
+        };
+        if let Some(Progress::Path { track, .. }) = self.running.back_mut().map(|r| &mut r.progress)
+        {
+            track.blend_out();
+        }
+        self.start(next);
+        if let Some(r) = self.running.back_mut() {
+            r.blended_from = Some(from);
+            if let Progress::Path { track, .. } = &mut r.progress {
+                track.blend_in();
             }
-            None => 0,
+            r.periods = 1;
+            advance(r, vel_mask);
         }
     }
 
-    /// The tick of a [steady](GroupState::steady) group in the middle of one general or
-    /// PtP command: only the command's own time advances and the position is sampled.
-    /// Returns false, having changed nothing, when the tick may do more (start, blend,
-    /// end or retire a command); [`GroupState::tick`] then runs in full. The arithmetic
-    /// is that of the full tick, operation for operation, so the positions are the same
-    /// to the bit.
-    fn tick_cruising(&mut self, dt: f64) -> bool {
-        if self.running.len() != 1 {
-            return false;
+    pub(super) fn start(&mut self, cmd: Command) {
+        if let Plan::Fault(code) = cmd.plan {
+            // A curve with no geometry fails as it starts.
+            self.stop_here();
+            self.set_error(code);
+            return;
         }
-        let dtau = self.rate.value * dt;
-        let Some(r) = self.running.front_mut() else {
-            return false;
-        };
-        let tau = r.tau + cruise_step(dt, dtau);
-        // (A NaN end holds no tick back.)
-        match cruise_end(&r.cmd.plan, self.blend_on) {
-            Some(end) if tau >= end => return false,
-            Some(_) => {}
-            None => return false,
-        }
-        r.tau = tau;
-        self.newest_own_time = tau;
-        // `compute_pos_vel` with this one command, without finding it again.
-        place_single(
-            &mut self.pos,
-            &mut self.vel,
-            &self.base,
-            &r.cmd,
-            tau,
-            self.rate.value,
-        );
-        // What `update_status` finds for a group running a motion command.
-        self.status = c::GMS_RUNNING;
-        true
-    }
-
-    pub(super) fn start(&mut self, cmd: Command, tau: f64) {
         let cmd = self.kinematics_start(cmd);
         if cmd.is_motion() {
             self.inpos_status = [0; AXES];
         }
-        if let Some(p) = self.rate.pending_override.take() {
-            self.override_pct = p;
-            if self.mode == Mode::Normal {
-                self.retarget_rate();
-            }
-        }
         self.info_touched();
+        // `nCommandIndex_LD`: the vendor's library shows the started command's index.
+        self.cmd_index.last_started = Some((cmd.index, cmd.index));
         self.cmd_index.ld = self.cmd_index.ld.wrapping_add(1);
-        self.cmd_index.last_started = Some((cmd.index, self.cmd_index.ld));
         self.note(Note::Start {
             index: cmd.index,
             ctype: cmd.ctype,
@@ -293,8 +577,105 @@ impl GroupState {
         if self.single_block {
             self.single_block_credit = false;
         }
-        self.running.push_back(Running { cmd, tau });
-        self.newest_own_time = tau;
+        let mut r = Running::new(cmd);
+        // A running override applies to the motion that starts.
+        let k = self.speed_ratio();
+        if k != 1.0 {
+            r.retarget_tracks(k);
+        }
+        self.running.push_back(r);
+    }
+
+    /// Takes command `i` off the running ones: its displacement joins the base.
+    fn retire(&mut self, i: usize) {
+        let Some(done) = self.running.remove(i) else {
+            return;
+        };
+        self.info_touched();
+        self.note(Note::End {
+            index: done.cmd.index,
+            ctype: done.cmd.ctype,
+            stopped: false,
+        });
+        if done.cmd.is_motion() {
+            let s = done.cmd.start();
+            let p = done.position();
+            for ((b, p), s) in self.base.iter_mut().zip(p).zip(s) {
+                *b += p - s;
+            }
+            if self.running.is_empty() && matches!(done.stage, Stage::Ending { .. }) {
+                self.base = done.cmd.target;
+                if self.inpos_mask != 0 {
+                    self.note(Note::InPosBegin(self.inpos_mask));
+                    self.inpos_wait = Some(InPosWait {
+                        mask: self.inpos_mask,
+                        elapsed: 0.0,
+                        settled: 0.0,
+                        settings: self.inpos,
+                    });
+                }
+            }
+        }
+        if self.running.is_empty() && self.mode == Mode::HoldAtBlockEnd {
+            self.mode = Mode::Held;
+        }
+    }
+
+    /// The command position: the base plus what every running command moved.
+    fn compute_pos(&mut self) {
+        if let (1, Some(r)) = (self.running.len(), self.running.front()) {
+            let s = r.cmd.start();
+            let p = r.position();
+            for i in 0..AXES {
+                self.pos[i] = if self.base[i] == s[i] {
+                    p[i]
+                } else {
+                    self.base[i] + (p[i] - s[i])
+                };
+            }
+            return;
+        }
+        let mut pos = self.base;
+        for r in &self.running {
+            if !r.cmd.is_motion() {
+                continue;
+            }
+            let s = r.cmd.start();
+            let p = r.position();
+            for i in 0..AXES {
+                pos[i] += p[i] - s[i];
+            }
+        }
+        self.pos = pos;
+    }
+
+    /// The speeds: the last period's distance over the period for the axes that moved
+    /// (`mask`); 0 for those an ending command stops (`zero`); the others keep theirs.
+    /// The feed speed: the master axis's speed for a PtP, the path speed otherwise.
+    fn compute_vel(&mut self, before: &Axes, dt: f64, mask: u32, zero: u32) {
+        for i in 0..AXES {
+            if zero & (1 << i) != 0 {
+                self.vel[i] = 0.0;
+            } else if mask & (1 << i) != 0 && dt > 0.0 {
+                self.vel[i] = (self.pos[i] - before[i]) / dt;
+            }
+        }
+        self.feed_now = match self.running.back() {
+            None => 0.0,
+            Some(r) => match (&r.progress, &r.cmd.plan) {
+                (Progress::Axes { master, .. }, _) => self.vel[*master].abs(),
+                (Progress::Path { track, sync: None }, Plan::Path(m)) if m.path.aux_only() => {
+                    let _ = track;
+                    let lead = m.path.lead_axis();
+                    self.vel[lead].abs()
+                }
+                (Progress::Path { sync: Some(i), .. }, _) => self.vel[*i].abs(),
+                (Progress::Path { .. }, _) => {
+                    crate::planner::compose::composed_speed(&self.vel, self.settings.compose)
+                }
+                _ => 0.0,
+            },
+        };
     }
 
     /// Software over-travel (user manual §2.6.1): with the check on, an axis never goes
@@ -316,230 +697,23 @@ impl GroupState {
             }
         }
     }
+}
 
-    /// After the running commands advanced: blends in the next command, retires finished
-    /// commands and hands the rest of the tick to their successors.
-    fn settle(&mut self, clock: &TickClock) {
-        // Bounded: each pass starts or retires one command.
-        for _ in 0..(self.queue.len() + self.running.len() + 2) * 2 {
-            if self.try_blend() {
-                continue;
-            }
-            let Some(first) = self.running.front() else {
-                return;
-            };
-            let dur = first.cmd.duration();
-            if first.tau < dur - TIME_EPS {
-                return;
-            }
-            let spare = clock.real_time((first.tau - dur).max(0.0), &first.cmd);
-            let Some(done) = self.running.pop_front() else {
-                return;
-            };
-            self.info_touched();
-            self.note(Note::End {
-                index: done.cmd.index,
-                ctype: done.cmd.ctype,
-                stopped: false,
-            });
-            if self.running.is_empty() {
-                self.base = done.cmd.target;
-                if done.cmd.is_motion() && self.inpos_mask != 0 {
-                    self.note(Note::InPosBegin(self.inpos_mask));
-                    self.inpos_wait = Some(InPosWait {
-                        mask: self.inpos_mask,
-                        elapsed: 0.0,
-                        settled: 0.0,
-                        settings: self.inpos,
-                    });
-                    if self.inpos_wait.is_some_and(|w| w.blocks()) {
-                        return;
-                    }
-                }
-            } else {
-                let s = done.cmd.start();
-                for ((b, t), s) in self.base.iter_mut().zip(done.cmd.target).zip(s) {
-                    *b += t - s;
-                }
-                continue;
-            }
-            if self.mode == Mode::HoldAtBlockEnd {
-                self.mode = Mode::Held;
-                self.rate.value = 0.0;
-                self.rate.ramp = None;
-                return;
-            }
-            if !self.may_start() {
-                return;
-            }
-            let Some(next) = self.pop_next() else {
-                return;
-            };
-            let tau = clock.own_time(spare, &next);
-            self.start(next, tau);
+/// Moves a running command one period on; marks the axes whose speeds it sets.
+fn advance(r: &mut Running, vel_mask: &mut u32) {
+    match &mut r.progress {
+        Progress::Path { track, .. } => {
+            track.step();
+            *vel_mask = u32::MAX;
         }
-    }
-
-    /// Blending: when the newest general motion has reached its deceleration and the next
-    /// queued motion is general too, starts it (docs/decisions.md). Returns whether it did.
-    fn try_blend(&mut self) -> bool {
-        if !self.blend_on || !self.may_start() {
-            return false;
-        }
-        let Some(last) = self.running.back() else {
-            return false;
-        };
-        let Plan::Path(m) = &last.cmd.plan else {
-            return false;
-        };
-        let ds = m.decel_start();
-        if last.tau < ds - TIME_EPS || last.tau >= m.duration() - TIME_EPS || m.duration() <= 0.0 {
-            return false;
-        }
-        let over = (last.tau - ds).max(0.0);
-        if !matches!(self.peek_motion(), Some(Plan::Path(_))) {
-            return false;
-        }
-        match self.pop_next() {
-            Some(next) => {
-                self.start(next, over);
-                true
-            }
-            None => false,
-        }
-    }
-
-    fn finish_abort(&mut self) {
-        if self.mode == Mode::Aborting && self.rate.ramp.is_none() && self.rate.value == 0.0 {
-            self.compute_pos_vel();
-            self.stop_here();
-        }
-    }
-
-    fn compute_pos_vel(&mut self) {
-        if let (1, Some(r)) = (self.running.len(), self.running.front()) {
-            // The usual case, without the sums (the same operations as below).
-            place_single(
-                &mut self.pos,
-                &mut self.vel,
-                &self.base,
-                &r.cmd,
-                r.tau,
-                self.rate.value,
-            );
-            return;
-        }
-        let mut pos = self.base;
-        let mut vel = [0.0; AXES];
-        for r in &self.running {
-            let (p, v) = r.cmd.sample(r.tau);
-            let s = r.cmd.start();
-            let scale = if matches!(r.cmd.plan, Plan::Delay(_)) {
-                0.0
-            } else {
-                self.rate.value
-            };
+        Progress::Axes { tracks, moving, .. } => {
             for i in 0..AXES {
-                pos[i] += p[i] - s[i];
-                vel[i] += v[i] * scale;
-            }
-        }
-        self.pos = pos;
-        self.vel = vel;
-    }
-}
-
-/// The position and velocity of a group whose one running command is `cmd`, at its own
-/// time `tau`: the group stood at `base` when the command started and runs at `rate`
-/// (`compute_pos_vel` with one command, also the cruise path's).
-#[inline(always)]
-fn place_single(pos: &mut Axes, vel: &mut Axes, base: &Axes, cmd: &Command, tau: f64, rate: f64) {
-    let s = cmd.start();
-    let mut v = [0.0; AXES];
-    if *base == s {
-        // The command starts where the group stands (nearly always): every axis takes
-        // the branch `p[i]` of the loop below, so the sample is the position.
-        cmd.sample_into(tau, pos, &mut v);
-    } else {
-        let mut p = [0.0; AXES];
-        cmd.sample_into(tau, &mut p, &mut v);
-        // An axis that starts where the group stands takes the sample as it is (adding
-        // and taking away the start could round); branch-free, so that it vectorizes.
-        #[allow(clippy::needless_range_loop)] // indexes four arrays; vectorizes
-        for i in 0..AXES {
-            let moved = base[i] + (p[i] - s[i]);
-            pos[i] = if base[i] == s[i] { p[i] } else { moved };
-        }
-    }
-    let scale = if matches!(cmd.plan, Plan::Delay(_)) {
-        0.0
-    } else {
-        rate
-    };
-    // `0.0 +` as in the sums of `compute_pos_vel` (it turns -0.0 into 0.0).
-    for (out, v) in vel.iter_mut().zip(v) {
-        *out = 0.0 + v * scale;
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::sums_below;
-
-    #[test]
-    fn sums_below_promises_only_sums_below_the_end_and_nearly_all_of_them() {
-        // Pseudo-random own times, steps and ends: 1 ms ticks at rates from 0 to 2x,
-        // commands from 10 ms to 2^40 s, started anywhere before their end. The sums are
-        // made as the ticks make them: every sum promised is below the end, and the
-        // promise falls short of the truth by at most 2 (no more than the margin).
-        let mut seed = 99u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let max = 64;
-        let (mut promised, mut near_end) = (0u64, 0);
-        for case in 0..20_000 {
-            let end = 0.01 * 2f64.powf(next() * 47.0);
-            let step = if case % 50 == 0 { 0.0 } else { 0.002 * next() };
-            // Mostly close to the end, where it matters.
-            let tau = if case % 2 == 0 {
-                end * next()
-            } else {
-                (end - step * 70.0 * next()).max(0.0)
-            };
-            let k = sums_below(tau, step, end, max);
-            let mut sum = tau;
-            let mut below = 0;
-            while below < max {
-                sum += step;
-                if sum >= end {
-                    break;
+                if *moving & (1 << i) != 0 && tracks[i].step() {
+                    *vel_mask |= 1 << i;
                 }
-                below += 1;
             }
-            assert!(
-                k <= below,
-                "tau {tau}, step {step}, end {end}: promised {k}, {below} below"
-            );
-            assert!(
-                below - k <= 2 || end * f64::EPSILON * 64.0 > step,
-                "tau {tau}, step {step}, end {end}: promised {k}, {below} below"
-            );
-            promised += u64::from(k);
-            near_end += usize::from(below < max);
         }
-        assert!(
-            promised > 20_000 * 20 && near_end > 5_000,
-            "{promised}, {near_end}"
-        );
-        // What is not a cruise: NaN, a start at or past the end, a negative step.
-        assert_eq!(sums_below(f64::NAN, 0.001, 1.0, max), 0);
-        assert_eq!(sums_below(1.0, 0.001, 1.0, max), 0);
-        assert_eq!(sums_below(0.5, -0.001, 1.0, max), 0);
-        assert_eq!(sums_below(0.5, 0.001, f64::INFINITY, max), 0);
-        assert_eq!(sums_below(0.5, 0.0, 1.0, max), max);
+        Progress::Delay { left } => *left = left.saturating_sub(1),
+        Progress::Switch | Progress::Staged => {}
     }
 }

@@ -253,7 +253,7 @@ impl Host for GroupState {
     }
 
     fn start(&mut self, cmd: Command) {
-        GroupState::start(self, cmd, 0.0);
+        GroupState::start(self, cmd);
     }
 
     fn retire(&mut self, n: usize) {

@@ -196,7 +196,7 @@ mod tests {
             high: 1e9,
             low: -1e9,
         };
-        GroupState::new(0, def, [axis; AXES])
+        GroupState::new(0, def, [axis; AXES], 0.001)
     }
 
     #[test]

@@ -9,7 +9,7 @@ use crate::engine::command::{Command, Plan};
 use crate::engine::kinematics::{JointMove, KinFns, KIN_AXES};
 use crate::error::{McclError, McclResult};
 use crate::error_record::ErrorRecord;
-use crate::planner::{Axes, Path, PathMove, Profile};
+use crate::planner::{Axes, Path, PathMove};
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, PRE_PROCESS_MOTION_COMMAND};
 use std::os::raw::c_int;
@@ -342,9 +342,12 @@ impl GroupState {
             self.rebase_front();
         }
         let joint_running = self.running.iter().find_map(|r| match &r.cmd.plan {
-            Plan::Joint(j) => Some((j.target, j.cart_end, j.joints_at(r.tau), {
-                r.tau >= j.duration() - TIME_EPS
-            })),
+            Plan::Joint(j) => Some((
+                j.target,
+                j.cart_end,
+                j.joints_at(r.periods),
+                r.periods >= j.periods(),
+            )),
             _ => None,
         });
         let pre = self.pre_request();
@@ -519,19 +522,8 @@ impl GroupState {
                 Path::Line(_) => Path::try_line(&start, &target).ok(),
                 p => Some(p.translated(&std::array::from_fn(|i| start[i] - s[i]))),
             };
-            let (acc, dec) = m.profile.shapes();
-            let planned = path.and_then(|path| {
-                Profile::new(
-                    path.length(),
-                    cmd.info_feed,
-                    cmd.acc_ms / 1000.0,
-                    cmd.dec_ms / 1000.0,
-                    acc,
-                    dec,
-                )
-                .ok()
-                .map(|profile| PathMove { path, profile })
-            });
+            let (feed, ramps, shapes, t) = (m.feed, m.ramps, m.shapes, m.profile.period());
+            let planned = path.map(|path| PathMove::new(path, feed, ramps, shapes, t));
             if let Some(mv) = planned {
                 cmd.target = mv.path.end();
                 cmd.plan = Plan::Path(mv);

@@ -1,21 +1,18 @@
 //! One motion group on the virtual card: its settings, its bounded command queue, and the
 //! execution of queued commands tick by tick (user manual §2.3, §2.6).
 //!
-//! Execution model. Every running command has its own time τ. Each tick advances τ by
-//! ∫ rate dt, where `rate` is the group's time scale: the override ratio (1.0 = 100 %), 0
-//! while held or after an abort. Rate changes ramp linearly
-//! ([`crate::planner::RateRamp`]) so speed changes smoothly and position never jumps. The
-//! command position is
-//! `base + Σ (command.sample(τ) − command.start)` over the running commands; with
-//! blending on, the next general motion starts when the running one begins to
-//! decelerate, so two commands run at once and their displacements add (docs/decisions.md).
-//! A command that ends inside a tick hands the rest of the tick to the next one, so
-//! consecutive commands keep exact timing. Whenever the last running command ends, the
-//! position becomes its exact planned end: nothing accumulates over millions of moves.
+//! Execution model: the vendor's library, measured with its own DLL (`execution.rs`).
+//! Commands run on the grid of periods; each motion follows a profile of whole periods
+//! ([`crate::planner::TickProfile`]) along its track (`track.rs`: a path, or one axis's
+//! travel), and hold, continue, override and timed aborts re-plan what is left of it
+//! from the speed of the last period (`control.rs`). The command position is the base
+//! plus what every running command moved; with blending on two general motions run at
+//! once and their displacements add. When the last running command ends, the position
+//! becomes its exact planned end: nothing accumulates over millions of moves.
 //!
 //! Files, one concept each: `queue.rs` (queuing, indices, single block), `execution.rs`
-//! (the running commands tick by tick), `rate.rs` (the time scale and what ramps it:
-//! override, feed, hold, abort), `inpos.rs` (the in-position check), `status.rs` (motion
+//! (the running commands tick by tick), `track.rs` (a motion's progress and its re-plans),
+//! `control.rs` (hold, continue, abort, override, feed), `inpos.rs` (the in-position check), `status.rs` (motion
 //! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
 //! `external.rs` (the door to an executor outside the card, e.g. the MC3B), `custom.rs`
 //! (the running custom motion's side of its callbacks' stage).
@@ -28,6 +25,7 @@ use crate::vendor::consts as c;
 use std::collections::VecDeque;
 
 mod commanded;
+mod control;
 pub mod custom;
 mod execution;
 pub mod external;
@@ -36,8 +34,8 @@ mod inpos;
 pub mod kinematics;
 mod post;
 mod queue;
-mod rate;
 mod status;
+mod track;
 
 pub(crate) use commanded::Commanded;
 use execution::Running;
@@ -46,13 +44,14 @@ use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
 pub use post::{MAX_FILTER_PERIODS, MOVING_AVERAGE_TAPS, REVERSE_HISTORY};
 use queue::CommandIndex;
-use rate::{Mode, RateState};
+use control::Mode;
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
 pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();
 
 /// A command whose own time is within this of its end has ended (1 ns: far below a tick,
-/// far above the rounding of summing millions of ticks).
+/// far above the rounding of summing millions of ticks): the stages of custom motion and
+/// joint moves, which run in continuous own time.
 pub const TIME_EPS: f64 = 1e-9;
 
 /// A group as the card runs it.
@@ -117,8 +116,18 @@ pub struct GroupState {
     outputs: Vec<Output>,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
     pub trace_notes: Option<Vec<super::trace::Note>>,
-    /// The time scale and its ramp (`rate.rs`).
-    rate: RateState,
+    /// Periods the status still reads `GMS_RUNNING` with nothing running (the vendor's
+    /// library shows one after the last command).
+    lag: u8,
+    /// A jog by pulses: its displacement and the periods it still keeps the group running.
+    jump: Option<(Axes, u8)>,
+    /// The feed speed of the last period (`MCC_GetCurFeedSpeed`).
+    feed_now: f64,
+    /// An override set since the last period and whether it is instant
+    /// (`MCC_OverrideSpeedEx`): in effect from the next period.
+    override_next: Option<(f64, bool)>,
+    /// The interpolation period, seconds.
+    period_s: f64,
     /// Position of everything finished (user coordinates).
     base: Axes,
     /// Current command position (user coordinates).
@@ -154,7 +163,7 @@ pub struct GroupState {
 
 impl GroupState {
     /// A stopped group at position 0.
-    pub fn new(index: usize, def: GroupDef, axes: [AxisMech; AXES]) -> GroupState {
+    pub fn new(index: usize, def: GroupDef, axes: [AxisMech; AXES], period_s: f64) -> GroupState {
         GroupState {
             index,
             def,
@@ -174,7 +183,11 @@ impl GroupState {
             pos: [0.0; AXES],
             offset: [0.0; AXES],
             vel: [0.0; AXES],
-            rate: RateState::default(),
+            lag: 0,
+            jump: None,
+            feed_now: 0.0,
+            override_next: None,
+            period_s,
             mode: Mode::Normal,
             single_block: false,
             single_block_credit: false,
@@ -210,7 +223,7 @@ impl GroupState {
         let notes = self.trace_notes.take();
         let custom = std::mem::take(&mut self.custom);
         let commanded = self.commanded;
-        *self = GroupState::new(self.index, self.def, axes);
+        *self = GroupState::new(self.index, self.def, axes, self.period_s);
         self.trace_notes = notes;
         self.custom = custom;
         // The channels it commands depend on every group's mapping, which a reset keeps.
@@ -230,7 +243,13 @@ impl GroupState {
             axes: &self.axes,
             from: self.queue_end,
             offset: self.offset,
+            period_s: self.period_s,
         }
+    }
+
+    /// The interpolation period, ms.
+    pub fn period_ms(&self) -> f64 {
+        self.period_s * 1000.0
     }
 
     /// Motion status (`GMS_*`).

@@ -285,6 +285,15 @@ impl GroupState {
         }
     }
 
+    /// The output feed speed: the period's path speed, or the filtered speeds' (see
+    /// [`GroupState::out_pos`]).
+    pub(super) fn out_feed(&self) -> f64 {
+        match self.output_filters() {
+            Some(f) => crate::planner::compose::composed_speed(&f.vel, self.settings.compose),
+            None => self.feed_now,
+        }
+    }
+
     /// Whether the output still moves after the commands (a filter settling, the group
     /// behind its path's front): the motion status stays running.
     pub(super) fn post_active(&self) -> bool {

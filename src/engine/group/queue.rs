@@ -59,6 +59,11 @@ impl GroupState {
         if self.mode == Mode::Aborting {
             return Err(McclError::AbortNotFinished);
         }
+        // With an error record the vendor's library refuses every command until
+        // `MCC_ClearError`.
+        if self.error != 0 {
+            return Err(McclError::RunTime);
+        }
         if self.queue.len() >= self.def.queue_size {
             return Err(McclError::BufferFull);
         }
@@ -134,11 +139,16 @@ impl GroupState {
             && self.kinematics_ready()
     }
 
-    /// Pops queued switches that are now reached; returns the next motion/delay command.
+    /// Pops queued switches that act at once (in-position, outputs); returns the next
+    /// command to run. A blending switch runs as a command of one period (the vendor's
+    /// library shows it as the current command) and takes effect as it starts.
     pub(super) fn pop_next(&mut self) -> Option<Command> {
         while let Some(front) = self.queue.front() {
             match front.plan {
-                Plan::Blend(on) => self.blend_on = on,
+                Plan::Blend(on) => {
+                    self.blend_on = on;
+                    return self.pop_queued();
+                }
                 Plan::InPos(on, mask) => {
                     if on {
                         self.inpos_mask |= mask;
@@ -171,12 +181,13 @@ impl GroupState {
         }
     }
 
-    /// The next queued motion/delay command's plan, looking past queued switches.
+    /// The next queued command's plan, looking past the switches that act at once
+    /// (in-position, outputs; a blending switch is a command of its own).
     pub(super) fn peek_motion(&self) -> Option<&Plan> {
         self.queue
             .iter()
             .map(|c| &c.plan)
-            .find(|p| !matches!(p, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
+            .find(|p| !matches!(p, Plan::InPos(..) | Plan::Output(_)))
     }
 
     /// Output changes the queue reached since the last call.

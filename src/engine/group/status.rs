@@ -1,14 +1,14 @@
 //! What the group shows: its motion status, the published motion and info parts, the
 //! pulses of its axes.
 
-use super::execution::Running;
+use super::execution::{Progress, Running, Stage, HOLD_SHOWN_AFTER};
+use super::track::Phase;
 use super::GroupState;
 use super::Mode;
 use crate::config::AXES;
-use crate::engine::command::Plan;
-use crate::engine::snapshot::{round_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
+use crate::engine::command::{ctype, Plan};
+use crate::engine::snapshot::{whole_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
 use crate::machine::Channel;
-use crate::planner::PathMove;
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 
@@ -21,21 +21,27 @@ impl GroupState {
         }
         let active = !self.running.is_empty()
             || !self.queue.is_empty()
+            || self.jump.is_some()
+            || self.lag > 0
             || self.inpos_wait.is_some_and(|w| w.blocks())
             || self.external.as_ref().is_some_and(|x| x.active())
             || self.post_active();
-        self.status = if !active && self.mode != Mode::Aborting {
-            if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
+        let held_shown = self.running.iter().any(|r| {
+            matches!(r.stage, Stage::Held { periods, .. } if periods >= HOLD_SHOWN_AFTER)
+        });
+        self.status = if !active {
+            if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd | Mode::Aborting) {
                 self.mode = Mode::Normal;
-                self.rate.value = self.target_rate();
-                self.rate.ramp = None;
             }
             c::GMS_STOP
-        } else if matches!(self.mode, Mode::Held)
+        } else if held_shown
             || (self.running.is_empty()
-                && (self.error != 0 || (self.single_block && !self.single_block_credit)))
+                && (self.error != 0
+                    || self.mode == Mode::Held
+                    || (self.single_block && !self.single_block_credit)))
         {
-            // Held, or commands waiting that an error or single-block mode keeps back.
+            // Held and at rest, or commands waiting that an error, a hold at a block's
+            // end or single-block mode keeps back.
             c::GMS_HOLD
         } else if matches!(
             self.running.front().map(|r| &r.cmd.plan),
@@ -66,7 +72,7 @@ impl GroupState {
     /// offset) times the pulses per UU, rounded halves away from zero.
     #[inline]
     fn pulses_at(&self, i: usize, pos: f64) -> i64 {
-        round_pulses((pos + self.offset[i]) * self.axes[i].factor)
+        whole_pulses((pos + self.offset[i]) * self.axes[i].factor)
     }
 
     /// Commands the channels this group commands (`commanded`: axes each with a channel
@@ -114,7 +120,7 @@ impl GroupState {
             status: self.status,
             pos: self.out_pos(),
             vel: self.out_vel(),
-            compose: self.settings.compose,
+            feed: self.out_feed(),
         }
     }
 
@@ -123,7 +129,7 @@ impl GroupState {
     #[inline]
     pub fn store_motion(&self, cell: &SnapshotCell) {
         if self.output_is_reference() {
-            cell.store_motion_parts(self.status, &self.pos, &self.vel, self.settings.compose);
+            cell.store_motion_parts(self.status, &self.pos, &self.vel, self.feed_now);
         } else {
             self.store_filtered_motion(cell);
         }
@@ -136,28 +142,39 @@ impl GroupState {
         cell.store_motion(&self.motion());
     }
 
-    /// The part of the published state that changes when commands start or end.
+    /// The part of the published state that changes when commands start or end. With
+    /// nothing running, `MCC_GetCurCommand` reports `RUN_TIME_ERR` with the index of the
+    /// last command started (as the vendor's library does).
     pub fn info(&self) -> Info {
-        let mut cmd = COMMAND_INFO {
-            nType: -1,
-            nCommandIndex: -1,
-            ..Default::default()
-        };
-        if let Some(r) = self.running.back() {
-            cmd = COMMAND_INFO {
+        let blending = self.running.len() > 1;
+        let last = self.cmd_index.last_started;
+        let cmd = match self.running.back() {
+            Some(r) => COMMAND_INFO {
                 nType: r.cmd.ctype,
                 nCommandIndex: r.cmd.index,
-                dfFeedSpeed: info_feed(r),
-                dfPos: r.cmd.target,
+                dfFeedSpeed: info_feed(r, self.period_s),
+                // A delay or a switch has no target: the vendor's library shows zeros.
+                dfPos: if r.cmd.is_motion() {
+                    r.cmd.target
+                } else {
+                    [0.0; AXES]
+                },
                 dfAcctime: r.cmd.acc_ms,
                 dfDectime: r.cmd.dec_ms,
-                nMotionPhase: motion_phase(r),
-                nCommandIndex_LD: self.cmd_index.last_started.map_or(0, |l| l.1),
-            };
-        }
+                nMotionPhase: motion_phase(r, blending),
+                nCommandIndex_LD: last.map_or(0, |l| l.1),
+            },
+            None => COMMAND_INFO {
+                nType: 0,
+                nCommandIndex: last.map_or(0, |l| l.0),
+                nCommandIndex_LD: last.map_or(0, |l| l.1),
+                ..Default::default()
+            },
+        };
         Info {
             error: self.error,
             queued: i32::try_from(self.queue.len()).unwrap_or(i32::MAX),
+            running: self.running.back().is_some(),
             cmd,
             offset: self.offset,
             factor: self.axes.map(|a| a.factor),
@@ -172,11 +189,12 @@ impl GroupState {
     #[inline]
     pub(super) fn info_key(&self) -> InfoKey {
         let back = self.running.back();
+        let blending = self.running.len() > 1;
         InfoKey {
             changes: self.info_changes,
             running: back.is_some(),
-            phase: back.map_or(0, motion_phase),
-            feed: back.map_or(0, |r| info_feed(r).to_bits()),
+            phase: back.map_or(0, |r| motion_phase(r, blending)),
+            feed: back.map_or(0, |r| info_feed(r, self.period_s).to_bits()),
         }
     }
 
@@ -244,7 +262,7 @@ impl GroupState {
     pub(in crate::engine) fn published_key_holds(&self) -> bool {
         let p = &self.published_key;
         debug_assert_eq!(
-            self.running.back().map(|r| r.tau.to_bits()),
+            self.running.back().map(|r| (r.periods as f64).to_bits()),
             (!self.running.is_empty()).then_some(self.newest_own_time.to_bits()),
             "group {}: newest_own_time is stale",
             self.index
@@ -286,27 +304,27 @@ impl PublishedKey {
     };
 }
 
-/// The own time of running command `r` up to which [`motion_phase`] and [`info_feed`]
-/// give what they give now. Own time only moves forward while a command runs (so only
-/// the end of the stretch is to check); the phase of a general motion changes at the end
-/// of the acceleration and at the start of the deceleration; a delay's feed (the time
-/// left) changes all the time, so its stretch ends now; the others stay the same. A
-/// NaN own time gives an end that no own time is below.
+/// The own time (periods run) of running command `r` up to which [`motion_phase`] and
+/// [`info_feed`] give what they give now: the end of the acceleration, the start of the
+/// deceleration, the arrival of a general motion or of a PtP's last axis; the current
+/// period for anything else (a delay's time left changes every period; stages change).
 fn key_holds_until(r: &Running) -> f64 {
-    match &r.cmd.plan {
-        Plan::Path(m) => {
-            let (accel_end, decel_start) = phase_bounds(m);
-            if r.tau < accel_end {
-                accel_end
-            } else if r.tau < decel_start {
-                decel_start
-            } else {
-                f64::INFINITY
-            }
-        }
-        Plan::Delay(_) => r.tau,
-        _ => f64::INFINITY,
+    let now = r.periods as f64;
+    if r.stage != Stage::Moving || r.blended_from.is_some() {
+        return now;
     }
+    let more = match &r.progress {
+        Progress::Path { track, .. } => match track.phase() {
+            Phase::Accelerating | Phase::Decelerating if track.periods_to_cruise() > 0 => {
+                track.periods_to_cruise()
+            }
+            Phase::Cruising => track.periods_to_decel(),
+            _ => track.periods_left(),
+        },
+        Progress::Axes { .. } => 0,
+        _ => 0,
+    };
+    now + more as f64 + 1.0
 }
 
 /// [`GroupState::info_key`].
@@ -320,37 +338,41 @@ pub(super) struct InfoKey {
     feed: u64,
 }
 
-/// `COMMAND_INFO.nMotionPhase` of a running command: 0 accelerating, 1 at speed, 2
-/// decelerating (general motion; 1 for the others).
-fn motion_phase(r: &Running) -> i32 {
-    match &r.cmd.plan {
-        Plan::Path(m) => {
-            let (accel_end, decel_start) = phase_bounds(m);
-            if r.tau < accel_end {
-                0
-            } else if r.tau < decel_start {
-                1
-            } else {
-                2
-            }
-        }
-        _ => 1,
+/// `COMMAND_INFO.nMotionPhase` of a running command, as the vendor's library numbers
+/// them: 11 accelerating, 13 at speed, 12 decelerating, 21 the period after arriving, 22
+/// held; while a general motion blends out of the one before, 17 (line after line), 18
+/// (line after arc) or 19 (arc after line); 0 for what has no phases (PtP, delay,
+/// switches).
+fn motion_phase(r: &Running, blending: bool) -> i32 {
+    match r.stage {
+        Stage::Ending { .. } if r.path_track().is_some() => return 21,
+        Stage::Held { .. } => return 22,
+        Stage::Stopping { .. } if r.path_track().is_some() => return 12,
+        _ => {}
+    }
+    let Some(track) = r.path_track() else {
+        return 0;
+    };
+    if let (true, Some(from)) = (blending, r.blended_from) {
+        let arc = |t: i32| (ctype::ARC_CW..=ctype::HELIX_CCW).contains(&t);
+        return match (arc(from), arc(r.cmd.ctype)) {
+            (true, false) => 18,
+            (false, true) => 19,
+            _ => 17,
+        };
+    }
+    match track.phase() {
+        Phase::Accelerating => 11,
+        Phase::Cruising => 13,
+        Phase::Decelerating => 12,
     }
 }
 
-/// The own times at which a general motion's phase changes: the end of its acceleration
-/// (no later than the start of its deceleration) and the start of its deceleration. One
-/// place for [`motion_phase`] and for how long a published phase holds
-/// ([`key_holds_for`]).
-fn phase_bounds(m: &PathMove) -> (f64, f64) {
-    (m.profile.acc_time().min(m.decel_start()), m.decel_start())
-}
-
 /// `COMMAND_INFO.dfFeedSpeed` of a running command: its feed, or what is left of a delay
-/// (ms).
-fn info_feed(r: &Running) -> f64 {
-    match r.cmd.plan {
-        Plan::Delay(s) => ((s - r.tau) * 1000.0).max(0.0),
+/// (ms) with a period of `period_s`.
+fn info_feed(r: &Running, period_s: f64) -> f64 {
+    match r.progress {
+        Progress::Delay { left } => left as f64 * period_s * 1000.0,
         _ => r.cmd.info_feed,
     }
 }
@@ -372,7 +394,7 @@ mod tests {
             high: 1e9,
             low: -1e9,
         };
-        let mut g = GroupState::new(0, def, [axis; AXES]);
+        let mut g = GroupState::new(0, def, [axis; AXES], 0.001);
         g.settings.feed = 10.0;
         g.settings.acc_ms = 100.0;
         g.settings.dec_ms = 100.0;

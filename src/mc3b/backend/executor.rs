@@ -357,6 +357,8 @@ impl ExternalExecutor for Executor {
             Plan::Blend(true) | Plan::InPos(true, _) | Plan::Custom(_) | Plan::Joint(_) => {
                 return Err(McclError::NotAccepted)
             }
+            // A curve with no geometry: the device has nothing to run.
+            Plan::Fault(_) => return Err(McclError::Parameter),
             Plan::Path(m) => backend::chord_points(&m.path, chord_tolerance(axes)),
             Plan::Ptp(_) => vec![cmd.target],
             _ => return Ok(()),

@@ -104,7 +104,11 @@ impl Executor {
         Some(match &cmd.plan {
             // Custom motion and joint moves (kinematic groups) are refused when queued
             // (`check`), so never reach here.
-            Plan::Blend(_) | Plan::InPos(..) | Plan::Custom(_) | Plan::Joint(_) => Next::Switch,
+            Plan::Blend(_)
+            | Plan::InPos(..)
+            | Plan::Custom(_)
+            | Plan::Joint(_)
+            | Plan::Fault(_) => Next::Switch,
             Plan::Output(_) => Next::Output,
             Plan::Path(m) => Next::Path(match m.path {
                 Path::Line(_) => SegKind::Line {
@@ -120,7 +124,7 @@ impl Executor {
                 start: cmd.start(),
                 target: cmd.target,
             },
-            Plan::Delay(s) => Next::Delay(*s),
+            Plan::Delay(_) => Next::Delay(cmd.info_feed / 1000.0),
         })
     }
 
@@ -272,28 +276,22 @@ impl Executor {
         let mut speeds: [Option<Speeds>; MOTORS] = [None; MOTORS];
         if let Plan::Ptp(p) = &cmd.plan {
             for i in 0..AXES {
-                let (Some(m), Some(prof)) = (self.motor[i], p.axis_profile(i)) else {
+                let Some(m) = self.motor[i] else {
                     continue;
                 };
                 if steps[m] == 0 {
                     continue;
                 }
+                let prof = p.profile(i);
                 let k = host.axes()[i].factor.abs();
-                let feed = prof.feed();
-                let peak = prof.peak_speed();
-                // The set times: a short move keeps the acceleration and lowers the peak.
-                let t = |actual: f64| {
-                    if peak > 0.0 {
-                        actual * feed / peak
-                    } else {
-                        0.0
-                    }
-                };
+                // The peak the axis reaches over its ramps (a short move keeps the ramps
+                // and lowers the peak, as planned on the card).
+                let t = prof.period();
                 let ramp = Ramp::Times {
-                    acc_s: t(prof.acc_time()),
-                    dec_s: t(prof.dec_time()),
+                    acc_s: f64::from(prof.acc_periods()) * t,
+                    dec_s: f64::from(prof.dec_periods()) * t,
                 };
-                speeds[m] = Some(backend::speeds_for(feed * k * scale, ramp));
+                speeds[m] = Some(backend::speeds_for(prof.speed() * k * scale, ramp));
             }
         }
         Job::Independent { steps, speeds }

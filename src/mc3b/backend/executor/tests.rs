@@ -30,7 +30,7 @@ fn rig() -> Rig {
         Some(ch) => AxisMech::new(&mac, Some((0, ch.0))),
         None => AxisMech::new(&mac, None),
     });
-    let mut g = GroupState::new(0, def, axes);
+    let mut g = GroupState::new(0, def, axes, 0.001);
     let (link, w) = worker();
     let x = Executor::new(link.clone(), &g.axes);
     g.attach_external(Box::new(x));

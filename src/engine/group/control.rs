@@ -1,0 +1,222 @@
+//! Trajectory control of what runs (user manual §2.6.3), the way the vendor's library
+//! does it: hold and continue, abort at once or over a deceleration, override, fixed
+//! speed, feed changes. Each acts on the running commands' tracks ([`super::track`]).
+
+use super::execution::Stage;
+use super::GroupState;
+use crate::config::AXES;
+use crate::engine::trace::Note;
+use crate::error::{McclError, McclResult};
+
+/// What the group is doing besides running commands.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Mode {
+    /// Running normally.
+    Normal,
+    /// `MCC_HoldMotion`: decelerating to, or standing at, a stop.
+    Held,
+    /// `MCC_HoldMotion(g, TRUE)`: hold when the running command ends.
+    HoldAtBlockEnd,
+    /// `MCC_AbortMotionEx(t)`: decelerating; then everything is dropped.
+    Aborting,
+}
+
+impl GroupState {
+    /// `MCC_HoldMotion`: what runs decelerates to a stop and the group waits for
+    /// `MCC_ContiMotion`; a motion already in its last deceleration finishes it first.
+    /// Nothing running, already held, or the last command of the queue decelerating to
+    /// its end: the vendor's library changes nothing and returns 0. It holds at once
+    /// whatever `bBlockEnd` says (as the vendor's library does), but on an MC3B, which
+    /// can only stop between jobs, `bBlockEnd` holds at the end of the running job.
+    pub fn hold(&mut self, at_block_end: bool) -> McclResult<()> {
+        if self.running.is_empty() || self.mode != Mode::Normal {
+            return Ok(());
+        }
+        if self.external.is_some() {
+            if !at_block_end {
+                return Err(McclError::NotAccepted);
+            }
+            self.note(Note::Hold { block_end: true });
+            self.mode = Mode::HoldAtBlockEnd;
+            return Ok(());
+        }
+        let ending = self.running.iter().all(|r| {
+            r.path_track().is_some_and(|t| t.in_final_decel()) || !r.holds()
+        });
+        if ending && self.queue.is_empty() {
+            return Ok(());
+        }
+        self.note(Note::Hold { block_end: false });
+        self.mode = Mode::Held;
+        self.stop_tracks(false, None);
+        Ok(())
+    }
+
+    /// `MCC_ContiMotion`: what was held runs on from rest. Not held: nothing, 0.
+    pub fn conti(&mut self) -> McclResult<()> {
+        match self.mode {
+            Mode::Held | Mode::HoldAtBlockEnd => {
+                self.note(Note::Continue);
+                self.mode = Mode::Normal;
+                for r in self.running.iter_mut() {
+                    if matches!(r.stage, Stage::Stopping { .. } | Stage::Held { .. }) {
+                        r.stage = Stage::Moving;
+                        r.resume_tracks();
+                    }
+                }
+                self.info_touched();
+                self.update_status();
+                Ok(())
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// Every running command with tracks decelerates to a stop: with its own
+    /// deceleration time, or `dec_s`.
+    fn stop_tracks(&mut self, abort: bool, dec_s: Option<f64>) {
+        for r in self.running.iter_mut() {
+            if !r.holds() || matches!(r.stage, Stage::Ending { .. }) {
+                continue;
+            }
+            // A motion in its last deceleration keeps it (it stops where it ends).
+            let finishing = r.path_track().is_some_and(|t| t.in_final_decel());
+            if !finishing {
+                let d = dec_s.unwrap_or(r.cmd.dec_ms / 1000.0);
+                r.stop_tracks(d);
+            }
+            r.stage = Stage::Stopping { abort };
+        }
+        self.info_touched();
+        self.update_status();
+    }
+
+    /// `MCC_AbortMotion(g, FALSE)`, `MCC_AbortMotionEx`: empties the queue and stops, at
+    /// once (`dec_ms` 0, rounded up to whole ms as the vendor keeps times) or over the
+    /// deceleration `dec_ms` gives. With `at_block_end` the running command finishes and
+    /// the queue is dropped.
+    pub fn abort(&mut self, dec_ms: f64, at_block_end: bool) {
+        let dec_ms = crate::planner::whole_ms(dec_ms.max(0.0));
+        // The MC3B stops at once (`S`); it has no controlled stop.
+        let dec_ms = if self.external.is_some() { 0.0 } else { dec_ms };
+        self.note(Note::Abort {
+            dec_s: dec_ms / 1000.0,
+            block_end: at_block_end,
+        });
+        self.clear_queue();
+        if at_block_end {
+            self.queue_end = self.running.back().map_or(self.pos, |r| r.cmd.target);
+            self.update_status();
+            return;
+        }
+        let held = self.mode == Mode::Held
+            && self
+                .running
+                .iter()
+                .all(|r| matches!(r.stage, Stage::Held { .. }));
+        if dec_ms <= 0.0 || held || self.running.is_empty() {
+            self.abort_now(true);
+        } else {
+            self.mode = Mode::Aborting;
+            self.stop_tracks(true, Some(dec_ms / 1000.0));
+        }
+    }
+
+    /// Drops what runs and is queued where the group stands; `lag`: the status reads
+    /// `GMS_RUNNING` for one more period (an abort, as the vendor's library shows it).
+    pub(super) fn abort_now(&mut self, lag: bool) {
+        let was_busy = !self.running.is_empty();
+        self.stop_here();
+        if lag && was_busy {
+            self.lag = 1;
+        }
+        self.update_status();
+    }
+
+    /// Stops at once where the group stands: nothing runs or waits afterwards.
+    pub(super) fn stop_here(&mut self) {
+        if let Some(x) = self.external.as_mut() {
+            x.stop();
+        }
+        self.inpos_wait = None;
+        self.note_stopped();
+        self.running.clear();
+        self.jump = None;
+        self.lag = 0;
+        self.info_touched();
+        self.clear_queue();
+        self.post_stopped();
+        self.base = self.pos;
+        self.queue_end = self.pos;
+        self.vel = [0.0; AXES];
+        self.feed_now = 0.0;
+        self.mode = Mode::Normal;
+    }
+
+    /// `MCC_OverrideSpeedEx`: the new ratio is in effect from the next period; with
+    /// `instant` what runs then re-plans its rest, otherwise it keeps its speed and the
+    /// commands after it run at the new ratio.
+    pub fn override_speed(&mut self, pct: f64, instant: bool) {
+        self.override_next = Some((pct, instant));
+    }
+
+    /// At the start of a period: an override set since the last one comes into effect.
+    pub(super) fn apply_override(&mut self) {
+        if let Some((pct, instant)) = self.override_next.take() {
+            self.override_pct = pct;
+            if instant {
+                self.retarget_running();
+            }
+        }
+    }
+
+    /// What runs at speed re-plans the rest of its length at its feed times the ratio
+    /// (not with the speed fixed).
+    fn retarget_running(&mut self) {
+        if self.mode != Mode::Normal || self.fixed_speed {
+            return;
+        }
+        let k = self.speed_ratio();
+        for r in self.running.iter_mut() {
+            if r.stage == Stage::Moving {
+                r.retarget_tracks(k);
+            }
+        }
+        self.info_touched();
+    }
+
+    /// The ratio feed speeds run at: the override, or 1 with the speed fixed.
+    pub(super) fn speed_ratio(&self) -> f64 {
+        if self.fixed_speed {
+            1.0
+        } else {
+            self.override_pct / 100.0
+        }
+    }
+
+    /// `MCC_ChangeFeedSpeed`: later general motion uses feed `v`; the running general
+    /// motion re-plans its rest at `v`.
+    pub fn change_feed_speed(&mut self, v: f64) {
+        self.settings.feed = v;
+        if self.external.is_some() {
+            // A running MC3B job keeps its speed: later commands get the new feed.
+            return;
+        }
+        let k = self.speed_ratio();
+        for r in self.running.iter_mut() {
+            if r.stage == Stage::Moving && matches!(r.cmd.plan, crate::engine::command::Plan::Path(_)) {
+                r.set_feed(v, k);
+            }
+        }
+        self.info_touched();
+    }
+
+    /// `MCC_FixSpeed`: with the speed fixed the override changes no speed.
+    pub fn fix_speed(&mut self, fixed: bool) {
+        let was = self.fixed_speed;
+        self.fixed_speed = fixed;
+        if was && !fixed && self.override_pct != 100.0 {
+            self.retarget_running();
+        }
+    }
+}

@@ -1,0 +1,263 @@
+//! The progress of a running motion along a length (a path, or one axis's travel), one
+//! period at a time, and how a hold, a continue, an override or a timed abort re-plans
+//! what is left of it (the vendor's library, measured: docs/decisions.md "Motion as the
+//! vendor's library runs it").
+
+use crate::planner::{Shape, TickProfile};
+
+/// Where a track is on its profile, as `COMMAND_INFO.nMotionPhase` shows it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Phase {
+    /// Ramping up to its speed.
+    Accelerating,
+    /// At its speed.
+    Cruising,
+    /// Ramping down (to a lower speed or to a stop).
+    Decelerating,
+}
+
+/// A motion's progress along `len`: the profile of the stretch running now (the plan
+/// from rest, or a re-plan) and how far the stretches before it came.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Track {
+    profile: TickProfile,
+    /// Distance covered before `profile` started.
+    s0: f64,
+    /// Periods of `profile` done.
+    k: u64,
+    /// Distance one period ago (the last period's speed is what a re-plan starts from).
+    prev: f64,
+    /// The whole length.
+    len: f64,
+    /// The feed speed it was planned with.
+    base_feed: f64,
+    /// The feed speed it runs at (`base_feed` times an override).
+    feed: f64,
+    ramps: (u32, u32),
+    shapes: (Shape, Shape),
+}
+
+impl Track {
+    /// A track running `profile` (planned from rest over `len` at `feed` with these
+    /// ramps) from its start.
+    pub(crate) fn new(
+        profile: TickProfile,
+        feed: f64,
+        ramps: (u32, u32),
+        shapes: (Shape, Shape),
+    ) -> Track {
+        Track {
+            profile,
+            s0: 0.0,
+            k: 0,
+            prev: 0.0,
+            len: profile.len(),
+            base_feed: feed,
+            feed,
+            ramps,
+            shapes,
+        }
+    }
+
+    /// Distance covered.
+    #[inline]
+    pub(crate) fn dist(&self) -> f64 {
+        if self.k >= self.profile.periods() {
+            return self.s0 + self.profile.len();
+        }
+        self.s0 + self.profile.distance(self.k)
+    }
+
+    /// The whole length.
+    pub(crate) fn len(&self) -> f64 {
+        self.len
+    }
+
+    /// Whether the running stretch has ended.
+    #[inline]
+    pub(crate) fn stretch_done(&self) -> bool {
+        self.k >= self.profile.periods()
+    }
+
+    /// Whether the whole length is covered (and the stretch ended).
+    pub(crate) fn arrived(&self) -> bool {
+        self.stretch_done() && self.s0 + self.profile.len() >= self.len
+    }
+
+    /// Moves one period on. Returns whether it moved.
+    #[inline]
+    pub(crate) fn step(&mut self) -> bool {
+        if self.k >= self.profile.periods() {
+            self.prev = self.dist();
+            return false;
+        }
+        self.prev = self.dist();
+        self.k += 1;
+        true
+    }
+
+    /// The average speed over the last period (distance over the period).
+    pub(crate) fn last_speed(&self) -> f64 {
+        let t = self.profile.period();
+        if t > 0.0 {
+            (self.dist() - self.prev) / t
+        } else {
+            0.0
+        }
+    }
+
+    /// Periods until the running stretch ends.
+    pub(crate) fn periods_left(&self) -> u64 {
+        self.profile.periods().saturating_sub(self.k)
+    }
+
+    /// Periods until the stretch starts decelerating (0 once it does).
+    pub(crate) fn periods_to_decel(&self) -> u64 {
+        self.profile.decel_start().saturating_sub(self.k)
+    }
+
+    /// Periods of the deceleration done (0 before it starts).
+    pub(crate) fn decel_periods_done(&self) -> u64 {
+        self.k.saturating_sub(self.profile.decel_start())
+    }
+
+    /// Periods until the acceleration ends (0 once it has).
+    pub(crate) fn periods_to_cruise(&self) -> u64 {
+        u64::from(self.profile.acc_periods()).saturating_sub(self.k)
+    }
+
+    /// Where the running stretch is.
+    pub(crate) fn phase(&self) -> Phase {
+        let p = &self.profile;
+        if self.k <= u64::from(p.acc_periods()) && p.acc_periods() > 0 {
+            if p.start_speed() > p.speed() {
+                Phase::Decelerating
+            } else {
+                Phase::Accelerating
+            }
+        } else if self.k <= p.decel_start() {
+            Phase::Cruising
+        } else {
+            Phase::Decelerating
+        }
+    }
+
+    /// Whether the running stretch is the last deceleration of the whole length (a hold
+    /// then changes nothing).
+    pub(crate) fn in_final_decel(&self) -> bool {
+        self.k > self.profile.decel_start() && self.s0 + self.profile.len() >= self.len
+    }
+
+    /// The feed the track runs at.
+    pub(crate) fn feed(&self) -> f64 {
+        self.feed
+    }
+
+    fn restart(&mut self, profile: TickProfile) {
+        self.s0 = self.dist();
+        self.k = 0;
+        self.profile = profile;
+    }
+
+    /// A hold or a timed abort: stops from the last period's speed with the deceleration
+    /// `dec_s` gives at the full feed ([`TickProfile::stop`]).
+    pub(crate) fn stop(&mut self, dec_s: f64) {
+        let v0 = self.last_speed();
+        let t = self.profile.period();
+        let stop = TickProfile::stop(v0, self.feed, dec_s, self.shapes.1, t);
+        self.restart(stop);
+    }
+
+    /// A continue after a hold: what is left, from rest, with the track's feed and ramps.
+    pub(crate) fn resume(&mut self) {
+        let left = (self.len - self.dist()).max(0.0);
+        let t = self.profile.period();
+        let p = TickProfile::plan(left, 0.0, self.feed, self.ramps.0, self.ramps.1, self.shapes, t);
+        self.restart(p);
+    }
+
+    /// An override: what is left, from the last period's speed, at the planned feed
+    /// times `ratio`.
+    pub(crate) fn retarget(&mut self, ratio: f64) {
+        let feed = self.base_feed * ratio;
+        let left = (self.len - self.dist()).max(0.0);
+        let v0 = self.last_speed();
+        let t = self.profile.period();
+        self.feed = feed;
+        let p = TickProfile::plan(left, v0, feed, self.ramps.0, self.ramps.1, self.shapes, t);
+        self.restart(p);
+    }
+
+    /// A new feed (`MCC_ChangeFeedSpeed`), at `ratio`: re-plans what is left.
+    pub(crate) fn set_base_feed(&mut self, feed: f64, ratio: f64) {
+        self.base_feed = feed;
+        self.retarget(ratio);
+    }
+
+    /// Blending: the deceleration of the running stretch becomes an S ramp (the vendor
+    /// blends with S ramps whatever the curve type).
+    pub(crate) fn blend_out(&mut self) {
+        self.profile = self.profile.with_shapes(self.shapes.0, Shape::S);
+    }
+
+    /// Blending: the acceleration of a motion that starts blended in is an S ramp.
+    pub(crate) fn blend_in(&mut self) {
+        let dec = self.profile_shapes().1;
+        self.profile = self.profile.with_shapes(Shape::S, dec);
+    }
+
+    fn profile_shapes(&self) -> (Shape, Shape) {
+        self.shapes
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(len: f64) -> Track {
+        let ramps = (100, 100);
+        let shapes = (Shape::T, Shape::T);
+        let p = TickProfile::plan(len, 0.0, 10.0, ramps.0, ramps.1, shapes, 0.001);
+        Track::new(p, 10.0, ramps, shapes)
+    }
+
+    #[test]
+    fn a_hold_at_speed_stops_half_a_deceleration_later() {
+        // The vendor, 2 UU at 10 UU/s, 100 ms T ramps: held after 150 periods (1.0 UU, at
+        // speed) it stops at 1.5 UU 101 periods later; continued, the 0.5 UU left run from
+        // rest with a peak of 5 UU/s over 200 periods.
+        let mut t = line(2.0);
+        for _ in 0..150 {
+            t.step();
+        }
+        assert!((t.dist() - 1.0).abs() < 1e-12);
+        assert_eq!(t.phase(), Phase::Cruising);
+        t.stop(0.1);
+        assert_eq!(t.periods_left(), 101);
+        while t.step() {}
+        assert!((t.dist() - 1.5).abs() < 1e-12);
+        assert!(!t.arrived());
+        t.resume();
+        assert_eq!(t.periods_left(), 200);
+        t.step();
+        assert!((t.last_speed() - 0.025).abs() < 1e-9, "{}", t.last_speed());
+        while t.step() {}
+        assert!(t.arrived());
+        assert_eq!(t.dist(), 2.0);
+    }
+
+    #[test]
+    fn an_override_replans_from_the_last_periods_speed() {
+        // The vendor: 40 % at period 30 of the acceleration; 352 periods at 3.9989 UU/s.
+        let mut t = line(2.0);
+        for _ in 0..30 {
+            t.step();
+        }
+        t.retarget(0.4);
+        assert_eq!(t.periods_left(), 552);
+        assert_eq!(t.phase(), Phase::Accelerating);
+        t.step();
+        assert!((t.last_speed() - 2.9552444690265496).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,374 @@
+//! Speed profiles on the grid of interpolation periods, the way the vendor's library
+//! plans them (measured with its own DLL, docs/decisions.md "Motion as the vendor's
+//! library runs it").
+//!
+//! A move is planned in whole periods: its ramps last whole periods, and its feed is
+//! lowered so that the part at constant speed does too. A profile runs from a start
+//! speed `v0` to a constant speed `v` over `na` periods, holds `v` for `nc` periods and
+//! ramps to 0 over `nd` periods. [`TickProfile::distance`] gives where it is after `k`
+//! periods; the speed a program reads for period `k` is the distance covered in it over
+//! the period.
+
+use super::Shape;
+
+/// The velocity fraction of an S ramp at `x` in `[0, 1]` of its time: the cubic
+/// smoothstep `3x² − 2x³` (what the vendor's S-curve is, per period to six digits).
+#[inline]
+pub fn smoothstep(x: f64) -> f64 {
+    x * x * (3.0 - 2.0 * x)
+}
+
+/// The distance a ramp from 0 to `v` lasting `time` seconds covers in its first `t`
+/// seconds (`0 <= t <= time`).
+#[inline]
+fn ramp_distance(shape: Shape, v: f64, time: f64, t: f64) -> f64 {
+    if time <= 0.0 {
+        return v * t;
+    }
+    let x = t / time;
+    match shape {
+        Shape::T => v * t * x * 0.5,
+        // ∫ v (3u² − 2u³) dt with u = t/time: v·time·(u³ − u⁴/2).
+        Shape::S => v * time * (x * x * x - 0.5 * x * x * x * x),
+    }
+}
+
+/// How many periods an acceleration of `acc_ms` and a deceleration of `dec_ms` take at a
+/// period of `period_ms`: each rounded up to whole periods, and when the two together
+/// are odd the shorter one is a period longer, so that their half sum is whole and the
+/// time at speed stays a whole number of periods (the times are whole milliseconds, see
+/// [`whole_ms`]).
+pub fn ramp_periods(acc_ms: f64, dec_ms: f64, period_ms: f64) -> (u32, u32) {
+    let periods = |ms: f64| -> u32 {
+        if !(ms > 0.0) || !(period_ms > 0.0) {
+            return 0;
+        }
+        let n = (ms / period_ms).ceil();
+        // A whole number of milliseconds over a whole period: an exact quotient when it
+        // divides, so `ceil` cannot round a whole quotient up.
+        if n >= f64::from(u32::MAX) {
+            u32::MAX
+        } else {
+            n as u32
+        }
+    };
+    let (mut na, mut nd) = (periods(acc_ms), periods(dec_ms));
+    if (u64::from(na) + u64::from(nd)) % 2 == 1 {
+        if na < nd {
+            na += 1;
+        } else {
+            nd += 1;
+        }
+    }
+    (na, nd)
+}
+
+/// A time in milliseconds as the vendor keeps it: rounded up to a whole millisecond.
+pub fn whole_ms(ms: f64) -> f64 {
+    ms.ceil()
+}
+
+/// A speed profile on the period grid (see the module).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TickProfile {
+    len: f64,
+    v0: f64,
+    v: f64,
+    na: u32,
+    nc: u64,
+    nd: u32,
+    acc: Shape,
+    dec: Shape,
+    /// The period, seconds.
+    t: f64,
+    /// Distance covered by the ramp from `v0` to `v`.
+    acc_len: f64,
+}
+
+impl TickProfile {
+    /// A move of `len` (>= 0) from speed `v0` (>= 0) at a feed of at most `feed` (> 0),
+    /// ramping over `na` and `nd` periods of `t` seconds.
+    ///
+    /// When the ramps and some time at `feed` fit in `len`, the time at speed is rounded
+    /// up to whole periods and the speed lowered to fit exactly:
+    /// `(v0 + v)/2·na·t + v·nc·t + v/2·nd·t = len`. When they do not (a short move), the
+    /// ramps keep their periods and the peak speed is lowered: `nc = 0`.
+    pub fn plan(
+        len: f64,
+        v0: f64,
+        feed: f64,
+        na: u32,
+        nd: u32,
+        shapes: (Shape, Shape),
+        t: f64,
+    ) -> TickProfile {
+        let ta = f64::from(na) * t;
+        let td = f64::from(nd) * t;
+        let ramps = 0.5 * (v0 + feed) * ta + 0.5 * feed * td;
+        let nc = if len > ramps && feed > 0.0 && t > 0.0 {
+            let periods = ((len - ramps) / feed / t).ceil();
+            if periods >= 1.0 {
+                periods.min(9.0e15) as u64
+            } else {
+                0
+            }
+        } else {
+            0
+        };
+        let denom = 0.5 * ta + nc as f64 * t + 0.5 * td;
+        let v = if denom > 0.0 {
+            ((len - 0.5 * v0 * ta) / denom).max(0.0)
+        } else {
+            0.0
+        };
+        TickProfile::from_parts(len, v0, v, na, nc, nd, shapes, t)
+    }
+
+    /// A stop from speed `v0`: the distance a ramp from `v0` to 0 lasting `dec_s` at the
+    /// full feed `feed` would take at the same deceleration, `v0²·dec_s/(2·feed)`, run as
+    /// a ramp to 0 over `floor(dec_s·v0/feed / t) + 1` periods (the vendor's hold and
+    /// timed abort).
+    pub fn stop(v0: f64, feed: f64, dec_s: f64, shape: Shape, t: f64) -> TickProfile {
+        let (d, n) = if v0 > 0.0 && feed > 0.0 && t > 0.0 {
+            let time = dec_s * v0 / feed;
+            let n = (time / t).floor().min(1.0e9) as u32 + 1;
+            (v0 * v0 * dec_s / (2.0 * feed), n)
+        } else {
+            (0.0, 0)
+        };
+        let vs = if n > 0 {
+            2.0 * d / (f64::from(n) * t)
+        } else {
+            0.0
+        };
+        TickProfile::from_parts(d, vs, vs, 0, 0, n, (shape, shape), t)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn from_parts(
+        len: f64,
+        v0: f64,
+        v: f64,
+        na: u32,
+        nc: u64,
+        nd: u32,
+        (acc, dec): (Shape, Shape),
+        t: f64,
+    ) -> TickProfile {
+        let ta = f64::from(na) * t;
+        TickProfile {
+            len,
+            v0,
+            v,
+            na,
+            nc,
+            nd,
+            acc,
+            dec,
+            t,
+            acc_len: v0 * ta + ramp_distance(acc, v - v0, ta, ta),
+        }
+    }
+
+    /// The same profile with other ramp shapes (blending runs both ramps of the overlap
+    /// as S ramps).
+    pub fn with_shapes(self, acc: Shape, dec: Shape) -> TickProfile {
+        TickProfile::from_parts(
+            self.len,
+            self.v0,
+            self.v,
+            self.na,
+            self.nc,
+            self.nd,
+            (acc, dec),
+            self.t,
+        )
+    }
+
+    /// Periods the profile lasts.
+    #[inline]
+    pub fn periods(&self) -> u64 {
+        u64::from(self.na) + self.nc + u64::from(self.nd)
+    }
+
+    /// The period at which the deceleration starts (the periods before it).
+    #[inline]
+    pub fn decel_start(&self) -> u64 {
+        u64::from(self.na) + self.nc
+    }
+
+    /// Periods of the acceleration (from `v0` to the constant speed).
+    #[inline]
+    pub fn acc_periods(&self) -> u32 {
+        self.na
+    }
+
+    /// Periods of the deceleration.
+    #[inline]
+    pub fn dec_periods(&self) -> u32 {
+        self.nd
+    }
+
+    /// The constant speed.
+    #[inline]
+    pub fn speed(&self) -> f64 {
+        self.v
+    }
+
+    /// The start speed.
+    #[inline]
+    pub fn start_speed(&self) -> f64 {
+        self.v0
+    }
+
+    /// The length of the move.
+    #[inline]
+    pub fn len(&self) -> f64 {
+        self.len
+    }
+
+    /// Whether the move has no length.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0.0
+    }
+
+    /// The period in seconds.
+    #[inline]
+    pub fn period(&self) -> f64 {
+        self.t
+    }
+
+    /// The distance covered after `k` periods (`len` from the last period on).
+    #[inline]
+    pub fn distance(&self, k: u64) -> f64 {
+        let n = self.periods();
+        if k >= n {
+            return self.len;
+        }
+        let na = u64::from(self.na);
+        if k <= na {
+            let t = k as f64 * self.t;
+            let ta = f64::from(self.na) * self.t;
+            return self.v0 * t + ramp_distance(self.acc, self.v - self.v0, ta, t);
+        }
+        if k <= na + self.nc {
+            return self.acc_len + self.v * ((k - na) as f64 * self.t);
+        }
+        // Deceleration, measured back from the end (both shapes are symmetric).
+        let r = (n - k) as f64 * self.t;
+        let td = f64::from(self.nd) * self.t;
+        self.len - ramp_distance(self.dec, self.v, td, r)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn avg_speeds(p: &TickProfile) -> Vec<f64> {
+        (1..=p.periods())
+            .map(|k| (p.distance(k) - p.distance(k - 1)) / p.period())
+            .collect()
+    }
+
+    #[test]
+    fn ramp_periods_round_up_and_make_the_half_sum_whole() {
+        // Measured on the vendor's library: (acc, dec) ms at 1 ms -> the periods its
+        // current-command record shows; and at 10 ms.
+        for ((a, d, p), want) in [
+            ((1.0, 2.0, 1.0), (2, 2)),
+            ((2.0, 3.0, 1.0), (3, 3)),
+            ((3.0, 8.0, 1.0), (4, 8)),
+            ((7.0, 2.0, 1.0), (7, 3)),
+            ((0.0, 3.0, 1.0), (1, 3)),
+            ((30.0, 120.0, 1.0), (30, 120)),
+            ((25.0, 35.0, 10.0), (4, 4)),
+            ((14.0, 6.0, 10.0), (2, 2)),
+            ((30.0, 50.0, 10.0), (3, 5)),
+            ((0.0, 20.0, 10.0), (0, 2)),
+            ((10.0, 30.0, 10.0), (1, 3)),
+        ] {
+            assert_eq!(ramp_periods(a, d, p), want, "({a}, {d}) at {p} ms");
+        }
+    }
+
+    #[test]
+    fn a_long_line_rounds_its_time_at_speed_up_to_whole_periods() {
+        // Line (10, 10) at F 10 UU/s, 100 ms T ramps, 1 ms: L/F = 1414.2 ms -> the vendor
+        // cruises 1315 periods at 14.1421/1.415 = 9.99444 UU/s and ends after 1515.
+        let len = 200f64.sqrt();
+        let p = TickProfile::plan(len, 0.0, 10.0, 100, 100, (Shape::T, Shape::T), 0.001);
+        assert_eq!(p.periods(), 1515);
+        assert_eq!(p.decel_start(), 1415);
+        assert!((p.speed() - len / 1.415).abs() < 1e-12);
+        let v = avg_speeds(&p);
+        // The vendor's first period: 0.049972210684561653 (path speed).
+        assert!((v[0] - 0.049972210684561653).abs() < 1e-12, "{}", v[0]);
+        assert_eq!(p.distance(1515), len);
+    }
+
+    #[test]
+    fn a_short_line_keeps_its_ramp_periods_and_lowers_its_peak() {
+        // 0.05 UU at F 10 with 100 ms ramps: peak 2L/(Ta+Td) = 0.5, 200 periods.
+        let p = TickProfile::plan(0.05, 0.0, 10.0, 100, 100, (Shape::S, Shape::S), 0.001);
+        assert_eq!(p.periods(), 200);
+        assert!((p.speed() - 0.5).abs() < 1e-15);
+        let v = avg_speeds(&p);
+        assert!((v[99] - 0.49995).abs() < 1e-6, "the highest period {}", v[99]);
+    }
+
+    #[test]
+    fn an_s_ramp_is_the_smoothstep() {
+        // The vendor's S ramp of 50 periods to 25 UU/s: first period 0.0099, second 0.0685.
+        let p = TickProfile::plan(10.0, 0.0, 25.0, 50, 50, (Shape::S, Shape::S), 0.001);
+        let v = avg_speeds(&p);
+        assert!((v[0] - 0.0099).abs() < 1e-12);
+        assert!((v[1] - 0.0685).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_replan_from_speed_ramps_from_the_last_periods_speed() {
+        // Override to 40 % at period 30 of a T ramp to 10 UU/s over 100 periods: from
+        // 2.95 UU/s (the last period's average) the vendor ramps over 100 periods to
+        // 3.998893805309711 with 352 periods at speed for the 1.955 UU left.
+        let p = TickProfile::plan(1.955, 2.95, 4.0, 100, 100, (Shape::T, Shape::T), 0.001);
+        assert_eq!(p.periods(), 552);
+        assert!((p.speed() - 3.998893805309711).abs() < 1e-9, "{}", p.speed());
+    }
+
+    #[test]
+    fn a_stop_keeps_the_deceleration_and_adds_a_period() {
+        // Hold at 10 UU/s with a 100 ms deceleration at F 10: 0.5 UU over 101 periods,
+        // first period 9.851975296539583. From 4.95 UU/s: 0.1225125 UU over 50 periods.
+        let p = TickProfile::stop(10.0, 10.0, 0.1, Shape::T, 0.001);
+        assert_eq!(p.periods(), 101);
+        assert!((p.len() - 0.5).abs() < 1e-15);
+        let v = avg_speeds(&p);
+        assert!((v[0] - 9.851975296539583).abs() < 1e-9, "{}", v[0]);
+        let p = TickProfile::stop(4.95, 10.0, 0.1, Shape::T, 0.001);
+        assert_eq!(p.periods(), 50);
+        assert!((p.len() - 0.1225125).abs() < 1e-15);
+    }
+
+    #[test]
+    fn distances_rise_and_end_at_the_length() {
+        for (len, v0, feed, na, nd) in [
+            (1.0, 0.0, 10.0, 30, 120),
+            (0.001, 0.0, 10.0, 40, 40),
+            (3.0, 5.0, 2.0, 7, 3),
+            (2.0, 0.0, 10.0, 0, 0),
+        ] {
+            for shapes in [(Shape::T, Shape::S), (Shape::S, Shape::T)] {
+                let p = TickProfile::plan(len, v0, feed, na, nd, shapes, 0.001);
+                let mut last = 0.0;
+                for k in 0..=p.periods() {
+                    let s = p.distance(k);
+                    assert!(s >= last - 1e-12, "rises");
+                    last = s;
+                }
+                assert_eq!(p.distance(p.periods()), len);
+            }
+        }
+    }
+}
