@@ -1,6 +1,7 @@
-//! Jog motion (user manual ZH §2.6.2 III; vendor header "Jog Motion"). Every jog is a
-//! queued point-to-point move of one axis and requires the group to be stopped
-//! (`COMMAND_NOTACCEPTED_ERR` otherwise).
+//! Jog motion (user manual ZH §2.6.2 III; vendor header "Jog Motion"), as the vendor's
+//! library runs it: `MCC_JogSpace` and `MCC_JogConti` are queued point-to-point moves of
+//! one axis, `MCC_JogPulse` moves the axis its pulses at once; each requires the group to
+//! be stopped (`COMMAND_NOTFINISHED_ERR` otherwise). `cAxis` is the axis's number.
 
 use super::{axis, finite, with_group};
 use crate::error::{McclError, McclResult};
@@ -11,8 +12,13 @@ use std::os::raw::{c_char, c_int};
 /// Largest |nPulse| of `MCC_JogPulse`.
 pub const MAX_JOG_PULSES: c_int = 2048;
 
+/// A jog's speed ratio: a percentage in (0, 100].
 fn ratio(r: f64) -> McclResult<f64> {
-    crate::config::range::percent(r, 100.0)
+    if r > 0.0 && r <= 100.0 {
+        Ok(r)
+    } else {
+        Err(McclError::Parameter)
+    }
 }
 
 /// Queues a one-axis PtP move of axis `a` to `target(from, mech)` at `ratio` percent.
@@ -24,7 +30,7 @@ fn jog(
 ) -> McclResult<c_int> {
     with_group(g, |grp| {
         if grp.busy() {
-            return Err(McclError::NotAccepted);
+            return Err(McclError::NotFinished);
         }
         let ctx = grp.ctx();
         let mut to = ctx.from;
@@ -35,16 +41,18 @@ fn jog(
     })
 }
 
-/// Moves one axis by `nPulse` pulses (|nPulse| <= 2048) at the PtP speed ratio.
+/// Moves one axis by `nPulse` pulses (|nPulse| <= 2048) in the next period; the group
+/// reads `GMS_RUNNING` for three periods. Not a queued command: it has no index.
 #[no_mangle]
 pub extern "C" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
+        let a = axis(cAxis)?;
         if nPulse.unsigned_abs() > MAX_JOG_PULSES.unsigned_abs() {
             return Err(McclError::Parameter);
         }
-        let a = axis(cAxis)?;
-        jog(wGroupIndex, a, None, |from, m| {
-            from + f64::from(nPulse) / m.factor.abs()
+        with_group(wGroupIndex, |grp| {
+            grp.jog_pulses(a, nPulse)?;
+            Ok(c::NO_ERR)
         })
     }
 }

@@ -581,15 +581,13 @@ pub fn queue_curve(
 /// Error record of a bad arc or circle command (docs/vendor-interface.md).
 pub const ERR_BAD_ARC: i32 = crate::error_record::ErrorRecord::BadArc.code();
 
-/// An axis named by the vendor's `char cAxis`: 0..7, or the letters X Y Z U V W A B.
+/// An axis named by the vendor's `char cAxis`: its number 0..7 (X..B). Anything else,
+/// the letters too, is `GROUP_PARAMETER_ERR`, as the vendor's library answers.
 pub fn axis(c: std::os::raw::c_char) -> McclResult<usize> {
     let b = c as u8;
     match b {
         0..=7 => Ok(usize::from(b)),
-        _ => b"XYZUVWAB"
-            .iter()
-            .position(|&l| l == b.to_ascii_uppercase())
-            .ok_or(McclError::Parameter),
+        _ => Err(McclError::Group),
     }
 }
 

@@ -75,9 +75,10 @@ pub extern "C" fn MCC_SetCommandIndex(
 }
 
 pointer_fns! {
-    /// The index the next queued command will get.
+    /// The index the last queued command got (0 before any), as the vendor's library
+    /// answers.
     MCC_GetCommandIndex(wIndex: WORD; wGroupIndex) = write_out(wIndex, || {
-        let n = super::with_group(wGroupIndex, |g| Ok(g.next_command_index()))?;
+        let n = super::with_group(wGroupIndex, |g| Ok(g.last_command_index()))?;
         Ok(n as WORD)
     });
 }

@@ -622,6 +622,36 @@ impl Path {
         p
     }
 
+    /// The point at fraction `f` of the path (0 the start, 1 the end): [`Path::point`]
+    /// of `f·length()`, computed from the fraction itself (a line: `start + delta·f`), as
+    /// the vendor's library computes it.
+    pub fn point_at(&self, f: f64) -> Axes {
+        let (start, end, len) = self.common();
+        if f.is_nan() || f <= 0.0 || len <= 0.0 {
+            return *start;
+        }
+        if f >= 1.0 {
+            return *end;
+        }
+        let mut p = [0.0; NUM_AXES];
+        match self {
+            Path::Cone(c) => return c.point(f * len),
+            Path::Line(l) => {
+                for i in 0..NUM_AXES {
+                    p[i] = start[i] + l.delta[i] * f;
+                }
+            }
+            Path::Arc(a) | Path::Helix(a) => {
+                for i in 0..NUM_AXES {
+                    p[i] = start[i] + (end[i] - start[i]) * f;
+                }
+                let xyz = a.xyz_at(a.theta0 + a.sweep * f, f);
+                p[..XYZ].copy_from_slice(&xyz);
+            }
+        }
+        p
+    }
+
     /// `pos = point(s)`, `vel = v x direction(s)`: position at path length `s` and the
     /// per-axis velocity at path speed `v`, written in place (the engine samples every
     /// running motion on every tick).

@@ -67,10 +67,17 @@ impl PtpMove {
             }
             profiles[i] = TickProfile::plan(len, 0.0, speed[i], ramps[i].0, ramps[i].1, shapes[i], t);
         }
-        // The longest profile; the first of equals.
+        // The master: the axis with the longest travel for its speed (the vendor's
+        // library reads its speed as the move's feed); the first of equals.
         let mut master = 0;
-        for i in 1..NUM_AXES {
-            if profiles[i].periods() > profiles[master].periods() {
+        let mut longest = 0.0;
+        for i in 0..NUM_AXES {
+            if profiles[i].is_empty() {
+                continue;
+            }
+            let time = profiles[i].len() / speed[i];
+            if time > longest {
+                longest = time;
                 master = i;
             }
         }
@@ -87,7 +94,7 @@ impl PtpMove {
 
     /// Periods until the last axis arrives.
     pub fn periods(&self) -> u64 {
-        self.profiles[self.master].periods()
+        self.profiles.iter().map(TickProfile::periods).max().unwrap_or(0)
     }
 
     /// The axis that sets the pace (and whose speed is the move's feed speed).

@@ -106,7 +106,12 @@ impl TickProfile {
         let td = f64::from(nd) * t;
         let ramps = 0.5 * (v0 + feed) * ta + 0.5 * feed * td;
         let nc = if len > ramps && feed > 0.0 && t > 0.0 {
-            let periods = ((len - ramps) / feed / t).ceil();
+            // The periods at speed: the move's periods at the feed less the ramps', in
+            // that order (as the vendor's library gets whole numbers: 0.2 UU at 0.5 UU/s
+            // over 1 ms is 400 periods, 300 with two ramps of 100, not 300.00000000000006).
+            let total = len / feed / t;
+            let at_speed = total - 0.5 * f64::from(na) * (1.0 + v0 / feed) - 0.5 * f64::from(nd);
+            let periods = at_speed.ceil();
             if periods >= 1.0 {
                 periods.min(9.0e15) as u64
             } else {
@@ -240,25 +245,67 @@ impl TickProfile {
     }
 
     /// The distance covered after `k` periods (`len` from the last period on).
+    ///
+    /// Computed as the vendor's library computes it, as far as its speeds show: the
+    /// length times the fraction of the profile's distance in units of "one period at
+    /// the constant speed" (`D(k) / D(N)`), so that a move of whole periods lands on the
+    /// same doubles (a cruise of 2 UU over 200 periods: `2·(99/200)` after 149).
     #[inline]
     pub fn distance(&self, k: u64) -> f64 {
-        let n = self.periods();
-        if k >= n {
+        if k >= self.periods() {
             return self.len;
         }
+        self.len * self.fraction(k)
+    }
+
+    /// The fraction of the length covered after `k` periods (`D(k) / D(N)`, see
+    /// [`TickProfile::distance`]; 1 from the last period on).
+    #[inline]
+    pub fn fraction(&self, k: u64) -> f64 {
+        let n = self.periods();
+        if k >= n {
+            return 1.0;
+        }
+        let total = self.units(n);
+        if !(total > 0.0) {
+            return k as f64 / n as f64;
+        }
+        self.units(k) / total
+    }
+
+    /// The distance after `k` periods in units of one period at the constant speed.
+    #[inline]
+    fn units(&self, k: u64) -> f64 {
         let na = u64::from(self.na);
+        let u0 = if self.v > 0.0 { self.v0 / self.v } else { 0.0 };
+        let acc_units = 0.5 * f64::from(self.na) * (1.0 + u0);
         if k <= na {
-            let t = k as f64 * self.t;
-            let ta = f64::from(self.na) * self.t;
-            return self.v0 * t + ramp_distance(self.acc, self.v - self.v0, ta, t);
+            let kf = k as f64;
+            if self.na == 0 {
+                return 0.0;
+            }
+            return u0 * kf + (1.0 - u0) * ramp_units(self.acc, f64::from(self.na), kf);
         }
         if k <= na + self.nc {
-            return self.acc_len + self.v * ((k - na) as f64 * self.t);
+            return acc_units + (k - na) as f64;
         }
-        // Deceleration, measured back from the end (both shapes are symmetric).
-        let r = (n - k) as f64 * self.t;
-        let td = f64::from(self.nd) * self.t;
-        self.len - ramp_distance(self.dec, self.v, td, r)
+        let n = self.periods();
+        let end = acc_units + self.nc as f64 + 0.5 * f64::from(self.nd);
+        end - ramp_units(self.dec, f64::from(self.nd), (n - k) as f64)
+    }
+}
+
+/// The units of distance (periods at speed 1) a ramp from 0 to 1 over `n` periods covers
+/// in its first `k`.
+#[inline]
+fn ramp_units(shape: Shape, n: f64, k: f64) -> f64 {
+    if n <= 0.0 {
+        return k;
+    }
+    let x = k / n;
+    match shape {
+        Shape::T => k * k / (2.0 * n),
+        Shape::S => n * (x * x * x - 0.5 * x * x * x * x),
     }
 }
 

@@ -115,7 +115,8 @@ impl GroupState {
                 .iter()
                 .all(|r| matches!(r.stage, Stage::Held { .. }));
         if dec_ms <= 0.0 || held || self.running.is_empty() {
-            self.abort_now(true);
+            // Held at rest, the vendor's library stops at once without a running period.
+            self.abort_now(!held);
         } else {
             self.mode = Mode::Aborting;
             self.stop_tracks(true, Some(dec_ms / 1000.0));
@@ -127,13 +128,17 @@ impl GroupState {
     pub(super) fn abort_now(&mut self, lag: bool) {
         let was_busy = !self.running.is_empty();
         self.stop_here();
+        self.vel = [0.0; AXES];
+        self.feed_now = 0.0;
         if lag && was_busy {
             self.lag = 1;
         }
         self.update_status();
     }
 
-    /// Stops at once where the group stands: nothing runs or waits afterwards.
+    /// Stops at once where the group stands: nothing runs or waits afterwards. The
+    /// speeds stay as the last period left them (the vendor's library, stopped by an
+    /// error, keeps reading them); an abort sets them to 0.
     pub(super) fn stop_here(&mut self) {
         if let Some(x) = self.external.as_mut() {
             x.stop();
@@ -148,8 +153,6 @@ impl GroupState {
         self.post_stopped();
         self.base = self.pos;
         self.queue_end = self.pos;
-        self.vel = [0.0; AXES];
-        self.feed_now = 0.0;
         self.mode = Mode::Normal;
     }
 

@@ -82,6 +82,8 @@ pub(crate) struct Running {
     /// Set at the end of its last period: retired at the start of the next one, then with
     /// (`true`) or without a period of `GMS_RUNNING` if nothing follows.
     pub(super) finished: Option<bool>,
+    /// Held where it ended and continued: its period of ending shows phase 0, not 21.
+    pub(super) quiet_end: bool,
 }
 
 impl Running {
@@ -127,6 +129,7 @@ impl Running {
             periods: 0,
             blended_from: None,
             finished: None,
+            quiet_end: false,
         }
     }
 
@@ -166,8 +169,12 @@ impl Running {
         }
     }
 
-    /// Every track runs what is left from rest ([`Track::resume`]).
+    /// Every track runs what is left from rest ([`Track::resume`]); one held where it
+    /// arrived ends quietly.
     pub(super) fn resume_tracks(&mut self) {
+        if self.has_tracks() && self.arrived() {
+            self.quiet_end = true;
+        }
         for t in self.tracks_mut() {
             if !t.arrived() {
                 t.resume();
@@ -210,13 +217,9 @@ impl Running {
     /// Where it has taken the axes (its own start plus its displacement).
     fn position(&self) -> Axes {
         match (&self.progress, &self.cmd.plan) {
-            (Progress::Path { track, sync: None }, Plan::Path(m)) => m.path.point(track.dist()),
+            (Progress::Path { track, sync: None }, Plan::Path(m)) => m.path.point_at(track.fraction()),
             (Progress::Path { track, sync: Some(_) }, Plan::Ptp(p)) => {
-                let frac = if track.len() > 0.0 {
-                    track.dist() / track.len()
-                } else {
-                    1.0
-                };
+                let frac = track.fraction();
                 let (s, e) = (p.start(), p.end());
                 if track.arrived() {
                     e
@@ -230,7 +233,7 @@ impl Running {
                     if moving & (1 << i) == 0 || tracks[i].arrived() {
                         e[i]
                     } else {
-                        s[i] + p.sign(i) * tracks[i].dist()
+                        s[i] + (e[i] - s[i]) * tracks[i].fraction()
                     }
                 })
             }
@@ -346,26 +349,12 @@ impl GroupState {
         if r.stage != Stage::Moving {
             return 0;
         }
+        // The periods in which its phase stays (then its info does too: a next command
+        // blends in, or it ends, only where the phase changes).
         let ahead = match &r.progress {
-            Progress::Path { track, .. } => {
-                // The phase changes at the end of the acceleration and at the start of
-                // the deceleration; with blending on a next command may start there.
-                let to_cruise = track.periods_to_cruise();
-                let edge = if to_cruise > 0 {
-                    to_cruise
-                } else {
-                    track.periods_to_decel()
-                };
-                if edge == 0 {
-                    track.periods_left()
-                } else {
-                    edge
-                }
-            }
+            Progress::Path { track, .. } => track.periods_in_phase(),
             _ => 0,
         };
-        // The tick that reaches an edge may change the info: stop one short of it.
-        let ahead = ahead.saturating_sub(1);
         u32::try_from(ahead).unwrap_or(u32::MAX).min(max)
     }
 
@@ -463,7 +452,10 @@ impl GroupState {
                 Stage::Stopping { abort } => {
                     if r.stopped() {
                         r.stage = Stage::Held { periods: 1, abort };
-                        zero_mask = u32::MAX;
+                        // A general motion held reads speed 0; a PtP keeps its last.
+                        if r.path_track().is_some() {
+                            zero_mask = u32::MAX;
+                        }
                     } else {
                         advance(r, &mut vel_mask);
                     }
@@ -473,9 +465,15 @@ impl GroupState {
                         periods: periods + 1,
                         abort,
                     };
-                    zero_mask = u32::MAX;
+                    if r.path_track().is_some() {
+                        zero_mask = u32::MAX;
+                    }
                 }
                 Stage::Ending { .. } => {}
+            }
+            // A PtP's axes that do not move read speed 0 from its first period.
+            if let (1, Progress::Axes { moving, .. }) = (r.periods, &r.progress) {
+                zero_mask |= !moving;
             }
             if let Stage::Ending { left } = r.stage {
                 match (&r.progress, left) {
@@ -558,6 +556,7 @@ impl GroupState {
     pub(super) fn start(&mut self, cmd: Command) {
         if let Plan::Fault(code) = cmd.plan {
             // A curve with no geometry fails as it starts.
+            self.cmd_index.last_started = Some((cmd.index, cmd.index));
             self.stop_here();
             self.set_error(code);
             return;
@@ -584,6 +583,25 @@ impl GroupState {
             r.retarget_tracks(k);
         }
         self.running.push_back(r);
+    }
+
+    /// `MCC_JogPulse`: axis `a` moves `pulses` pulses in the next period (see
+    /// [`JUMP_PERIODS`]); `COMMAND_NOTFINISHED_ERR` unless the group stands still.
+    pub fn jog_pulses(&mut self, a: usize, pulses: i32) -> crate::error::McclResult<()> {
+        if self.busy() || self.homing != 0 {
+            return Err(crate::error::McclError::NotFinished);
+        }
+        let f = self.axes[a].factor;
+        if f == 0.0 {
+            return Err(crate::error::McclError::Parameter);
+        }
+        let mut d = [0.0; AXES];
+        d[a] = f64::from(pulses) / f.abs();
+        crate::config::range::position(self.queue_end[a] + d[a], f)?;
+        self.queue_end[a] += d[a];
+        self.jump = Some((d, JUMP_PERIODS));
+        self.update_status();
+        Ok(())
     }
 
     /// Takes command `i` off the running ones: its displacement joins the base.

@@ -85,6 +85,13 @@ impl GroupState {
         }
         crate::fault::point("enqueue");
         let idx = cmd.index;
+        // An arc of no length (an angle of 0): the vendor's library takes it and runs
+        // nothing.
+        if matches!(&cmd.plan, Plan::Path(m)
+            if m.profile.is_empty() && !matches!(m.path, crate::planner::Path::Line(_)))
+        {
+            return Ok(idx);
+        }
         self.queue.push_back(cmd);
         self.info_touched();
         self.update_status();
@@ -100,6 +107,16 @@ impl GroupState {
     /// The index the next queued command gets.
     pub fn next_command_index(&self) -> i32 {
         self.cmd_index.next
+    }
+
+    /// The index the last queued command got (`MCC_GetCommandIndex`, as the vendor's
+    /// library answers; 0 before any).
+    pub fn last_command_index(&self) -> i32 {
+        if self.cmd_index.auto {
+            (self.cmd_index.next - 1).max(0)
+        } else {
+            self.cmd_index.next
+        }
     }
 
     /// `MCC_ResetCommandIndexLD`.

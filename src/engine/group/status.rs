@@ -314,14 +314,7 @@ fn key_holds_until(r: &Running) -> f64 {
         return now;
     }
     let more = match &r.progress {
-        Progress::Path { track, .. } => match track.phase() {
-            Phase::Accelerating | Phase::Decelerating if track.periods_to_cruise() > 0 => {
-                track.periods_to_cruise()
-            }
-            Phase::Cruising => track.periods_to_decel(),
-            _ => track.periods_left(),
-        },
-        Progress::Axes { .. } => 0,
+        Progress::Path { track, .. } => track.periods_in_phase(),
         _ => 0,
     };
     now + more as f64 + 1.0
@@ -345,6 +338,7 @@ pub(super) struct InfoKey {
 /// switches).
 fn motion_phase(r: &Running, blending: bool) -> i32 {
     match r.stage {
+        Stage::Ending { .. } if r.quiet_end => return 0,
         Stage::Ending { .. } if r.path_track().is_some() => return 21,
         Stage::Held { .. } => return 22,
         Stage::Stopping { .. } if r.path_track().is_some() => return 12,

@@ -68,6 +68,21 @@ impl Track {
         self.s0 + self.profile.distance(self.k)
     }
 
+    /// The fraction of the whole length covered: the profile's own fraction while the
+    /// track runs its first plan (so that positions land on the vendor's doubles), the
+    /// distance over the length after a re-plan.
+    #[inline]
+    pub(crate) fn fraction(&self) -> f64 {
+        if self.s0 == 0.0 && self.profile.len() == self.len {
+            return self.profile.fraction(self.k);
+        }
+        if self.len > 0.0 {
+            self.dist() / self.len
+        } else {
+            1.0
+        }
+    }
+
     /// The whole length.
     pub(crate) fn len(&self) -> f64 {
         self.len
@@ -124,6 +139,19 @@ impl Track {
     /// Periods until the acceleration ends (0 once it has).
     pub(crate) fn periods_to_cruise(&self) -> u64 {
         u64::from(self.profile.acc_periods()).saturating_sub(self.k)
+    }
+
+    /// Periods the running stretch stays in its phase ([`Track::phase`]) after this one:
+    /// until the end of its acceleration, the start of its deceleration, or its end.
+    pub(crate) fn periods_in_phase(&self) -> u64 {
+        let p = &self.profile;
+        if self.k <= u64::from(p.acc_periods()) && p.acc_periods() > 0 {
+            self.periods_to_cruise()
+        } else if self.k <= p.decel_start() {
+            self.periods_to_decel()
+        } else {
+            self.periods_left()
+        }
     }
 
     /// Where the running stretch is.
