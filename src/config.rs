@@ -85,21 +85,21 @@ pub fn default_encoder_config() -> SYS_ENCODER_CONFIG {
     }
 }
 
-/// The go-home configuration used until the program sets its own: the example of user
-/// manual §2.4.3 (mode 3, negative direction, normally open, index 2, 300 ms ramps,
-/// 10 / 2 UU/s, no offset).
+/// The go-home configuration used until the program sets its own, as the vendor's
+/// library reads right after init: mode 3, direction 0, normally open, index count 0,
+/// 300 ms ramps, 1 / 1 UU/s, no offset.
 pub fn default_home_config() -> SYS_HOME_CONFIG {
     SYS_HOME_CONFIG {
         wMode: 3,
-        wDirection: 1,
+        wDirection: 0,
         wSensorMode: c::SL_NORMAL_OPEN,
         wPaddel0: 0,
-        nIndexCount: 2,
+        nIndexCount: 0,
         nPaddel1: 0,
         dfAccTime: 300.0,
         dfDecTime: 300.0,
-        dfHighSpeed: 10.0,
-        dfLowSpeed: 2.0,
+        dfHighSpeed: 1.0,
+        dfLowSpeed: 1.0,
         dfOffset: 0.0,
     }
 }
@@ -231,6 +231,9 @@ pub fn validate_mac_param(p: &SYS_MAC_PARAM) -> McclResult<()> {
     }
     check(p.dfLowLimit <= p.dfHighLimit)?;
     check(p.wPulseMode <= c::DDA_FMT_AB)?;
+    // A pulse of no width: the vendor's library refuses it.
+    check(p.wPulseWidth > 0)?;
+    check(p.wRPM > 0)?;
     check(p.wCommandMode <= c::OCM_SWCLOSELOOP)?;
     check(p.wOverTravelUpSensorMode <= c::SL_UNUSED)?;
     check(p.wOverTravelDownSensorMode <= c::SL_UNUSED)?;
@@ -305,9 +308,8 @@ pub fn unit_scale(unit: i32) -> f64 {
 
 impl GroupDef {
     /// Builds a group from `MCC_CreateGroupEx` arguments: each channel is -1 (unused) or
-    /// 0..7 (`PARAMETER_ERR` otherwise), the card 0..11 (`PARAMETER_ERR`), at least one
-    /// axis mapped and no channel used twice (`GROUP_PARAMETER_ERR`), queue size 1..=10^6
-    /// (`PARAMETER_ERR`).
+    /// 0..7, the card 0..11, no channel used twice, queue size 1..=10^6 (`PARAMETER_ERR`
+    /// otherwise, as the vendor's library answers). A group of no axis is a group.
     pub fn new(map: [i32; AXES], card: i32, queue_size: i32) -> McclResult<GroupDef> {
         let card = CardIx::new(card)?;
         let mut channels = [None; AXES];
@@ -322,12 +324,9 @@ impl GroupDef {
             _ => return Err(McclError::Parameter),
         };
         let used: Vec<usize> = channels.iter().flatten().map(|c| c.0).collect();
-        if used.is_empty() {
-            return Err(McclError::Group);
-        }
         for (i, a) in used.iter().enumerate() {
             if used[i + 1..].contains(a) {
-                return Err(McclError::Group);
+                return Err(McclError::Parameter);
             }
         }
         Ok(GroupDef {
@@ -446,8 +445,19 @@ impl Config {
     }
 
     /// Puts a group into the lowest free slot and returns its index
-    /// (`GROUP_PARAMETER_ERR` when all 96 are used).
+    /// (`GROUP_PARAMETER_ERR` when all 96 are used). A channel another group already
+    /// drives is `PARAMETER_ERR`, as the vendor's library answers.
     pub fn create_group(&mut self, def: GroupDef) -> McclResult<usize> {
+        let taken = self.groups.iter().flatten().any(|g| {
+            g.card == def.card
+                && g.channels
+                    .iter()
+                    .flatten()
+                    .any(|c| def.channels.iter().flatten().any(|d| d == c))
+        });
+        if taken {
+            return Err(McclError::Parameter);
+        }
         let slot = self
             .groups
             .iter()

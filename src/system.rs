@@ -173,11 +173,18 @@ pub fn check_period_ms(ms: f64) -> McclResult<Duration> {
     }
 }
 
-/// Card types this library runs: the IMP 8-axis cards (`IMP_II_8_AXIS_PCI_CARD` = 4,
-/// `IMP_III_8_AXIS_PCI_CARD` = 5). EPCIO types are other cards and are refused.
-pub fn check_card_type(t: u16) -> McclResult<()> {
-    match t {
-        c::IMP_II_8_AXIS_PCI_CARD | c::IMP_III_8_AXIS_PCI_CARD => Ok(()),
+/// The card entries the vendor's library takes (all run the same virtual card here): the
+/// PCI types 2..5, and the ISA types 0 and 1 at an I/O address 0x200..=0x3F0 with an
+/// IRQ of 3, 5, 7, 10, 11, 12 or 15; anything else is `PARAMETER_ERR`.
+pub fn check_card(card: &SYS_CARD_CONFIG) -> McclResult<()> {
+    match card.wCardType {
+        2..=5 => Ok(()),
+        0 | 1
+            if (0x200..=0x3F0).contains(&card.wCardAddress)
+                && [3, 5, 7, 10, 11, 12, 15].contains(&card.wIRQ_No) =>
+        {
+            Ok(())
+        }
         _ => Err(McclError::Parameter),
     }
 }
@@ -191,8 +198,9 @@ pub enum InitKind {
     Simulation,
 }
 
-/// `MCC_InitSystem`: validates everything first, then (re)starts the virtual card. A
-/// running system is closed and started again. Nothing changes when validation fails.
+/// `MCC_InitSystem`: validates everything first, then starts the virtual card. While a
+/// system runs it is `RUN_TIME_ERR` (as the vendor's library answers); nothing changes
+/// when validation fails.
 pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> McclResult<()> {
     // A custom-motion callback may not replace the system its motion runs on.
     if crate::engine::custom::in_callback().is_some() {
@@ -202,7 +210,7 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         return Err(McclError::Parameter);
     }
     for card in cards {
-        check_card_type(card.wCardType)?;
+        check_card(card)?;
     }
     let mode = ClockMode::from_env().map_err(|msg| {
         eprintln!("MCCL: MCC_InitSystem failed: {msg}");
@@ -224,8 +232,9 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     };
     let mut turn = Turn::take()?;
     groups_for(turn.sys())?;
-    // Stop a running card outside the lock (its callbacks may be calling in).
-    turn.close_running();
+    if turn.sys().running.is_some() {
+        return Err(McclError::RunTime);
+    }
     let sys = turn.sys();
     let groups = groups_for(sys)?;
     let trace = crate::engine::trace::Trace::from_env().map_err(|msg| {
@@ -316,6 +325,15 @@ fn attach_mc3b(shared: &Shared, devices: &[crate::mc3b::backend::Device]) {
     }
 }
 
+/// Whether the running system was started by `MCC_InitSimulation`.
+pub fn is_simulation() -> bool {
+    SYSTEM
+        .lock()
+        .running
+        .as_ref()
+        .is_some_and(|r| r.simulation)
+}
+
 /// Whether the running system drives an MC3B (a card with `mc3b_port`).
 pub fn has_mc3b() -> bool {
     SYSTEM
@@ -325,33 +343,31 @@ pub fn has_mc3b() -> bool {
         .is_some_and(|r| !r.mc3b.is_empty())
 }
 
-/// `MCC_CloseSystem`: stops the engine and joins its thread (`INITIAL_MOTION_ERR` when
-/// nothing runs). The configuration is kept for the next init.
+/// `MCC_CloseSystem`: stops the engine and joins its thread (nothing to do, and no error,
+/// when nothing runs). The configuration is kept for the next init.
 pub fn close() -> McclResult<()> {
     // A custom-motion callback may not close the system its motion runs on.
     if crate::engine::custom::in_callback().is_some() {
         return Err(McclError::NotAccepted);
     }
     let mut turn = Turn::take()?;
-    if turn.close_running() {
-        Ok(())
-    } else {
-        Err(McclError::NotInitialized)
-    }
+    turn.close_running();
+    Ok(())
 }
 
-/// `MCC_ResetMotion`: every group back to its state right after init.
+/// `MCC_ResetMotion`, as the vendor's library does it: while any group moves it is
+/// `COMMAND_NOTACCEPTED_ERR`; at rest every group's error record, hold and override go,
+/// and its position and settings stay.
 pub fn reset_motion() -> McclResult<()> {
     let sys = SYSTEM.lock();
     let r = sys.running.as_ref().ok_or(McclError::NotInitialized)?;
     let shared = r.engine.shared();
-    shared
-        .lock_machine()
-        .cards
-        .iter_mut()
-        .flatten()
-        .for_each(|c| c.rezero());
-    shared.reset_all(&r.mac);
+    let mut busy = false;
+    shared.for_each_group(|g| busy |= g.busy());
+    if busy {
+        return Err(McclError::NotAccepted);
+    }
+    shared.for_each_group(|g| g.reset_motion());
     Ok(())
 }
 
@@ -405,19 +421,19 @@ impl System {
         self.config.create_group(def)
     }
 
-    /// `MCC_CloseGroup`.
+    /// `MCC_CloseGroup` (no such group: `PARAMETER_ERR`, as the vendor's library answers).
     pub fn close_group(&mut self, g: i32) -> McclResult<()> {
         self.require_closed()?;
         let slot = usize::try_from(g)
             .ok()
             .filter(|&g| g < GROUPS)
-            .ok_or(McclError::Group)?;
+            .ok_or(McclError::Parameter)?;
         match self.config.groups[slot].take() {
             Some(_) => {
                 self.config.units[slot] = crate::vendor::consts::UNIT_MM;
                 Ok(())
             }
-            None => Err(McclError::Group),
+            None => Err(McclError::Parameter),
         }
     }
 

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const Scenario *const tables[] = {vd_lines, vd_arcs, vd_ptp, vd_control, vd_state};
+static const Scenario *const tables[] = {vd_lines, vd_arcs, vd_ptp, vd_control, vd_state, vd_extra};
 
 static const Scenario *cur;
 static volatile int tick = -1; /* -1 while setting up, then the period being recorded */
@@ -139,8 +139,9 @@ void vd_end(void)
 
 static void record_group(int g, int n)
 {
-    long p[8];
-    double c[8], r[8], v[8];
+    /* Outputs start at 0: a getter that fails may leave them as they were. */
+    long p[8] = {0};
+    double c[8] = {0}, r[8] = {0}, v[8] = {0};
     COMMAND_INFO k;
     WORD w = (WORD)g;
     int st = V(MCC_GetMotionStatus)(w);

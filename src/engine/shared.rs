@@ -99,8 +99,9 @@ pub struct Shared {
     pub view: super::view::ViewCell,
 }
 
-/// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum` (ZH manual §2.6.5: 60).
-pub const DEFAULT_PULSE_STOCK: u32 = 60;
+/// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum`: 1, as the vendor's library
+/// reads right after init (the ZH manual §2.6.5 speaks of 60 during continuous motion).
+pub const DEFAULT_PULSE_STOCK: u32 = 1;
 
 impl Shared {
     /// The shared state of an engine about to start: `groups` (slot, definition) with
@@ -160,7 +161,8 @@ impl Shared {
             isr: isr::IsrTable::new(cards),
             cycle: Default::default(),
             homing: Mutex::new(None),
-            home_status: AtomicI32::new(homing::HOME_NONE),
+            // The vendor's library reads 1 (done) right after init.
+            home_status: AtomicI32::new(homing::HOME_DONE),
             home_poll: AtomicU64::new(u64::MAX),
             home_watch: AtomicI32::new(i32::MIN),
             mc3b_cards: AtomicU32::new(0),

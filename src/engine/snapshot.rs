@@ -325,10 +325,9 @@ impl SnapshotCell {
             .read(|w| std::array::from_fn(|k| f64::from_bits(w[1 + k].load(Ordering::Relaxed))))
     }
 
-    /// Reads the command position a program reads (`MCC_GetCurPos`, which programs call
-    /// in tight loops): its whole pulses in user units, from the position's 8 words and
-    /// the info's frame.
-    pub fn load_pos(&self) -> Axes {
+    /// Reads the position in the program's coordinates (`MCC_GetCurRefPos`): whole pulses
+    /// in user units less the offset, from the position's 8 words and the info's frame.
+    pub fn load_program_pos(&self) -> Axes {
         let (offset, factor) = self.load_frame();
         pos_of(&self.load_exact_pos(), &offset, &factor)
     }
@@ -345,9 +344,10 @@ impl SnapshotCell {
         info_from(&self.info.load())
     }
 
-    /// Reads the reference position (UU) from the position and the info's offsets, as
-    /// [`SnapshotCell::load`] makes it (`MCC_GetCurRefPos`).
-    pub fn load_ref_pos(&self) -> Axes {
+    /// Reads the position as the machine counts it (`MCC_GetCurPos`, which programs call
+    /// in tight loops): the pulse count in UU, from the position's 8 words and the info's
+    /// frame.
+    pub fn load_machine_pos(&self) -> Axes {
         let (offset, factor) = self.load_frame();
         ref_of(&self.load_exact_pos(), &offset, &factor)
     }

@@ -2,7 +2,7 @@
 //! Management").
 
 use super::{axis_mask, index, read_published, with_group};
-use crate::error::McclResult;
+use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
@@ -26,14 +26,14 @@ pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(g.settings.absolute))) }
 }
 
-/// The command position of group `g` in user coordinates, UU; for a kinematic group the
-/// forward kinematics of its joints.
+/// The position of group `g` as the machine counts it (its pulses in UU, with the shift
+/// `MCC_DefineOrigin` made); for a kinematic group the forward kinematics of its joints.
 fn cur_pos(g: WORD) -> McclResult<[f64; 8]> {
     let shared = system::active()?;
     shared.poll_position(g);
     match super::kinematics::cur_pos(&shared, g)? {
         Some(cart) => Ok(cart),
-        None => Ok(shared.published(g)?.load_pos()),
+        None => Ok(shared.published(g)?.load_machine_pos()),
     }
 }
 
@@ -48,15 +48,16 @@ fn pulse_pos(g: WORD) -> McclResult<[i64; 8]> {
 }
 
 per_axis_getters! {
-    /// Current command position in user coordinates (UU). Under the fast and stepped clocks
-    /// a read repeated at the same virtual time while the group moves runs one tick, so a
-    /// program that waits by reading positions makes progress.
+    /// Current position as the machine counts it: the pulse count in UU (whole pulses, as
+    /// the vendor's library reports), which `MCC_DefineOrigin` does not move. Under the
+    /// fast and stepped clocks a read repeated at the same virtual time while the group
+    /// moves runs one tick, so a program that waits by reading positions makes progress.
     MCC_GetCurPos(f64; wGroupIndex)
         = cur_pos(wGroupIndex);
-    /// Current command position in reference coordinates: the user coordinates before
-    /// `MCC_DefinePos`/`MCC_DefineOrigin` moved them (UU).
+    /// Current position in the program's coordinates, the frame commands' targets are in
+    /// (`MCC_DefineOrigin` makes an axis's 0 here), whole pulses in UU.
     MCC_GetCurRefPos(f64; wGroupIndex)
-        = read_published(wGroupIndex, |p| p.load_ref_pos());
+        = read_published(wGroupIndex, |p| p.load_program_pos());
     /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
     /// sign reversed when wPosToEncoderDir = 1.
     MCC_GetPulsePos(c_long; wGroupIndex)
@@ -71,18 +72,19 @@ per_axis_getters! {
 #[no_mangle]
 pub extern "C" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let a = index(wAxis, 8)?;
+        let a = index(wAxis, 8).map_err(|_| McclError::Group)?;
         with_group(wGroupIndex, |g| g.define_pos(a, 0.0)).map(|()| c::NO_ERR)
     }
 }
 
-/// The current position of one axis becomes `dfPos` (only while stopped).
+/// The position of one axis becomes `dfPos` in the program's coordinates and in the
+/// machine's pulse count alike (as the vendor's library does; only while stopped).
 #[no_mangle]
 pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let a = index(wAxis, 8)?;
+        let a = index(wAxis, 8).map_err(|_| McclError::Group)?;
         let v = super::finite(dfPos)?;
-        with_group(wGroupIndex, |g| g.define_pos(a, v)).map(|()| c::NO_ERR)
+        with_group(wGroupIndex, |g| g.set_pos(a, v)).map(|()| c::NO_ERR)
     }
 }
 

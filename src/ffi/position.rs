@@ -113,9 +113,15 @@ pub extern "C" fn MCC_SetErrorCountThreshold(
 }
 
 /// Sets the pulse limits `k` of card `wCardIndex`, each in 1..=[`MAX_PULSE_LIMIT`].
+/// Under `MCC_InitSimulation` the vendor's library takes none (`COMMAND_NOTACCEPTED_ERR`
+/// once the values are checked): the card is simulated there too.
 fn set_pulse_limits(k: PulseLimit, v: [c_int; 8], wCardIndex: WORD) -> McclResult<c_int> {
     if v.iter().any(|&x| !(1..=MAX_PULSE_LIMIT).contains(&x)) {
         return Err(McclError::Parameter);
+    }
+    if crate::system::is_simulation() {
+        let _ = super::card(wCardIndex)?;
+        return Err(McclError::NotAccepted);
     }
     with_machine(Card(wCardIndex), |m, cd| {
         m.set_pulse_limits(cd, k, v);
@@ -128,12 +134,12 @@ fn pulse_limits(k: PulseLimit, wCardIndex: WORD) -> McclResult<[c_int; 8]> {
 }
 
 per_axis_setters! {
-    /// Most pulses per interpolation period per channel (1..32767, default 32767). More
-    /// stops the group with error 0xF203.
+    /// Most pulses per interpolation period per channel (1..2^31 − 1, default 1,000,000).
+    /// More stops the group with error 0xF203.
     MCC_SetMaxPulseSpeed(c_int; wCardIndex)
         = |v| set_pulse_limits(PulseLimit::Speed, v, wCardIndex);
-    /// Most change of pulses per period from one period to the next (1..32767, default
-    /// 32767). More stops the group with error 0xF204.
+    /// Most change of pulses per period from one period to the next (1..2^31 − 1,
+    /// default 1,000,000). More stops the group with error 0xF204.
     MCC_SetMaxPulseAcc(c_int; wCardIndex) = |v| set_pulse_limits(PulseLimit::Acc, v, wCardIndex);
 }
 

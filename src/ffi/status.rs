@@ -83,20 +83,25 @@ pointer_fns! {
     });
 }
 
-/// Depth of the card's pulse FIFO (1..=10000; default 60).
+/// Depth of the card's pulse FIFO (> 0; at most [`MAX_PULSE_STOCK`], a larger one is
+/// taken as that); returns the depth set, as the vendor's library does (default 1).
 #[no_mangle]
 pub extern "C" fn MCC_SetMaxPulseStockNum(nMaxStockNum: c_int) -> c_int {
     ffi_boundary! {
         let n = u32::try_from(nMaxStockNum)
             .ok()
-            .filter(|n| (1..=10_000).contains(n))
-            .ok_or(crate::error::McclError::Parameter)?;
+            .filter(|n| *n >= 1)
+            .ok_or(crate::error::McclError::Parameter)?
+            .min(MAX_PULSE_STOCK);
         system::active()?
             .max_pulse_stock
             .store(n, std::sync::atomic::Ordering::Relaxed);
-        Ok(c::NO_ERR)
+        Ok(n as c_int)
     }
 }
+
+/// The deepest pulse FIFO `MCC_SetMaxPulseStockNum` sets (the vendor's library: 63).
+pub const MAX_PULSE_STOCK: u32 = 63;
 
 /// The depth of the card's pulse FIFO.
 #[no_mangle]

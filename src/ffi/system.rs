@@ -127,19 +127,28 @@ pub extern "C" fn MCC_CloseGroup(nGroupIndex: c_int) -> c_int {
     ffi_boundary! { system::with(|s| s.close_group(nGroupIndex)).map(|()| c::NO_ERR) }
 }
 
-/// The capacity of a group's motion command queue.
+/// The capacity of a group's motion command queue (0 for no such group, as the vendor's
+/// library answers).
 #[no_mangle]
 pub extern "C" fn MCC_GetCmdQueueSize(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let def = system::with(|s| s.group_def(wGroupIndex))?;
-        Ok(c_int::try_from(def.queue_size).unwrap_or(c_int::MAX))
+        match system::with(|s| s.group_def(wGroupIndex)) {
+            Ok(def) => Ok(c_int::try_from(def.queue_size).unwrap_or(c_int::MAX)),
+            Err(_) => Ok(0),
+        }
     }
 }
 
 /// Changes a group's queue capacity; only while no commands are queued.
 #[no_mangle]
 pub extern "C" fn MCC_SetCmdQueueSize(nSize: c_int, wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { system::with(|s| s.set_queue_size(nSize, wGroupIndex)).map(|()| c::NO_ERR) }
+    ffi_boundary! {
+        // The vendor's library changes no queue while the card runs.
+        if system::active().is_ok() {
+            return Err(McclError::RunTime);
+        }
+        system::with(|s| s.set_queue_size(nSize, wGroupIndex)).map(|()| c::NO_ERR)
+    }
 }
 
 /// Reads `wCardNo` card descriptions (1..=MAX_CARD_NUM) from C.
@@ -151,8 +160,16 @@ unsafe fn card_configs(
     n: WORD,
 ) -> Result<Vec<SYS_CARD_CONFIG>, McclError> {
     let n = usize::from(n);
-    if p.is_null() || n == 0 || n > config::CARDS {
+    if n == 0 || n > config::CARDS {
         return Err(McclError::Parameter);
+    }
+    // No table: every card an IMP-III (the vendor's library takes NULL so).
+    if p.is_null() {
+        let imp3 = SYS_CARD_CONFIG {
+            wCardType: c::IMP_III_8_AXIS_PCI_CARD,
+            ..SYS_CARD_CONFIG::default()
+        };
+        return Ok(vec![imp3; n]);
     }
     // SAFETY: non-null; the caller passes an array of wCardNo SYS_CARD_CONFIG (the
     // vendor's contract); each element is read unaligned.
@@ -232,7 +249,8 @@ pub unsafe extern "C" fn MCC_InitSimulation(
         }
 }
 
-/// Stops the card at once and releases the engine thread.
+/// Stops the card at once and releases the engine thread; with no system running it
+/// does nothing and returns `NO_ERR`, as the vendor's library does.
 #[no_mangle]
 pub extern "C" fn MCC_CloseSystem() -> c_int {
     ffi_boundary! { system::close().map(|()| c::NO_ERR) }
@@ -251,11 +269,13 @@ pub extern "C" fn MCC_UpdateParam() -> c_int {
 }
 
 /// Pulses per user unit of a channel: dwPPR x dfGearRatio / dfPitch of the mechanism
-/// parameters in effect. A bad channel or card returns `PARAMETER_ERR` (-5.0).
+/// parameters in effect. A bad channel or card reads 0, as the vendor's library answers.
 #[no_mangle]
 pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
     ffi_boundary! {
-        let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
+        let (Ok(cd), Ok(ch)) = (card(wCardIndex), channel(wChannel)) else {
+            return Ok(0.0);
+        };
         Ok(system::with(|s| s.conv_factor(cd, ch)))
     }
 }

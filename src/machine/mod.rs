@@ -17,7 +17,11 @@ use compensation::Compensation;
 use deferred::Deferred;
 
 /// Default and largest pulse speed and acceleration limits (ZH manual §2.6.4).
-pub const MAX_PULSE_LIMIT: i32 = 32767;
+pub const MAX_PULSE_LIMIT: i32 = i32::MAX;
+
+/// The pulse limits before `MCC_SetMaxPulseSpeed`/`MCC_SetMaxPulseAcc`: 1,000,000, as the
+/// vendor's library reads right after init.
+pub const DEFAULT_PULSE_LIMIT: i32 = 1_000_000;
 
 /// What the simulation configuration says about one channel.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -208,7 +212,7 @@ pub struct Channel {
     pub last_index_count: Option<i64>,
     /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
     pub latched: [bool; 2],
-    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`, 1..32767).
+    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
     pub max_speed: i32,
     /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
     pub max_acc: i32,
@@ -246,8 +250,8 @@ impl Channel {
             cell: IndexCell::NONE,
             deferred: Deferred::NONE,
             latched: [false; 2],
-            max_speed: MAX_PULSE_LIMIT,
-            max_acc: MAX_PULSE_LIMIT,
+            max_speed: DEFAULT_PULSE_LIMIT,
+            max_acc: DEFAULT_PULSE_LIMIT,
             levels: SensorLevels::default(),
             prev_levels: SensorLevels::default(),
             step_levels: SensorLevels::default(),
@@ -892,7 +896,7 @@ impl Machine {
             .cards
             .iter()
             .flatten()
-            .any(|c| c.max_speed < MAX_PULSE_LIMIT || c.max_acc < MAX_PULSE_LIMIT);
+            .any(|c| c.max_speed < DEFAULT_PULSE_LIMIT || c.max_acc < DEFAULT_PULSE_LIMIT);
     }
 
     /// Limit `kind` of every channel of card `cd`.

@@ -29,6 +29,10 @@ use crate::vendor::consts as c;
 /// with the master axis's speed 0.
 const PTP_ENDING: u8 = 2;
 
+/// Periods a motion with the in-position check on is shown ending before the check can
+/// pass (the vendor's library shows phase 21 for them).
+const INPOS_PERIODS: u8 = 3;
+
 /// Held periods from which the status reads `GMS_HOLD` (a timed abort then ends).
 pub(super) const HOLD_SHOWN_AFTER: u32 = 3;
 
@@ -417,6 +421,9 @@ impl GroupState {
             }
         }
         let mut abort_done = false;
+        let inpos_on = self.inpos_mask != 0;
+        let inpos_waiting = self.inpos_wait.is_some();
+        let mut start_inpos = false;
         let n = self.running.len();
         for idx in 0..n {
             let newest = idx + 1 == n;
@@ -425,13 +432,18 @@ impl GroupState {
             match r.stage {
                 Stage::Moving => {
                     if r.arrived() && r.has_tracks() {
-                        // The period after arriving: at rest, shown as ending.
+                        // The period after arriving: at rest, shown as ending (longer
+                        // while the in-position check runs).
                         let left = if matches!(r.progress, Progress::Axes { .. }) {
                             PTP_ENDING
                         } else {
                             1
                         };
+                        let left = if inpos_on { left + INPOS_PERIODS } else { left };
                         r.stage = Stage::Ending { left };
+                        if inpos_on {
+                            start_inpos = true;
+                        }
                     } else {
                         advance(r, &mut vel_mask);
                         let ends = match r.progress {
@@ -481,8 +493,10 @@ impl GroupState {
                     (Progress::Axes { .. }, _) => {}
                     _ => zero_mask = u32::MAX,
                 }
-                if left <= 1 {
+                if left <= 1 && !inpos_waiting {
                     r.finished = Some(true);
+                } else if left <= 1 {
+                    // The in-position check still runs: still shown ending.
                 } else {
                     r.stage = Stage::Ending { left: left - 1 };
                 }
@@ -490,6 +504,15 @@ impl GroupState {
             if let Stage::Held { periods, abort: true } = r.stage {
                 abort_done |= periods >= HOLD_SHOWN_AFTER;
             }
+        }
+        if start_inpos {
+            self.note(Note::InPosBegin(self.inpos_mask));
+            self.inpos_wait = Some(InPosWait {
+                mask: self.inpos_mask,
+                elapsed: 0.0,
+                settled: 0.0,
+                settings: self.inpos,
+            });
         }
         if abort_done {
             // The timed abort's last period: everything goes in the next.
@@ -562,7 +585,7 @@ impl GroupState {
             return;
         }
         let cmd = self.kinematics_start(cmd);
-        if cmd.is_motion() {
+        if cmd.is_motion() && self.inpos_mask != 0 {
             self.inpos_status = [0; AXES];
         }
         self.info_touched();
@@ -623,15 +646,6 @@ impl GroupState {
             }
             if self.running.is_empty() && matches!(done.stage, Stage::Ending { .. }) {
                 self.base = done.cmd.target;
-                if self.inpos_mask != 0 {
-                    self.note(Note::InPosBegin(self.inpos_mask));
-                    self.inpos_wait = Some(InPosWait {
-                        mask: self.inpos_mask,
-                        elapsed: 0.0,
-                        settled: 0.0,
-                        settings: self.inpos,
-                    });
-                }
             }
         }
         if self.running.is_empty() && self.mode == Mode::HoldAtBlockEnd {

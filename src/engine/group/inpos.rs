@@ -22,6 +22,21 @@ pub struct InPosSettings {
     pub tolerance: Axes,
 }
 
+impl InPosSettings {
+    /// The settings right after init: the tolerance of a mapped axis is the most pulses a
+    /// count holds (2^31 − 1) in units, 0 for an unmapped one, as the vendor's library
+    /// reads them.
+    pub fn for_axes(axes: &[super::AxisMech; AXES]) -> InPosSettings {
+        InPosSettings {
+            tolerance: std::array::from_fn(|i| match (axes[i].channel, axes[i].factor) {
+                (Some(_), f) if f != 0.0 => f64::from(i32::MAX) / f.abs(),
+                _ => 0.0,
+            }),
+            ..InPosSettings::default()
+        }
+    }
+}
+
 /// Maximum check time before it is set (ms; the examples manual uses 1000).
 pub const DEFAULT_INPOS_CHECK_MS: f64 = 1000.0;
 

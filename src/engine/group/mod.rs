@@ -204,9 +204,10 @@ impl GroupState {
             ot_check: [false; AXES],
             track_mask: 0,
             track_limit: [f64::INFINITY; AXES],
-            inpos: InPosSettings::default(),
+            inpos: InPosSettings::for_axes(&axes),
             inpos_wait: None,
-            inpos_status: [0; AXES],
+            // The vendor's library reads 255 for every axis right after init.
+            inpos_status: [0xFF; AXES],
             outputs: Vec::new(),
             external: None,
             homing: 0,
@@ -234,6 +235,18 @@ impl GroupState {
             self.external = Some(x);
             self.external_positions();
         }
+    }
+
+    /// `MCC_ResetMotion` of a group at rest: its error record, hold, override and lag go;
+    /// its position, offsets and settings stay.
+    pub fn reset_motion(&mut self) {
+        self.clear_error();
+        self.mode = Mode::Normal;
+        self.override_pct = 100.0;
+        self.override_next = None;
+        self.lag = 0;
+        self.clear_queue();
+        self.update_status();
     }
 
     /// The planning context: settings, axes and the end of the queue.
@@ -339,6 +352,22 @@ impl GroupState {
         self.pos[axis] = value;
         self.base[axis] = value;
         self.queue_end[axis] = value;
+        Ok(())
+    }
+
+    /// `MCC_DefinePos`: the position of `axis` becomes `value` in the program's
+    /// coordinates, the offset kept (so the pulse count becomes it too); only when
+    /// stopped, and `value` a position of the axis.
+    pub fn set_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
+        crate::config::range::position(value, self.axes[axis].factor)?;
+        crate::config::range::position(value + self.offset[axis], self.axes[axis].factor)?;
+        if self.busy() || self.kin.is_some() {
+            return Err(McclError::NotFinished);
+        }
+        self.pos[axis] = value;
+        self.base[axis] = value;
+        self.queue_end[axis] = value;
+        self.info_touched();
         Ok(())
     }
 

@@ -65,6 +65,8 @@ impl GroupState {
             return Err(McclError::RunTime);
         }
         if self.queue.len() >= self.def.queue_size {
+            // The vendor's library counts the refused command's index too.
+            self.skip_command_index();
             return Err(McclError::BufferFull);
         }
         // Memory the queue cannot get is a full queue: an error code, never an abort.
@@ -96,6 +98,13 @@ impl GroupState {
         self.info_touched();
         self.update_status();
         Ok(idx)
+    }
+
+    /// The next index is used up without a command.
+    fn skip_command_index(&mut self) {
+        if self.cmd_index.auto {
+            self.cmd_index.next = self.cmd_index.next.wrapping_add(1) & 0x7FFF_FFFF;
+        }
     }
 
     /// Index management (`MCC_ResetCommandIndex`, `MCC_SetCommandIndex`).
@@ -172,6 +181,8 @@ impl GroupState {
                     } else {
                         self.inpos_mask &= !mask;
                     }
+                    // A command of one period too (`COMMAND_INFO` types 11 and 12).
+                    return self.pop_queued();
                 }
                 Plan::Output(o) => self.outputs.push(o),
                 _ => return self.pop_queued(),
@@ -204,7 +215,7 @@ impl GroupState {
         self.queue
             .iter()
             .map(|c| &c.plan)
-            .find(|p| !matches!(p, Plan::InPos(..) | Plan::Output(_)))
+            .find(|p| !matches!(p, Plan::Output(_)))
     }
 
     /// Output changes the queue reached since the last call.
