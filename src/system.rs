@@ -355,19 +355,18 @@ pub fn close() -> McclResult<()> {
     Ok(())
 }
 
-/// `MCC_ResetMotion`, as the vendor's library does it: while any group moves it is
-/// `COMMAND_NOTACCEPTED_ERR`; at rest every group's error record, hold and override go,
-/// and its position and settings stay.
+/// `MCC_ResetMotion`, as the vendor's library does it: every group returns to its state
+/// right after init with its settings kept (`GroupState::reset_motion`); when any group
+/// was busy the call still does so and answers `COMMAND_NOTACCEPTED_ERR`.
 pub fn reset_motion() -> McclResult<()> {
     let sys = SYSTEM.lock();
     let r = sys.running.as_ref().ok_or(McclError::NotInitialized)?;
     let shared = r.engine.shared();
-    let mut busy = false;
-    shared.for_each_group(|g| busy |= g.busy());
+    let busy = shared.reset_motion();
+    // The vendor's library answers so for a busy card, and resets it all the same.
     if busy {
         return Err(McclError::NotAccepted);
     }
-    shared.for_each_group(|g| g.reset_motion());
     Ok(())
 }
 

@@ -63,6 +63,20 @@ pub fn home_orders(orders: [i32; AXES]) -> McclResult<[i32; AXES]> {
 pub const HOME_BUSY: i32 = 0;
 /// Go-home status: every channel homed.
 pub const HOME_DONE: i32 = 1;
+/// Go-home status after `MCC_ResetMotion`: the vendor's library then reads 0, as during a
+/// go home, though nothing homes; kept apart from [`HOME_BUSY`] so that nothing waits for
+/// it, and read as 0 ([`home_status_read`]).
+pub const HOME_AFTER_RESET: i32 = i32::MIN + 1;
+
+/// The go-home status a program reads for the stored one.
+pub fn home_status_read(stored: i32) -> i32 {
+    if stored == HOME_AFTER_RESET {
+        HOME_BUSY
+    } else {
+        stored
+    }
+}
+
 /// Go-home status: no homing has completed since `MCC_Home` was last called (never
 /// called, aborted, stopped by the emergency-stop input or failed).
 pub const HOME_NONE: i32 = c::HOME_COMMAND_NOTCALLED_ERR;

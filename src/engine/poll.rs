@@ -110,7 +110,7 @@ impl Shared {
             }
             self.mark_polled_in(&self.home_poll);
         }
-        self.home_status.load(Ordering::Acquire)
+        homing::home_status_read(self.home_status.load(Ordering::Acquire))
     }
 
     /// During a tick: ends a fast-clock poll's run when its group's status changed.

@@ -295,12 +295,26 @@ impl Shared {
         }
     }
 
-    /// Whether a group driving channel `ch` of `card` is moving.
+    /// Whether a group driving channel `ch` of `card` has a command running (the period
+    /// the status still reads running after the last command is not one).
     pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
         self.lock_groups().iter().any(|g| {
-            g.status() == crate::vendor::consts::GMS_RUNNING
+            g.commands_running()
                 && g.axes.iter().any(|a| a.channel == Some((card, ch)))
         })
+    }
+
+    /// `MCC_ResetMotion`: homing stops and every group resets
+    /// ([`GroupState::reset_motion`]); what the groups show changes from the next period,
+    /// as the vendor's library publishes it. Whether a group was busy.
+    pub fn reset_motion(&self) -> bool {
+        self.reset_homing();
+        let mut busy = false;
+        for g in self.lock_groups().iter_mut() {
+            busy |= g.busy();
+            g.reset_motion();
+        }
+        busy
     }
 
     /// Every running group, locked one at a time.

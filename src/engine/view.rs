@@ -154,7 +154,7 @@ impl super::Shared {
         let v = View {
             ticks: self.clock.ticks() + 1,
             made: true,
-            home_status: self.home_status.load(Ordering::Acquire),
+            home_status: super::homing::home_status_read(self.home_status.load(Ordering::Acquire)),
             cards,
             groups,
         };

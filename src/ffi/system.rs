@@ -256,7 +256,9 @@ pub extern "C" fn MCC_CloseSystem() -> c_int {
     ffi_boundary! { system::close().map(|()| c::NO_ERR) }
 }
 
-/// Returns every group to its state right after `MCC_InitSystem`.
+/// Returns every group to its state right after `MCC_InitSystem`, settings kept: motion
+/// stops at once and positions restart from 0 (`COMMAND_NOTACCEPTED_ERR`, reset all the
+/// same, when a group was busy, as the vendor's library answers).
 #[no_mangle]
 pub extern "C" fn MCC_ResetMotion() -> c_int {
     ffi_boundary! { system::reset_motion().map(|()| c::NO_ERR) }

@@ -37,6 +37,22 @@ static void status_after_queue(int t)
     }
 }
 
+/* The pulse stock while a line runs, in its last period and after it. */
+static void stock_while_moving(int t)
+{
+    if (t == 0) {
+        vd_profile('T', 20, 20, 10);
+        LINE(0, 0.1, 0, 0);
+    }
+    if (t % 4 == 1 || (t >= 110 && t <= 116)) {
+        WORD w = 77;
+        int r = V(MCC_GetCurPulseStockCount)(&w, 0, 0);
+        vd_note("GetCurPulseStockCount %d %u", r, w);
+        r = V(MCC_GetCurPulseStockCount)(&w, 2, 0);
+        vd_note("GetCurPulseStockCount %d %u", r, w);
+    }
+}
+
 static int overlap_groups(void)
 {
     vd_mac_default(10000);
@@ -137,5 +153,6 @@ const Scenario vd_extra[] = {
     SCEN(jog_while_moving, std3, 110, 4000),
     SCEN(blend_arc_arc, std3, 0, 4000),
     SCEN(blend_line_arc_t, std3, 0, 4000),
+    SCEN(stock_while_moving, std3, 120, 4000),
     SCEN_END,
 };

@@ -313,6 +313,7 @@ impl GroupState {
             && self.kin.is_none()
             && self.ot_check == [false; AXES]
             && self.inpos_wait.is_none()
+            && !matches!(self.rezero, super::Rezero::NextPeriod | super::Rezero::Channels)
     }
 
     /// An idle period: the speeds stay as the last command left them, the feed speed
@@ -382,7 +383,12 @@ impl GroupState {
     /// The commands' period: retire what ended in the last one, start, advance, blend,
     /// stop; the position and the speeds; the status.
     pub(super) fn tick_commands(&mut self, dt: f64) {
-        let before = self.pos;
+        if self.rezero == super::Rezero::NextPeriod {
+            self.rezero = super::Rezero::Channels;
+            self.base = [0.0; AXES];
+            self.pos = [0.0; AXES];
+        }
+        let mut before = self.pos;
         let mut vel_mask: u32 = 0;
         let mut zero_mask: u32 = 0;
         self.apply_override();
@@ -522,6 +528,10 @@ impl GroupState {
             self.clear_queue();
         }
         self.try_blend(&mut vel_mask, started);
+        if self.rezero == super::Rezero::Channels {
+            // Restarted from 0 (`GroupState::reset_motion`): no jump to show as speed.
+            before = [0.0; AXES];
+        }
         self.compute_pos();
         self.compute_vel(&before, dt, vel_mask, zero_mask);
         if self.ot_check != [false; AXES] {
@@ -583,6 +593,11 @@ impl GroupState {
             self.stop_here();
             self.set_error(code);
             return;
+        }
+        if self.rezero == super::Rezero::OnStart {
+            // Reset while busy: the group restarts from 0 with this command.
+            self.rezero = super::Rezero::Channels;
+            self.base = [0.0; AXES];
         }
         let cmd = self.kinematics_start(cmd);
         if cmd.is_motion() && self.inpos_mask != 0 {

@@ -159,6 +159,23 @@ pub struct GroupState {
     inpos_status: [u8; AXES],
     /// Custom commands started and not cleaned up yet (`custom.rs`).
     custom: custom::CustomSide,
+    /// When the pulse counters of the commanded channels restart from 0
+    /// ([`GroupState::reset_motion`]).
+    rezero: Rezero,
+}
+
+/// When a reset group's position and its channels' pulse counters restart from 0.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Rezero {
+    /// Nothing pending.
+    No,
+    /// At the start of the next period (a group reset at rest).
+    NextPeriod,
+    /// When the next command starts (a group reset while busy shows where it stopped
+    /// until then).
+    OnStart,
+    /// The position is 0: the channels restart as they are commanded next.
+    Channels,
 }
 
 impl GroupState {
@@ -213,6 +230,7 @@ impl GroupState {
             homing: 0,
             trace_notes: None,
             custom: custom::CustomSide::default(),
+            rezero: Rezero::No,
             post: None,
             kin: None,
         }
@@ -237,15 +255,34 @@ impl GroupState {
         }
     }
 
-    /// `MCC_ResetMotion` of a group at rest: its error record, hold, override and lag go;
-    /// its position, offsets and settings stay.
+    /// `MCC_ResetMotion`: the group returns to its state right after init, keeping its
+    /// settings (feed, profiles, coordinates, blending, checks): what runs stops at once
+    /// and the queue, error record, hold, override, offsets and command indices go, and
+    /// its positions and the pulse counters of its channels restart from 0. As the
+    /// vendor's library does it: a group at rest reads 0 from the next period; a busy one
+    /// (the call then answers `COMMAND_NOTACCEPTED_ERR` and still resets) keeps showing
+    /// where it stopped, with one more running period, until its next command starts
+    /// from 0.
     pub fn reset_motion(&mut self) {
+        let busy = self.busy();
+        self.abort_now(true);
         self.clear_error();
-        self.mode = Mode::Normal;
         self.override_pct = 100.0;
         self.override_next = None;
-        self.lag = 0;
-        self.clear_queue();
+        self.cmd_index = CommandIndex::default();
+        self.offset = [0.0; AXES];
+        self.queue_end = [0.0; AXES];
+        if let Some(x) = self.external.as_mut() {
+            x.rezero();
+        }
+        if busy {
+            // `base` keeps the stop point, where the group stays until its next start.
+            self.rezero = Rezero::OnStart;
+        } else {
+            self.inpos_status = [0xFF; AXES];
+            self.rezero = Rezero::NextPeriod;
+        }
+        self.info_touched();
         self.update_status();
     }
 

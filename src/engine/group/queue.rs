@@ -41,6 +41,11 @@ impl GroupState {
         self.queue.len()
     }
 
+    /// Whether a command runs (a jog by pulses included).
+    pub fn commands_running(&self) -> bool {
+        !self.running.is_empty() || self.jump.is_some()
+    }
+
     /// Whether the group has anything to do.
     pub fn busy(&self) -> bool {
         self.status != c::GMS_STOP || !self.queue.is_empty()

@@ -83,7 +83,15 @@ impl GroupState {
     /// (kinematics, filters) and the card asked once: this runs every tick for every
     /// commanding group.
     #[inline(always)]
-    pub fn command_channels(&self, cards: &mut [[Channel; AXES]]) {
+    pub fn command_channels(&mut self, cards: &mut [[Channel; AXES]]) {
+        if self.rezero == super::Rezero::Channels {
+            self.rezero = super::Rezero::No;
+            if let Some(chans) = cards.get_mut(self.commanded.card()) {
+                for (_, ch) in self.commanded.pairs() {
+                    chans[ch].rezero();
+                }
+            }
+        }
         let commanded = &self.commanded;
         // Most groups sharing a card's channels command none of them (the last mapping
         // wins): asked first, before the card is looked up.

@@ -138,6 +138,14 @@ impl Shared {
         }
     }
 
+    /// `MCC_ResetMotion`: a go home in progress stops, and the status reads 0 as the
+    /// vendor's library answers after a reset ([`homing::HOME_AFTER_RESET`]).
+    pub(in crate::engine) fn reset_homing(&self) {
+        self.cancel_homing();
+        self.home_status
+            .store(homing::HOME_AFTER_RESET, Ordering::Release);
+    }
+
     /// One tick of the homing in progress (with the machine locked).
     pub(in crate::engine) fn tick_homing(
         &self,
