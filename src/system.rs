@@ -189,6 +189,27 @@ pub fn check_card(card: &SYS_CARD_CONFIG) -> McclResult<()> {
     }
 }
 
+/// How many channels a card of type `t` has, as the vendor's library counts them: the
+/// 4-axis types 0 and 2, the 6-axis types 1 and 3, the 8-axis IMP types.
+pub fn card_type_channels(t: u16) -> usize {
+    match t {
+        0 | 2 => 4,
+        1 | 3 => 6,
+        _ => AXES,
+    }
+}
+
+/// The number of channels of card `cd` of the running system (every channel when the
+/// card is not there).
+pub fn card_channels(cd: usize) -> usize {
+    SYSTEM
+        .lock()
+        .running
+        .as_ref()
+        .and_then(|r| r.card_types.get(cd).copied())
+        .map_or(AXES, card_type_channels)
+}
+
 /// How `init` was reached.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum InitKind {

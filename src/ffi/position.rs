@@ -120,7 +120,7 @@ fn set_pulse_limits(k: PulseLimit, v: [c_int; 8], wCardIndex: WORD) -> McclResul
         return Err(McclError::Parameter);
     }
     if crate::system::is_simulation() {
-        let _ = super::card(wCardIndex)?;
+        crate::system::active()?.card(super::card(wCardIndex)?)?;
         return Err(McclError::NotAccepted);
     }
     with_machine(Card(wCardIndex), |m, cd| {
@@ -129,8 +129,13 @@ fn set_pulse_limits(k: PulseLimit, v: [c_int; 8], wCardIndex: WORD) -> McclResul
     })
 }
 
+/// The pulse limits `k` of card `wCardIndex`; -1 for the channels its type lacks, as the
+/// vendor's library reads them.
 fn pulse_limits(k: PulseLimit, wCardIndex: WORD) -> McclResult<[c_int; 8]> {
-    with_machine(Card(wCardIndex), |m, cd| Ok(m.pulse_limits(cd, k)))
+    let mut v = with_machine(Card(wCardIndex), |m, cd| Ok(m.pulse_limits(cd, k)))?;
+    let n = crate::system::card_channels(usize::from(wCardIndex));
+    v.iter_mut().skip(n).for_each(|x| *x = -1);
+    Ok(v)
 }
 
 per_axis_setters! {
