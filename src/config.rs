@@ -209,12 +209,13 @@ fn check(ok: bool) -> McclResult<()> {
     }
 }
 
-/// Validates mechanism parameters (§2.4.1): direction 0/1, PPR > 0, pitch and gear ratio
-/// finite and > 0 with pulses per UU in [`range::factor`], the maximum safe speed at most
-/// [`range::MAX_SPEED`], limits and limit offsets positions in [`range::position`] with
-/// low <= high, pulse mode `DDA_FMT_*`, command mode `OCM_*`, sensor modes `SL_*`.
+/// Validates mechanism parameters (§2.4.1) as the vendor's library does: PPR > 0, pitch
+/// and gear ratio finite and > 0 with pulses per UU in [`range::factor`], the maximum
+/// safe speed at most [`range::MAX_SPEED`], limits and limit offsets positions in
+/// [`range::position`] with the high limit >= 0 >= the low limit, pulse mode
+/// `DDA_FMT_*`, command mode `OCM_*`, sensor modes `SL_*`, pulse width and RPM > 0. Any
+/// direction is taken (nonzero reverses, measured), and any paddle value.
 pub fn validate_mac_param(p: &SYS_MAC_PARAM) -> McclResult<()> {
-    check(p.wPosToEncoderDir <= 1)?;
     check(p.dwPPR > 0)?;
     check(p.dfPitch.is_finite() && p.dfPitch > 0.0)?;
     check(p.dfGearRatio.is_finite() && p.dfGearRatio > 0.0)?;
@@ -229,7 +230,7 @@ pub fn validate_mac_param(p: &SYS_MAC_PARAM) -> McclResult<()> {
     ] {
         range::position(x, f)?;
     }
-    check(p.dfLowLimit <= p.dfHighLimit)?;
+    check(p.dfLowLimit <= 0.0 && p.dfHighLimit >= 0.0)?;
     check(p.wPulseMode <= c::DDA_FMT_AB)?;
     // A pulse of no width: the vendor's library refuses it.
     check(p.wPulseWidth > 0)?;

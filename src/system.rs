@@ -509,8 +509,16 @@ impl System {
 
     /// `MCC_GetConvFactor`: pulses per user unit of a channel with the mechanism
     /// parameters in effect ([`System::mac_in_effect`]).
+    /// Negative when the channel's output is reversed (`wPosToEncoderDir` nonzero), as
+    /// the vendor's library answers.
     pub fn conv_factor(&self, card: CardIx, ch: ChannelIx) -> f64 {
-        crate::config::conv_factor(&self.mac_in_effect(card, ch))
+        let mac = self.mac_in_effect(card, ch);
+        let f = crate::config::conv_factor(&mac);
+        if mac.wPosToEncoderDir != 0 {
+            -f
+        } else {
+            f
+        }
     }
 
     /// The mechanism parameters in effect for a channel (running: those applied at init

@@ -144,7 +144,7 @@ impl Command {
 pub struct AxisMech {
     /// `(card, channel)` the axis drives, `None` when unmapped.
     pub channel: Option<(usize, usize)>,
-    /// Pulses per UU: dwPPR x dfGearRatio / dfPitch, negative when wPosToEncoderDir = 1.
+    /// Pulses per UU: dwPPR x dfGearRatio / dfPitch, negative when wPosToEncoderDir is nonzero.
     pub factor: f64,
     /// Maximum safe speed, UU/s: (wRPM / 60) x dfPitch / dfGearRatio.
     pub safe_speed: f64,
@@ -160,7 +160,7 @@ impl AxisMech {
         let factor = crate::config::conv_factor(m);
         AxisMech {
             channel,
-            factor: if m.wPosToEncoderDir == 1 {
+            factor: if m.wPosToEncoderDir != 0 {
                 -factor
             } else {
                 factor

@@ -59,7 +59,7 @@ per_axis_getters! {
     MCC_GetCurRefPos(f64; wGroupIndex)
         = read_published(wGroupIndex, |p| p.load_program_pos());
     /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
-    /// sign reversed when wPosToEncoderDir = 1.
+    /// sign reversed when wPosToEncoderDir is nonzero.
     MCC_GetPulsePos(c_long; wGroupIndex)
         = pulse_pos(wGroupIndex).map(|p| p.map(|v| v as c_long));
     /// [`MCC_GetPulsePos`] with 64-bit results on every platform.

@@ -404,6 +404,10 @@ pub unsafe fn set_channel_config<T: Copy>(
     set: impl FnOnce(&mut crate::config::Config, CardIx, ChannelIx, T) -> McclResult<()>,
 ) -> McclResult<c_int> {
     let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
+    // Once the system runs, only its cards (as the vendor's library answers).
+    if let Ok(shared) = crate::system::active() {
+        shared.card(cd)?;
+    }
     // SAFETY: NULL is rejected; otherwise the caller passes a readable T.
     let v = unsafe { read_in(p) }?;
     crate::system::config(|c| set(c, cd, ch, v))?;

@@ -271,7 +271,8 @@ pub extern "C" fn MCC_UpdateParam() -> c_int {
 }
 
 /// Pulses per user unit of a channel: dwPPR x dfGearRatio / dfPitch of the mechanism
-/// parameters in effect. A bad channel or card reads 0, as the vendor's library answers.
+/// parameters in effect, negative for a reversed output (`wPosToEncoderDir` nonzero). A
+/// bad channel or card reads 0, as the vendor's library answers.
 #[no_mangle]
 pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
     ffi_boundary! {

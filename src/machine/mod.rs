@@ -267,7 +267,7 @@ impl Channel {
     /// Pulses per UU (signed: negative when wPosToEncoderDir reverses the output).
     pub fn factor(&self) -> f64 {
         let f = crate::config::conv_factor(&self.mac);
-        if self.mac.wPosToEncoderDir == 1 {
+        if self.mac.wPosToEncoderDir != 0 {
             -f
         } else {
             f

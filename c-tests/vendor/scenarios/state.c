@@ -213,6 +213,59 @@ static void setters_mac(int t)
         LINE(0, 0.01, 0, 0);
 }
 
+/* Which software limits SetMacParam takes: each pair (high, low) from the defaults. */
+static void setters_mac_limits(int t)
+{
+    static const double pairs[][2] = {{0, -50000}, {-5, -50000}, {5, -50000}, {50000, 0},
+                                      {50000, 5},  {50000, -5},  {10, 20},    {20, 10},
+                                      {0, 0},      {-10, -20},   {-20, -10}};
+    SYS_MAC_PARAM m;
+    if (t == 0) {
+        for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+            V(MCC_GetMacParam)(&m, 1, 0);
+            m.dfHighLimit = pairs[i][0];
+            m.dfLowLimit = pairs[i][1];
+            CI(MCC_SetMacParam, &m, 1, 0);
+        }
+        V(MCC_GetMacParam)(&m, 1, 0);
+        vd_note("limits %.17g %.17g", m.dfHighLimit, m.dfLowLimit);
+        m.wOverTravelUpSensorMode = 3;
+        CI(MCC_SetMacParam, &m, 1, 0);
+        V(MCC_GetMacParam)(&m, 1, 0);
+        m.wPulseMode = 9;
+        CI(MCC_SetMacParam, &m, 1, 0);
+        V(MCC_GetMacParam)(&m, 1, 0);
+        m.wCommandMode = 9;
+        CI(MCC_SetMacParam, &m, 1, 0);
+        V(MCC_GetMacParam)(&m, 1, 0);
+        m.wPaddle = 9;
+        CI(MCC_SetMacParam, &m, 1, 0);
+        V(MCC_GetMacParam)(&m, 1, 0);
+        m.wPosToEncoderDir = 2;
+        CI(MCC_SetMacParam, &m, 1, 0);
+        V(MCC_GetMacParam)(&m, 1, 0);
+        m.dfGearRatio = 0;
+        CI(MCC_SetMacParam, &m, 1, 0);
+    }
+}
+
+/* wPosToEncoderDir 2 on channel 0: which way its pulses count. */
+static void mac_dir2(int t)
+{
+    SYS_MAC_PARAM m;
+    if (t == 0) {
+        V(MCC_GetMacParam)(&m, 0, 0);
+        m.wPosToEncoderDir = 2;
+        CI(MCC_SetMacParam, &m, 0, 0);
+        CI(MCC_UpdateParam);
+        vd_note("GetConvFactor %.17g", V(MCC_GetConvFactor)(0, 0));
+    }
+    if (t == 1) {
+        vd_profile('T', 10, 10, 10);
+        LINE(0, 0.01, 0.01, 0);
+    }
+}
+
 /* Card tables: each set-up initialises with another table and ends. */
 static int init_with(WORD type, WORD addr, WORD irq, int count, int null_table)
 {
@@ -570,6 +623,8 @@ const Scenario vd_state[] = {
     SCEN(setters_inpos, std3, 0, 100),
     SCEN(setters_ptp_profile, std3, 0, 100),
     SCEN(setters_mac, std3, 1, 4000),
+    SCEN(setters_mac_limits, std3, 0, 100),
+    SCEN(mac_dir2, std3, 1, 1000),
     {"card_type0", card_type0_setup, card_script, 0, 1000, 0},
     {"card_type0_isa", card_type0_isa_setup, card_script, 0, 1000, 0},
     {"card_type0_badirq", card_type0_badirq_setup, card_script, 0, 1000, 0},

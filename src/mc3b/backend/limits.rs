@@ -39,7 +39,7 @@ pub fn motor_limits(
         level(mac.wOverTravelUpSensorMode),
         level(mac.wOverTravelDownSensorMode),
     );
-    if mac.wPosToEncoderDir == 1 {
+    if mac.wPosToEncoderDir != 0 {
         limit_masks([minus, plus], [down, up])
     } else {
         limit_masks([plus, minus], [up, down])
