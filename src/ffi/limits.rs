@@ -3,7 +3,7 @@
 //! Check").
 
 use super::{
-    flag, index, update_group, with_group, with_machine_channel, write_out, Card, Channel,
+    index, update_group, with_group, with_machine_channel, write_out, Card, Channel,
 };
 use crate::engine::safety::limit_check_mode;
 use crate::error::McclResult;
@@ -32,17 +32,17 @@ pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
     }
 }
 
-/// Sets the software over-travel check of group `g` per axis (1 on, 0 off).
+/// Sets the software over-travel check of group `g` per axis: nonzero on, as the
+/// vendor's library takes it; the axes the group lacks stay off.
 fn set_over_travel_check(v: [c_int; 8], g: WORD) -> McclResult<c_int> {
-    let mut f = [false; 8];
-    for (o, x) in f.iter_mut().zip(v) {
-        *o = flag(x)?;
-    }
-    update_group(g, |g| g.ot_check = f)
+    update_group(g, |g| {
+        let on: [bool; 8] = std::array::from_fn(|i| v[i] != 0 && g.axes[i].channel.is_some());
+        g.ot_check = on;
+    })
 }
 
 per_axis_setters! {
-    /// Software over-travel check per axis (1 on, 0 off): an axis never goes past its
+    /// Software over-travel check per axis (nonzero on, 0 off): an axis never goes past its
     /// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
     MCC_SetOverTravelCheck(c_int; wGroupIndex) = |v| set_over_travel_check(v, wGroupIndex);
 }

@@ -177,11 +177,8 @@ pub extern "C" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
 #[no_mangle]
 pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let v = finite(dfLimit)?;
-        if v < 0.0 {
-            return Err(McclError::Parameter);
-        }
         let a = axis(cAxis)?;
+        let v = finite(dfLimit)?.abs();
         with_group(wGroupIndex, |g| g.set_track_error_limit(a, v))?;
         Ok(c::NO_ERR)
     }
@@ -202,7 +199,7 @@ pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
         unsafe {
             write_out(pdfLimit, || {
                 let a = axis(cAxis)?;
-                let v = with_group(wGroupIndex, |g| Ok(g.track_limit[a]))?;
+                let v = with_group(wGroupIndex, |g| g.own_axis(a).map(|()| g.track_limit[a]))?;
                 Ok(v)
             })
         }
@@ -270,19 +267,20 @@ on_off! {
         = |on| inpos_marker(wGroupIndex, dwAxisMask, on);
 }
 
-/// Sets the in-position tolerances of group `g`, UU: finite and >= 0 here, in the
-/// position range of each axis by the group (`GroupState::set_inpos_tolerances`).
+/// Sets the in-position tolerances of group `g`, UU, as the vendor's library takes them:
+/// any value, kept as whole pulses (`GroupState::set_inpos_tolerances`); the axes the
+/// group lacks ignore theirs.
 fn set_tolerances(v: [f64; 8], g: WORD) -> McclResult<c_int> {
-    let v = super::finite8(v)?;
-    if v.iter().any(|&t| t < 0.0) {
-        return Err(McclError::Parameter);
-    }
-    with_group(g, |g| g.set_inpos_tolerances(v))?;
+    with_group(g, |g| {
+        g.set_inpos_tolerances(v);
+        Ok(())
+    })?;
     Ok(c::NO_ERR)
 }
 
 per_axis_setters! {
-    /// In-position tolerance per axis, UU (>= 0, distances of the axes in the position range).
+    /// In-position tolerance per axis, UU, kept as whole pulses: the magnitude of the
+    /// value truncated to a 32-bit pulse count (the vendor's library takes any value).
     MCC_SetInPosToleranceEx(f64; wGroupIndex) = |v| set_tolerances(v, wGroupIndex);
 }
 

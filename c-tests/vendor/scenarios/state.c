@@ -266,6 +266,27 @@ static void mac_dir2(int t)
     }
 }
 
+/* In-group values the first battery left open: a negative tolerance, a check flag of 2. */
+static void setters_inpos_group(int t)
+{
+    if (t == 0) {
+        CI(MCC_SetInPosToleranceEx, -1, 1e6, 1e12, 0, 0, 0, 0, 0, 0);
+        vd_dump_group(0);
+        CI(MCC_SetInPosToleranceEx, NAN, 0, 0, 0, 0, 0, 0, 0, 0);
+        CI(MCC_SetOverTravelCheck, 2, -1, 0, 0, 0, 0, 0, 0, 0);
+        vd_dump_group(0);
+        CI(MCC_SetTrackErrorLimit, -0.5, 1, 0);
+        CI(MCC_SetTrackErrorLimit, 0.5, 1, 0);
+        CI(MCC_SetTrackErrorLimit, 0.5, 7, 0);
+        CI(MCC_SetTrackErrorLimit, 0.5, 8, 0);
+        double d = -1;
+        int r = V(MCC_GetTrackErrorLimit)(&d, 1, 0);
+        vd_note("GetTrackErrorLimit %d %.17g", r, d);
+        r = V(MCC_GetTrackErrorLimit)(&d, 7, 0);
+        vd_note("GetTrackErrorLimit %d %.17g", r, d);
+    }
+}
+
 /* Card tables: each set-up initialises with another table and ends. */
 static int init_with(WORD type, WORD addr, WORD irq, int count, int null_table)
 {
@@ -624,6 +645,7 @@ const Scenario vd_state[] = {
     SCEN(setters_ptp_profile, std3, 0, 100),
     SCEN(setters_mac, std3, 1, 4000),
     SCEN(setters_mac_limits, std3, 0, 100),
+    SCEN(setters_inpos_group, std3, 0, 100),
     SCEN(mac_dir2, std3, 1, 1000),
     {"card_type0", card_type0_setup, card_script, 0, 1000, 0},
     {"card_type0_isa", card_type0_isa_setup, card_script, 0, 1000, 0},

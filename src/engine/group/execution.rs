@@ -16,7 +16,7 @@
 //!   drops everything.
 //! - The speeds a program reads are the distances of the last period over the period.
 
-use super::track::{Phase, Track};
+use super::track::Track;
 use super::GroupState;
 use super::{InPosWait, Mode, ERR_OVER_TRAVEL};
 use crate::config::AXES;

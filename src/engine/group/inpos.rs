@@ -5,7 +5,6 @@ use super::GroupState;
 use super::TIME_EPS;
 use crate::config::AXES;
 use crate::engine::trace::Note;
-use crate::error::McclResult;
 use crate::planner::Axes;
 use crate::vendor::consts as c;
 
@@ -35,6 +34,24 @@ impl InPosSettings {
             ..InPosSettings::default()
         }
     }
+}
+
+/// A tolerance `t` UU of an axis with `factor` pulses per UU as the vendor's library keeps
+/// it (measured): a whole number of pulses, `t x factor` truncated to a 32-bit integer
+/// (anything out of its range and NaN becoming -2^31, as the x86 conversion gives), and
+/// its magnitude (so -1 UU reads 1, and 1e6 UU on a 10,000-pulse axis 2^31 pulses).
+fn tolerance_as_vendor_keeps(t: f64, factor: f64) -> f64 {
+    let f = factor.abs();
+    if f == 0.0 {
+        return 0.0;
+    }
+    let x = t * f;
+    let pulses = if x.is_nan() || x <= -2_147_483_649.0 || x >= 2_147_483_648.0 {
+        i32::MIN
+    } else {
+        x as i32
+    };
+    f64::from(pulses.unsigned_abs()) / f
 }
 
 /// Maximum check time before it is set (ms; the examples manual uses 1000).
@@ -167,12 +184,12 @@ impl GroupState {
     /// Sets the tolerance of every axis, UU (each >= 0, which the caller checks): each must
     /// be a distance of its axis within the position range ("Ranges"); an error changes
     /// nothing.
-    pub fn set_inpos_tolerances(&mut self, v: Axes) -> McclResult<()> {
-        for (t, a) in v.iter().zip(&self.axes) {
-            crate::config::range::position(*t, a.factor)?;
+    pub fn set_inpos_tolerances(&mut self, v: Axes) {
+        for (i, (t, a)) in v.iter().zip(&self.axes).enumerate() {
+            if a.channel.is_some() {
+                self.inpos.tolerance[i] = tolerance_as_vendor_keeps(*t, a.factor);
+            }
         }
-        self.inpos.tolerance = v;
-        Ok(())
     }
 
     /// Sets the tolerances in pulses (the obsolete form): each becomes UU with its axis's

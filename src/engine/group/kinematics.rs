@@ -3,7 +3,7 @@
 //! the callbacks it runs without the lock ([`Job::call`]), and what it stores afterwards
 //! (`GroupState::kinematics_done`). The model is in [`crate::engine::kinematics`].
 
-use super::{GroupState, TIME_EPS};
+use super::GroupState;
 use crate::config::AXES;
 use crate::engine::command::{Command, Plan};
 use crate::engine::kinematics::{JointMove, KinFns, KIN_AXES};

@@ -452,9 +452,19 @@ impl GroupState {
         self.track_mask = 0;
     }
 
+    /// `GROUP_PARAMETER_ERR` unless the group has `axis` (as the vendor's library answers
+    /// for an axis past the group's).
+    pub fn own_axis(&self, axis: usize) -> McclResult<()> {
+        match self.axes.get(axis) {
+            Some(a) if a.channel.is_some() => Ok(()),
+            _ => Err(McclError::Group),
+        }
+    }
+
     /// The tracking error limit of `axis`, UU (>= 0, which the caller checks): a distance
     /// of the axis within the position range ("Ranges"); an error changes nothing.
     pub fn set_track_error_limit(&mut self, axis: usize, limit: f64) -> McclResult<()> {
+        self.own_axis(axis)?;
         crate::config::range::position(limit, self.axes[axis].factor)?;
         self.track_limit[axis] = limit;
         Ok(())
