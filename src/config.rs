@@ -338,6 +338,16 @@ impl GroupDef {
         })
     }
 
+    /// A group of no axis on `card` (what a group closed while the card runs leaves).
+    pub fn none(card: CardIx) -> GroupDef {
+        GroupDef {
+            card,
+            channels: [None; AXES],
+            queue_size: 1,
+            unit: c::UNIT_MM,
+        }
+    }
+
     /// The manual's default group: X..B on channels 0..7 of card 0 (§2.4.4).
     pub fn default_group() -> GroupDef {
         GroupDef {
@@ -368,6 +378,10 @@ pub struct Config {
     /// The unit of each group slot (`MCC_SetUnit`); a group created or closed starts
     /// over in `UNIT_MM`.
     pub units: [i32; GROUPS],
+    /// A group was created since the library loaded or `MCC_CloseAllGroups`: an init
+    /// with an empty table then runs no group (the default group is for programs that
+    /// never create one), as the vendor's library does.
+    pub explicit_groups: bool,
 }
 
 /// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s: 100, as the
@@ -384,6 +398,7 @@ impl Default for Config {
             sys_max_speed: DEFAULT_SYS_MAX_SPEED,
             comp: vec![[None; AXES]; CARDS],
             units: [c::UNIT_MM; GROUPS],
+            explicit_groups: false,
         }
     }
 }
@@ -466,10 +481,12 @@ impl Config {
             .ok_or(McclError::Group)?;
         self.groups[slot] = Some(def);
         self.units[slot] = c::UNIT_MM;
+        self.explicit_groups = true;
         Ok(slot)
     }
 
-    /// The groups the card will run: those created, or the default group 0 when none were.
+    /// The groups the card will run: those created, or the default group 0 when none
+    /// were since the library loaded or `MCC_CloseAllGroups`.
     pub fn effective_groups(&self) -> Vec<(usize, GroupDef)> {
         let created: Vec<(usize, GroupDef)> = self
             .groups
@@ -477,7 +494,7 @@ impl Config {
             .enumerate()
             .filter_map(|(i, g)| g.map(|g| (i, g)))
             .collect();
-        let mut groups = if created.is_empty() {
+        let mut groups = if created.is_empty() && !self.explicit_groups {
             vec![(0, GroupDef::default_group())]
         } else {
             created

@@ -119,6 +119,15 @@ impl Turn {
         TURN_CHANGED.notify_all();
         self.unlock();
         let was_running = old.is_some();
+        if was_running {
+            // The vendor's library forgets its groups when it closes; the next init runs
+            // those created since (or none: the default group only after
+            // `MCC_CloseAllGroups`).
+            let sys = self.sys();
+            sys.config.groups = [None; GROUPS];
+            sys.config.units = [crate::vendor::consts::UNIT_MM; GROUPS];
+            self.unlock();
+        }
         let mut keep = Vec::new();
         if let Some(r) = old {
             #[cfg(feature = "panel")]
@@ -258,6 +267,10 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     }
     let sys = turn.sys();
     let groups = groups_for(sys)?;
+    // The table holds what runs (the default group too, so that it can be closed).
+    for (i, d) in &groups {
+        sys.config.groups[*i] = Some(*d);
+    }
     let trace = crate::engine::trace::Trace::from_env().map_err(|msg| {
         eprintln!("MCCL: MCC_InitSystem failed: {msg}");
         McclError::NotInitialized
@@ -425,43 +438,74 @@ impl System {
         }
     }
 
-    /// Fails with `COMMAND_NOTACCEPTED_ERR` while the card runs: the group table may only
-    /// change while the system is closed (groups are created before `MCC_InitSystem`).
-    fn require_closed(&self) -> McclResult<()> {
-        if self.running.is_some() {
-            Err(McclError::NotAccepted)
-        } else {
-            Ok(())
-        }
-    }
-
-    /// `MCC_CreateGroupEx`.
+    /// `MCC_CreateGroupEx`: the lowest free slot, `PARAMETER_ERR` when a channel is
+    /// another group's. While the card runs the group runs at once, from where its
+    /// channels stand (as the vendor's library does; not on an MC3B card, whose groups
+    /// the device runs: `COMMAND_NOTACCEPTED_ERR`).
     pub fn create_group(&mut self, def: GroupDef) -> McclResult<usize> {
-        self.require_closed()?;
-        self.config.create_group(def)
+        if let Some(r) = &self.running {
+            let shared = r.engine.shared();
+            shared.card(def.card)?;
+            if shared.is_mc3b(def.card.0) {
+                return Err(McclError::NotAccepted);
+            }
+        }
+        let slot = self.config.create_group(def)?;
+        if let Some(r) = &mut self.running {
+            let mut def = def;
+            def.unit = self.config.units[slot];
+            r.engine.shared().open_group(slot, def, &r.mac);
+            r.groups.push((slot, def));
+        }
+        Ok(slot)
     }
 
-    /// `MCC_CloseGroup` (no such group: `PARAMETER_ERR`, as the vendor's library answers).
+    /// `MCC_CloseGroup` (no such group: `PARAMETER_ERR`, as the vendor's library
+    /// answers). While the card runs the group stops where it stands and goes.
     pub fn close_group(&mut self, g: i32) -> McclResult<()> {
-        self.require_closed()?;
         let slot = usize::try_from(g)
             .ok()
             .filter(|&g| g < GROUPS)
             .ok_or(McclError::Parameter)?;
+        if self.running.as_ref().is_some_and(|r| {
+            r.groups
+                .iter()
+                .any(|(i, d)| *i == slot && r.engine.shared().is_mc3b(d.card.0))
+        }) {
+            return Err(McclError::NotAccepted);
+        }
         match self.config.groups[slot].take() {
             Some(_) => {
                 self.config.units[slot] = crate::vendor::consts::UNIT_MM;
+                if let Some(r) = &mut self.running {
+                    r.engine.shared().close_group(slot, &r.mac);
+                    r.groups.retain(|(i, _)| *i != slot);
+                }
                 Ok(())
             }
             None => Err(McclError::Parameter),
         }
     }
 
-    /// `MCC_CloseAllGroups`.
+    /// `MCC_CloseAllGroups`: the table empties, and the next init without a group
+    /// created runs the default group again. While the card runs every group goes (none
+    /// on an MC3B card: `COMMAND_NOTACCEPTED_ERR`).
     pub fn close_all_groups(&mut self) -> McclResult<()> {
-        self.require_closed()?;
+        if let Some(r) = &self.running {
+            let shared = r.engine.shared();
+            if r.groups.iter().any(|(_, d)| shared.is_mc3b(d.card.0)) {
+                return Err(McclError::NotAccepted);
+            }
+            for (slot, _) in &r.groups {
+                shared.close_group(*slot, &r.mac);
+            }
+        }
+        if let Some(r) = &mut self.running {
+            r.groups.clear();
+        }
         self.config.groups = [None; GROUPS];
         self.config.units = [crate::vendor::consts::UNIT_MM; GROUPS];
+        self.config.explicit_groups = false;
         Ok(())
     }
 

@@ -147,10 +147,16 @@ static void record_group(int g, int n)
     int st = V(MCC_GetMotionStatus)(w);
     int err = V(MCC_GetErrorCode)(w);
     int q = V(MCC_GetCmdQueueSize)(w);
-    V(MCC_GetPulsePos)(&p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &p[6], &p[7], w);
-    V(MCC_GetCurPos)(&c[0], &c[1], &c[2], &c[3], &c[4], &c[5], &c[6], &c[7], w);
-    V(MCC_GetCurRefPos)(&r[0], &r[1], &r[2], &r[3], &r[4], &r[5], &r[6], &r[7], w);
-    V(MCC_GetSpeed)(&v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7], w);
+    /* A getter that fails reads 0: the vendor's library writes what its memory held
+     * for a group that does not exist. */
+    if (V(MCC_GetPulsePos)(&p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &p[6], &p[7], w))
+        memset(p, 0, sizeof p);
+    if (V(MCC_GetCurPos)(&c[0], &c[1], &c[2], &c[3], &c[4], &c[5], &c[6], &c[7], w))
+        memset(c, 0, sizeof c);
+    if (V(MCC_GetCurRefPos)(&r[0], &r[1], &r[2], &r[3], &r[4], &r[5], &r[6], &r[7], w))
+        memset(r, 0, sizeof r);
+    if (V(MCC_GetSpeed)(&v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7], w))
+        memset(v, 0, sizeof v);
     double f = V(MCC_GetCurFeedSpeed)(w);
     memset(&k, 0, sizeof k);
     int kr = V(MCC_GetCurCommand)(&k, w);

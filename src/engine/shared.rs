@@ -13,7 +13,7 @@ use crate::config::{GroupDef, MacTable, AXES, CARDS, GROUPS};
 use crate::error::{McclError, McclResult};
 use crate::machine::Machine;
 use parking_lot::{MappedMutexGuard, Mutex, MutexGuard};
-use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, AtomicUsize, Ordering};
 use std::time::Duration;
 
 /// What the engine thread and the program's threads share.
@@ -21,16 +21,20 @@ use std::time::Duration;
 pub struct Shared {
     /// The tick clock.
     pub clock: Clock,
-    /// Group slot -> position in `groups`.
-    pub(super) slots: [Option<usize>; GROUPS],
+    /// Group slot -> position in `groups`, -1 for none. Written only with the groups'
+    /// lock held (`MCC_CreateGroup`/`MCC_CloseGroup` while running, [`Shared::open_group`]);
+    /// read without it where a stale answer is harmless.
+    pub(super) slots: [AtomicI32; GROUPS],
     /// The running groups, behind one lock: the tick visits every group every period,
     /// and one lock for all costs the engine one atomic operation per tick instead of one
     /// per group (a locked instruction drains the store buffer: two per group were a
     /// fifth of the tick at 48 groups, issue #18). A program thread holds it only to
     /// queue or change one group, as it held that group's lock before.
     pub(super) groups: Mutex<Vec<GroupState>>,
-    /// Number of running groups (their count in `groups`, readable without its lock).
-    group_count: usize,
+    /// Number of entries in `groups`, readable without its lock. Entries stay where
+    /// they are (the engine's stages visit them by position); a group closed while
+    /// running leaves a husk of no axis there until a new group takes its place.
+    group_count: AtomicUsize,
     /// The length of a tick in ns, as the peripherals count it ([`super::tick::tick_ns`]).
     pub(super) tick_len_ns: u64,
     /// Published state per group slot.
@@ -116,10 +120,10 @@ impl Shared {
         trace: Option<trace::Trace>,
     ) -> Shared {
         let cards = machine.cards.len();
-        let mut slots = [None; GROUPS];
+        let slots: [AtomicI32; GROUPS] = std::array::from_fn(|_| AtomicI32::new(-1));
         let mut gs = Vec::with_capacity(groups.len());
         for (n, (i, d)) in groups.iter().enumerate() {
-            slots[*i] = Some(n);
+            slots[*i].store(n as i32, Ordering::Relaxed);
             gs.push(GroupState::new(*i, *d, axes_of(d, mac), period.as_secs_f64()));
         }
         let mut trace = trace;
@@ -132,7 +136,7 @@ impl Shared {
         for (g, c) in gs.iter_mut().zip(commanded) {
             g.commanded = c;
         }
-        let group_count = gs.len();
+        let group_count = AtomicUsize::new(gs.len());
         Shared {
             clock: Clock::new(mode, period),
             slots,
@@ -178,13 +182,74 @@ impl Shared {
     /// Locks group `g` (`GROUP_PARAMETER_ERR` when no such group runs). The groups share
     /// one lock (see `Shared::groups`): never call this while holding a group.
     pub fn group(&self, g: u16) -> McclResult<MappedMutexGuard<'_, GroupState>> {
-        let slot = self
-            .slots
-            .get(usize::from(g))
-            .copied()
-            .flatten()
-            .ok_or(McclError::Group)?;
-        self.nth_group(slot).ok_or(McclError::Group)
+        let gs = self.lock_groups();
+        let n = self.position_of(g).ok_or(McclError::Group)?;
+        MutexGuard::try_map(gs, |gs| gs.get_mut(n)).map_err(|_| McclError::Group)
+    }
+
+    /// The position in `groups` of group slot `g`, when it runs.
+    fn position_of(&self, g: u16) -> Option<usize> {
+        let n = self.slots.get(usize::from(g))?.load(Ordering::Acquire);
+        usize::try_from(n).ok()
+    }
+
+    /// `MCC_CreateGroup` while the card runs: group `slot` runs from now on with `def`,
+    /// its axes where their channels' pulse counts put them (as the vendor's library
+    /// starts a group made then), and the channels it shares with older groups are its
+    /// own from now on.
+    pub fn open_group(&self, slot: usize, def: GroupDef, mac: &MacTable) {
+        let mut machine = self.lock_machine();
+        machine.catch_up();
+        let mut gs = self.lock_groups();
+        let mut g = GroupState::new(slot, def, axes_of(&def, mac), self.clock.period_s());
+        g.start_at_channels(&machine.cards);
+        if let Some(t) = self.trace.lock().as_mut() {
+            t.start_group(&mut g, mac, &machine);
+        }
+        // A husk of the same slot first (so that no other entry publishes as `slot`),
+        // then any husk, then a new entry.
+        let husk = |want: Option<usize>| {
+            (0..gs.len()).find(|&n| {
+                let idx = gs[n].index;
+                self.position_of(idx as u16) != Some(n) && want.is_none_or(|w| w == idx)
+            })
+        };
+        let n = match husk(Some(slot)).or_else(|| husk(None)) {
+            Some(n) => {
+                gs[n] = g;
+                n
+            }
+            None => {
+                gs.push(g);
+                self.group_count.store(gs.len(), Ordering::Release);
+                gs.len() - 1
+            }
+        };
+        self.slots[slot].store(n as i32, Ordering::Release);
+        self.remap_channels(&mut gs);
+        self.publish(&mut gs[n]);
+    }
+
+    /// `MCC_CloseGroup` while the card runs: group `slot` stops where it stands and goes;
+    /// its channels keep their pulse counts.
+    pub fn close_group(&self, slot: usize, mac: &MacTable) {
+        let mut gs = self.lock_groups();
+        let Some(n) = self.position_of(slot as u16) else {
+            return;
+        };
+        let husk = GroupDef::none(gs[n].def.card);
+        gs[n] = GroupState::new(slot, husk, axes_of(&husk, mac), self.clock.period_s());
+        self.slots[slot].store(-1, Ordering::Release);
+        self.status[slot].store(-1, Ordering::Release);
+        self.remap_channels(&mut gs);
+    }
+
+    /// Which group commands which channel, after the groups changed.
+    fn remap_channels(&self, gs: &mut [GroupState]) {
+        let commanded = commanding_axes(gs);
+        for (g, c) in gs.iter_mut().zip(commanded) {
+            g.commanded = c;
+        }
     }
 
     /// Locks the simulated machine (lock order: before the groups).
@@ -199,7 +264,7 @@ impl Shared {
 
     /// Number of running groups (positions 0.. in the groups' lock).
     pub(super) fn group_count(&self) -> usize {
-        self.group_count
+        self.group_count.load(Ordering::Acquire)
     }
 
     /// Locks the group at position `n` of the running groups (not its slot): for the
@@ -216,9 +281,14 @@ impl Shared {
         }
     }
 
+    /// Whether `card` is an MC3B.
+    pub fn is_mc3b(&self, card: usize) -> bool {
+        card < 32 && self.mc3b_cards.load(Ordering::Acquire) >> card & 1 == 1
+    }
+
     /// Whether group `g` runs.
     pub fn has_group(&self, g: u16) -> bool {
-        self.slots.get(usize::from(g)).copied().flatten().is_some()
+        self.position_of(g).is_some()
     }
 
     /// The last published state of group `g`, without locking.

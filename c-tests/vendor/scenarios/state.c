@@ -415,6 +415,62 @@ static void reinit_after(void)
     CI(MCC_CloseSystem);
 }
 
+/* The group table across init and close: none created, then one kept over a close. */
+static int groups_table(void)
+{
+    vd_mac_default(10000);
+    CI(MCC_CloseAllGroups);
+    vd_init(1);
+    vd_note("GetFeedSpeed(0) %.17g", V(MCC_GetFeedSpeed)(0));
+    vd_note("GetCmdQueueSize(0) %d", V(MCC_GetCmdQueueSize)(0));
+    CI(MCC_SetFeedSpeed, 10, 0);
+    CI(MCC_CloseSystem);
+    CI(MCC_CreateGroup, 0, 1, -1, -1, -1, -1, -1, -1, 0);
+    vd_init(1);
+    vd_note("GetFeedSpeed(0) %.17g", V(MCC_GetFeedSpeed)(0));
+    CI(MCC_SetFeedSpeed, 10, 0);
+    CI(MCC_CloseSystem);
+    vd_init(1);
+    vd_note("GetFeedSpeed(0) %.17g", V(MCC_GetFeedSpeed)(0));
+    vd_note("GetCmdQueueSize(0) %d", V(MCC_GetCmdQueueSize)(0));
+    CI(MCC_CloseSystem);
+    vd_note("GetFeedSpeed(0) closed %.17g", V(MCC_GetFeedSpeed)(0));
+    CI(MCC_CreateGroup, 0, 1, -1, -1, -1, -1, -1, -1, 0);
+    CI(MCC_CreateGroup, 2, 3, -1, -1, -1, -1, -1, -1, 0);
+    CI(MCC_CloseGroup, 0);
+    CI(MCC_CreateGroup, 4, 5, -1, -1, -1, -1, -1, -1, 0);
+    vd_init(1);
+    vd_note("GetFeedSpeed(0,1,2) %.17g %.17g %.17g", V(MCC_GetFeedSpeed)(0),
+            V(MCC_GetFeedSpeed)(1), V(MCC_GetFeedSpeed)(2));
+    CI(MCC_CloseSystem);
+    return 1;
+}
+
+/* Groups made while the card runs: they move at once, from where their channels are. */
+static void groups_made_running(int t)
+{
+    if (t == 0) {
+        vd_profile('T', 20, 20, 10);
+        LINE(0, 0.1, 0, 0);
+    }
+    if (t == 60) {
+        int g = CI(MCC_CreateGroup, 3, 4, -1, -1, -1, -1, -1, -1, 0);
+        vd_note("group %d", g);
+        if (g >= 0) {
+            CI(MCC_SetFeedSpeed, 10, (WORD)g);
+            LINE((WORD)g, 0.05, 0.02, 0);
+        }
+    }
+    if (t == 120) {
+        double x = -1, y = -1, z, u, v, w, a, b;
+        V(MCC_GetCurPos)(&x, &y, &z, &u, &v, &w, &a, &b, 0);
+        vd_note("group 0 at %.17g %.17g", x, y);
+        V(MCC_GetCurPos)(&x, &y, &z, &u, &v, &w, &a, &b, 1);
+        vd_note("group 1 at %.17g %.17g", x, y);
+        LINE(0, 0, 0, 0);
+    }
+}
+
 static void groups_after_init(int t)
 {
     if (t == 0) {
@@ -671,6 +727,8 @@ const Scenario vd_state[] = {
     {"close_twice", std3, dump_then_line, 0, 1000, close_twice_after},
     {"reinit", std3, dump_then_line, 0, 1000, reinit_after},
     SCEN(groups_after_init, std3, 0, 1000),
+    {"groups_table", groups_table, dump_then_line, 0, 100, 0},
+    SCEN(groups_made_running, std3, 120, 1000),
     {"init_twice", init_twice, dump_then_line, 0, 1000, 0},
     {"create_group_odd", create_group_odd, odd_group_script, 0, 1000, 0},
     SCEN(bad_args, std3, 1, 1000),

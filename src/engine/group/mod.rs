@@ -286,6 +286,24 @@ impl GroupState {
         self.update_status();
     }
 
+    /// A group made while the card runs starts where its channels' pulse counts are.
+    pub fn start_at_channels(&mut self, cards: &[[crate::machine::Channel; AXES]]) {
+        for (i, a) in self.axes.iter().enumerate() {
+            let Some((card, ch)) = a.channel else {
+                continue;
+            };
+            if let Some(chan) = cards.get(card).and_then(|c| c.get(ch)) {
+                if a.factor != 0.0 {
+                    let p = chan.command_pulses() as f64 / a.factor;
+                    self.pos[i] = p;
+                    self.base[i] = p;
+                    self.queue_end[i] = p;
+                }
+            }
+        }
+        self.info_touched();
+    }
+
     /// The planning context: settings, axes and the end of the queue.
     pub fn ctx(&self) -> Ctx<'_> {
         Ctx {
