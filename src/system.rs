@@ -524,33 +524,6 @@ impl System {
         .ok_or(McclError::Group)
     }
 
-    /// `MCC_SetCmdQueueSize`: only while the group has no queued commands (user manual ZH
-    /// §2.3), `COMMAND_NOTFINISHED_ERR` otherwise.
-    pub fn set_queue_size(&mut self, size: i32, g: u16) -> McclResult<()> {
-        let mut def = self.group_def(g)?;
-        let size = usize::try_from(size)
-            .ok()
-            .filter(|s| (1..=crate::config::MAX_QUEUE_SIZE).contains(s))
-            .ok_or(McclError::Parameter)?;
-        let gi = usize::from(g);
-        if let Some(r) = &mut self.running {
-            let shared = r.engine.shared().clone();
-            let mut rt = shared.group(g)?;
-            if rt.busy() || rt.queued() > 0 {
-                return Err(McclError::NotFinished);
-            }
-            def.queue_size = size;
-            rt.def = def;
-            if let Some(e) = r.groups.iter_mut().find(|(i, _)| *i == gi) {
-                e.1 = def;
-            }
-        }
-        def.queue_size = size;
-        // The default group becomes an explicit one so the size survives the next init.
-        self.config.groups[gi] = Some(def);
-        Ok(())
-    }
-
     /// `MCC_GetConvFactor`: pulses per user unit of a channel with the mechanism
     /// parameters in effect ([`System::mac_in_effect`]).
     /// Negative when the channel's output is reversed (`wPosToEncoderDir` nonzero), as

@@ -139,15 +139,19 @@ pub extern "C" fn MCC_GetCmdQueueSize(wGroupIndex: WORD) -> c_int {
     }
 }
 
-/// Changes a group's queue capacity; only while no commands are queued.
+/// Changes no queue, as the vendor's library answers (measured, before init and after,
+/// for existing groups and others): `GROUP_PARAMETER_ERR` for a size below 1, else
+/// `RUN_TIME_ERR`. A queue's size is set when its group is created
+/// (`MCC_CreateGroupEx`), as the English user manual says (§2.3).
 #[no_mangle]
 pub extern "C" fn MCC_SetCmdQueueSize(nSize: c_int, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        // The vendor's library changes no queue while the card runs.
-        if system::active().is_ok() {
-            return Err(McclError::RunTime);
+        let _ = wGroupIndex;
+        if nSize < 1 {
+            Err(McclError::Group)
+        } else {
+            Err(McclError::RunTime)
         }
-        system::with(|s| s.set_queue_size(nSize, wGroupIndex)).map(|()| c::NO_ERR)
     }
 }
 

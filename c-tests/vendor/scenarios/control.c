@@ -209,6 +209,34 @@ static void queue_resize(int t)
     }
 }
 
+/* The queue size set before init: which sizes and groups are taken. */
+static int queue_size_before_init(void)
+{
+    vd_mac_default(10000);
+    CI(MCC_CloseAllGroups);
+    CI(MCC_CreateGroup, 0, 1, 2, -1, -1, -1, -1, -1, 0);
+    vd_note("GetCmdQueueSize %d", V(MCC_GetCmdQueueSize)(0));
+    CI(MCC_SetCmdQueueSize, 0, 0);
+    CI(MCC_SetCmdQueueSize, -1, 0);
+    CI(MCC_SetCmdQueueSize, 2000000, 0);
+    CI(MCC_SetCmdQueueSize, 5, 1);
+    CI(MCC_SetCmdQueueSize, 5, 0);
+    vd_note("GetCmdQueueSize %d", V(MCC_GetCmdQueueSize)(0));
+    return vd_init(1) < 0;
+}
+
+static void queue_size_small(int t)
+{
+    if (t == 0) {
+        vd_note("GetCmdQueueSize %d", V(MCC_GetCmdQueueSize)(0));
+        vd_profile('T', 10, 10, 10);
+        for (int i = 0; i < 7; i++)
+            LINE(0, 0.01 * (i + 1), 0, 0);
+        CI(MCC_SetCmdQueueSize, -1, 0);
+        CI(MCC_SetCmdQueueSize, 3, 1);
+    }
+}
+
 /* Several groups at once. */
 static int two_groups(void)
 {
@@ -401,6 +429,7 @@ const Scenario vd_control[] = {
     SCEN(delay_alone, std3, 10, 4000),
     SCEN(queue_full, small_queue, 50, 4000),
     SCEN(queue_count, std3, 80, 4000),
+    {"queue_size_before_init", queue_size_before_init, queue_size_small, 0, 1000, 0},
     SCEN(queue_resize, std3, 0, 4000),
     SCEN(groups_two, two_groups, 200, 4000),
     SCEN(groups_four, four_groups, 100, 4000),
