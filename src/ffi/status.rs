@@ -75,8 +75,8 @@ pub extern "C" fn MCC_SetCommandIndex(
 }
 
 pointer_fns! {
-    /// The index the last queued command got (0 before any), as the vendor's library
-    /// answers.
+    /// The index of the last command started (0 before any; one queued and not started
+    /// yet does not count), as the vendor's library answers.
     MCC_GetCommandIndex(wIndex: WORD; wGroupIndex) = write_out(wIndex, || {
         let n = super::with_group(wGroupIndex, |g| Ok(g.last_command_index()))?;
         Ok(n as WORD)

@@ -123,14 +123,11 @@ impl GroupState {
         self.cmd_index.next
     }
 
-    /// The index the last queued command got (`MCC_GetCommandIndex`, as the vendor's
-    /// library answers; 0 before any).
+    /// The index of the last command started (`MCC_GetCommandIndex`, as the vendor's
+    /// library answers: a command queued and not started yet does not count; 0 before
+    /// any).
     pub fn last_command_index(&self) -> i32 {
-        if self.cmd_index.auto {
-            (self.cmd_index.next - 1).max(0)
-        } else {
-            self.cmd_index.next
-        }
+        self.cmd_index.last_started.map_or(0, |(i, _)| i)
     }
 
     /// `MCC_ResetCommandIndexLD`.
