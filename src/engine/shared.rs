@@ -39,6 +39,9 @@ pub struct Shared {
     pub(super) tick_len_ns: u64,
     /// Published state per group slot.
     pub(super) snaps: Vec<SnapshotCell>,
+    /// Per group slot and axis: the compensation pulses its channel adds to the command
+    /// (`MCC_UpdateCompParam`), written by the tick while compensation is on.
+    pub(super) comp: Vec<[AtomicI32; AXES]>,
     /// Per group slot: the tick count at its last status poll and last position read
     /// (virtual clocks: a repeated read at the same virtual time is a program waiting).
     pub(super) last_poll: Vec<[AtomicU64; 2]>,
@@ -149,6 +152,9 @@ impl Shared {
             watch: (AtomicI32::new(-1), AtomicI32::new(0)),
             groups: Mutex::new(gs),
             snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
+            comp: (0..GROUPS)
+                .map(|_| std::array::from_fn(|_| AtomicI32::new(0)))
+                .collect(),
             cards: machine.cards.len(),
             machine: Mutex::new(machine),
             lock_wanted: AtomicU32::new(0),
@@ -278,6 +284,23 @@ impl Shared {
     pub fn mark_mc3b(&self, card: usize) {
         if card < 32 {
             self.mc3b_cards.fetch_or(1 << card, Ordering::AcqRel);
+        }
+    }
+
+    /// The compensation pulses each axis of group `g` has (0 without compensation).
+    pub fn compensation(&self, g: u16) -> [i64; 8] {
+        match self.comp.get(usize::from(g)) {
+            Some(c) => std::array::from_fn(|i| i64::from(c[i].load(Ordering::Acquire))),
+            None => [0; 8],
+        }
+    }
+
+    /// Publishes what [`GroupState::read_compensation`] found.
+    pub(super) fn store_compensation(&self, g: &GroupState) {
+        if let Some(c) = self.comp.get(g.index) {
+            for (cell, v) in c.iter().zip(g.comp_pulses()) {
+                cell.store(v, Ordering::Release);
+            }
         }
     }
 

@@ -347,16 +347,24 @@ impl SnapshotCell {
     /// Reads the position as the machine counts it (`MCC_GetCurPos`, which programs call
     /// in tight loops): the pulse count in UU, from the position's 8 words and the info's
     /// frame.
-    pub fn load_machine_pos(&self) -> Axes {
+    /// `comp`: the compensation pulses of each axis's channel, which the vendor's library
+    /// counts into this position.
+    pub fn load_machine_pos(&self, comp: &[i64; 8]) -> Axes {
         let (offset, factor) = self.load_frame();
-        ref_of(&self.load_exact_pos(), &offset, &factor)
+        let exact = self.load_exact_pos();
+        let p = pulses_of(&exact, &offset, &factor);
+        std::array::from_fn(|k| {
+            pulses_to_pos(p[k] + comp[k], factor[k], exact[k] + offset[k])
+        })
     }
 
     /// Reads the pulse position from the position and the info's offsets and pulses per
-    /// UU, as [`SnapshotCell::load`] makes it (`MCC_GetPulsePos`).
-    pub fn load_pulses(&self) -> [i64; 8] {
+    /// UU, as [`SnapshotCell::load`] makes it, with the compensation pulses `comp` added
+    /// (`MCC_GetPulsePos`).
+    pub fn load_pulses(&self, comp: &[i64; 8]) -> [i64; 8] {
         let (offset, factor) = self.load_frame();
-        pulses_of(&self.load_exact_pos(), &offset, &factor)
+        let p = pulses_of(&self.load_exact_pos(), &offset, &factor);
+        std::array::from_fn(|k| p[k] + comp[k])
     }
 
     /// The info's offsets (reference minus user position) and pulses per UU, per axis.
@@ -440,7 +448,7 @@ mod tests {
         assert_eq!(cell.load_status(), 2);
         assert_eq!(cell.load_pos(), m.pos);
         assert_eq!(cell.load_ref_pos(), s.ref_pos);
-        assert_eq!(cell.load_pulses(), s.pulses);
+        assert_eq!(cell.load_pulses(&[0; 8]), s.pulses);
     }
 
     #[test]

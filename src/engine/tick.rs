@@ -102,6 +102,10 @@ impl Shared {
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
                 g.command_channels(&mut machine.cards);
+                if machine.compensating() || g.comp_pulses() != [0; AXES] {
+                    g.read_compensation(&mut machine.cards);
+                    self.store_compensation(g);
+                }
             }
             self.publish_or_status(g, full);
             if let Some(t) = trace.as_deref_mut() {

@@ -27,13 +27,14 @@ pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
 }
 
 /// The position of group `g` as the machine counts it (its pulses in UU, with the shift
-/// `MCC_DefineOrigin` made); for a kinematic group the forward kinematics of its joints.
+/// `MCC_DefineOrigin` made and the compensation its channels add, as the vendor's library
+/// counts it); for a kinematic group the forward kinematics of its joints.
 fn cur_pos(g: WORD) -> McclResult<[f64; 8]> {
     let shared = system::active()?;
     shared.poll_position(g);
     match super::kinematics::cur_pos(&shared, g)? {
         Some(cart) => Ok(cart),
-        None => Ok(shared.published(g)?.load_machine_pos()),
+        None => Ok(shared.published(g)?.load_machine_pos(&shared.compensation(g))),
     }
 }
 
@@ -43,7 +44,7 @@ fn pulse_pos(g: WORD) -> McclResult<[i64; 8]> {
     let published = shared.published(g)?;
     match super::kinematics::joint_pulses(&shared, g)? {
         Some(joints) => Ok(joints),
-        None => Ok(published.load_pulses()),
+        None => Ok(published.load_pulses(&shared.compensation(g))),
     }
 }
 

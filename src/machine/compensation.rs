@@ -80,8 +80,11 @@ impl Compensation {
             i64::from(table[k as usize]),
             i64::from(table[k as usize + 1]),
         );
-        // (int)(into / interval x (b - a)): truncation toward zero, as the manual's C.
-        a + (into * (b - a)) / self.interval
+        // The straight line between the two points, rounded to the nearest pulse (halves
+        // up), as the vendor's library counts (measured: 5.5 pulses into a segment from
+        // 0 to 11 and from 11 to 0 both count 6).
+        let x = (a * self.interval + into * (b - a)) as f64 / self.interval as f64;
+        (x + 0.5).floor() as i64
     }
 }
 

@@ -418,6 +418,17 @@ impl Channel {
         self.update_sensors();
     }
 
+    /// The compensation pulses added to the command set this tick (0 without
+    /// compensation), as the next step adds them.
+    pub fn compensation_now(&mut self) -> i32 {
+        if self.comp.active() {
+            let c = self.comp.offset(self.next);
+            c.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+        } else {
+            0
+        }
+    }
+
     /// New compensation tables (`MCC_UpdateCompParam`).
     pub fn set_compensation(&mut self, p: &SYS_COMP_PARAM) {
         self.resting = false;
@@ -866,6 +877,8 @@ pub struct Machine {
     pub triggers: Vec<triggers::CardTriggers>,
     /// Some channel's pulse speed or acceleration limit is below the default.
     pub pulse_limits_set: bool,
+    /// Some channel compensates ([`Machine::apply_compensation`]).
+    compensating: bool,
     /// The steps channels defer, while some may ([`deferred`]).
     deferred: Option<deferred::DeferredSteps>,
     /// The channels known to record their deferred steps ([`deferred::Recording`]).
@@ -927,6 +940,16 @@ impl Machine {
                 }
             }
         }
+        self.compensating = self
+            .cards
+            .iter()
+            .flatten()
+            .any(|c| c.comp.active());
+    }
+
+    /// Whether a channel compensates (`MCC_UpdateCompParam`).
+    pub fn compensating(&self) -> bool {
+        self.compensating
     }
 
     /// The servo-on output of channel `ch` of card `cd` (`servo_on`: the card's servo-on
@@ -961,6 +984,7 @@ impl Machine {
             settings: vec![CardSettings::default(); n],
             triggers: vec![triggers::CardTriggers::default(); n],
             pulse_limits_set: false,
+            compensating: false,
             deferred: None,
             recording: deferred::Recording::default(),
         }

@@ -316,6 +316,23 @@ static void softlimit_line(int t)
     }
 }
 
+/* Moves that end exactly on a soft limit, from both sides. */
+static void softlimit_exact(int t)
+{
+    if (t == 0) {
+        CI(MCC_SetOverTravelCheck, 1, 1, 1, 0, 0, 0, 0, 0, 0);
+        vd_profile('T', 20, 20, 10);
+        LINE(0, 1, 0.5, 0);
+        LINE(0, -1, -1, 0);
+        LINE(0, 0.25, 1, 0);
+    }
+    if (t == 700) {
+        CI(MCC_ClearError, 0);
+        LINE(0, 0, 0, 0);
+        LINE(0, 0, -1.000001, 0);
+    }
+}
+
 static void softlimit_off(int t)
 {
     if (t == 0) {
@@ -435,6 +452,7 @@ const Scenario vd_control[] = {
     SCEN(groups_four, four_groups, 100, 4000),
     SCEN(softlimit_line, soft_limits, 400, 4000),
     SCEN(softlimit_off, soft_limits, 0, 4000),
+    SCEN(softlimit_exact, soft_limits, 700, 4000),
     SCEN(softlimit_jog, soft_limits, 0, 4000),
     SCEN(pulse_rate_error, ppr_huge, 200, 2000),
     SCEN(max_pulse_speed, std3, 0, 4000),

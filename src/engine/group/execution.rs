@@ -317,9 +317,12 @@ impl GroupState {
     }
 
     /// An idle period: the speeds stay as the last command left them, the feed speed
-    /// reads 0.
+    /// reads 0, unless an error stopped the group (the vendor's library then keeps
+    /// reading the speeds of its last period, the feed speed too).
     fn vel_hold_idle(&mut self) {
-        self.feed_now = 0.0;
+        if self.error == 0 {
+            self.feed_now = 0.0;
+        }
     }
 
     /// How many of the next ticks, up to `max`, change nothing but positions and speeds:
@@ -708,6 +711,8 @@ impl GroupState {
             }
         }
         self.feed_now = match self.running.back() {
+            // Stopped by an error: the last period's feed speed stays (`vel_hold_idle`).
+            None if self.error != 0 => self.feed_now,
             None => 0.0,
             Some(r) => match (&r.progress, &r.cmd.plan) {
                 (Progress::Axes { master, .. }, _) => self.vel[*master].abs(),

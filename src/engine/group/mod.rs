@@ -159,6 +159,8 @@ pub struct GroupState {
     inpos_status: [u8; AXES],
     /// Custom commands started and not cleaned up yet (`custom.rs`).
     custom: custom::CustomSide,
+    /// Compensation pulses per axis ([`GroupState::read_compensation`]).
+    comp: [i32; AXES],
     /// When the pulse counters of the commanded channels restart from 0
     /// ([`GroupState::reset_motion`]).
     rezero: Rezero,
@@ -231,6 +233,7 @@ impl GroupState {
             trace_notes: None,
             custom: custom::CustomSide::default(),
             rezero: Rezero::No,
+            comp: [0; AXES],
             post: None,
             kin: None,
         }

@@ -119,6 +119,23 @@ impl GroupState {
         }
     }
 
+    /// The compensation pulses the channels it commands add to their commands this tick
+    /// (0 for the others), kept for [`GroupState::comp_pulses`].
+    pub fn read_compensation(&mut self, cards: &mut [[Channel; AXES]]) {
+        let mut comp = [0; AXES];
+        if let Some(chans) = cards.get_mut(self.commanded.card()) {
+            for (i, ch) in self.commanded.pairs() {
+                comp[i] = chans[ch].compensation_now();
+            }
+        }
+        self.comp = comp;
+    }
+
+    /// The compensation pulses per axis of the last [`GroupState::read_compensation`].
+    pub fn comp_pulses(&self) -> [i32; AXES] {
+        self.comp
+    }
+
     /// The part of the published state that changes every tick.
     #[inline]
     pub fn motion(&self) -> Motion {
