@@ -1,7 +1,9 @@
 //! Jog motion (user manual ZH §2.6.2 III; vendor header "Jog Motion"), as the vendor's
-//! library runs it: `MCC_JogSpace` and `MCC_JogConti` are queued point-to-point moves of
-//! one axis, `MCC_JogPulse` moves the axis its pulses at once; each requires the group to
-//! be stopped (`COMMAND_NOTFINISHED_ERR` otherwise). `cAxis` is the axis's number.
+//! library runs it: `MCC_JogSpace` and `MCC_JogConti` are point-to-point moves of one axis
+//! queued like any command (behind what runs), `MCC_JogPulse` moves the axis its pulses
+//! at once and only while the group stands still (`COMMAND_NOTFINISHED_ERR` otherwise).
+//! `cAxis` is the axis's number, checked first; an axis the group lacks is
+//! `GROUP_PARAMETER_ERR`.
 
 use super::{axis, finite, with_group};
 use crate::error::{McclError, McclResult};
@@ -29,9 +31,7 @@ fn jog(
     target: impl FnOnce(f64, &crate::engine::command::AxisMech) -> f64,
 ) -> McclResult<c_int> {
     with_group(g, |grp| {
-        if grp.busy() {
-            return Err(McclError::NotFinished);
-        }
+        grp.own_axis(a)?;
         let ctx = grp.ctx();
         let mut to = ctx.from;
         to[a] = target(ctx.from[a], &ctx.axes[a]);
@@ -51,6 +51,7 @@ pub extern "C" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) 
             return Err(McclError::Parameter);
         }
         with_group(wGroupIndex, |grp| {
+            grp.own_axis(a)?;
             grp.jog_pulses(a, nPulse)?;
             Ok(c::NO_ERR)
         })
@@ -66,9 +67,9 @@ pub extern "C" fn MCC_JogSpace(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
+        let a = axis(cAxis)?;
         let off = finite(dfOffset)?;
         let r = ratio(dfRatio)?;
-        let a = axis(cAxis)?;
         jog(wGroupIndex, a, Some(r), |from, _| from + off)
     }
 }
@@ -83,16 +84,19 @@ pub extern "C" fn MCC_JogConti(
     wGroupIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
+        let a = axis(cAxis)?;
         if nDir != 1 && nDir != -1 {
             return Err(McclError::Parameter);
         }
         let r = ratio(dfRatio)?;
-        let a = axis(cAxis)?;
+        // As far as the work zone's bound is from 0, from where the axis is (the
+        // vendor's library, measured: from 0.1 with a high limit of 50,000 it heads for
+        // 50,000.1).
         jog(wGroupIndex, a, Some(r), |from, m| {
             if nDir > 0 {
-                m.high.max(from)
+                from + m.high
             } else {
-                m.low.min(from)
+                from + m.low
             }
         })
         .map(|i| i.max(c::NO_ERR))

@@ -273,6 +273,26 @@ static void ptp_feed_axis(int t)
         PTP(0, 0, 0, -1);
 }
 
+/* A timed abort of a PtP at cruise, of two lengths, and of a PtP still accelerating. */
+static void ptp_abortex(int t)
+{
+    if (t == 0) {
+        vd_profile('T', 20, 20, 10);
+        CD(MCC_SetPtPSpeed, 20, 0);
+        PTP(0, 5, 2, 0);
+    }
+    if (t == 300)
+        CI(MCC_AbortMotionEx, 0.1, 0);
+    if (t == 500)
+        PTP(0, 0, 0, 0);
+    if (t == 800)
+        CI(MCC_AbortMotionEx, 0.004, 0);
+    if (t == 900)
+        PTP(0, 5, 2, 0);
+    if (t == 1000)
+        CI(MCC_AbortMotionEx, 0.02, 0);
+}
+
 static void jog_bad_axis(int t)
 {
     if (t == 0) {
@@ -287,6 +307,7 @@ static void jog_bad_axis(int t)
 
 const Scenario vd_ptp[] = {
     SCEN(ptp_default, std3, 0, 8000),
+    SCEN(ptp_abortex, std3, 1000, 8000),
     SCEN(ptp_10, std3, 0, 8000),
     SCEN(ptp_50, std3, 0, 8000),
     SCEN(ptp_100, std3, 0, 8000),

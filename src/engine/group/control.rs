@@ -80,9 +80,15 @@ impl GroupState {
                 continue;
             }
             // A motion in its last deceleration keeps it (it stops where it ends).
-            let finishing = r.path_track().is_some_and(|t| t.in_final_decel());
-            if !finishing {
-                let d = dec_s.unwrap_or(r.cmd.dec_ms / 1000.0);
+            if !r.in_final_decel() {
+                let d = match dec_s {
+                    // The vendor's library reads a timed abort's time as milliseconds
+                    // for a PtP (measured: 0.1 s and 0.02 s both stop a PtP within the
+                    // ramp of 1 ms).
+                    Some(s) if abort && r.is_ptp() => crate::planner::whole_ms(s) / 1000.0,
+                    Some(s) => s,
+                    None => r.cmd.dec_ms / 1000.0,
+                };
                 r.stop_tracks(d);
             }
             r.stage = Stage::Stopping { abort };

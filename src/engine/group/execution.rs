@@ -166,6 +166,21 @@ impl Running {
         )
     }
 
+    /// Whether it is in its last deceleration: its path's, or its master axis's for a
+    /// PtP (a hold or abort then lets it end where it ends).
+    pub(super) fn in_final_decel(&self) -> bool {
+        match &self.progress {
+            Progress::Path { track, .. } => track.in_final_decel(),
+            Progress::Axes { tracks, master, .. } => tracks[*master].in_final_decel(),
+            _ => false,
+        }
+    }
+
+    /// Whether it is a point-to-point move.
+    pub(super) fn is_ptp(&self) -> bool {
+        matches!(self.cmd.plan, Plan::Ptp(_))
+    }
+
     /// Every track decelerates to a stop over `dec_s` ([`Track::stop`]).
     pub(super) fn stop_tracks(&mut self, dec_s: f64) {
         for t in self.tracks_mut() {

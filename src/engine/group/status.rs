@@ -31,6 +31,10 @@ impl GroupState {
         });
         self.status = if !active {
             if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd | Mode::Aborting) {
+                if self.mode == Mode::Aborting {
+                    // A timed abort stopped off the plan: what comes next starts here.
+                    self.queue_end = self.pos;
+                }
                 self.mode = Mode::Normal;
             }
             c::GMS_STOP
