@@ -36,8 +36,10 @@ const INPOS_PERIODS: u8 = 3;
 /// Held periods from which the status reads `GMS_HOLD` (a timed abort then ends).
 pub(super) const HOLD_SHOWN_AFTER: u32 = 3;
 
-/// Periods a jog by pulses keeps the group running: the jump, then two at rest.
-pub(super) const JUMP_PERIODS: u8 = 3;
+/// Periods a jog by pulses keeps the group's status running, as the vendor's library
+/// shows it (measured): the jump's period, then two at rest (and the status reads one
+/// period late, as after any command).
+pub(super) const JUMP_PERIODS: u8 = 4;
 
 /// How a running command advances.
 #[derive(Debug, Clone)]
