@@ -387,7 +387,7 @@ mod tests {
     fn motion_stored_from_its_parts_lies_in_its_words_and_reads_back() {
         let mut m = Motion {
             status: -3,
-            compose: 0b1000_0101,
+            feed: 2.5,
             ..Default::default()
         };
         for k in 0..8 {
@@ -395,19 +395,19 @@ mod tests {
             m.vel[k] = 7.0 / (k as f64 + 1.0);
         }
         let c = SnapshotCell::default();
-        c.store_motion_parts(m.status, &m.pos, &m.vel, m.compose);
+        c.store_motion_parts(m.status, &m.pos, &m.vel, m.feed);
         // Word 0 the status (its 32 bits), 1..=8 the positions, 9..=16 the velocities,
-        // 17 the compose mask.
+        // 17 the feed speed.
         let mut words = [0u64; MOTION_WORDS];
         words[0] = 0xFFFF_FFFD;
         for k in 0..8 {
             words[1 + k] = m.pos[k].to_bits();
             words[9 + k] = m.vel[k].to_bits();
         }
-        words[17] = 0b1000_0101;
+        words[17] = 2.5f64.to_bits();
         assert_eq!(c.motion.load(), words);
         assert_eq!(c.load_motion(), m);
-        assert_eq!(c.load_pos(), m.pos);
+        assert_eq!(c.load_exact_pos(), m.pos);
         assert_eq!(c.load_status(), -3);
     }
 
@@ -415,7 +415,7 @@ mod tests {
     fn round_trip() {
         let mut m = Motion {
             status: 2,
-            compose: 0b1011,
+            feed: 4.0,
             ..Default::default()
         };
         m.pos[3] = -1.25;
@@ -446,9 +446,15 @@ mod tests {
         assert_eq!(cell.load_motion(), m);
         assert_eq!(cell.load_info(), i);
         assert_eq!(cell.load_status(), 2);
-        assert_eq!(cell.load_pos(), m.pos);
-        assert_eq!(cell.load_ref_pos(), s.ref_pos);
+        assert_eq!(cell.load_exact_pos(), m.pos);
+        assert_eq!(cell.load_machine_pos(&[0; 8]), s.ref_pos);
+        assert_eq!(cell.load_program_pos(), s.pos);
         assert_eq!(cell.load_pulses(&[0; 8]), s.pulses);
+        // Compensation pulses count into the machine's position and pulses only.
+        let comp = [3, 0, 0, 0, 0, 0, 0, 0];
+        assert_eq!(cell.load_pulses(&comp)[0], s.pulses[0] + 3);
+        assert_eq!(cell.load_machine_pos(&comp)[0], s.ref_pos[0] + 3.0 / 500.0);
+        assert_eq!(cell.load_program_pos()[0], s.pos[0]);
     }
 
     #[test]
@@ -476,7 +482,7 @@ mod tests {
         for _ in 0..20_000 {
             let s = cell.load();
             assert!(s.pos.iter().chain(s.vel.iter()).all(|&x| x == s.pos[0]));
-            let p = cell.load_pos();
+            let p = cell.load_exact_pos();
             assert!(p.iter().all(|&x| x == p[0]), "{p:?}");
         }
         writer.join().unwrap();

@@ -293,6 +293,37 @@ static void ptp_abortex(int t)
         CI(MCC_AbortMotionEx, 0.02, 0);
 }
 
+/* What a jog by pulses leaves behind: which commands it refuses after, and what clears it. */
+static void jog_pulse_after(int t)
+{
+    if (t == 0)
+        CI(MCC_JogPulse, 100, 0, 0);
+    if (t == 20) {
+        LINE(0, 0.1, 0, 0);
+        CI(MCC_JogSpace, 0.1, 20, 1, 0);
+        CI(MCC_JogConti, 1, 20, 1, 0);
+        PTP(0, 0.1, 0, 0);
+        CI(MCC_DelayMotion, 5, 0);
+        CI(MCC_ArcXY, 0.2, 0.1, 0.3, 0, 0);
+        vd_note("GetMotionStatus %d", V(MCC_GetMotionStatus)(0));
+        vd_note("GetErrorCode %d", V(MCC_GetErrorCode)(0));
+        CI(MCC_JogPulse, 10, 1, 0);
+    }
+    if (t == 40) {
+        LINE(0, 0.1, 0, 0);
+        CI(MCC_ClearError, 0);
+        LINE(0, 0.1, 0, 0);
+        CI(MCC_AbortMotion, 0, 0);
+        LINE(0, 0.1, 0, 0);
+        CI(MCC_ResetMotion);
+        LINE(0, 0.1, 0, 0);
+    }
+    if (t == 60) {
+        CI(MCC_AbortMotionEx, 0.01, 0);
+        LINE(0, 0.2, 0, 0);
+    }
+}
+
 static void jog_bad_axis(int t)
 {
     if (t == 0) {
@@ -308,6 +339,7 @@ static void jog_bad_axis(int t)
 const Scenario vd_ptp[] = {
     SCEN(ptp_default, std3, 0, 8000),
     SCEN(ptp_abortex, std3, 1000, 8000),
+    SCEN(jog_pulse_after, std3, 60, 8000),
     SCEN(ptp_10, std3, 0, 8000),
     SCEN(ptp_50, std3, 0, 8000),
     SCEN(ptp_100, std3, 0, 8000),

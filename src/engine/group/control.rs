@@ -138,6 +138,9 @@ impl GroupState {
         self.feed_now = 0.0;
         if lag && was_busy {
             self.lag = 1;
+            // Until that period has passed the abort is not finished: the vendor's
+            // library refuses commands meanwhile (`ABORT_NOT_FINISH_ERR`, measured).
+            self.mode = Mode::Aborting;
         }
         self.update_status();
     }

@@ -239,19 +239,26 @@ mod tests {
         g.set_inpos_tolerances_pulses([10; AXES]);
         assert_eq!(g.inpos.tolerance, [0.01; AXES]);
         assert_eq!(g.inpos_tolerances_pulses(), [10; AXES]);
-        g.set_inpos_tolerances([70.0; AXES]).unwrap();
+        g.set_inpos_tolerances([70.0; AXES]);
         assert_eq!(g.inpos_tolerances_pulses(), [65535; AXES]);
     }
 
     #[test]
-    fn a_tolerance_outside_the_position_range_changes_nothing() {
-        // 2e12 UU x 1000 pulses per UU = 2e15 pulses, beyond the 1e15 of "Ranges".
-        let mut g = group(1000.0);
-        g.set_inpos_tolerances([0.5; AXES]).unwrap();
-        let mut v = [0.25; AXES];
-        v[7] = 2e12;
-        assert_eq!(g.set_inpos_tolerances(v), Err(McclError::Parameter));
-        assert_eq!(g.inpos.tolerance, [0.5; AXES]);
+    fn tolerances_are_kept_as_the_vendors_library_keeps_them() {
+        // Measured (scenario setters_inpos_group, 10,000 pulses per UU): -1 UU reads 1;
+        // 1e6 UU (1e10 pulses, beyond 32 bits) and NaN read 2^31 pulses = 214748.3648.
+        let mut g = group(10_000.0);
+        let mut v = [0.5; AXES];
+        v[0] = -1.0;
+        v[1] = 1e6;
+        v[2] = f64::NAN;
+        v[3] = 0.123_456_78;
+        g.set_inpos_tolerances(v);
+        assert_eq!(g.inpos.tolerance[0], 1.0);
+        assert_eq!(g.inpos.tolerance[1], 214_748.3648);
+        assert_eq!(g.inpos.tolerance[2], 214_748.3648);
+        // 1234.5678 pulses: whole pulses, truncated.
+        assert_eq!(g.inpos.tolerance[3], 0.1234);
     }
 
     #[test]

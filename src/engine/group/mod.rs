@@ -267,8 +267,18 @@ impl GroupState {
     /// where it stopped, with one more running period, until its next command starts
     /// from 0.
     pub fn reset_motion(&mut self) {
+        if self.mode == Mode::Aborting && self.running.is_empty() {
+            // An abort at once has stopped it and is not finished yet: the vendor's
+            // library then keeps its position (measured, jog_pulse_after) and restarts
+            // only the command indices.
+            self.cmd_index = CommandIndex::default();
+            self.info_touched();
+            return;
+        }
         let busy = self.busy();
         self.abort_now(true);
+        // Stopped by a reset, not an abort: nothing waits for it to finish.
+        self.mode = Mode::Normal;
         self.clear_error();
         self.override_pct = 100.0;
         self.override_next = None;

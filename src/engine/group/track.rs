@@ -83,11 +83,6 @@ impl Track {
         }
     }
 
-    /// The whole length.
-    pub(crate) fn len(&self) -> f64 {
-        self.len
-    }
-
     /// Whether the running stretch has ended.
     #[inline]
     pub(crate) fn stretch_done(&self) -> bool {
@@ -174,11 +169,6 @@ impl Track {
     /// then changes nothing).
     pub(crate) fn in_final_decel(&self) -> bool {
         self.k > self.profile.decel_start() && self.s0 + self.profile.len() >= self.len
-    }
-
-    /// The feed the track runs at.
-    pub(crate) fn feed(&self) -> f64 {
-        self.feed
     }
 
     fn restart(&mut self, profile: TickProfile) {
