@@ -513,15 +513,12 @@ mod tests {
     #[test]
     fn group_rules() {
         assert!(GroupDef::new([0, 1, 2, -1, -1, -1, -1, -1], 0, 10000).is_ok());
-        assert_eq!(
-            GroupDef::new([-1; 8], 0, 10000),
-            Err(McclError::Group),
-            "at least one axis must be mapped"
-        );
+        // A group of no axis is a group: the vendor's library creates it (returns 0).
+        assert!(GroupDef::new([-1; 8], 0, 10000).is_ok());
         assert_eq!(
             GroupDef::new([0, 0, -1, -1, -1, -1, -1, -1], 0, 10000),
-            Err(McclError::Group),
-            "two axes on one channel"
+            Err(McclError::Parameter),
+            "two axes on one channel (as the vendor's library answers)"
         );
         assert_eq!(
             GroupDef::new([8, -1, -1, -1, -1, -1, -1, -1], 0, 10000),
@@ -551,13 +548,21 @@ mod tests {
     #[test]
     fn lowest_free_slot_and_full_table() {
         let mut cfg = Config::default();
-        let def = GroupDef::new([0, -1, -1, -1, -1, -1, -1, -1], 0, 10).unwrap();
+        // One channel each: 12 cards x 8 channels are the 96 slots; a group of no axis
+        // then finds none free. A channel another group has is refused first.
+        let one = |i: usize| {
+            let mut map = [-1; 8];
+            map[0] = (i % AXES) as i32;
+            GroupDef::new(map, (i / AXES) as i32, 10).unwrap()
+        };
         for i in 0..GROUPS {
-            assert_eq!(cfg.create_group(def), Ok(i));
+            assert_eq!(cfg.create_group(one(i)), Ok(i));
         }
-        assert_eq!(cfg.create_group(def), Err(McclError::Group));
+        let none = GroupDef::new([-1; 8], 0, 10).unwrap();
+        assert_eq!(cfg.create_group(none), Err(McclError::Group));
+        assert_eq!(cfg.create_group(one(3)), Err(McclError::Parameter));
         cfg.groups[5] = None;
-        assert_eq!(cfg.create_group(def), Ok(5));
+        assert_eq!(cfg.create_group(one(5)), Ok(5));
     }
 
     #[test]
@@ -606,10 +611,20 @@ mod tests {
                 ..good
             },
             SYS_MAC_PARAM {
-                wPosToEncoderDir: 2,
+                dfHighLimit: -1.0,
+                ..good
+            },
+            SYS_MAC_PARAM {
+                dfLowLimit: 1.0,
                 ..good
             },
         ];
+        // Any direction is taken (nonzero reverses), as the vendor's library takes it.
+        let dir2 = SYS_MAC_PARAM {
+            wPosToEncoderDir: 2,
+            ..good
+        };
+        assert_eq!(validate_mac_param(&dir2), Ok(()));
         for b in bad {
             assert_eq!(validate_mac_param(&b), Err(McclError::Parameter), "{b:?}");
         }

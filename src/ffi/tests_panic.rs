@@ -62,9 +62,10 @@ fn a_panic_while_queueing_stops_the_group_with_a_record_and_the_next_move_is_exa
         2,
         "the next command index follows the failed one"
     );
-    // From X=2 to X=5: 3 UU at 10 UU/s with 100 ms ramps = 0.3 s + 0.1 s = 400 ticks.
-    // Planned from X=10 it would be 5 UU: 600 ticks.
-    assert_eq!(ticks_until_stop(5000), 400);
+    // From X=2 to X=5: 3 UU at 10 UU/s with 100 ms ramps = 0.3 s + 0.1 s = 400 ticks
+    // of motion, and the status reads STOP three periods after the last, as the
+    // vendor's library shows it: 403. Planned from X=10 it would be 5 UU: 603 ticks.
+    assert_eq!(ticks_until_stop(5000), 403);
     assert_eq!(x(0), 5.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

@@ -115,10 +115,11 @@ mod tests {
         let mut c = Compensation::new(&manual_example());
         assert_eq!(c.offset(0), 0, "home point");
         assert_eq!(c.offset(10000), 10, "point 5");
-        assert_eq!(c.offset(25000), 13, "12 + 5000/10000 x 3 = 13.5 -> 13");
+        // Halves round up, as the vendor's library counts (scenario `compensation`).
+        assert_eq!(c.offset(25000), 14, "12 + 5000/10000 x 3 = 13.5 -> 14");
         assert_eq!(c.offset(30000), 15, "point 7");
         // Past the measured points the table holds zeros (the manual: the table must
-        // cover the whole travel): 15 + (int)(5000/10000 x -15) = 15 - 7 = 8.
+        // cover the whole travel): 15 + 5000/10000 x -15 = 7.5 -> 8.
         assert_eq!(c.offset(35000), 8);
         assert_eq!(c.offset(10_000_000), 0, "beyond point 255: the last entry");
         // Moving back uses the backward table (all zero here).

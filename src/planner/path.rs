@@ -831,8 +831,10 @@ mod tests {
                 "radius at s={s}: {}",
                 norm3(radial)
             );
-            // Chord between samples never longer than the arc step.
-            let chord = norm3(sub3([q[0], q[1], q[2]], [prev[0], prev[1], prev[2]]));
+            // Chord between samples, in the plane, never longer than the arc step (the
+            // length is the arc's in the plane; a helix rises besides).
+            let step = sub3([q[0], q[1], q[2]], [prev[0], prev[1], prev[2]]);
+            let chord = norm3(sub3(step, scale3(axis, dot3(step, axis))));
             assert!(chord <= len / n as f64 * (1.0 + 1e-9) + 1e-12);
             prev = q;
             // Tangent check by central difference (interior).
@@ -846,7 +848,9 @@ mod tests {
                         "tangent axis {i}"
                     );
                 }
-                let unit = norm3([dir[0], dir[1], dir[2]]);
+                // Per unit of the length (the arc in the plane): unit in the plane.
+                let d3 = [dir[0], dir[1], dir[2]];
+                let unit = norm3(sub3(d3, scale3(axis, dot3(d3, axis))));
                 assert!(close(unit, 1.0, 1e-12));
             }
         }
@@ -1190,11 +1194,12 @@ mod tests {
     fn helix_end_point_and_length() {
         // XY helix, R = 2 about (0,0), from (2,0,0), pitch 3 per turn, θ = 450°:
         // Z travel = 3 * 450/360 = 3.75; end angle 90° -> (0, 2, 3.75).
-        // Length = sqrt((2 * 2.5π)² + 3.75²).
+        // Length: the arc in the plane, 2 * 2.5π, as the vendor's library measures a
+        // helix (its feed runs along the arc; the rise follows the angle).
         let start = ax(2.0, 0.0, 0.0);
         let p = Path::helix(Plane::XY, &start, [0.0, 0.0], 3.0, 450.0, None).unwrap();
         assert_axes_close(&p.end(), &ax(0.0, 2.0, 3.75), 1e-12);
-        let expect = ((2.0 * 2.5 * PI).powi(2) + 3.75f64.powi(2)).sqrt();
+        let expect = 2.0 * 2.5 * PI;
         assert!(close(p.length(), expect, 1e-12));
         assert_eq!(p.point(p.length()), p.end());
         // Z is linear in the angle: after one full turn (fraction 360/450) z = 3, back at (2, 0).
@@ -1206,7 +1211,9 @@ mod tests {
         assert!(matches!(&p, Path::Helix(_)));
         assert_eq!(p.is_ccw(), Some(true));
         check_on_circle(&p, [0.0; 3], [0.0, 0.0, 1.0], 2.0);
-        // CW helix in YZ (normal X) with negative pitch: X travel = -1 * (-180)/360 = +0.5.
+        // CW helix in YZ (normal X) with negative pitch: X travel = -1 * |-180|/360 = -0.5
+        // (the rise follows the pitch's sign, whichever way the helix turns, as the
+        // vendor's library moves it).
         let start = [0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0];
         let p = Path::helix(
             Plane::YZ,
@@ -1217,12 +1224,12 @@ mod tests {
             Some([0.0, 6.0, 0.0, 0.0, 0.0]),
         )
         .unwrap();
-        assert_axes_close(&p.end(), &[0.5, 0.0, -1.0, 0.0, 6.0, 0.0, 0.0, 0.0], 1e-12);
-        assert!(close(p.length(), (PI * PI + 0.25f64).sqrt(), 1e-12));
-        // Half way: angle from +Z (90° in YZ) by −90° -> +Y, X = 0.25, V = 3.
+        assert_axes_close(&p.end(), &[-0.5, 0.0, -1.0, 0.0, 6.0, 0.0, 0.0, 0.0], 1e-12);
+        assert!(close(p.length(), PI, 1e-12));
+        // Half way: angle from +Z (90° in YZ) by −90° -> +Y, X = -0.25, V = 3.
         assert_axes_close(
             &p.point(p.length() / 2.0),
-            &[0.25, 1.0, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0],
+            &[-0.25, 1.0, 0.0, 0.0, 3.0, 0.0, 0.0, 0.0],
             1e-12,
         );
         check_on_circle(&p, [0.0; 3], [1.0, 0.0, 0.0], 1.0);
@@ -1239,7 +1246,7 @@ mod tests {
         assert_eq!(p.end()[2], 5.0);
         assert!(close(p.end()[0], -1.0, 1e-12) && close(p.end()[1], 0.0, 1e-12));
         assert_eq!(p.is_ccw(), Some(false));
-        let expect = ((2.0 * 2.5 * PI).powi(2) + 25.0).sqrt();
+        let expect = 2.0 * 2.5 * PI;
         assert!(close(p.length(), expect, 1e-12));
         assert!(matches!(
             Path::helix_to(Plane::XY, &start, [0.0, 0.0], 5.0, 0.0, false, None),

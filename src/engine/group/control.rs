@@ -136,7 +136,8 @@ impl GroupState {
         self.stop_here();
         self.vel = [0.0; AXES];
         self.feed_now = 0.0;
-        if lag && was_busy {
+        // An external executor (the MC3B) reports its own stop: no period to show.
+        if lag && was_busy && self.external.is_none() {
             self.lag = 1;
             // Until that period has passed the abort is not finished: the vendor's
             // library refuses commands meanwhile (`ABORT_NOT_FINISH_ERR`, measured).

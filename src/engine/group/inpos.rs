@@ -218,17 +218,17 @@ mod tests {
     use crate::engine::command::AxisMech;
     use crate::error::McclError;
 
-    /// A group of eight unmapped axes of `factor` pulses per UU.
+    /// A group of eight axes on channels 0..7 of card 0, `factor` pulses per UU each.
     fn group(factor: f64) -> GroupState {
         let def = GroupDef::new([0, 1, 2, 3, 4, 5, 6, 7], 0, 10).unwrap();
-        let axis = AxisMech {
-            channel: None,
+        let axes = std::array::from_fn(|i| AxisMech {
+            channel: Some((0, i)),
             factor,
             safe_speed: 1.0,
             high: 1e9,
             low: -1e9,
-        };
-        GroupState::new(0, def, [axis; AXES], 0.001)
+        });
+        GroupState::new(0, def, axes, 0.001)
     }
 
     #[test]

@@ -458,19 +458,15 @@ mod tests {
                 published = Some(info);
             }
         }
-        // The first tick starts the line (the first publication), then the two phase
-        // changes about 100 and 1000 ticks later, then the end about 1100 ticks in.
-        assert_eq!(changes.len(), 4, "changes at ticks {changes:?}");
-        assert_eq!(changes[0], 1);
-        assert!((99..=101).contains(&changes[1]), "{changes:?}");
-        assert!((999..=1001).contains(&changes[2]), "{changes:?}");
-        assert!((1099..=1102).contains(&changes[3]), "{changes:?}");
+        // The first tick starts the line (the first publication) in its acceleration
+        // (phase 11), then cruise (13) 100 ticks later, deceleration (12) 900 after,
+        // the period that ends it (21) 100 after, and the next, with nothing running
+        // (the vendor's library reads type 0, phase 0 then).
+        assert_eq!(changes, [1, 101, 1001, 1101, 1102]);
         let line = crate::engine::command::ctype::LINE;
         assert_eq!(
-            phases[..3],
-            [(line, 0), (line, 1), (line, 2)],
-            "phases 0, 1, 2"
+            phases,
+            [(line, 11), (line, 13), (line, 12), (line, 21), (0, 0)]
         );
-        assert_eq!(phases[3].0, -1, "nothing running at the end");
     }
 }

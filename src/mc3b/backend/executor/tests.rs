@@ -265,13 +265,15 @@ fn a_silent_device_stops_the_group_with_an_error_record() {
     assert_eq!(r.g.queued(), 0);
     // Nothing moved (the device went silent while being configured).
     assert!(close(r.pos(), [0.0, 0.0]));
-    // Commands may be queued; none runs until the error is cleared.
-    r.line(1.0, 0.0).expect("line");
+    // No command is taken until the error is cleared (as the vendor's library
+    // answers: RUN_TIME_ERR), and nothing reaches the device.
+    assert_eq!(r.line(1.0, 0.0), Err(McclError::RunTime));
     r.g.tick(0.001);
     assert!(!r.w.run_pending());
-    assert_eq!(r.g.status(), c::GMS_HOLD);
+    assert_eq!(r.g.status(), c::GMS_STOP);
     r.w.transport().mute_after = None;
     r.g.clear_error();
+    r.line(1.0, 0.0).expect("line");
     r.run();
     assert_eq!(r.dev(), [100, 0, 0]);
 }
