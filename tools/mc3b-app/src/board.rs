@@ -157,7 +157,7 @@ struct View<'a> {
 }
 
 /// A client error in words: the device's refusals in the words of §6.19.
-pub fn words(e: &ClientError, what: &str, timeout: Duration) -> String {
+fn words(e: &ClientError, what: &str, timeout: Duration) -> String {
     match e {
         ClientError::Device(code) => format!(
             "the MC3B refused {what}: error {} ({})",
@@ -263,7 +263,7 @@ impl Board {
     }
 
     /// Publishes the state for the page.
-    pub fn publish(&mut self) {
+    fn publish(&mut self) {
         let conn = self.conn.as_ref();
         let motors = (0..MOTORS)
             .map(|m| {
@@ -417,7 +417,7 @@ impl Board {
 
     /// Polls the three motors and the limit inputs; reconciles the model and the
     /// manual control with what the board says.
-    pub fn poll(&mut self) {
+    fn poll(&mut self) {
         self.next_poll = Instant::now() + POLL_PERIOD;
         if let Some(c) = self.conn.as_mut() {
             c.moved_since_poll = false;
@@ -497,7 +497,7 @@ impl Board {
     }
 
     /// Stops the flagged motors (`S`), best effort each; ends their manual control.
-    pub fn stop(&mut self, motors: [bool; MOTORS], reason: &str) -> String {
+    fn stop(&mut self, motors: [bool; MOTORS], reason: &str) -> String {
         if self.conn.is_none() {
             return "no MC3B connected: nothing to stop".into();
         }
@@ -552,7 +552,7 @@ impl Board {
     /// Brings manual control to the sliders' speeds (§5.5: free-running, §4.12, with
     /// on-the-fly changes of velocity and direction, §4.6, §6.4). Speed 0 stops the
     /// motor. Failures go to the event log (the slider's request has been answered).
-    pub fn manual(&mut self, targets: [Option<i32>; MOTORS]) {
+    fn manual(&mut self, targets: [Option<i32>; MOTORS]) {
         for (m, t) in targets.iter().enumerate() {
             let Some(speed) = *t else { continue };
             if let Err(e) = self.manual_one(m, speed) {
@@ -677,7 +677,7 @@ impl Board {
     }
 
     /// Carries out a checked operation.
-    pub fn execute(&mut self, op: Op) -> Reply {
+    fn execute(&mut self, op: Op) -> Reply {
         match op {
             Op::Connect(path) => self.connect(&path),
             Op::Disconnect => {

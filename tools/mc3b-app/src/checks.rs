@@ -212,7 +212,7 @@ pub enum Checked {
 
 /// A whole number typed in `field`, within `range`; `what` names the value and `unit`
 /// and `section` say where the range comes from.
-pub fn whole(
+fn whole(
     field: &str,
     what: &str,
     text: &str,
@@ -287,7 +287,7 @@ impl Errors {
 
 /// The set parameters dialog's values, checked (§6.2-§6.5, §6.16, and §5.3: one limit
 /// box per direction at most).
-pub fn params(form: &ParamsForm) -> Result<MotorParams, Vec<FieldError>> {
+fn params(form: &ParamsForm) -> Result<MotorParams, Vec<FieldError>> {
     let mut e = Errors(Vec::new());
     let v = e.take(whole(
         "max_velocity",

@@ -10,7 +10,7 @@
 //! passes the token on as a referrer.
 //!
 //! Routes: `GET /` the page; `GET /api/state` the state; `GET /api/events` the state as
-//! server-sent events every [`PUSH_EVERY`]; `GET /api/ports` the serial ports;
+//! server-sent events, each new state and at least every [`PUSH_EVERY`]; `GET /api/ports` the serial ports;
 //! `GET /api/params?motor=M` a motor's parameter record; `POST /api/heartbeat`;
 //! `POST /api/bye` (the page closes); `POST /api/action` a request of the page
 //! (JSON, see [`crate::checks::Action`]).
@@ -35,7 +35,7 @@ use crate::shared::{Refusal, Shared};
 pub const MAX_BODY: usize = 16 * 1024;
 /// Event streams open at once (pages); one more is answered `503`.
 pub const MAX_STREAMS: usize = 8;
-/// Time between two events of a stream (each carries the whole state).
+/// Longest time between two events of a stream (each carries the whole state).
 pub const PUSH_EVERY: Duration = Duration::from_millis(100);
 /// Threads that answer requests (an event stream gets a thread of its own).
 pub const WORKERS: usize = 4;
@@ -66,14 +66,14 @@ pub struct Http {
 }
 
 /// 16 random bytes from the operating system as 32 hex digits.
-pub fn new_token() -> Result<String, String> {
+fn new_token() -> Result<String, String> {
     let mut b = [0u8; 16];
     getrandom::fill(&mut b).map_err(|e| format!("no random bytes for the token: {e}"))?;
     Ok(b.iter().map(|x| format!("{x:02x}")).collect())
 }
 
 /// Compares without stopping at the first difference.
-pub fn same(a: &[u8], b: &[u8]) -> bool {
+fn same(a: &[u8], b: &[u8]) -> bool {
     a.len() == b.len() && a.iter().zip(b).fold(0u8, |d, (x, y)| d | (x ^ y)) == 0
 }
 
@@ -161,7 +161,7 @@ impl Http {
 }
 
 /// Answers one request.
-pub fn handle(mut rq: Request, token: &str, shared: &Arc<Shared>) {
+fn handle(mut rq: Request, token: &str, shared: &Arc<Shared>) {
     let url = rq.url().to_string();
     let (path, query) = url.split_once('?').unwrap_or((url.as_str(), ""));
     let given = rq
@@ -312,8 +312,8 @@ fn action(body: &[u8], shared: &Arc<Shared>) -> Response<std::io::Cursor<Vec<u8>
     }
 }
 
-/// A page's event stream: the state every [`PUSH_EVERY`] until writing fails, then the
-/// page counts as gone.
+/// A page's event stream: each new state, and the last one again after [`PUSH_EVERY`],
+/// until writing fails; then the page counts as gone.
 fn stream(rq: Request, shared: &Arc<Shared>) {
     if shared.stream_opened(MAX_STREAMS).is_none() {
         let _ = rq.respond(json_response(
@@ -338,13 +338,12 @@ fn stream(rq: Request, shared: &Arc<Shared>) {
             let mut ok = w.write_all(head.as_bytes()).and_then(|_| w.flush()).is_ok();
             let mut seq = 0;
             while ok && !shared.shutting_down() {
+                // A new state as soon as there is one, the last one again after
+                // PUSH_EVERY: a broken connection is found within that time.
                 let (s, snap) = shared.wait_snapshot(seq, PUSH_EVERY);
                 seq = s;
                 let data = format!("data: {}\n\n", snap.as_deref().unwrap_or("{}"));
                 ok = w.write_all(data.as_bytes()).and_then(|_| w.flush()).is_ok();
-                if ok {
-                    std::thread::sleep(PUSH_EVERY.saturating_sub(Duration::from_millis(5)));
-                }
             }
             drop(w);
             shared.stream_closed();
