@@ -7,7 +7,7 @@ EXAMPLE ?= GeneralMotion
 MCCL_CLOCK ?= fast
 export MCCL_CLOCK
 
-.PHONY: deps build example test bench headers docs-image docs-panel clean fuzz
+.PHONY: deps build example test bench headers docs-image docs-panel docs-mc3b mc3b-demo clean fuzz
 
 deps:
 	@scripts/install-deps.sh
@@ -49,6 +49,18 @@ docs-image: build
 # panel_browser test's run of panel_demo under the realtime clock in headless Chromium.
 docs-panel: build
 	python3 c-tests/scripts/panel_browser.py $(BUILD)/c-tests/panel_demo --screenshot docs/panel.png
+
+# Regenerate the pictures of docs/mc3b.md, docs/mc3b-*.png, one per dialog of mc3b-app
+# (commit them): the mc3b_app_browser test's run in headless Chromium, which otherwise
+# checks them for drift.
+docs-mc3b: build
+	python3 c-tests/scripts/mc3b_app_browser.py $(BUILD)/cargo/release --screenshots docs
+
+# mc3b-app against mc3b-emu on a pseudo-terminal: prints the page's address; lines typed
+# here go to the emulator's control channel (`input 0 1`: limit input 0 at +5 V; see
+# mc3b-emu --help). Ctrl-C ends both (the application first turns the motors off).
+mc3b-demo: build
+	@scripts/mc3b-demo.sh $(BUILD)/cargo/release
 
 clean:
 	rm -rf $(BUILD)

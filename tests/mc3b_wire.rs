@@ -170,6 +170,96 @@ fn device_errors_over_the_pty() {
     assert!(matches!(c.query_limits(3), Err(ClientError::Timeout)));
 }
 
+/// The control commands that show what the device holds: `settings`, `velocity`,
+/// `received`. Values set over the line come back as sent.
+#[test]
+fn control_channel_shows_settings_speeds_and_frames() {
+    let mut emu = Emu::spawn();
+    let mut c = connect(&emu);
+    let id = 0;
+    assert_eq!(
+        emu.ctl("settings 1"),
+        "settings v=1000 a=5000 d=5000 half=1 hold=0 ih=500 ir=2000 masks=0,0,0,0 \
+         modifier=0 debounce=1 chain=0",
+        "the defaults of §6.1"
+    );
+    for cmd in [
+        Command::SetMaxVelocity {
+            id,
+            motor: 1,
+            value: 400,
+            direction_modifier: Some(1),
+        },
+        Command::SetAcceleration {
+            id,
+            motor: 1,
+            value: 100_000,
+        },
+        Command::SetDeceleration {
+            id,
+            motor: 1,
+            value: 700,
+        },
+        Command::SetHalfStep {
+            id,
+            motor: 1,
+            half: 0,
+        },
+        Command::SetHoldingCurrent {
+            id,
+            motor: 1,
+            enable: 1,
+        },
+        Command::SetCurrentLimits {
+            id,
+            motor: 1,
+            holding: 300,
+            running: 1200,
+        },
+        Command::SetLimits {
+            id,
+            motor: 1,
+            h0_and: 4,
+            h0_xor: 0,
+            h1_and: 16,
+            h1_xor: 16,
+        },
+        Command::SetDebounce { id, count: 9 },
+        Command::SyncMove {
+            id,
+            steps: [1, 0, 0],
+            directions: [0, 0, 0],
+            execute: Some(0),
+        },
+    ] {
+        c.command(&cmd).unwrap_or_else(|e| panic!("{cmd:?}: {e}"));
+    }
+    assert_eq!(
+        emu.ctl("settings 1"),
+        "settings v=400 a=100000 d=700 half=0 hold=1 ih=300 ir=1200 masks=4,0,16,16 \
+         modifier=1 debounce=9 chain=1"
+    );
+    assert!(emu.ctl("settings 3").starts_with("err"));
+    // Free run of motor 1 in direction 1 with modifier 1: travel in direction 0
+    // (§6.4). At 100000 steps/s² it is at 400 steps/s after 4 ms; 100 ms is plenty.
+    c.command(&Command::Run {
+        id,
+        motor: 1,
+        direction: 1,
+    })
+    .expect("R");
+    std::thread::sleep(Duration::from_millis(100));
+    assert_eq!(emu.ctl("velocity"), "velocity 0.0 400.0 0.0");
+    c.command(&Command::Stop { id, motor: 1 }).expect("S");
+    assert_eq!(emu.ctl("velocity"), "velocity 0.0 0.0 0.0");
+    let r = emu.ctl("received");
+    assert!(
+        r.starts_with("received I=0 A=1 D=1 V=1 L=1 F=1 R=1 M=0 H=0 G=0 S=1 Y=1 Q=0 B=0 "),
+        "{r}"
+    );
+    assert!(r.ends_with(" C=1 K=1 N=1 P=0"), "{r}");
+}
+
 #[test]
 fn help_and_control_channel() {
     let out = Proc::new(env!("CARGO_BIN_EXE_mc3b-emu"))
@@ -184,6 +274,9 @@ fn help_and_control_channel() {
         "home <motor",
         "pos",
         "state",
+        "velocity",
+        "settings <motor",
+        "received",
         "quit",
     ] {
         assert!(help.contains(word), "--help lacks {word}");

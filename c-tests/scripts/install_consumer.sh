@@ -12,6 +12,7 @@ for f in libMCCLPCI_IMP.so libMCCLPCI_IMP.a libMCCLPCI_IMP.dll.so MCCLPCI_IMP.dl
 done
 [ "$(readlink "$lib/MCCLPCI_IMP.dll.so")" = libMCCLPCI_IMP.so ] || { echo "bad .NET alias"; exit 1; }
 "$tmp/prefix/bin/mccl-trace" --help >/dev/null || { echo "mccl-trace not installed or not runnable"; exit 1; }
+"$tmp/prefix/bin/mc3b-app" --help >/dev/null || { echo "mc3b-app not installed or not runnable"; exit 1; }
 for h in MCCL.h MCCL_Fun.h mccl.h mcl.h; do
   [ -e "$tmp/prefix/include/mccl/$h" ] || { echo "missing header $h"; exit 1; }
 done

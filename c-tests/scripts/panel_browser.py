@@ -14,109 +14,22 @@ Standard library only. Every wait has a deadline and the whole run an alarm: a f
 a message and exit status 1, never a hang. Chromedriver, Chromium and the program are
 ended in every case.
 """
-import base64
-import json
 import os
 import re
 import shutil
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
 import threading
 import time
-import urllib.error
-import urllib.request
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from webdriver import NAME, fail, need_browser, start_chromedriver, wait_for  # noqa: E402
+
+NAME[0] = "panel_browser"
 TOTAL_S = 200          # the whole run (CTest's TIMEOUT is 240)
-CALL_S = 60            # one WebDriver call (a loaded 2-core host starts Chromium slowly)
-
-
-def fail(msg):
-    print("panel_browser: FAIL: " + msg, flush=True)
-    raise SystemExit(1)
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-class Driver:
-    """The few WebDriver calls used here."""
-
-    def __init__(self, port):
-        self.base = f"http://127.0.0.1:{port}"
-        self.sid = None
-
-    def call(self, method, path, body=None):
-        data = None if body is None else json.dumps(body).encode()
-        req = urllib.request.Request(self.base + path, data=data, method=method,
-                                     headers={"Content-Type": "application/json"})
-        try:
-            with urllib.request.urlopen(req, timeout=CALL_S) as r:
-                return json.loads(r.read() or b"{}").get("value")
-        except urllib.error.HTTPError as e:
-            fail(f"WebDriver {method} {path}: {e.code} {e.read()[:400]!r}")
-        except (urllib.error.URLError, OSError) as e:
-            fail(f"WebDriver {method} {path}: {e}")
-
-    def wait_ready(self, deadline):
-        while time.monotonic() < deadline:
-            try:
-                with urllib.request.urlopen(self.base + "/status", timeout=5) as r:
-                    if json.loads(r.read())["value"].get("ready"):
-                        return
-            except (OSError, ValueError, KeyError):
-                pass
-            time.sleep(0.2)
-        fail("chromedriver did not become ready")
-
-    def session(self, profile):
-        args = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
-                "--no-first-run", "--disable-background-networking",
-                "--disable-component-update", "--disable-sync", "--disable-dev-shm-usage",
-                "--window-size=1500,1050", f"--user-data-dir={profile}"]
-        opts = {"args": args}
-        binary = shutil.which("chromium")
-        if binary:
-            opts["binary"] = binary
-        v = self.call("POST", "/session", {"capabilities": {"alwaysMatch": {
-            "browserName": "chrome", "goog:chromeOptions": opts,
-            "timeouts": {"script": 20000, "pageLoad": 60000}}}})
-        self.sid = v["sessionId"]
-
-    def s(self, path):
-        return f"/session/{self.sid}{path}"
-
-    def js(self, script, *args):
-        return self.call("POST", self.s("/execute/sync"), {"script": script, "args": list(args)})
-
-    def click(self, css):
-        el = self.call("POST", self.s("/element"), {"using": "css selector", "value": css})
-        eid = next(iter(el.values()))
-        self.call("POST", self.s(f"/element/{eid}/click"), {})
-
-    def quit(self):
-        if self.sid:
-            try:
-                req = urllib.request.Request(self.base + self.s(""), method="DELETE")
-                urllib.request.urlopen(req, timeout=20).read()
-            except OSError:
-                pass
-
-
-def wait_for(what, fn, timeout_s):
-    deadline = time.monotonic() + timeout_s
-    last = None
-    while time.monotonic() < deadline:
-        last = fn()
-        if last:
-            return last
-        time.sleep(0.2)
-    fail(f"{what} (within {timeout_s} s; last seen {last!r})")
 
 
 STATE_JS = """
@@ -138,10 +51,7 @@ def main():
         fail("usage: panel_browser.py PANEL_DEMO [--screenshot out.png]")
     demo = sys.argv[1]
     shot = sys.argv[sys.argv.index("--screenshot") + 1] if "--screenshot" in sys.argv else None
-    for exe in ("chromium", "chromedriver"):
-        if not shutil.which(exe):
-            fail(f"{exe} not found: install Debian's chromium and chromium-driver "
-                 "(scripts/install-deps.sh does)")
+    need_browser()
     signal.signal(signal.SIGALRM, lambda *_: fail(f"the whole run took over {TOTAL_S} s"))
     signal.alarm(TOTAL_S)
 
@@ -168,12 +78,7 @@ def main():
         url = wait_for("the program prints the panel's URL", lambda: url_box and url_box[0], 20)
         print("panel_browser: panel at", re.sub(r"token=\w+", "token=…", url), flush=True)
 
-        port = free_port()
-        cd = subprocess.Popen(["chromedriver", f"--port={port}"], stdout=subprocess.DEVNULL,
-                              stderr=subprocess.DEVNULL)
-        procs.append(cd)
-        drv = Driver(port)
-        drv.wait_ready(time.monotonic() + 30)
+        drv, _ = start_chromedriver(procs)
         drv.session(profile)
         drv.call("POST", drv.s("/url"), {"url": url})
 
@@ -206,7 +111,7 @@ def main():
             fail(f"status before the emergency stop: {drawn['status']!r}")
         if shot:
             time.sleep(4)   # some more path for the picture
-            png = base64.b64decode(drv.call("GET", drv.s("/screenshot")))
+            png = drv.screenshot()
             with open(shot, "wb") as f:
                 f.write(png)
             print("panel_browser: screenshot", shot, len(png), "bytes", flush=True)

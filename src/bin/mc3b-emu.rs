@@ -6,6 +6,7 @@ use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 use serialport::{SerialPort, TTYPort};
+use MCCLPCI_IMP::mc3b::codec::CommandCode;
 use MCCLPCI_IMP::mc3b::emulator::Emulator;
 
 /// Usage and control-channel documentation.
@@ -21,7 +22,7 @@ MC3B ASCII command set (User's Guide section 6); the emulated device runs in
 real time with its limit inputs sampled at 1 kHz.
 
 CONTROL CHANNEL (stdin, one command per line; each gets one reply line on
-stdout, starting with 'ok', 'pos', 'state' or 'err'):
+stdout, starting with 'ok', 'err' or the command's name):
   input <bit 0-5> <0|1>          set one limit input to 0 V (0) or 5 V (1)
   inputs <byte>                  set all limit inputs at once (decimal)
   home <motor 0-2> <dir 0|1> <1|0>
@@ -33,6 +34,16 @@ stdout, starting with 'ok', 'pos', 'state' or 'err'):
                                  (direction 0 counts up)
   state                          reply 'state t_ms=<t> id=<id> running=<r0><r1><r2>
                                  raw=<inputs> debounced=<inputs>'
+  velocity                       reply 'velocity <v0> <v1> <v2>': each motor's speed
+                                 now, steps/s, one decimal, negative in
+                                 direction 1 (a free run's on-the-fly changes)
+  settings <motor 0-2>           reply 'settings v=<max velocity> a=<acc> d=<dec>
+                                 half=<0|1> hold=<0|1> ih=<holding mA>
+                                 ir=<running mA> masks=<h0a>,<h0x>,<h1a>,<h1x>
+                                 modifier=<0|1> debounce=<count> chain=<stored>':
+                                 what the device holds (V, A, D, F, C, K, L, N)
+  received                       reply 'received I=<n> A=<n> ...': frames the
+                                 device handled per command letter, all 18
   quit                           reply 'ok' and exit
 The emulator exits when stdin reaches end of file (so it dies with the
 process that spawned it); run it as `sleep infinity | mc3b-emu` to keep it
@@ -108,6 +119,46 @@ fn control(emu: &mut Emulator, line: &str) -> (String, bool) {
             ),
             false,
         ),
+        Some("velocity") => (
+            format!(
+                "velocity {:.1} {:.1} {:.1}",
+                emu.velocity(0),
+                emu.velocity(1),
+                emu.velocity(2)
+            ),
+            false,
+        ),
+        Some("settings") => match num(1).and_then(|m| emu.settings(m as usize)) {
+            Some(s) => (
+                format!(
+                    "settings v={} a={} d={} half={} hold={} ih={} ir={} masks={},{},{},{} \
+                     modifier={} debounce={} chain={}",
+                    s.max_velocity,
+                    s.acceleration,
+                    s.deceleration,
+                    u8::from(s.half_steps),
+                    u8::from(s.use_holding_current),
+                    s.holding_current,
+                    s.running_current,
+                    s.limit_masks[0],
+                    s.limit_masks[1],
+                    s.limit_masks[2],
+                    s.limit_masks[3],
+                    u8::from(s.direction_modifier),
+                    emu.debounce_count(),
+                    emu.chain_len()
+                ),
+                false,
+            ),
+            None => ("err usage: settings <motor 0-2>".into(), false),
+        },
+        Some("received") => {
+            let counts: Vec<String> = CommandCode::ALL
+                .iter()
+                .map(|&c| format!("{}={}", char::from(c.letter()), emu.received(c)))
+                .collect();
+            (format!("received {}", counts.join(" ")), false)
+        }
         Some("quit") => ("ok".into(), true),
         Some(other) => (format!("err unknown command '{other}'"), false),
     }

@@ -180,6 +180,19 @@ impl ErrorCode {
         }
     }
 
+    /// What the error means, in the words of §6.19.
+    pub fn meaning(self) -> &'static str {
+        match self {
+            ErrorCode::InvalidCommand => "invalid command: command character not recognized",
+            ErrorCode::MotorRunning => "motor running: command must be sent when motor is idle",
+            ErrorCode::WrongParameterCount => {
+                "wrong number of parameters: the exact number of expected parameters must be \
+                 supplied with a command"
+            }
+            ErrorCode::OutOfRange => "parameter out of range",
+        }
+    }
+
     /// Error code for a wire number, or `None`.
     pub fn from_number(n: u32) -> Option<ErrorCode> {
         match n {

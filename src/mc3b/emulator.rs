@@ -300,6 +300,9 @@ pub struct Emulator {
     tick: u64,
     pending: Duration,
     parser: CommandParser,
+    /// Frames handled, per command letter in the order of [`CommandCode::ALL`]: what
+    /// the line carried to this controller (not device state; `I` does not reset it).
+    received: [u64; CommandCode::ALL.len()],
 }
 
 impl Default for Emulator {
@@ -323,6 +326,7 @@ impl Emulator {
             tick: 0,
             pending: Duration::ZERO,
             parser: CommandParser::new(),
+            received: [0; CommandCode::ALL.len()],
         }
     }
 
@@ -420,6 +424,23 @@ impl Emulator {
         self.is_running(m) || self.motors.get(m).is_some_and(|mo| mo.energized)
     }
 
+    /// The limit switch debounce count (`N`, §6.17).
+    pub fn debounce_count(&self) -> u32 {
+        self.debounce_count
+    }
+
+    /// How many well-formed frames with command `code` this controller has handled
+    /// (accepted, or refused with `E1` or `E3`) since it was created: what a test reads
+    /// to see that nothing was sent. Frames for another controller ID are not counted.
+    pub fn received(&self, code: CommandCode) -> u64 {
+        CommandCode::ALL
+            .iter()
+            .position(|&c| c == code)
+            .and_then(|i| self.received.get(i))
+            .copied()
+            .unwrap_or(0)
+    }
+
     /// Number of moves waiting in the chained-move buffer.
     pub fn chain_len(&self) -> usize {
         self.chain.len()
@@ -464,6 +485,16 @@ impl Emulator {
     /// Execute one typed command; `None` when it is not addressed to this
     /// controller.
     pub fn handle(&mut self, cmd: &Command) -> Option<Response> {
+        if matches!(cmd, Command::Initialize { .. }) || cmd.id() == self.id {
+            let code = cmd.code();
+            if let Some(n) = CommandCode::ALL
+                .iter()
+                .position(|&c| c == code)
+                .and_then(|i| self.received.get_mut(i))
+            {
+                *n += 1;
+            }
+        }
         if let Command::Initialize { id } = *cmd {
             self.initialize(id);
             return Some(Response::Ack {
@@ -1155,6 +1186,25 @@ mod tests {
         assert_eq!(send(&mut e, "0Q0"), "");
         assert_eq!(send(&mut e, "3Q0"), "3Q0,0,0|");
         assert!(!e.is_running(0) && !e.is_running(1));
+    }
+
+    #[test]
+    fn received_counts_the_frames_of_each_command() {
+        let mut e = Emulator::new();
+        assert_eq!(send(&mut e, "0V0,6000"), "0E3|");
+        assert_eq!(send(&mut e, "0V1,200"), "0V|");
+        assert_eq!(send(&mut e, "0Q0"), "0Q0,0,0|");
+        assert_eq!(send(&mut e, "1V0,200"), "", "another controller's frame");
+        assert_eq!(e.received(CommandCode::Velocity), 2);
+        assert_eq!(e.received(CommandCode::QueryStatus), 1);
+        assert_eq!(e.received(CommandCode::Move), 0);
+        assert_eq!(send(&mut e, "0N7"), "0N|");
+        assert_eq!(e.debounce_count(), 7);
+        // I resets the device, not the count of what the line carried.
+        assert_eq!(send(&mut e, "0I"), "0I|");
+        assert_eq!(e.debounce_count(), 1);
+        assert_eq!(e.received(CommandCode::Velocity), 2);
+        assert_eq!(e.received(CommandCode::Initialize), 1);
     }
 
     #[test]
