@@ -8,6 +8,8 @@ this library's run with them. Standard library only.
     vtrace.py replay VDIFF LIBRARY STORED [--departures F]
                                                    runs STORED's scenario against LIBRARY
                                                    on the stepped clock and compares
+    vtrace.py check VDIFF TRACES                   every scenario has a trace, every
+                                                   trace and departure a scenario
 
 The raw form (what vdiff writes) has one line per record:
     # NAME                     the scenario
@@ -421,6 +423,27 @@ def cmd_replay(args):
         sys.exit(run_compare(args.stored, read_lines(raw), args.departures))
 
 
+def cmd_check(args):
+    """Every scenario of the runner has a trace and every trace a scenario; every
+    departure names a scenario."""
+    names = subprocess.run([args.vdiff, "--list"], capture_output=True, text=True,
+                           check=True).stdout.split()
+    traces = {f[:-len(".vtrace")] for f in os.listdir(args.traces) if f.endswith(".vtrace")}
+    bad = ["no trace for scenario %s" % n for n in sorted(set(names) - traces)]
+    bad += ["no scenario for trace %s" % t for t in sorted(traces - set(names))]
+    dep = os.path.join(os.path.dirname(os.path.abspath(__file__)), "departures.txt")
+    with open(dep) as f:
+        for line in f:
+            line = line.split("#", 1)[0].split()
+            if line and line[0] not in traces:
+                bad.append("departure for unknown scenario %s" % line[0])
+    for b in bad:
+        print(b)
+    if bad:
+        sys.exit(1)
+    print("%d scenarios, each with its trace" % len(names))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -444,6 +467,10 @@ def main():
     r.add_argument("--departures")
     r.add_argument("--timeout", type=int, default=120)
     r.set_defaults(func=cmd_replay)
+    k = sub.add_parser("check")
+    k.add_argument("vdiff")
+    k.add_argument("traces")
+    k.set_defaults(func=cmd_check)
     args = ap.parse_args()
     args.func(args)
 
