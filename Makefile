@@ -7,7 +7,7 @@ EXAMPLE ?= GeneralMotion
 MCCL_CLOCK ?= fast
 export MCCL_CLOCK
 
-.PHONY: deps build example test bench headers docs-image docs-panel docs-mc3b mc3b-demo clean fuzz
+.PHONY: deps build example test bench headers docs-image docs-panel docs-mc3b mc3b-demo clean fuzz vendor-record
 
 deps:
 	@scripts/install-deps.sh
@@ -74,3 +74,12 @@ FUZZ_WORKERS ?= 100
 FUZZ_ARGS ?=
 fuzz: build
 	$(BUILD)/c-tests/mccl_fuzz --seed $(FUZZ_SEED) --calls $(FUZZ_CALLS) --workers $(FUZZ_WORKERS) --require-routines --keep-going $(FUZZ_ARGS)
+
+# Records the vendor differential scenarios again from the vendor's own 64-bit DLL under
+# wine64 (docs/testing.md "Vendor traces"): make vendor-record VENDOR_DLL=/path/MCCLPCI_IMP3.dll
+# [SCENARIOS="name ..."]. The DLL is read, never copied into the repository.
+VENDOR_DLL ?=
+SCENARIOS ?=
+vendor-record:
+	@test -n "$(VENDOR_DLL)" || { echo "make vendor-record VENDOR_DLL=/path/to/MCCLPCI_IMP3.dll" >&2; exit 2; }
+	tools/vendor-record $(VENDOR_DLL) $(SCENARIOS)
