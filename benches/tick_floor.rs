@@ -23,7 +23,7 @@ mod engine_thread;
 use engine_thread::{cpu_clock_ns, engine_cpu_clock, thread_cpu_ns};
 use std::hint::black_box;
 use std::time::Instant;
-use MCCLPCI_IMP::engine::snapshot::round_pulses;
+use MCCLPCI_IMP::engine::snapshot::whole_pulses;
 use MCCLPCI_IMP::ffi::motion::{MCC_Line, MCC_SetFeedSpeed};
 use MCCLPCI_IMP::ffi::system::*;
 use MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay;
@@ -111,28 +111,37 @@ fn engine_tick_us(live: bool, engine: libc::clockid_t, ticks: u32) -> (f64, f64)
     (us, cpu)
 }
 
-/// Floor time per tick, µs: `groups` moves of 8 axes sampled and rounded to pulses:
-/// (wall, CPU time of this thread).
-fn floor_tick_us(groups: usize, t0: f64, ticks: u32) -> (f64, f64) {
+/// Floor time per tick, µs: `groups` moves of 8 axes, each period's position taken from
+/// its profile (the fraction of the path covered after `k` periods), its speed from the
+/// last period's, and its whole pulses, as the engine computes a moving group:
+/// (wall, CPU time of this thread). `k0` is the period the rounds start at.
+fn floor_tick_us(groups: usize, k0: u64, ticks: u32) -> (f64, f64) {
     let start = [0.0; 8];
     let end = [LEN; 8];
     let moves: Vec<PathMove> = (0..groups)
         .map(|_| {
-            PathMove::new(Path::line(&start, &end), FEED, 0.3, 0.3, Shape::T, Shape::T)
-                .expect("a valid line")
+            PathMove::new(
+                Path::line(&start, &end),
+                FEED,
+                (300, 300),
+                (Shape::T, Shape::T),
+                1e-3,
+            )
         })
         .collect();
-    let mut pos = [0.0; 8];
+    let mut pos = vec![[0.0; 8]; groups];
     let mut vel = [0.0; 8];
     let mut pulses = vec![[0i64; 8]; groups];
     let c = thread_cpu_ns();
     let t = Instant::now();
     for k in 0..ticks {
-        let tk = t0 + f64::from(k) * 1e-3;
-        for (m, p) in moves.iter().zip(pulses.iter_mut()) {
-            m.sample_into(black_box(tk), &mut pos, &mut vel);
-            for (out, x) in p.iter_mut().zip(pos) {
-                *out = round_pulses(x * PULSES_PER_UU);
+        let kk = black_box(k0 + u64::from(k));
+        for ((m, p), out) in moves.iter().zip(pos.iter_mut()).zip(pulses.iter_mut()) {
+            let x = m.path.point_at(m.profile.fraction(kk));
+            for ((v, (q, xi)), o) in vel.iter_mut().zip(p.iter_mut().zip(x)).zip(out.iter_mut()) {
+                *v = (xi - *q) * 1e3;
+                *q = xi;
+                *o = whole_pulses(xi * PULSES_PER_UU);
             }
         }
         black_box(&mut pulses);
@@ -218,7 +227,7 @@ fn measure(groups: u16) -> Measured {
     let ticks = round_ticks(groups);
     for round in 0..ROUNDS {
         let (we, ce) = engine_tick_us(false, engine, ticks);
-        let (wf, cf) = floor_tick_us(usize::from(groups), 1.0 + f64::from(round), ticks);
+        let (wf, cf) = floor_tick_us(usize::from(groups), 1000 + u64::from(round) * 1000, ticks);
         let (wp, cp) = engine_tick_us(true, engine, ticks);
         wall.push(Round {
             engine: we,

@@ -361,11 +361,7 @@ fn attach_mc3b(shared: &Shared, devices: &[crate::mc3b::backend::Device]) {
 
 /// Whether the running system was started by `MCC_InitSimulation`.
 pub fn is_simulation() -> bool {
-    SYSTEM
-        .lock()
-        .running
-        .as_ref()
-        .is_some_and(|r| r.simulation)
+    SYSTEM.lock().running.as_ref().is_some_and(|r| r.simulation)
 }
 
 /// Whether the running system drives an MC3B (a card with `mc3b_port`).

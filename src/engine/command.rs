@@ -47,6 +47,10 @@ pub enum Curve {
 }
 
 /// How a command moves (or what it switches).
+///
+/// Unboxed although its motions are large: commands are queued and run by value in the
+/// group's queue, and a box would cost an allocation for every command queued.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum Plan {
     /// General motion: a path with its speed profile.
@@ -117,7 +121,6 @@ pub struct Command {
 }
 
 impl Command {
-
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
         matches!(
@@ -453,7 +456,11 @@ impl Ctx<'_> {
     /// A delay of `ms` milliseconds: whole periods, rounded up.
     pub fn delay(&self, ms: f64) -> Command {
         let p = self.period_ms();
-        let periods = if p > 0.0 { (ms / p).ceil().max(0.0) as u64 } else { 0 };
+        let periods = if p > 0.0 {
+            (ms / p).ceil().max(0.0) as u64
+        } else {
+            0
+        };
         Command {
             index: 0,
             ctype: ctype::DELAY,

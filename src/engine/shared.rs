@@ -127,7 +127,12 @@ impl Shared {
         let mut gs = Vec::with_capacity(groups.len());
         for (n, (i, d)) in groups.iter().enumerate() {
             slots[*i].store(n as i32, Ordering::Relaxed);
-            gs.push(GroupState::new(*i, *d, axes_of(d, mac), period.as_secs_f64()));
+            gs.push(GroupState::new(
+                *i,
+                *d,
+                axes_of(d, mac),
+                period.as_secs_f64(),
+            ));
         }
         let mut trace = trace;
         if let Some(t) = trace.as_mut() {
@@ -391,10 +396,9 @@ impl Shared {
     /// Whether a group driving channel `ch` of `card` has a command running (the period
     /// the status still reads running after the last command is not one).
     pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
-        self.lock_groups().iter().any(|g| {
-            g.commands_running()
-                && g.axes.iter().any(|a| a.channel == Some((card, ch)))
-        })
+        self.lock_groups()
+            .iter()
+            .any(|g| g.commands_running() && g.axes.iter().any(|a| a.channel == Some((card, ch))))
     }
 
     /// `MCC_ResetMotion`: homing stops and every group resets

@@ -143,7 +143,13 @@ fn ref_of(pos: &Axes, offset: &Axes, factor: &Axes) -> Axes {
 /// reads less the offset.
 fn pos_of(pos: &Axes, offset: &Axes, factor: &Axes) -> Axes {
     let r = ref_of(pos, offset, factor);
-    std::array::from_fn(|k| if offset[k] == 0.0 { r[k] } else { r[k] - offset[k] })
+    std::array::from_fn(|k| {
+        if offset[k] == 0.0 {
+            r[k]
+        } else {
+            r[k] - offset[k]
+        }
+    })
 }
 
 const MOTION_WORDS: usize = 1 + 8 + 8 + 1;
@@ -353,9 +359,7 @@ impl SnapshotCell {
         let (offset, factor) = self.load_frame();
         let exact = self.load_exact_pos();
         let p = pulses_of(&exact, &offset, &factor);
-        std::array::from_fn(|k| {
-            pulses_to_pos(p[k] + comp[k], factor[k], exact[k] + offset[k])
-        })
+        std::array::from_fn(|k| pulses_to_pos(p[k] + comp[k], factor[k], exact[k] + offset[k]))
     }
 
     /// Reads the pulse position from the position and the info's offsets and pulses per

@@ -34,7 +34,9 @@ fn cur_pos(g: WORD) -> McclResult<[f64; 8]> {
     shared.poll_position(g);
     match super::kinematics::cur_pos(&shared, g)? {
         Some(cart) => Ok(cart),
-        None => Ok(shared.published(g)?.load_machine_pos(&shared.compensation(g))),
+        None => Ok(shared
+            .published(g)?
+            .load_machine_pos(&shared.compensation(g))),
     }
 }
 

@@ -2,9 +2,7 @@
 //! examples manual §19; vendor header "Software Over Travel Check & Hardware Limit Switch
 //! Check").
 
-use super::{
-    index, update_group, with_group, with_machine_channel, write_out, Card, Channel,
-};
+use super::{index, update_group, with_group, with_machine_channel, write_out, Card, Channel};
 use crate::engine::safety::limit_check_mode;
 use crate::error::McclResult;
 use crate::system;

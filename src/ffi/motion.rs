@@ -4,8 +4,8 @@
 use super::{
     axis_mask, finite, finite8, queue, queue_curve, read_published, shape, shape_code, with_group,
 };
-use crate::error::{McclError, McclResult};
 use crate::engine::command::Curve;
+use crate::error::{McclError, McclResult};
 use crate::planner::{Axes, Path, Plane};
 use crate::system;
 use crate::vendor::consts as c;
@@ -24,7 +24,8 @@ pub(super) fn direction(byCirDir: BYTE) -> McclResult<bool> {
 /// most the speed range's top, then at most the system maximum (`MCC_SetSysMaxSpeed`).
 pub(super) fn feed_speed(v: f64) -> McclResult<f64> {
     let v = v.abs();
-    if !(v > 0.0) || v > crate::config::range::MAX_SPEED {
+    // NaN fails both comparisons: refused too.
+    if v.is_nan() || v <= 0.0 || v > crate::config::range::MAX_SPEED {
         return Err(McclError::Parameter);
     }
     Ok(system::config(|c| c.feed_speed(v)))

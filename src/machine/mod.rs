@@ -940,11 +940,7 @@ impl Machine {
                 }
             }
         }
-        self.compensating = self
-            .cards
-            .iter()
-            .flatten()
-            .any(|c| c.comp.active());
+        self.compensating = self.cards.iter().flatten().any(|c| c.comp.active());
     }
 
     /// Whether a channel compensates (`MCC_UpdateCompParam`).

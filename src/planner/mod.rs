@@ -29,11 +29,10 @@ mod ptp;
 mod ramp;
 mod ticks;
 
-
 pub use axis1d::Axis1D;
-pub use path_move::PathMove;
 pub use cone::ConeSeg;
 pub use path::{ArcSeg, LineSeg, Path, Plane};
+pub use path_move::PathMove;
 pub use profile::Profile;
 pub use ptp::{ptp_axis_speed, PtpMove};
 pub use ramp::RateRamp;

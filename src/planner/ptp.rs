@@ -48,8 +48,8 @@ impl PtpMove {
         check_all_finite(start, "start position")?;
         check_all_finite(end, "end position")?;
         let mut sign = [1.0; NUM_AXES];
-        let mut profiles = [TickProfile::plan(0.0, 0.0, 1.0, 0, 0, (Shape::T, Shape::T), t);
-            NUM_AXES];
+        let mut profiles =
+            [TickProfile::plan(0.0, 0.0, 1.0, 0, 0, (Shape::T, Shape::T), t); NUM_AXES];
         for i in 0..NUM_AXES {
             let d = end[i] - start[i];
             let len = d.abs();
@@ -62,10 +62,11 @@ impl PtpMove {
             if len == 0.0 {
                 continue;
             }
-            if !(speed[i] > 0.0) || !speed[i].is_finite() {
+            if !speed[i].is_finite() || speed[i] <= 0.0 {
                 return Err(PlanError::BadParameter("speed"));
             }
-            profiles[i] = TickProfile::plan(len, 0.0, speed[i], ramps[i].0, ramps[i].1, shapes[i], t);
+            profiles[i] =
+                TickProfile::plan(len, 0.0, speed[i], ramps[i].0, ramps[i].1, shapes[i], t);
         }
         // The master: the axis with the longest travel for its speed (the vendor's
         // library reads its speed as the move's feed); the first of equals.
@@ -94,7 +95,11 @@ impl PtpMove {
 
     /// Periods until the last axis arrives.
     pub fn periods(&self) -> u64 {
-        self.profiles.iter().map(TickProfile::periods).max().unwrap_or(0)
+        self.profiles
+            .iter()
+            .map(TickProfile::periods)
+            .max()
+            .unwrap_or(0)
     }
 
     /// The axis that sets the pace (and whose speed is the move's feed speed).
@@ -187,8 +192,16 @@ mod tests {
         // The vendor's PtP to (10, 5, 2) at 25 UU/s each, 50 ms S ramps, 1 ms: X arrives
         // after 450 periods, Y after 250, Z after 130 (2 UU at 25: 80 ms + 50).
         let end = [10.0, 5.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0];
-        let m = PtpMove::new(&[0.0; 8], &end, &[25.0; 8], &[(50, 50); 8], &[S2; 8], 0.001, false)
-            .expect("planned");
+        let m = PtpMove::new(
+            &[0.0; 8],
+            &end,
+            &[25.0; 8],
+            &[(50, 50); 8],
+            &[S2; 8],
+            0.001,
+            false,
+        )
+        .expect("planned");
         assert_eq!(m.master(), 0);
         assert_eq!(m.periods(), 450);
         assert_eq!(m.profile(1).periods(), 250);
@@ -201,8 +214,16 @@ mod tests {
     #[test]
     fn synchronised_axes_cover_the_masters_fraction() {
         let end = [10.0, -5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
-        let m = PtpMove::new(&[0.0; 8], &end, &[25.0; 8], &[(50, 50); 8], &[S2; 8], 0.001, true)
-            .expect("planned");
+        let m = PtpMove::new(
+            &[0.0; 8],
+            &end,
+            &[25.0; 8],
+            &[(50, 50); 8],
+            &[S2; 8],
+            0.001,
+            true,
+        )
+        .expect("planned");
         for k in [0, 1, 100, 300, 449] {
             let p = m.position(k);
             assert!((p[1] + p[0] / 2.0).abs() < 1e-12, "period {k}");

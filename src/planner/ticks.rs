@@ -40,7 +40,8 @@ fn ramp_distance(shape: Shape, v: f64, time: f64, t: f64) -> f64 {
 /// [`whole_ms`]).
 pub fn ramp_periods(acc_ms: f64, dec_ms: f64, period_ms: f64) -> (u32, u32) {
     let periods = |ms: f64| -> u32 {
-        if !(ms > 0.0) || !(period_ms > 0.0) {
+        // NaN or not positive: no ramp.
+        if ms.is_nan() || ms <= 0.0 || period_ms.is_nan() || period_ms <= 0.0 {
             return 0;
         }
         let n = (ms / period_ms).ceil();
@@ -267,7 +268,7 @@ impl TickProfile {
             return 1.0;
         }
         let total = self.units(n);
-        if !(total > 0.0) {
+        if total.is_nan() || total <= 0.0 {
             return k as f64 / n as f64;
         }
         self.units(k) / total
@@ -351,7 +352,7 @@ mod tests {
         assert!((p.speed() - len / 1.415).abs() < 1e-12);
         let v = avg_speeds(&p);
         // The vendor's first period: 0.049972210684561653 (path speed).
-        assert!((v[0] - 0.049972210684561653).abs() < 1e-12, "{}", v[0]);
+        assert!((v[0] - 0.049_972_210_684_561_65).abs() < 1e-12, "{}", v[0]);
         assert_eq!(p.distance(1515), len);
     }
 
@@ -362,7 +363,11 @@ mod tests {
         assert_eq!(p.periods(), 200);
         assert!((p.speed() - 0.5).abs() < 1e-15);
         let v = avg_speeds(&p);
-        assert!((v[99] - 0.49995).abs() < 1e-6, "the highest period {}", v[99]);
+        assert!(
+            (v[99] - 0.49995).abs() < 1e-6,
+            "the highest period {}",
+            v[99]
+        );
     }
 
     #[test]
@@ -381,7 +386,11 @@ mod tests {
         // 3.998893805309711 with 352 periods at speed for the 1.955 UU left.
         let p = TickProfile::plan(1.955, 2.95, 4.0, 100, 100, (Shape::T, Shape::T), 0.001);
         assert_eq!(p.periods(), 552);
-        assert!((p.speed() - 3.998893805309711).abs() < 1e-9, "{}", p.speed());
+        assert!(
+            (p.speed() - 3.998893805309711).abs() < 1e-9,
+            "{}",
+            p.speed()
+        );
     }
 
     #[test]

@@ -40,9 +40,10 @@ impl GroupState {
             self.mode = Mode::HoldAtBlockEnd;
             return Ok(());
         }
-        let ending = self.running.iter().all(|r| {
-            r.path_track().is_some_and(|t| t.in_final_decel()) || !r.holds()
-        });
+        let ending = self
+            .running
+            .iter()
+            .all(|r| r.path_track().is_some_and(|t| t.in_final_decel()) || !r.holds());
         if ending && self.queue.is_empty() {
             return Ok(());
         }
@@ -217,7 +218,9 @@ impl GroupState {
         }
         let k = self.speed_ratio();
         for r in self.running.iter_mut() {
-            if r.stage == Stage::Moving && matches!(r.cmd.plan, crate::engine::command::Plan::Path(_)) {
+            if r.stage == Stage::Moving
+                && matches!(r.cmd.plan, crate::engine::command::Plan::Path(_))
+            {
                 r.set_feed(v, k);
             }
         }

@@ -8,11 +8,11 @@
 //! callback returns FALSE, sets `*AbortThisCommand`, or the track reaches the total
 //! distance. A hold, a continue and an override act on the track as on any motion's.
 
+use super::track::Track;
 use super::GroupState;
 use crate::config::{range, AXES};
 use crate::engine::command::{Command, Ctx, Plan};
 use crate::engine::custom::{CustomSpec, Interp, CTYPE_CUSTOM, ERR_CUSTOM_MOTION};
-use super::track::Track;
 use crate::planner::{ramp_periods, Axes, Shape, TickProfile};
 use std::os::raw::c_int;
 use std::sync::Arc;

@@ -153,9 +153,7 @@ impl Running {
         let (one, many, moving): (Option<&mut Track>, Option<&mut [Track; AXES]>, u32) =
             match (&mut self.progress, &mut self.cmd.plan) {
                 (Progress::Path { track, .. }, _) => (Some(track), None, 0),
-                (Progress::Axes { tracks, moving, .. }, _) => {
-                    (None, Some(&mut **tracks), *moving)
-                }
+                (Progress::Axes { tracks, moving, .. }, _) => (None, Some(&mut **tracks), *moving),
                 (Progress::Staged, Plan::Custom(m)) => (m.track_mut(), None, 0),
                 _ => (None, None, 0),
             };
@@ -238,8 +236,16 @@ impl Running {
     /// Where it has taken the axes (its own start plus its displacement).
     fn position(&self) -> Axes {
         match (&self.progress, &self.cmd.plan) {
-            (Progress::Path { track, sync: None }, Plan::Path(m)) => m.path.point_at(track.fraction()),
-            (Progress::Path { track, sync: Some(_) }, Plan::Ptp(p)) => {
+            (Progress::Path { track, sync: None }, Plan::Path(m)) => {
+                m.path.point_at(track.fraction())
+            }
+            (
+                Progress::Path {
+                    track,
+                    sync: Some(_),
+                },
+                Plan::Ptp(p),
+            ) => {
                 let frac = track.fraction();
                 let (s, e) = (p.start(), p.end());
                 if track.arrived() {
@@ -330,7 +336,10 @@ impl GroupState {
             && self.kin.is_none()
             && self.ot_check == [false; AXES]
             && self.inpos_wait.is_none()
-            && !matches!(self.rezero, super::Rezero::NextPeriod | super::Rezero::Channels)
+            && !matches!(
+                self.rezero,
+                super::Rezero::NextPeriod | super::Rezero::Channels
+            )
     }
 
     /// An idle period: the speeds stay as the last command left them, the feed speed
@@ -430,8 +439,8 @@ impl GroupState {
         if let Some((d, left)) = self.jump.take() {
             // A jog by pulses: the jump in its first period, then two at rest.
             if left == JUMP_PERIODS {
-                for i in 0..AXES {
-                    self.base[i] += d[i];
+                for (b, di) in self.base.iter_mut().zip(d) {
+                    *b += di;
                 }
             }
             if left > 1 {
@@ -527,7 +536,11 @@ impl GroupState {
                     r.stage = Stage::Ending { left: left - 1 };
                 }
             }
-            if let Stage::Held { periods, abort: true } = r.stage {
+            if let Stage::Held {
+                periods,
+                abort: true,
+            } = r.stage
+            {
                 abort_done |= periods >= HOLD_SHOWN_AFTER;
             }
         }
@@ -720,11 +733,11 @@ impl GroupState {
     /// (`mask`); 0 for those an ending command stops (`zero`); the others keep theirs.
     /// The feed speed: the master axis's speed for a PtP, the path speed otherwise.
     fn compute_vel(&mut self, before: &Axes, dt: f64, mask: u32, zero: u32) {
-        for i in 0..AXES {
+        for (i, ((v, p), b)) in self.vel.iter_mut().zip(&self.pos).zip(before).enumerate() {
             if zero & (1 << i) != 0 {
-                self.vel[i] = 0.0;
+                *v = 0.0;
             } else if mask & (1 << i) != 0 && dt > 0.0 {
-                self.vel[i] = (self.pos[i] - before[i]) / dt;
+                *v = (p - b) / dt;
             }
         }
         self.feed_now = match self.running.back() {

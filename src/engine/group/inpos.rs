@@ -255,8 +255,8 @@ mod tests {
         v[3] = 0.123_456_78;
         g.set_inpos_tolerances(v);
         assert_eq!(g.inpos.tolerance[0], 1.0);
-        assert_eq!(g.inpos.tolerance[1], 214_748.3648);
-        assert_eq!(g.inpos.tolerance[2], 214_748.3648);
+        assert_eq!(g.inpos.tolerance[1], 214_748.364_8);
+        assert_eq!(g.inpos.tolerance[2], 214_748.364_8);
         // 1234.5678 pulses: whole pulses, truncated.
         assert_eq!(g.inpos.tolerance[3], 0.1234);
     }

@@ -38,13 +38,13 @@ mod status;
 mod track;
 
 pub(crate) use commanded::Commanded;
+use control::Mode;
 use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
 pub use post::{MAX_FILTER_PERIODS, MOVING_AVERAGE_TAPS, REVERSE_HISTORY};
 use queue::CommandIndex;
-use control::Mode;
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
 pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();

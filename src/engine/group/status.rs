@@ -26,11 +26,15 @@ impl GroupState {
             || self.inpos_wait.is_some_and(|w| w.blocks())
             || self.external.as_ref().is_some_and(|x| x.active())
             || self.post_active();
-        let held_shown = self.running.iter().any(|r| {
-            matches!(r.stage, Stage::Held { periods, .. } if periods >= HOLD_SHOWN_AFTER)
-        });
+        let held_shown = self
+            .running
+            .iter()
+            .any(|r| matches!(r.stage, Stage::Held { periods, .. } if periods >= HOLD_SHOWN_AFTER));
         self.status = if !active {
-            if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd | Mode::Aborting) {
+            if matches!(
+                self.mode,
+                Mode::Held | Mode::HoldAtBlockEnd | Mode::Aborting
+            ) {
                 if self.mode == Mode::Aborting {
                     // A timed abort stopped off the plan: what comes next starts here.
                     self.queue_end = self.pos;

@@ -190,7 +190,15 @@ impl Track {
     pub(crate) fn resume(&mut self) {
         let left = (self.len - self.dist()).max(0.0);
         let t = self.profile.period();
-        let p = TickProfile::plan(left, 0.0, self.feed, self.ramps.0, self.ramps.1, self.shapes, t);
+        let p = TickProfile::plan(
+            left,
+            0.0,
+            self.feed,
+            self.ramps.0,
+            self.ramps.1,
+            self.shapes,
+            t,
+        );
         self.restart(p);
     }
 

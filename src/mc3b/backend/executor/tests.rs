@@ -52,7 +52,10 @@ impl Rig {
     fn circle(&mut self, cx: f64, cy: f64) -> McclResult<i32> {
         let from = self.g.ctx().from;
         let path = Path::circle(Plane::XY, &from, [cx, cy], true, None).expect("circle");
-        let cmd = self.g.ctx().curve(path, crate::engine::command::Curve::Arc)?;
+        let cmd = self
+            .g
+            .ctx()
+            .curve(path, crate::engine::command::Curve::Arc)?;
         self.g.enqueue(cmd)
     }
 
