@@ -7,10 +7,10 @@
 //!   CPU-time clock) and wall time; also with a snapshot published every tick, as under
 //!   the realtime clock. Each group has channels of its own (the vendor's library lets no
 //!   two groups share one): 48 groups of 2 axes fill 12 cards.
-//! * **floor**: the crate's own planner on the same lines: each period's position from
-//!   the profile's fraction (`TickProfile::fraction`, `Path::point_at`), the speed from
-//!   the last period's position and every axis's whole pulses, results kept live: the
-//!   calling thread's CPU time and wall time.
+//! * **floor**: the crate's own planner on the same lines, computing what a program reads
+//!   of a group each period (its 8 positions and speeds, its feed speed, its channels'
+//!   pulses) as the engine computes it, results kept live: the calling thread's CPU time
+//!   and wall time (see [`floor_tick_us`]).
 //!
 //! Engine and floor alternate over [`ROUNDS`] short rounds. The headline ratios are the
 //! medians of each round's own ratio (engine over the floor measured next to it, the
@@ -133,10 +133,14 @@ fn engine_tick_us(live: bool, engine: libc::clockid_t, ticks: u32) -> (f64, f64)
     (us, cpu)
 }
 
-/// Floor time per tick, µs: `groups` moves of [`AXES_PER_GROUP`] axes, each period's position taken from
-/// its profile (the fraction of the path covered after `k` periods), its speed from the
-/// last period's, and its whole pulses, as the engine computes a moving group:
-/// (wall, CPU time of this thread). `k0` is the period the rounds start at.
+/// Floor time per tick, µs: what one period of `groups` moving groups must compute for
+/// what a program reads of them (`MCC_GetCurPos`, `MCC_GetSpeed` and
+/// `MCC_GetCurFeedSpeed` of all 8 axes, `MCC_GetPulsePos` of the [`AXES_PER_GROUP`]
+/// channels), as the engine computes it: the fraction of the path covered after `k`
+/// periods (`TickProfile::fraction`), the 8 positions on the path (`Path::point_at`),
+/// the 8 speeds from the last period's positions, the feed speed over X, Y, Z, and the
+/// channels' whole pulses: (wall, CPU time of this thread). `k0` is the period the rounds
+/// start at.
 fn floor_tick_us(groups: usize, k0: u64, ticks: u32) -> (f64, f64) {
     let start = [0.0; 8];
     let mut end = [0.0; 8];
@@ -154,22 +158,26 @@ fn floor_tick_us(groups: usize, k0: u64, ticks: u32) -> (f64, f64) {
         .collect();
     let mut pos = vec![[0.0; 8]; groups];
     let mut vel = [0.0; 8];
-    let mut pulses = vec![[0i64; 8]; groups];
+    let mut feed = 0.0;
+    let mut pulses = vec![[0i64; AXES_PER_GROUP]; groups];
     let c = thread_cpu_ns();
     let t = Instant::now();
     for k in 0..ticks {
         let kk = black_box(k0 + u64::from(k));
         for ((m, p), out) in moves.iter().zip(pos.iter_mut()).zip(pulses.iter_mut()) {
             let x = m.path.point_at(m.profile.fraction(kk));
-            let axes = p.iter_mut().zip(x).take(AXES_PER_GROUP);
-            for ((v, (q, xi)), o) in vel.iter_mut().zip(axes).zip(out.iter_mut()) {
-                *v = (xi - *q) * 1e3;
+            for ((v, q), xi) in vel.iter_mut().zip(p.iter_mut()).zip(x) {
+                *v = (xi - *q) / 1e-3;
                 *q = xi;
+            }
+            feed = (vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]).sqrt();
+            for (o, xi) in out.iter_mut().zip(x) {
                 *o = whole_pulses(xi * PULSES_PER_UU);
             }
         }
         black_box(&mut pulses);
         black_box(&vel);
+        black_box(feed);
     }
     let wall = t.elapsed().as_secs_f64() / f64::from(ticks) * 1e6;
     let cpu = (thread_cpu_ns() - c) as f64 / f64::from(ticks) / 1e3;

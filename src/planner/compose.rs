@@ -24,12 +24,16 @@ pub fn composed_speed(vel: &Axes, mask: u32) -> f64 {
     composed_norm(vel, mask)
 }
 
+#[inline]
 fn composed_norm(d: &Axes, mask: u32) -> f64 {
-    let inside = (0..d.len())
-        .filter(|&i| mask & (1 << i) != 0)
-        .map(|i| d[i] * d[i])
-        .sum::<f64>()
-        .sqrt();
+    // Summed in axis order, as the iterator form summed: every tick computes this.
+    let mut sum = 0.0;
+    for (i, x) in d.iter().enumerate() {
+        if mask >> i & 1 == 1 {
+            sum += x * x;
+        }
+    }
+    let inside = sum.sqrt();
     if inside > 0.0 {
         return inside;
     }

@@ -84,6 +84,12 @@ pub struct TickProfile {
     t: f64,
     /// Distance covered by the ramp from `v0` to `v`.
     acc_len: f64,
+    /// `v0 / v` (0 when `v` is 0), the acceleration's units and the whole profile's (see
+    /// [`TickProfile::fraction`]): kept so that a period's fraction costs a few
+    /// operations.
+    u0: f64,
+    acc_units: f64,
+    total_units: f64,
 }
 
 impl TickProfile {
@@ -162,7 +168,8 @@ impl TickProfile {
         t: f64,
     ) -> TickProfile {
         let ta = f64::from(na) * t;
-        TickProfile {
+        let u0 = if v > 0.0 { v0 / v } else { 0.0 };
+        let mut p = TickProfile {
             len,
             v0,
             v,
@@ -173,7 +180,12 @@ impl TickProfile {
             dec,
             t,
             acc_len: v0 * ta + ramp_distance(acc, v - v0, ta, ta),
-        }
+            u0,
+            acc_units: 0.5 * f64::from(na) * (1.0 + u0),
+            total_units: 0.0,
+        };
+        p.total_units = p.units(p.periods());
+        p
     }
 
     /// The same profile with other ramp shapes (blending runs both ramps of the overlap
@@ -267,7 +279,7 @@ impl TickProfile {
         if k >= n {
             return 1.0;
         }
-        let total = self.units(n);
+        let total = self.total_units;
         if total.is_nan() || total <= 0.0 {
             return k as f64 / n as f64;
         }
@@ -278,8 +290,7 @@ impl TickProfile {
     #[inline]
     fn units(&self, k: u64) -> f64 {
         let na = u64::from(self.na);
-        let u0 = if self.v > 0.0 { self.v0 / self.v } else { 0.0 };
-        let acc_units = 0.5 * f64::from(self.na) * (1.0 + u0);
+        let (u0, acc_units) = (self.u0, self.acc_units);
         if k <= na {
             let kf = k as f64;
             if self.na == 0 {
