@@ -235,7 +235,7 @@ impl Shared {
         self.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
         for g in groups.iter_mut() {
             if g.def.card.0 == card {
-                g.abort(0.0, false);
+                g.abort_within_period();
                 g.set_error(ERR_WATCHDOG_RESET);
             }
             self.publish(g);

@@ -130,6 +130,17 @@ impl GroupState {
         }
     }
 
+    /// An abort at once that happens within a period (a card reset by its watchdog): the
+    /// status reads running for this period and the next reads STOP, as after an abort
+    /// called between periods.
+    pub fn abort_within_period(&mut self) {
+        self.abort(0.0, false);
+        if self.lag > 0 {
+            self.lag = 0;
+            self.lag_shown = true;
+        }
+    }
+
     /// Drops what runs and is queued where the group stands; `lag`: the status reads
     /// `GMS_RUNNING` for one more period (an abort, as the vendor's library shows it).
     pub(super) fn abort_now(&mut self, lag: bool) {
@@ -159,6 +170,7 @@ impl GroupState {
         self.running.clear();
         self.jump = None;
         self.lag = 0;
+        self.lag_shown = false;
         self.info_touched();
         self.clear_queue();
         self.post_stopped();

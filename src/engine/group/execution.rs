@@ -310,6 +310,7 @@ fn shapes_of(cmd: &Command) -> (Shape, Shape) {
 impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
+        self.lag_shown = false;
         if self.running.is_empty()
             && self.queue.is_empty()
             && self.jump.is_none()
@@ -575,8 +576,11 @@ impl GroupState {
         }
         self.newest_own_time = self.running.back().map_or(0.0, |r| r.periods as f64);
         self.update_status();
-        if self.running.is_empty() && self.jump.is_none() {
-            self.lag = self.lag.saturating_sub(1);
+        if self.running.is_empty() && self.jump.is_none() && self.lag > 0 {
+            self.lag -= 1;
+            // This period still shows it, whoever looks again within it (the filters'
+            // tick updates the status once more).
+            self.lag_shown = true;
         }
     }
 

@@ -119,6 +119,8 @@ pub struct GroupState {
     /// Periods the status still reads `GMS_RUNNING` with nothing running (the vendor's
     /// library shows one after the last command).
     lag: u8,
+    /// The period that just ran read running for `lag` (see [`GroupState::tick`]).
+    lag_shown: bool,
     /// A jog by pulses: its displacement and the periods it still keeps the group running.
     jump: Option<(Axes, u8)>,
     /// The feed speed of the last period (`MCC_GetCurFeedSpeed`).
@@ -203,6 +205,7 @@ impl GroupState {
             offset: [0.0; AXES],
             vel: [0.0; AXES],
             lag: 0,
+            lag_shown: false,
             jump: None,
             feed_now: 0.0,
             override_next: None,

@@ -23,6 +23,7 @@ impl GroupState {
             || !self.queue.is_empty()
             || self.jump.is_some()
             || self.lag > 0
+            || self.lag_shown
             || self.inpos_wait.is_some_and(|w| w.blocks())
             || self.external.as_ref().is_some_and(|x| x.active())
             || self.post_active();
@@ -44,7 +45,7 @@ impl GroupState {
             c::GMS_STOP
         } else if held_shown
             || (self.running.is_empty()
-                && (self.error != 0
+                && ((self.error != 0 && !self.queue.is_empty())
                     || self.mode == Mode::Held
                     || (self.single_block && !self.single_block_credit)))
         {
