@@ -278,7 +278,9 @@ impl GroupState {
             self.info_touched();
             return;
         }
-        let busy = self.busy();
+        let busy = self.busy() || self.homing != 0;
+        // A go home it was part of is dropped (`Shared::reset_motion`).
+        self.homing = 0;
         self.abort_now(true);
         // Stopped by a reset, not an abort: nothing waits for it to finish.
         self.mode = Mode::Normal;
