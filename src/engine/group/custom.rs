@@ -17,9 +17,11 @@ use crate::planner::{ramp_periods, Axes, Shape, TickProfile};
 use std::os::raw::c_int;
 use std::sync::Arc;
 
-/// The length an infinite motion's profile is planned over: it never gets there (at
-/// 10⁶ UU/s it would take 3·10²⁸⁸ years), so it accelerates and cruises at the feed.
-const INFINITE_LEN: f64 = 1e300;
+/// The periods at the feed an infinite motion's profile is planned over: it never gets
+/// to their end (10¹⁵ periods of 1 ms are 31,000 years), so it accelerates and cruises
+/// at the feed; few enough that a period's fraction of them keeps its digits (the
+/// profile counts whole periods).
+const INFINITE_PERIODS: f64 = 1e15;
 
 /// A queued or running custom command.
 #[derive(Debug, Clone)]
@@ -270,8 +272,20 @@ impl GroupState {
             (r.cmd.info_feed, r.cmd.acc_ms, r.cmd.dec_ms)
         };
         let blend_on = self.blend_on;
+        let ratio = self.speed_ratio();
         let (index, m) = self.custom_running(Some(id))?;
-        let len = if m.infinite() { INFINITE_LEN } else { tot };
+        // A custom motion that follows the override starts at the rate in effect, as a
+        // line does.
+        let feed = if m.follows_override() {
+            feed * ratio
+        } else {
+            feed
+        };
+        let len = if m.infinite() {
+            feed * dt * INFINITE_PERIODS
+        } else {
+            tot
+        };
         let period_ms = dt * 1000.0;
         let ramps = ramp_periods(acc_ms, dec_ms, period_ms);
         let shapes = (m.acc, m.dec);
