@@ -388,6 +388,10 @@ impl GroupState {
         // blends in, or it ends, only where the phase changes).
         let ahead = match &r.progress {
             Progress::Path { track, .. } => track.periods_in_phase(),
+            // A PtP shows no phases: its info holds until its master axis arrives.
+            Progress::Axes { tracks, master, .. } => {
+                tracks[*master].periods_left().saturating_sub(1)
+            }
             _ => 0,
         };
         u32::try_from(ahead).unwrap_or(u32::MAX).min(max)
@@ -722,6 +726,12 @@ impl GroupState {
             return;
         };
         self.info_touched();
+        if self.running.len() == 1 {
+            if let Some(r) = self.running.front_mut() {
+                // Blended in and now alone: no longer blending.
+                r.blended_from = None;
+            }
+        }
         self.note(Note::End {
             index: done.cmd.index,
             ctype: done.cmd.ctype,

@@ -349,6 +349,7 @@ fn key_holds_until(r: &Running) -> f64 {
     }
     let more = match &r.progress {
         Progress::Path { track, .. } => track.periods_in_phase(),
+        Progress::Axes { tracks, master, .. } => tracks[*master].periods_left().saturating_sub(1),
         _ => 0,
     };
     now + more as f64 + 1.0
