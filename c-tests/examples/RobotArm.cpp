@@ -96,16 +96,16 @@ void MCC_CALLBACK InitRobot(void *pvExtension)
     g_nInits++;
 }
 
-BOOL MCC_CALLBACK FwdKine(int, int nAxes, const double *pdfFrom, double *pdfTo, DWORD *pdwPosture, void *pvExt)
+BOOL MCC_CALLBACK FwdKine(int, int nAxes, const double *pdfFrom, double *pdfTo, DWORD &dwPosture, void *pvExt)
 {
-    (void)pdwPosture;
+    (void)dwPosture;
     CHECK_EQ(nAxes, 8);
     return Forward(*static_cast<RobotParams *>(pvExt), pdfFrom, pdfTo) ? 1 : 0;
 }
 
-BOOL MCC_CALLBACK InvKine(int, int, const double *pdfFrom, const double *, double *pdfTo, DWORD *pdwPosture, void *pvExt)
+BOOL MCC_CALLBACK InvKine(int, int, const double *pdfFrom, const double *, double *pdfTo, DWORD &dwPosture, void *pvExt)
 {
-    bool ok = Inverse(*static_cast<RobotParams *>(pvExt), pdfFrom, *pdwPosture, pdfTo);
+    bool ok = Inverse(*static_cast<RobotParams *>(pvExt), pdfFrom, dwPosture, pdfTo);
     std::lock_guard<std::mutex> lock(g_mutex);
     if (ok)
         g_points.push_back(std::vector<double>(pdfFrom, pdfFrom + 8));
