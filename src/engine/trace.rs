@@ -336,6 +336,7 @@ pub fn ctype_name(t: i32) -> &'static str {
         ctype::BLEND_OFF => "BLEND_OFF",
         ctype::INPOS_ON => "INPOS_ON",
         ctype::INPOS_OFF => "INPOS_OFF",
+        super::custom::CTYPE_CUSTOM => "CUSTOM",
         _ => "OTHER",
     }
 }
