@@ -1,13 +1,105 @@
 /* What the vendor's library does where the manuals leave a question open: hold and
  * continue with nothing to hold or continue, the override rate OverrideSpeedEx sets, a
  * group that drives no axis, the go-home parameters it takes, a custom motion whose
- * interpolation fails. */
+ * interpolation fails, kinematics registered before the card starts. */
 #include "common.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 STD_SETUP(std3, 10000, 1, 3)
+
+/* ---- Kinematics registered before the card starts. ----
+ * A two-link arm: joint 0 the shoulder, joint 1 the elbow (degrees), links of 200 and 150
+ * UU, joint 2 is Z; joints 3..7 carry the other Cartesian axes. Posture bit 0: elbow with
+ * a negative joint 1. */
+#define L1 200.0
+#define L2 150.0
+static const double kDeg = 3.14159265358979323846 / 180.0;
+static volatile int k_inits;
+
+static void MCC_CALLBACK k_init(void *ext)
+{
+    (void)ext;
+    k_inits++;
+}
+
+static BOOL MCC_CALLBACK k_forward(int g, int n, const double *j, double *c, DWORD *posture,
+                                   void *ext)
+{
+    (void)g, (void)posture, (void)ext;
+    double q1 = j[0] * kDeg, q12 = (j[0] + j[1]) * kDeg;
+    c[0] = L1 * cos(q1) + L2 * cos(q12);
+    c[1] = L1 * sin(q1) + L2 * sin(q12);
+    for (int i = 2; i < n && i < 8; i++)
+        c[i] = j[i];
+    return 1;
+}
+
+static BOOL MCC_CALLBACK k_inverse(int g, int n, const double *c, const double *prev, double *j,
+                                   DWORD *posture, void *ext)
+{
+    (void)g, (void)prev, (void)ext;
+    double c2 = (c[0] * c[0] + c[1] * c[1] - L1 * L1 - L2 * L2) / (2 * L1 * L2);
+    if (c2 < -1 || c2 > 1)
+        return 0;
+    double s2 = sqrt(1 - c2 * c2) * ((*posture & 1) ? -1.0 : 1.0);
+    j[0] = (atan2(c[1], c[0]) - atan2(L2 * s2, L1 + L2 * c2)) / kDeg;
+    j[1] = atan2(s2, c2) / kDeg;
+    for (int i = 2; i < n && i < 8; i++)
+        j[i] = c[i];
+    return 1;
+}
+
+/* Registered before MCC_InitSimulation (accepted; the initialiser runs in the init), then
+ * again after it (refused). */
+static int kine_registered(void)
+{
+    vd_mac_default(10000);
+    CI(MCC_CloseAllGroups);
+    vd_make_group(0, 3);
+    CI(MCC_SetKinematicTrans, k_forward, k_inverse, 16, k_init, 0);
+    vd_note("KinematicsInits %d", k_inits);
+    int r = vd_init(1);
+    vd_note("KinematicsInits %d", k_inits);
+    CI(MCC_SetKinematicTrans, k_forward, k_inverse, 16, k_init, 0);
+    return r < 0;
+}
+
+static void cur_pos_note(void)
+{
+    double c[8] = {0};
+    int r = V(MCC_GetCurPos)(&c[0], &c[1], &c[2], &c[3], &c[4], &c[5], &c[6], &c[7], 0);
+    vd_note("GetCurPos %d %.17g %.17g %.17g", r, c[0], c[1], c[2]);
+}
+
+/* MCC_PtP_V6 to the joints (22, -81, 5) at the full PtP speed: the joints move as a
+ * point-to-point move does, and every position a program reads is the joints'. */
+static void kine_ptp_v6(int t)
+{
+    if (t == 0) {
+        cur_pos_note();
+        CD(MCC_SetPtPSpeed, 100, 0);
+        vd_profile('T', 100, 100, 50);
+        CI(MCC_PtP_V6, 22, -81, 5, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL);
+    }
+    if (t == 1800)
+        cur_pos_note();
+}
+
+/* Without kinematics: MCC_SetKinematicTrans after init is refused, and MCC_PtP_V6 and
+ * MCC_Line_V6 move the axes as MCC_PtP and MCC_Line do. */
+static void kine_after_init(int t)
+{
+    if (t == 0) {
+        CI(MCC_SetKinematicTrans, k_forward, k_inverse, 16, k_init, 0);
+        vd_note("KinematicsInits %d", k_inits);
+        CD(MCC_SetPtPSpeed, 100, 0);
+        vd_profile('T', 20, 20, 10);
+        CI(MCC_PtP_V6, 0.2, -0.1, 0.05, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL);
+        CI(MCC_Line_V6, 0.1, 0, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL);
+    }
+}
 
 /* ---- Hold and continue when there is nothing to hold or continue; the override rate
  * OverrideSpeedEx sets. ---- */
@@ -274,6 +366,8 @@ static void custom_false_first(int t)
 }
 
 const Scenario vd_oracle_items[] = {
+    {"kine_ptp_v6", kine_registered, kine_ptp_v6, 1800, 4000, 0},
+    SCEN(kine_after_init, std3, 0, 4000),
     SCEN(hold_idle_then_line, std3, 150, 4000),
     SCEN(conti_not_held, std3, 210, 4000),
     SCEN(override_ex_rate, std3, 250, 4000),
