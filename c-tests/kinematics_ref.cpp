@@ -10,7 +10,8 @@
 // and each can be checked: PPR 1000, pitch 1, gear 1 => 1000 pulses per joint unit.
 //
 // What it checks:
-//   1. the callbacks convert to FWDKINEFUN / INVKINEFUN as written (compile time);
+//   1. the callbacks convert to FWDKINEFUN / INVKINEFUN as written (compile time), and
+//      are registered before the card starts, as the vendor's library takes them;
 //   2. MCC_Line_V6 to X = 1 with posture 1: the inverse kinematics gets posture 1 on its
 //      first call (the command's posture, read through the reference), writes 0x101 back
 //      through the reference, and every later call of the move gets 0x101 (the library
@@ -85,11 +86,11 @@ int main()
         CHECK_EQ(MCC_SetMacParam(&stAxis, ch), NO_ERR);
     CHECK_EQ(MCC_CloseAllGroups(), NO_ERR);
     CHECK_EQ(MCC_CreateGroup(0, 1, 2, 3, 4, 5, 6, 7, 0), 0);
+    CHECK_EQ(MCC_SetKinematicTrans(pfnFwd, pfnInv), NO_ERR); // size, init, group defaulted
     SYS_CARD_CONFIG stCard[MAX_CARD_NUM];
     memset(stCard, 0, sizeof(stCard));
     stCard[0].wCardType = IMP_III_8_AXIS_PCI_CARD;
     CHECK_EQ(MCC_InitSystem(1, stCard, 1), NO_ERR);
-    CHECK_EQ(MCC_SetKinematicTrans(pfnFwd, pfnInv), NO_ERR); // size, init, group defaulted
 
     // 2. A line with posture 1.
     MCC_SetFeedSpeed(10);

@@ -63,8 +63,6 @@ pub enum Plan {
     Output(Output),
     /// Custom motion: the program's callbacks give the path (`group/custom.rs`).
     Custom(super::group::custom::CustomMove),
-    /// A joint move of a kinematic group (`MCC_PtP_V6`, `super::kinematics`).
-    Joint(Box<super::kinematics::JointMove>),
     /// A command the vendor's library accepts and fails when it starts (an arc or circle
     /// with no geometry): it records this error record and stops the group.
     Fault(i32),
@@ -120,10 +118,7 @@ impl Command {
 
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
-        matches!(
-            self.plan,
-            Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_) | Plan::Joint(_)
-        )
+        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_))
     }
 
     /// Where the plan starts.
@@ -133,7 +128,6 @@ impl Command {
             Plan::Path(m) => m.path.start(),
             Plan::Ptp(p) => p.start(),
             Plan::Custom(m) => m.start,
-            Plan::Joint(j) => j.cart_start,
             _ => self.target,
         }
     }

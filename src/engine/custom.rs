@@ -181,13 +181,14 @@ thread_local! {
     static IN_CALLBACK: Cell<Option<usize>> = const { Cell::new(None) };
 }
 
-/// The group whose custom-motion callback the calling thread is running.
+/// The group whose callback the calling thread is running for the library: a custom
+/// motion's, or a kinematics initialiser or forward kinematics run while the card starts.
 pub fn in_callback() -> Option<usize> {
     IN_CALLBACK.with(Cell::get)
 }
 
-/// Runs `f` marked as a callback of `group`.
-fn as_callback<R>(group: usize, f: impl FnOnce() -> R) -> R {
+/// Runs `f`, the program's code, marked as a callback of `group` ([`in_callback`]).
+pub(crate) fn as_callback<R>(group: usize, f: impl FnOnce() -> R) -> R {
     let prev = IN_CALLBACK.with(|c| c.replace(Some(group)));
     let r = f();
     IN_CALLBACK.with(|c| c.set(prev));

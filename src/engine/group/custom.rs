@@ -121,9 +121,6 @@ fn translate(cmd: &mut Command, d: &Axes) {
             }
         }
         Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) | Plan::Fault(_) => {}
-        // A joint move (MCC_PtP_V6) goes to the joints it names, wherever the curve ended:
-        // neither it nor its target moves.
-        Plan::Joint(_) => return,
     }
     for (t, d) in cmd.target.iter_mut().zip(d) {
         *t += d;
