@@ -267,9 +267,17 @@ typedef struct {
 
 typedef void (MCC_CALLBACK *HSKISR)(HSKINT*);
 
+#ifdef __cplusplus
+typedef BOOL (MCC_CALLBACK *FWDKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, double *pdfTo, DWORD &dwPosture, void *pvExtension);
+#else
 typedef BOOL (MCC_CALLBACK *FWDKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, double *pdfTo, DWORD *dwPosture, void *pvExtension);
+#endif
 
+#ifdef __cplusplus
+typedef BOOL (MCC_CALLBACK *INVKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, const double *pdfPrevResult, double *pdfTo, DWORD &dwPosture, void *pvExtension);
+#else
 typedef BOOL (MCC_CALLBACK *INVKINEFUN)(int nGroup, int nSynAxisNum, const double *pdfFrom, const double *pdfPrevResult, double *pdfTo, DWORD *dwPosture, void *pvExtension);
+#endif
 
 typedef void (MCC_CALLBACK *INIT_EXTENSION)(void *pvExtension);
 

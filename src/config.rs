@@ -259,15 +259,25 @@ pub fn encoder_multiplier(input_rate: u16) -> u32 {
     }
 }
 
-/// Validates go-home parameters (§2.4.3) for a channel with mechanism parameters `mac`:
-/// mode 3..16, direction 0/1, sensor mode `SL_*`, index count >= 0, times in
+/// The go-home modes `MCC_SetHomeConfig` takes: 0..=19, as the vendor's library takes
+/// them. The manual describes 3..=16 ([`HOME_MODES_RUN`]); the others are kept and read
+/// back, and `MCC_Home` refuses to run them.
+pub const HOME_MODES_SET: std::ops::RangeInclusive<u16> = 0..=19;
+
+/// The go-home modes the manual describes (§2.8.1) and `MCC_Home` runs.
+pub const HOME_MODES_RUN: std::ops::RangeInclusive<u16> = 3..=16;
+
+/// Validates go-home parameters (§2.4.3) for a channel with mechanism parameters `mac`,
+/// as the vendor's library checks them: mode in [`HOME_MODES_SET`], direction 0/1,
+/// sensor mode normally open or closed (0/1), index count >= 0, acc/dec times > 0 within
 /// [`range::time_ms`], speeds in [`range::speed`], the offset a position of the channel
 /// ([`range::position`]).
 pub fn validate_home_config(h: &SYS_HOME_CONFIG, mac: &SYS_MAC_PARAM) -> McclResult<()> {
-    check((3..=16).contains(&h.wMode))?;
+    check(HOME_MODES_SET.contains(&h.wMode))?;
     check(h.wDirection <= 1)?;
-    check(h.wSensorMode <= c::SL_UNUSED)?;
+    check(h.wSensorMode <= c::SL_NORMAL_CLOSE)?;
     check(h.nIndexCount >= 0)?;
+    check(h.dfAccTime > 0.0 && h.dfDecTime > 0.0)?;
     range::time_ms(h.dfAccTime)?;
     range::time_ms(h.dfDecTime)?;
     range::speed(h.dfHighSpeed)?;

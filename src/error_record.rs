@@ -33,6 +33,9 @@ pub enum ErrorRecord {
     Mc3bLink,
     /// An MC3B refused a command or answered what does not fit (0xF902, the library's own).
     Mc3bDevice,
+    /// A custom motion's interpolation callback returned FALSE (0xF107, as the vendor's
+    /// library records it).
+    CustomInterpolation,
     /// A custom motion's callback gave an unusable total distance or offset (0xF10A,
     /// the library's own).
     CustomMotion,
@@ -58,6 +61,7 @@ impl ErrorRecord {
             ErrorRecord::Tracking(axis) => 0xF801 + axis as i32,
             ErrorRecord::Mc3bLink => 0xF901,
             ErrorRecord::Mc3bDevice => 0xF902,
+            ErrorRecord::CustomInterpolation => 0xF107,
             ErrorRecord::CustomMotion => 0xF10A,
             ErrorRecord::Internal => 0xF1FF,
         }
@@ -73,6 +77,7 @@ mod tests {
         assert_eq!(EmergencyStop.code(), 0xF102);
         assert_eq!(ForwardKinematics.code(), 0xF105);
         assert_eq!(InverseKinematics.code(), 0xF106);
+        assert_eq!(CustomInterpolation.code(), 0xF107);
         assert_eq!(OverTravel(0).code(), 0xF301);
         assert_eq!(OverTravel(7).code(), 0xF308);
         assert_eq!(Limit(2).code(), 0xF703);

@@ -317,6 +317,15 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
         }
     }
     attach_mc3b(engine.shared(), &mc3b);
+    // Kinematics registered before init take effect before any other thread can reach
+    // the system; the program's initialisers run without the system lock.
+    let kinematics = crate::engine::kinematics::registered();
+    if !kinematics.is_empty() {
+        turn.unlock();
+        crate::engine::kinematics::apply_registrations(engine.shared(), &kinematics)?;
+        crate::engine::kinematics::clear_registered();
+    }
+    let sys = turn.sys();
     #[cfg(feature = "panel")]
     let panel = crate::panel::start_from_env(engine.shared(), &groups);
     #[cfg(not(feature = "panel"))]

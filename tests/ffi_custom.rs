@@ -579,30 +579,49 @@ fn override_motion_false_keeps_the_feed() {
     assert_eq!(q.log.lock().cleanups, 1, "close cleans up the running one");
 }
 
+/// FALSE from the interpolation callback is a failure, as the vendor's library treats it
+/// (recorded scenario `custom_false`): the group stops where the last call that returned
+/// TRUE put it (the offset written with FALSE is not used), with error record 0xF107;
+/// the line queued behind is dropped, and a new command is refused (`RUN_TIME_ERR`)
+/// until `MCC_ClearError`. The cleanup runs once (the vendor's library calls it twice).
 #[test]
-fn false_ends_early_and_the_next_command_follows() {
+fn false_stops_the_group_with_error_0xf107() {
     let _g = fresh();
     setup("stepped", false);
     let mut p = Prog::new(straight());
     p.stop_after = 3.0;
     assert_eq!(custom(&p, 0), 0);
-    // A line queued behind it was planned from its start (0): it runs displaced by where
-    // the custom motion ended.
     assert_eq!(
         MCC_Line(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
         1
     );
     wait_stop(0);
+    assert_eq!(MCC_GetErrorCode(0), 0xF107);
     let l = p.log.lock();
-    let last = *l.calls.last().unwrap();
+    let n = l.calls.len();
+    let (last, good) = (l.calls[n - 1], l.calls[n - 2]);
     assert!(
-        last.0 > 3.0 && last.0 < 3.0 + F * DT + 1e-12,
-        "ended at {}",
-        last.0
+        last.0 > 3.0 && good.0 <= 3.0,
+        "FALSE at {}, TRUE before at {}",
+        last.0,
+        good.0
     );
     assert_eq!(l.cleanups, 1);
-    assert!((pos(0)[0] - (last.4 + 1.0)).abs() < 1e-9, "{}", pos(0)[0]);
+    // Whole pulses (500 per UU): at the last good offset, not the FALSE call's.
+    let x = pos(0)[0];
+    assert!(x <= good.4 && good.4 - x < 1.0 / 500.0, "{x} vs {}", good.4);
     drop(l);
+    tick(20);
+    assert!((pos(0)[0] - x).abs() < 1e-12, "the line was dropped");
+    assert_eq!(
+        MCC_Line(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
+        RUN_TIME_ERR
+    );
+    assert_eq!(MCC_ClearError(0), NO_ERR);
+    assert_eq!(
+        MCC_Line(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
+        2
+    );
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 

@@ -4,6 +4,8 @@
 //! the tool is at (x + D·cos θ, y + D·sin θ, z) with orientation RZ = θ. The V6 moves
 //! turn the wrist while the tool point follows the line, arc or circle; the orientation
 //! is interpolated linearly with the path (docs/compatibility.md, "Robot kinematics").
+//! The kinematics are registered before the card starts; what the program reads of the
+//! group is the joints, and the tool's point is their forward kinematics, computed here.
 //! Runs on the fast clock.
 
 mod common;
@@ -72,6 +74,11 @@ unsafe extern "C" fn inv_cb(
     1
 }
 
+/// The tool's point: the forward kinematics of the joints the last move ended with.
+fn tool() -> [f64; 8] {
+    fwd(&CALLS.lock().last().expect("a move ran").1)
+}
+
 fn cur_pos() -> [f64; 8] {
     let mut p = [0.0; 8];
     let [a, b, c, d, e, f, h, i] = &mut p;
@@ -116,14 +123,14 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
 fn wrist_turns_while_the_tool_follows_lines_arcs_and_circles() {
     let _g = fresh();
     std::env::set_var("MCCL_CLOCK", "fast");
-    assert_eq!(common::init(1), NO_ERR);
     assert_eq!(
         MCC_SetKinematicTrans(Some(fwd_cb), Some(inv_cb), 0, None, 0),
         NO_ERR
     );
-    assert_eq!(MCC_SetFeedSpeed(200.0, 0), 200.0);
-    // Joints 0: the tool at (10, 0, 0), RZ 0.
-    assert_eq!(cur_pos(), [D, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+    assert_eq!(common::init(1), NO_ERR);
+    assert_eq!(MCC_SetFeedSpeed(100.0, 0), 100.0);
+    // Joints 0: the tool at (10, 0, 0), RZ 0; the group reads its joints.
+    assert_eq!(cur_pos(), [0.0; 8]);
 
     // Line to (110, 0) turning RZ 0 → 90: per component linear, so at tool x the angle
     // is 90·(x − 10)/100; the tool stays on y = 0 (within 1e-9 of the length, 100).
@@ -158,7 +165,12 @@ fn wrist_turns_while_the_tool_follows_lines_arcs_and_circles() {
     // Pulses (500 per UU / degree): wrist at (110 − 10·cos 90°, −10), θ = 90.
     let p = pulses();
     assert_eq!((p[0], p[1], p[5]), (55_000, -5_000, 45_000));
-    let c = cur_pos();
+    assert_eq!(
+        cur_pos(),
+        p.map(|x| x as f64 / 500.0),
+        "the joints, whole pulses"
+    );
+    let c = tool();
     assert!(close(c[0], 110.0, 1e-12) && close(c[1], 0.0, 1e-12) && c[5] == 90.0);
 
     // Full circle about (60, 0) counter-clockwise, RZ 90 → 450: every tool point 50
@@ -181,7 +193,7 @@ fn wrist_turns_while_the_tool_follows_lines_arcs_and_circles() {
         }
         assert!(close(p[5], 90.0 + phi, 1e-6), "{} vs {}", p[5], 90.0 + phi);
     }
-    let c = cur_pos();
+    let c = tool();
     assert!(close(c[0], 110.0, 1e-9) && close(c[1], 0.0, 1e-9) && c[5] == 450.0);
 
     // ArcTheta_V6: 90° about the axis through (60, 0, 0) along +Z: to (60, 50), RZ → 540.
@@ -203,7 +215,7 @@ fn wrist_turns_while_the_tool_follows_lines_arcs_and_circles() {
         ) >= 0
     );
     run();
-    let c = cur_pos();
+    let c = tool();
     assert!(close(c[0], 60.0, 1e-9) && close(c[1], 50.0, 1e-9) && c[5] == 540.0);
 
     // Circle_V6 from (60, 50) through (10, 0) and (60, −50): the same circle, one turn.
@@ -228,7 +240,7 @@ fn wrist_turns_while_the_tool_follows_lines_arcs_and_circles() {
         assert!(close((p[0] - 60.0).hypot(p[1]), 50.0, 1e-9 * len));
         assert_eq!(p[5], 540.0, "RZ stays");
     }
-    let c = cur_pos();
+    let c = tool();
     assert!(close(c[0], 60.0, 1e-9) && close(c[1], 50.0, 1e-9));
 
     // Arc_V6 from (60, 50) through (110, 0) to (60, −50), RZ 540 → 450; mask without RZ:
@@ -241,7 +253,7 @@ fn wrist_turns_while_the_tool_follows_lines_arcs_and_circles() {
         assert!(p[0] >= 60.0 - 1e-9, "through (110, 0), the right half");
         assert_eq!(p[5], 540.0);
     }
-    let c = cur_pos();
+    let c = tool();
     assert!(close(c[0], 60.0, 1e-9) && close(c[1], -50.0, 1e-9) && c[5] == 540.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

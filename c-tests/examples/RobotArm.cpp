@@ -1,7 +1,9 @@
 // RobotArm.cpp: a SCARA robot the way an integrator drives it through the robot
 // functions of the IMP-3 headers: its own kinematics registered with
-// MCC_SetKinematicTrans, V6 moves in Cartesian space, a tool offset through the
-// pre-process callback.
+// MCC_SetKinematicTrans before the card starts (the vendor's library takes them only
+// then), V6 moves in Cartesian space, a tool offset through the pre-process callback.
+// What the program reads of the group (MCC_GetCurPos, MCC_GetPulsePos) is the joints;
+// the tool's point is the robot's forward kinematics of them.
 //
 // The robot (group 0, channels 0..7; 500 pulses per degree or per mm):
 //   joint 0  shoulder angle q1 (deg), link L1 = 200 mm
@@ -16,9 +18,10 @@
 // to every kinematics call; the init callback fills it once.
 //
 // What it checks (all numbers from the formulas above):
-//   1. after MCC_SetKinematicTrans the Cartesian position is fwd(joints 0) = (350, 0)
-//   2. MCC_PtP_V6 to the ready pose inv(250, 100): MCC_GetCurPos reads (250, 100), the
-//      pulses are the joints' (500 per degree)
+//   1. the init calls the extension's initialiser once; the joints read 0, the tool is
+//      at fwd(joints 0) = (350, 0)
+//   2. MCC_PtP_V6 to the ready pose inv(250, 100): MCC_GetCurPos reads its joints (whole
+//      pulses, 500 per degree), the tool is at (250, 100) to within what a pulse moves
 //   3. MCC_Line_V6 to (250, -100, 50) turning RZ by 45: every Cartesian point the
 //      kinematics got is on the line (within 1e-9 of its 206.16 mm), and RZ is 45 x the
 //      fraction of the path covered (orientation interpolated linearly)
@@ -96,16 +99,16 @@ void MCC_CALLBACK InitRobot(void *pvExtension)
     g_nInits++;
 }
 
-BOOL MCC_CALLBACK FwdKine(int, int nAxes, const double *pdfFrom, double *pdfTo, DWORD *pdwPosture, void *pvExt)
+BOOL MCC_CALLBACK FwdKine(int, int nAxes, const double *pdfFrom, double *pdfTo, DWORD &dwPosture, void *pvExt)
 {
-    (void)pdwPosture;
+    (void)dwPosture;
     CHECK_EQ(nAxes, 8);
     return Forward(*static_cast<RobotParams *>(pvExt), pdfFrom, pdfTo) ? 1 : 0;
 }
 
-BOOL MCC_CALLBACK InvKine(int, int, const double *pdfFrom, const double *, double *pdfTo, DWORD *pdwPosture, void *pvExt)
+BOOL MCC_CALLBACK InvKine(int, int, const double *pdfFrom, const double *, double *pdfTo, DWORD &dwPosture, void *pvExt)
 {
-    bool ok = Inverse(*static_cast<RobotParams *>(pvExt), pdfFrom, *pdwPosture, pdfTo);
+    bool ok = Inverse(*static_cast<RobotParams *>(pvExt), pdfFrom, dwPosture, pdfTo);
     std::lock_guard<std::mutex> lock(g_mutex);
     if (ok)
         g_points.push_back(std::vector<double>(pdfFrom, pdfFrom + 8));
@@ -151,29 +154,66 @@ std::vector<std::vector<double> > TakePoints()
     return v;
 }
 
+// Whole pulses of a joint, as the card counts them (the fraction of a pulse dropped).
+long JointPulses(double dfJoint)
+{
+    double x = dfJoint * EX_PPR;
+    return (long)(x >= 0 ? x + 1e-7 : x - 1e-7);
+}
+
+// The pulses and the position read are the joints' (whole pulses).
 void CheckPulsesAreJoints(const double j[8])
 {
     long p[8];
     CHECK_EQ(MCC_GetPulsePos(&p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &p[6], &p[7], 0), NO_ERR);
+    double q[8];
+    GetPos(0, q);
     for (int i = 0; i < 8; i++)
-        CHECK_EQ(p[i], PulsesOf(j[i]));
+    {
+        CHECK_EQ(p[i], JointPulses(j[i]));
+        CHECK_NEAR(q[i], (double)p[i] / EX_PPR, 1e-12);
+    }
+}
+
+// Where the tool is: the forward kinematics of the joints the group reads.
+void ToolPos(const RobotParams &r, double c[8])
+{
+    double q[8];
+    GetPos(0, q);
+    Forward(r, q, c);
+}
+
+// A pulse of 1/500 degree moves the tool at most (L1 + L2) x pi / 90000 = 0.0122 mm per
+// joint; both shoulder and elbow: 0.025 mm.
+const double kToolTol = 0.025;
+
+// The tool at (x, y, z) to within what the joints' whole pulses allow.
+void CheckToolXYZ(const RobotParams &r, double x, double y, double z)
+{
+    double c[8];
+    ToolPos(r, c);
+    CHECK_NEAR(c[0], x, kToolTol);
+    CHECK_NEAR(c[1], y, kToolTol);
+    CHECK_NEAR(c[2], z, kToolTol);
 }
 
 } // namespace
 
 int main()
 {
+    // 1. Group 0 is a robot: its kinematics are registered before the card starts.
+    CHECK_EQ(MCC_SetKinematicTrans(FwdKine, InvKine, sizeof(RobotParams), InitRobot, 0), NO_ERR);
+    CHECK_EQ(g_nInits, 0);
     if (InitSys8() != NO_ERR)
         return check_done("RobotArm");
     const WORD g = (WORD)g_nGroupIndex;
     printf("RobotArm: a SCARA robot with its own kinematics on group %d\n", g);
     RobotParams robot = {200.0, 150.0};
-
-    // 1. The group becomes a robot.
-    CHECK_EQ(MCC_SetKinematicTrans(FwdKine, InvKine, sizeof(RobotParams), InitRobot, g), NO_ERR);
     CHECK_EQ(g_nInits, 1);
+    CHECK_EQ(MCC_SetKinematicTrans(FwdKine, InvKine, sizeof(RobotParams), InitRobot, g), RUN_TIME_ERR);
     PrintPos(g, "Stretched out (all joints 0)");
-    CheckPosXYZ(g, 350, 0, 0);
+    CheckPosXYZ(g, 0, 0, 0);
+    CheckToolXYZ(robot, 350, 0, 0);
 
     // 2. Joint move to the ready pose.
     const double ready[8] = {250, 100, 50, 0, 0, 0, 0, 0};
@@ -182,10 +222,10 @@ int main()
     MCC_SetPtPSpeed(100, g); // 50 deg/s
     CHECK(MCC_PtP_V6(jReady[0], jReady[1], jReady[2], jReady[3], jReady[4], jReady[5], jReady[6], jReady[7], g) >= 0);
     WaitStop(g);
-    PrintPos(g, "Ready (MCC_PtP_V6)");
-    CheckPos8(g, ready);
+    PrintPos(g, "Ready (MCC_PtP_V6), joints");
     CheckPulsesAreJoints(jReady);
-    TakePoints();
+    CheckToolXYZ(robot, 250, 100, 50);
+    CHECK(TakePoints().empty()); // a joint move needs no inverse kinematics
 
     // 3. A straight line, the tool turning 45 degrees on the way.
     MCC_SetFeedSpeed(50, g);
@@ -210,7 +250,8 @@ int main()
     const double lineEnd[8] = {250, -100, 50, 0, 0, 45, 0, 0};
     double jEnd[8];
     CHECK(Inverse(robot, lineEnd, 0, jEnd));
-    CheckPos8(g, lineEnd);
+    for (int i = 0; i < 8; i++)
+        CHECK_NEAR(pts.back()[i], lineEnd[i], 1e-9); // the last point the tool reached
     CheckPulsesAreJoints(jEnd);
 
     // 4. A circle about (200, -100), the tool turning back to 0 over the turn.
@@ -219,8 +260,10 @@ int main()
     pts = TakePoints();
     for (size_t k = 0; k < pts.size(); k++)
         CHECK_NEAR(hypot(pts[k][0] - 200.0, pts[k][1] + 100.0), 50.0, 1e-9 * 314.2);
-    PrintPos(g, "After MCC_CircleXY_V6");
-    CheckPosXYZ(g, 250, -100, 50);
+    PrintPos(g, "After MCC_CircleXY_V6, joints");
+    CHECK_NEAR(pts.back()[0], 250, 1e-9);
+    CHECK_NEAR(pts.back()[1], -100, 1e-9);
+    CheckToolXYZ(robot, 250, -100, 50);
 
     // 5. Out of reach: the group stops with 0xF106 where the arm still reached.
     long before[8], after[8];
@@ -235,9 +278,9 @@ int main()
     for (int i = 0; i < 8; i++)
         CHECK_EQ(before[i], after[i]);
     double p[8];
-    GetPos(g, p);
+    ToolPos(robot, p);
     printf("  stopped at X = %.3f (reach: sqrt(350^2 - 100^2) = %.3f)\n", p[0], sqrt(350.0 * 350 - 100 * 100));
-    CHECK(p[0] <= sqrt(350.0 * 350 - 100 * 100) + 1e-9);
+    CHECK(p[0] <= sqrt(350.0 * 350 - 100 * 100) + kToolTol);
     CHECK_EQ(MCC_ClearError(g), NO_ERR);
 
     // 6. A tool offset through the pre-process callback.
@@ -245,8 +288,8 @@ int main()
     CHECK_EQ(MCC_SetPreProcessMotionCommandCallback(ToolOffset, g), NO_ERR);
     CHECK(MCC_Line_V6(200, 0, 50, 0, 0, 0, 0, 0, 0, g) >= 0);
     WaitStop(g);
-    PrintPos(g, "After MCC_Line_V6 to (200, 0) with a +10 mm Y tool offset");
-    CheckPosXYZ(g, 200, 10, 50);
+    PrintPos(g, "After MCC_Line_V6 to (200, 0) with a +10 mm Y tool offset, joints");
+    CheckToolXYZ(robot, 200, 10, 50);
 
     // 7. A custom curve on the robot: the library's own speed profile over the distance
     //    CurveStart returns, the geometry from CurveInterp, the joints from InvKine.
@@ -263,7 +306,9 @@ int main()
     printf("custom curve: %zu points, worst distance from the circle %.3g mm\n", pts.size(), dfWorst);
     CHECK(dfWorst <= 1e-9 * 2.0 * 3.14159265358979323846 * kR);
     CHECK_EQ(g_nCurveCleanups, 1);
-    CheckPosXYZ(g, 200, 10, 50);
+    CHECK_NEAR(pts.back()[0], 200, 1e-9);
+    CHECK_NEAR(pts.back()[1], 10, 1e-9);
+    CheckToolXYZ(robot, 200, 10, 50);
 
     Close();
     return check_done("RobotArm");

@@ -570,6 +570,13 @@ static void arm(fz_t *z)
     FZ_DO(z, "MCC_CreateGroup", "0..7, card 0", MCC_CreateGroup(0, 1, 2, 3, 4, 5, 6, 7, 0));
     /* Group 1: a robot on channel 7 (B), below. */
     FZ_DO(z, "MCC_CreateGroup", "B on 7, card 0", MCC_CreateGroup(-1, -1, -1, -1, -1, -1, -1, 7, 0));
+    /* Group 1 becomes a robot with the fuzzer's routines as its kinematics, registered
+     * before the card starts as the vendor's library takes them (their joints stay where
+     * they are: channel 7 stays at 0, as group 0 commands it). */
+    FZ_DO(z, "MCC_SetKinematicTrans", "fz routines, 64, fz routine, 1",
+          MCC_SetKinematicTrans((FWDKINEFUN)routine_named("FWDKINEFUN"),
+                                (INVKINEFUN)routine_named("INVKINEFUN"), 64,
+                                (INIT_EXTENSION)routine_named("INIT_EXTENSION"), 1));
     int ok = MCC_GetMotionStatus(0); /* not counted: the status before init */
     (void)ok;
     init_good(z);
@@ -602,13 +609,8 @@ static void arm(fz_t *z)
     FZ_DO(z, "MCC_SetRIOOutputValue", "0, 0, 0, 0", MCC_SetRIOOutputValue(0, 0, 0, 0));
     FZ_DO_REAL(z, "MCC_SetFeedSpeed", "100, 0", MCC_SetFeedSpeed(100, 0));
     FZ_DO(z, "MCC_Line", "35, 0.., 0, ALL", MCC_Line(35, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL));
-    /* Group 1 becomes a robot with the fuzzer's routines as its kinematics (their
-     * joints stay where they are: channel 7 stays at 0, as group 0 commands it) and
-     * pre-process routine, which runs when its Cartesian move starts. */
-    FZ_DO(z, "MCC_SetKinematicTrans", "fz routines, 64, fz routine, 1",
-          MCC_SetKinematicTrans((FWDKINEFUN)routine_named("FWDKINEFUN"),
-                                (INVKINEFUN)routine_named("INVKINEFUN"), 64,
-                                (INIT_EXTENSION)routine_named("INIT_EXTENSION"), 1));
+    /* Group 1, a robot (its kinematics registered before init, above), gets the
+     * fuzzer's pre-process routine, which runs when its Cartesian move starts. */
     FZ_DO(z, "MCC_SetPreProcessMotionCommandCallback", "fz routine, 1",
           MCC_SetPreProcessMotionCommandCallback(
               (PRE_PROCESS_MOTION_COMMAND)routine_named("PRE_PROCESS_MOTION_COMMAND"), 1));

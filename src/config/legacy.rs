@@ -6,8 +6,8 @@
 //! The old `HOME_CONFIG` has a `wType` (the constants `HM_NORMAL` = 0,
 //! `HM_SENSOR_ONLY` = 1, `HM_INDEX_ONLY` = 2, marked obsolete, and `HM_FIRST` = 3 ..
 //! `HM_LAST`), an approach and a leave direction, the sensor mode and the offset. Read
-//! here as: `wType` 3..16 is the go-home mode of `SYS_HOME_CONFIG.wMode` (the same
-//! numbers; 17..19 are refused as `MCC_SetHomeConfig` refuses them); `HM_SENSOR_ONLY` is
+//! here as: `wType` `HM_FIRST`..=`HM_LAST` (3..19) is the go-home mode of
+//! `SYS_HOME_CONFIG.wMode` (the same numbers; `MCC_Home` runs 3..16); `HM_SENSOR_ONLY` is
 //! mode 3 (search the home sensor only); `HM_NORMAL` is mode 5 (the home sensor at high
 //! speed, then the index pulse at low speed in the same direction); `HM_INDEX_ONLY` has no
 //! mode (every mode that counts index pulses first finds a sensor or switch) and is
@@ -28,7 +28,7 @@ pub fn home_mode(w_type: WORD) -> McclResult<WORD> {
     match i32::from(w_type) {
         c::HM_NORMAL => Ok(5),
         c::HM_SENSOR_ONLY => Ok(3),
-        3..=16 => Ok(w_type),
+        c::HM_FIRST..=c::HM_LAST => Ok(w_type),
         _ => Err(McclError::Parameter),
     }
 }
@@ -142,10 +142,12 @@ mod tests {
         assert_eq!(back.stHome.wType, 5, "read back as the mode");
         assert_eq!(back.stHome.wLeaveDir, 1, "against the approach");
         assert_eq!(back.dwPPR, 2000);
-        // HM_SENSOR_ONLY is mode 3; 3..16 pass as they are; the rest is refused.
+        // HM_SENSOR_ONLY is mode 3; HM_FIRST..HM_LAST (3..19) pass as they are; the
+        // rest is refused.
         assert_eq!(home_mode(1), Ok(3));
         assert_eq!(home_mode(16), Ok(16));
-        for bad in [2, 17, 19, 0xFFFF] {
+        assert_eq!(home_mode(19), Ok(19));
+        for bad in [2, 20, 0xFFFF] {
             assert_eq!(home_mode(bad), Err(McclError::Parameter), "{bad}");
         }
     }

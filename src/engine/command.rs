@@ -67,8 +67,6 @@ pub enum Plan {
     Output(Output),
     /// Custom motion: the program's callbacks give the path (`group/custom.rs`).
     Custom(super::group::custom::CustomMove),
-    /// A joint move of a kinematic group (`MCC_PtP_V6`, `super::kinematics`).
-    Joint(Box<super::kinematics::JointMove>),
     /// A command the vendor's library accepts and fails when it starts (an arc or circle
     /// with no geometry): it records this error record and stops the group.
     Fault(i32),
@@ -123,10 +121,7 @@ pub struct Command {
 impl Command {
     /// Whether it moves axes (general or PtP motion).
     pub fn is_motion(&self) -> bool {
-        matches!(
-            self.plan,
-            Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_) | Plan::Joint(_)
-        )
+        matches!(self.plan, Plan::Path(_) | Plan::Ptp(_) | Plan::Custom(_))
     }
 
     /// Where the plan starts.
@@ -136,7 +131,6 @@ impl Command {
             Plan::Path(m) => m.path.start(),
             Plan::Ptp(p) => p.start(),
             Plan::Custom(m) => m.start,
-            Plan::Joint(j) => j.cart_start,
             _ => self.target,
         }
     }
@@ -284,7 +278,9 @@ impl Ctx<'_> {
     /// `mask` keep their position (docs/decisions.md, "Axis masks").
     pub fn resolve(&self, args: &Axes, mask: u32) -> Axes {
         std::array::from_fn(|i| {
-            if mask & (1 << i) == 0 {
+            // An axis the group lacks does not move, as on the vendor's card (a line on
+            // a group of no axis is a move of no length: `group_no_axes_line`).
+            if mask & (1 << i) == 0 || self.axes[i].channel.is_none() {
                 self.from[i]
             } else if self.settings.absolute {
                 args[i]

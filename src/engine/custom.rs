@@ -18,8 +18,10 @@
 //! 3. under the lock: the distance `cur_dist` the speed profile reaches at tick k+1 (the
 //!    group's time scale — override, hold, abort — advanced by one period on a copy);
 //!    released, `interp` (or the blending callback) is called; under the lock the offset
-//!    it wrote is stored for tick k+1 to show. FALSE, the total reached, or
-//!    `*AbortThisCommand` set make tick k+1 the command's last.
+//!    it wrote is stored for tick k+1 to show. The total reached, or
+//!    `*AbortThisCommand` set, make tick k+1 the command's last; FALSE from a custom
+//!    motion's callback stops the group where it stands with error record 0xF107 (the
+//!    offset written with FALSE is not used), FALSE from an infinite motion's ends it.
 //!
 //! While a callback runs, the thread is marked ([`in_callback`]): queueing into the
 //! callback's own group and `MCC_InitSystem`/`MCC_CloseSystem` are refused with
@@ -42,9 +44,14 @@ use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 /// the position range (0xF10A, the library's own).
 pub const ERR_CUSTOM_MOTION: i32 = crate::error_record::ErrorRecord::CustomMotion.code();
 
-/// `COMMAND_INFO.nType` of a custom or infinite motion (the library's own: the manual's
-/// table ends at 10).
-pub const CTYPE_CUSTOM: i32 = 11;
+/// Error record of a custom motion whose interpolation callback returned FALSE (0xF107,
+/// as the vendor's library records it): the group stops where the callback's last good
+/// offset put it.
+pub const ERR_CUSTOM_FALSE: i32 = crate::error_record::ErrorRecord::CustomInterpolation.code();
+
+/// `COMMAND_INFO.nType` of a custom or infinite motion: 20, as the vendor's library
+/// reports it (the manual's table does not list it).
+pub const CTYPE_CUSTOM: i32 = 20;
 
 /// The interpolation callback of a command.
 #[derive(Debug, Clone, Copy)]
@@ -174,13 +181,14 @@ thread_local! {
     static IN_CALLBACK: Cell<Option<usize>> = const { Cell::new(None) };
 }
 
-/// The group whose custom-motion callback the calling thread is running.
+/// The group whose callback the calling thread is running for the library: a custom
+/// motion's, or a kinematics initialiser or forward kinematics run while the card starts.
 pub fn in_callback() -> Option<usize> {
     IN_CALLBACK.with(Cell::get)
 }
 
-/// Runs `f` marked as a callback of `group`.
-fn as_callback<R>(group: usize, f: impl FnOnce() -> R) -> R {
+/// Runs `f`, the program's code, marked as a callback of `group` ([`in_callback`]).
+pub(crate) fn as_callback<R>(group: usize, f: impl FnOnce() -> R) -> R {
     let prev = IN_CALLBACK.with(|c| c.replace(Some(group)));
     let r = f();
     IN_CALLBACK.with(|c| c.set(prev));
@@ -344,9 +352,13 @@ impl Shared {
                     }
                 }
             });
-            let blend_end = self
-                .nth_group(n)
-                .is_some_and(|mut g| g.custom_apply(spec.id, ok != 0, abort != 0, &next, step));
+            // Published at once: a callback that failed stops the group now, and the
+            // program's cycle routine of this period already reads the stop.
+            let blend_end = self.nth_group(n).is_some_and(|mut g| {
+                let blend_end = g.custom_apply(spec.id, ok != 0, abort != 0, &next, step);
+                self.publish(&mut g);
+                blend_end
+            });
             if blend_end {
                 if let Some(f) = spec.blending.and_then(|b| b.end) {
                     // SAFETY: a non-NULL CUSTOM_BLENDING_END of the program; the buffer is

@@ -1,34 +1,41 @@
 //! Robot kinematics of the virtual card (`MCC_SetKinematicTrans`): the program's forward
-//! and inverse kinematics, its extension buffer, the joint point-to-point move
-//! (`MCC_PtP_V6`), and the stage that runs the kinematics after every tick.
+//! and inverse kinematics, registered before the card starts and applied when it starts,
+//! their extension buffer, and the stage that runs the kinematics after every tick.
 //!
 //! # How a kinematic group runs
 //!
-//! The group's commands, its planner and its command position are Cartesian (X, Y, Z,
-//! RX, RY, RZ and two aux axes in the axes X..B); its channels carry joints
-//! ([`crate::engine::group::kinematics`] keeps them). The user's callbacks never run
-//! with a library lock held, so they may call any `MCC_*` function:
+//! As in the vendor's library, the group's channels carry joints and everything a program
+//! reads of the group is the joints': `MCC_GetCurPos`, `MCC_GetPulsePos`, the speeds.
+//! Point-to-point moves (`MCC_PtP_V6`, `MCC_PtP`, `MCC_SyncPtP`) move the joints;
+//! path commands (lines, arcs, circles, helices, the V6 curves, custom motion) move the
+//! tool in Cartesian space (X, Y, Z, RX, RY, RZ and two aux axes in the axes X..B).
+//! [`crate::engine::group::kinematics`] keeps the joints and which space the group's
+//! planner is in; it switches between the two when the next command needs the other
+//! one and nothing runs. The user's callbacks never run with a library lock held, so
+//! they may call any `MCC_*` function:
 //!
-//! 1. Tick k (`super::tick`): the group samples its Cartesian path as any group does,
-//!    then applies the joints the stage computed after tick k−1; the channels get those
-//!    joints' pulses.
+//! 1. Tick k (`super::tick`): the group moves as any group does; in joint space its
+//!    position is the joints, in Cartesian space the joints computed after tick k−1 are
+//!    applied. The channels get the joints' pulses.
 //! 2. After tick k, with every lock released (`Shared::kinematics_stage`, called by
-//!    the engine thread's loop): for each kinematic group, read under its lock the
-//!    Cartesian sample of tick k (the point the joints of tick k+1 go to), release the
-//!    lock, call the inverse kinematics with it and the previous joints, take the lock
-//!    again and store the joints for tick k+1 to apply.
+//!    the engine thread's loop): for each kinematic group, read under its lock what the
+//!    callbacks need (the Cartesian point of tick k, or the joints to convert when the
+//!    planner changes space), release the lock, call them, take the lock again and store
+//!    the result.
 //!
-//! So the joints follow the Cartesian planner one interpolation period later, and the
-//! group reports `GMS_STOP` only once the joints of the planner's last point are out.
-//! Everything happens on the engine thread in tick order: the same under the fast,
+//! So in Cartesian space the joints follow the planner one interpolation period later,
+//! and the group reports `GMS_STOP` only once the joints of the planner's last point are
+//! out. Everything happens on the engine thread in tick order: the same under the fast,
 //! stepped and realtime clocks. A `FALSE` (or a non-finite joint) from the inverse
 //! kinematics stops the group with error record 0xF106: the joints stay where they were
 //! (no jump) and the Cartesian position goes back to the last point they reached.
 
 use super::shared::Shared;
-use crate::config::AXES;
-use crate::planner::{Axes, PlanError, PtpMove, Shape};
+use crate::config::{AXES, GROUPS};
+use crate::error::{McclError, McclResult};
+use crate::planner::Axes;
 use crate::vendor::{BOOL, DWORD, FWDKINEFUN, INIT_EXTENSION, INVKINEFUN};
+use parking_lot::Mutex;
 use std::ffi::c_void;
 use std::os::raw::c_int;
 use std::sync::atomic::Ordering;
@@ -169,65 +176,84 @@ pub fn init_extension(f: INIT_EXTENSION, ext: &Extension) {
     }
 }
 
-/// `MCC_PtP_V6`: a point-to-point move of the joints. It is planned when it starts, from
-/// the joints then (which the Cartesian moves before it leave only at run time), with
-/// the group's ramps and speeds captured when it was queued; all joints start and end
-/// together. Its Cartesian end is the forward kinematics of its target, computed when it
-/// was queued.
-#[derive(Debug, Clone)]
-pub struct JointMove {
-    /// Joint targets.
-    pub target: Axes,
-    /// Cartesian position where it starts (the end of the queue before it).
-    pub cart_start: Axes,
-    /// Cartesian position of `target`.
-    pub cart_end: Axes,
-    /// Per-joint speed, UU/s.
-    pub speed: Axes,
-    /// Acceleration and deceleration periods.
-    pub ramps: (u32, u32),
-    /// Acceleration and deceleration shapes.
-    pub shapes: (Shape, Shape),
-    /// The interpolation period, s.
-    pub period_s: f64,
-    /// The move, once planned from the joints where it started.
-    pub planned: Option<PtpMove>,
+/// A group's kinematics as the program registers them before the card starts
+/// (`MCC_SetKinematicTrans`): checked (both callbacks given, the extension's size at most
+/// [`MAX_EXTENSION_BYTES`]) and kept until the next successful init applies them.
+#[derive(Debug, Clone, Copy)]
+pub struct Registration {
+    /// Forward kinematics (never NULL).
+    pub fwd: FWDKINEFUN,
+    /// Inverse kinematics (never NULL).
+    pub inv: INVKINEFUN,
+    /// Bytes of the extension buffer.
+    pub ext_size: u64,
+    /// The extension's initialiser (may be NULL).
+    pub init: INIT_EXTENSION,
 }
 
-impl JointMove {
-    /// Plans the move from `from` (the joints where it starts).
-    pub fn plan(&self, from: &Axes) -> Result<PtpMove, PlanError> {
-        PtpMove::new(
-            from,
-            &self.target,
-            &self.speed,
-            &[self.ramps; AXES],
-            &[self.shapes; AXES],
-            self.period_s,
-            true,
-        )
-    }
+/// The registrations made since the last init, per group index.
+static REGISTERED: Mutex<[Option<Registration>; GROUPS]> = Mutex::new([None; GROUPS]);
 
-    /// Periods it lasts (0 until planned).
-    pub fn periods(&self) -> u64 {
-        self.planned.as_ref().map_or(0, PtpMove::periods)
+/// Registers kinematics for group `group` (replacing an earlier registration of it);
+/// they take effect at the next init. `PARAMETER_ERR` for NULL callbacks or an extension
+/// over [`MAX_EXTENSION_BYTES`], `GROUP_PARAMETER_ERR` for a group index out of range.
+pub fn register(group: usize, r: Registration) -> McclResult<()> {
+    if r.fwd.is_none() || r.inv.is_none() || r.ext_size > MAX_EXTENSION_BYTES {
+        return Err(McclError::Parameter);
     }
+    let mut all = REGISTERED.lock();
+    let slot = all.get_mut(group).ok_or(McclError::Group)?;
+    *slot = Some(r);
+    Ok(())
+}
 
-    /// The joints after `k` periods.
-    pub fn joints_at(&self, k: u64) -> Axes {
-        self.planned.as_ref().map_or(self.target, |m| m.position(k))
-    }
+/// The registrations waiting for the next init, `(group, registration)`.
+pub fn registered() -> Vec<(usize, Registration)> {
+    let all = REGISTERED.lock();
+    all.iter()
+        .enumerate()
+        .filter_map(|(g, r)| r.map(|r| (g, r)))
+        .collect()
+}
 
-    /// The group's Cartesian command position after `k` periods: the start until the
-    /// joints arrive, then the end (the Cartesian path of a joint move is whatever the
-    /// joints make of it; `MCC_GetCurPos` reads it through the forward kinematics).
-    pub fn cart_at(&self, k: u64) -> Axes {
-        if k >= self.periods() {
-            self.cart_end
-        } else {
-            self.cart_start
-        }
+/// An init applied the registrations: they are used up (the next init runs without
+/// kinematics unless the program registers them again, as its groups are made again).
+pub fn clear_registered() {
+    *REGISTERED.lock() = [None; GROUPS];
+}
+
+/// Applies `regs` to the groups of a system being started (before any other thread can
+/// reach it; call with no lock held: the program's initialisers and forward kinematics
+/// run here, marked as callbacks so that they cannot start or close a system). A
+/// registration for a group that does not run is passed over. Each extension is
+/// allocated zeroed and initialised once; the group keeps its joints (its channels'
+/// positions) and its Cartesian position is the forward kinematics of them. A group on
+/// an MC3B, or a forward kinematics failing there, is `COMMAND_NOTACCEPTED_ERR`.
+pub fn apply_registrations(shared: &Shared, regs: &[(usize, Registration)]) -> McclResult<()> {
+    for &(g, r) in regs {
+        let Ok(index) = u16::try_from(g) else {
+            continue;
+        };
+        let joints = match shared.group(index) {
+            Ok(grp) => grp.current_joints(),
+            Err(_) => continue,
+        };
+        let ext = Arc::new(Extension::new(r.ext_size)?);
+        super::custom::as_callback(g, || init_extension(r.init, &ext));
+        let fns = KinFns {
+            fwd: r.fwd,
+            inv: r.inv,
+            ext,
+        };
+        let mut posture: DWORD = 0;
+        let cart = super::custom::as_callback(g, || fns.forward(g, &joints, &mut posture))
+            .ok_or(McclError::NotAccepted)?;
+        let mut grp = shared.group(index)?;
+        grp.set_kinematics(fns, joints, cart, posture)?;
+        shared.kinematics_on.store(true, Ordering::Release);
+        shared.publish(&mut grp);
     }
+    Ok(())
 }
 
 impl Shared {

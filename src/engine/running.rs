@@ -112,6 +112,12 @@ impl Drop for Engine {
             }
         }
         if let Some(t) = self.shared.trace.lock().as_mut() {
+            // No tick follows: what the groups noted since their last row (a call made
+            // just before the close, an abort) and the ends of the commands the close
+            // cuts short are written at the end of the last tick.
+            let sh = &self.shared;
+            let t_ns = u128::from(sh.clock.ticks()) * sh.clock.period_nanos();
+            t.close_groups(t_ns, &mut sh.lock_groups());
             t.flush();
         }
     }

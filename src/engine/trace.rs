@@ -7,7 +7,9 @@
 //! `time_ms,card,group,kind,detail` (group -1 for card events; `detail` is
 //! space-separated `key=value` pairs, never a comma). Groups note their events where they
 //! happen ([`Note`], only while tracing); the card's inputs, go home and interrupts are
-//! compared with the last tick here. Kinds: `config` (per mapped axis, at time 0: the
+//! compared with the last tick here. When the system closes, the notes no row took yet
+//! and the ends of the commands the close cuts short are written at the end of the last
+//! tick ([`Trace::close_groups`]): every command started in the file ends there. Kinds: `config` (per mapped axis, at time 0: the
 //! mechanism parameters the limits come from), `cmd_start`, `cmd_end`, `hold`,
 //! `continue`, `abort`, `error_set`, `error_cleared`, `inpos_begin`, `inpos_done`,
 //! `inpos_fail`, `limit_plus`, `limit_minus`, `home_input`, `emergency_stop`,
@@ -140,6 +142,17 @@ impl Trace {
         for n in notes.drain(..) {
             let (kind, detail) = note_text(&n);
             self.events.write(t_ns, card, g.index as i64, kind, &detail);
+        }
+    }
+
+    /// The system closes at `t_ns` (no tick follows): each group's events noted since
+    /// its last row, then the end (`stopped`) of every command still running, which the
+    /// close cuts short. Without this an abort called just before the close, and the
+    /// command it stopped, would have no line, and the command no end.
+    pub fn close_groups(&mut self, t_ns: u128, groups: &mut [GroupState]) {
+        for g in groups {
+            g.note_stopped();
+            self.group_events(t_ns, g);
         }
     }
 
@@ -323,6 +336,7 @@ pub fn ctype_name(t: i32) -> &'static str {
         ctype::BLEND_OFF => "BLEND_OFF",
         ctype::INPOS_ON => "INPOS_ON",
         ctype::INPOS_OFF => "INPOS_OFF",
+        super::custom::CTYPE_CUSTOM => "CUSTOM",
         _ => "OTHER",
     }
 }

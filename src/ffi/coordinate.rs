@@ -28,26 +28,20 @@ pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
 
 /// The position of group `g` as the machine counts it (its pulses in UU, with the shift
 /// `MCC_DefineOrigin` made and the compensation its channels add, as the vendor's library
-/// counts it); for a kinematic group the forward kinematics of its joints.
+/// counts it); for a kinematic group its joints.
 fn cur_pos(g: WORD) -> McclResult<[f64; 8]> {
     let shared = system::active()?;
     shared.poll_position(g);
-    match super::kinematics::cur_pos(&shared, g)? {
-        Some(cart) => Ok(cart),
-        None => Ok(shared
-            .published(g)?
-            .load_machine_pos(&shared.compensation(g))),
-    }
+    Ok(shared
+        .published(g)?
+        .load_machine_pos(&shared.compensation(g)))
 }
 
-/// The pulse position of group `g` per axis; for a kinematic group its joints' pulses.
+/// The pulse position of group `g` per axis; for a kinematic group its joints'.
 fn pulse_pos(g: WORD) -> McclResult<[i64; 8]> {
     let shared = system::active()?;
     let published = shared.published(g)?;
-    match super::kinematics::joint_pulses(&shared, g)? {
-        Some(joints) => Ok(joints),
-        None => Ok(published.load_pulses(&shared.compensation(g))),
-    }
+    Ok(published.load_pulses(&shared.compensation(g)))
 }
 
 per_axis_getters! {

@@ -3,8 +3,9 @@
 //! the homing itself runs on the engine (src/engine/homing.rs).
 
 use super::card;
-use crate::engine::homing::home_orders;
-use crate::error::McclResult;
+use crate::config::HOME_MODES_RUN;
+use crate::engine::homing::{home_orders, ORDER_SKIP};
+use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
@@ -12,10 +13,21 @@ use std::os::raw::c_int;
 
 /// Starts homing the channels of card `wCardIndex` in the go-home orders `orders`
 /// (checked by `engine::homing::home_orders`) with the go-home parameters set for them.
+/// A homed channel whose mode is one `MCC_SetHomeConfig` keeps but the manual does not
+/// describe (0..2, 17..19) is `PARAMETER_ERR` and nothing moves: how the vendor's card
+/// homes in those modes cannot be known from its simulation (it homes nothing there), and
+/// a motor must not move in a way the program cannot know.
 fn home(orders: [c_int; 8], wCardIndex: WORD) -> McclResult<c_int> {
     let cd = card(wCardIndex)?;
     let orders = home_orders(orders)?;
     let cfgs = system::config(|c| c.home[cd.0]);
+    let unknown_mode = orders
+        .iter()
+        .zip(&cfgs)
+        .any(|(&o, h)| o != ORDER_SKIP && !HOME_MODES_RUN.contains(&h.wMode));
+    if unknown_mode {
+        return Err(McclError::Parameter);
+    }
     let shared = system::active()?;
     let cd = shared.card(cd)?;
     shared.start_homing(cd, orders, &cfgs)?;

@@ -7,20 +7,15 @@ use super::motion::direction;
 use super::{finite, finite8, with_group, ERR_BAD_ARC};
 use crate::engine::command::Curve;
 use crate::engine::command::{Command, Ctx};
-use crate::engine::group::kinematics::joint_command;
-use crate::engine::group::GroupState;
-use crate::engine::kinematics::{init_extension, Extension, JointMove, KinFns};
-use crate::engine::Shared;
+use crate::engine::kinematics::{register, Registration};
 use crate::error::{McclError, McclResult};
-use crate::planner::{Axes, Path, PlanError, Plane, PtpMove};
+use crate::planner::{Axes, Path, PlanError, Plane};
 use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{
     BYTE, DWORD, FWDKINEFUN, INIT_EXTENSION, INVKINEFUN, PRE_PROCESS_MOTION_COMMAND, WORD,
 };
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
-use std::sync::Arc;
 
 /// The group index of an `int nGroup` (`GROUP_PARAMETER_ERR` when negative or too big).
 fn group_of(n: c_int) -> McclResult<u16> {
@@ -34,40 +29,32 @@ fn set_kinematic_trans(
     init: INIT_EXTENSION,
     n: c_int,
 ) -> McclResult<c_int> {
-    if fwd.is_none() || inv.is_none() {
-        return Err(McclError::Parameter);
+    // As the vendor's library: kinematics are registered before the card starts.
+    if system::active().is_ok() {
+        return Err(McclError::RunTime);
     }
     let g = group_of(n)?;
-    let shared = system::active()?;
-    let joints = {
-        let grp = shared.group(g)?;
-        if grp.busy() {
-            return Err(McclError::NotFinished);
-        }
-        grp.current_joints()
-    };
-    let ext = Arc::new(Extension::new(u64::from(size))?);
-    // The program's code runs with no lock held.
-    init_extension(init, &ext);
-    let fns = KinFns { fwd, inv, ext };
-    let mut posture: DWORD = 0;
-    let cart = fns
-        .forward(usize::from(g), &joints, &mut posture)
-        .ok_or(McclError::NotAccepted)?;
-    let mut grp = shared.group(g)?;
-    grp.set_kinematics(fns, joints, cart, posture)?;
-    shared.kinematics_on.store(true, Ordering::Release);
-    shared.publish(&mut grp);
+    register(
+        usize::from(g),
+        Registration {
+            fwd,
+            inv,
+            ext_size: u64::from(size),
+            init,
+        },
+    )?;
     Ok(c::NO_ERR)
 }
 
-/// Makes group `nGroup` a kinematic group: its commands and positions are Cartesian (X,
-/// Y, Z, RX, RY, RZ in the axes X..W, two aux axes in A and B), its channels carry the
-/// joints `pfnInvKinematics` computes every tick. A zeroed extension of
-/// `dwExtensionSize` bytes (at most 16 MiB) goes to every kinematics call;
-/// `pfnInitExtension` (may be NULL) is called on it once, here. Only while the group
-/// stands still; its joints stay where they are and its Cartesian position becomes
-/// `pfnFwdKinematics` of them.
+/// Registers the kinematics of group `nGroup`, before the card starts (as the vendor's
+/// library takes them; once it runs, `RUN_TIME_ERR`). The next `MCC_InitSystem` or
+/// `MCC_InitSimulation` applies them: it allocates a zeroed extension of
+/// `dwExtensionSize` bytes (at most 16 MiB) for every kinematics call, calls
+/// `pfnInitExtension` (may be NULL) on it once, and the group's channels carry joints:
+/// what a program reads of the group is its joints, its path commands (lines, arcs, the
+/// V6 curves) move the tool in Cartesian space (X, Y, Z, RX, RY, RZ in the axes X..W,
+/// two aux axes in A and B) through `pfnInvKinematics` every tick, its point-to-point
+/// moves move the joints. Registering a group again replaces the registration.
 #[no_mangle]
 pub extern "C" fn MCC_SetKinematicTrans(
     pfnFwdKinematics: FWDKINEFUN,
@@ -99,40 +86,6 @@ pub extern "C" fn MCC_SetPreProcessMotionCommandCallback(
             Ok(c::NO_ERR)
         })
     }
-}
-
-/// For `MCC_GetCurPos` on a kinematic group: the forward kinematics of the joints the
-/// channels carry, called with no lock held; `None` for a group that is not kinematic
-/// (without taking its lock while no group of the system is kinematic).
-/// A failing forward kinematics stops the group with 0xF105 and the read fails with
-/// `COMMAND_NOTACCEPTED_ERR`.
-pub(super) fn cur_pos(shared: &Shared, g: WORD) -> McclResult<Option<Axes>> {
-    if !shared.kinematics_on.load(Ordering::Acquire) {
-        return Ok(None);
-    }
-    let Some((fns, joints, mut posture, generation)) = shared.group(g)?.kinematics_reading() else {
-        return Ok(None);
-    };
-    match fns.forward(usize::from(g), &joints, &mut posture) {
-        Some(cart) => Ok(Some(cart)),
-        None => {
-            let mut grp = shared.group(g)?;
-            grp.forward_failed(generation);
-            shared.publish(&mut grp);
-            Err(McclError::NotAccepted)
-        }
-    }
-}
-
-/// For `MCC_GetPulsePos` on a kinematic group: its joints' pulses (the published
-/// snapshot derives pulses from the Cartesian position); `None` for another group. Takes
-/// the group's lock only while some group of the system is kinematic.
-pub(super) fn joint_pulses(shared: &Shared, g: WORD) -> McclResult<Option<[i64; 8]>> {
-    if !shared.kinematics_on.load(Ordering::Acquire) {
-        return Ok(None);
-    }
-    let pulses = shared.group(g)?.kinematics_joint_pulses();
-    Ok(pulses)
 }
 
 /// Queues a V6 command: `plan` builds it from the context, the posture goes with it.
@@ -350,91 +303,78 @@ plane_circles_v6! {
     MCC_CircleZX_V6(cz, cx) => ZX;
 }
 
-/// What `MCC_PtP_V6` reads under the group's lock before the forward kinematics.
+/// What a joint move reads under the group's lock before the kinematics run.
 struct JointPlan {
-    fns: KinFns,
+    fns: crate::engine::kinematics::KinFns,
     posture: DWORD,
+    /// The queue's (Cartesian) end when it was read.
     queue_end: Axes,
-    mv: JointMove,
-    ratio: f64,
-    acc_ms: f64,
-    dec_ms: f64,
+    /// The joints at the queue's end, when known.
+    joints: Option<Axes>,
+    /// The joints of the group now (or due next).
+    now: Axes,
 }
 
-fn joint_plan(g: &GroupState, args: &Axes, m: u32) -> McclResult<JointPlan> {
-    let (fns, _, posture, _) = g.kinematics_reading().ok_or(McclError::NotAccepted)?;
-    let s = &g.settings;
-    let base = if m == 0xFF && s.absolute {
-        None
-    } else {
-        Some(g.queue_end_joints().ok_or(McclError::NotFinished)?)
-    };
-    let target: Axes = std::array::from_fn(|i| match base {
-        Some(b) if m & (1 << i) == 0 => b[i],
-        Some(b) if !s.absolute => b[i] + args[i],
-        _ => args[i],
-    });
-    for (x, a) in target.iter().zip(&g.axes) {
-        crate::config::range::position(*x, a.factor)?;
-    }
-    let ratio = s.ptp_ratio;
-    let speed: Axes = std::array::from_fn(|i| g.axes[i].safe_speed * ratio / 100.0);
-    let queue_end = g.ctx().from;
-    let mv = JointMove {
-        target,
-        cart_start: queue_end,
-        cart_end: queue_end,
-        speed,
-        ramps: crate::planner::ramp_periods(s.acc_ms, s.dec_ms, g.period_ms()),
-        shapes: (s.acc, s.dec),
-        period_s: g.period_ms() / 1000.0,
-        planned: None,
-    };
-    // The numbers are checked here (the move is planned again where it starts).
-    let from = base.unwrap_or(target);
-    let trial: Result<PtpMove, PlanError> = mv.plan(&from);
-    trial.map_err(|_| McclError::Parameter)?;
-    Ok(JointPlan {
-        fns,
-        posture,
-        queue_end,
-        mv,
-        ratio,
-        acc_ms: s.acc_ms,
-        dec_ms: s.dec_ms,
-    })
-}
-
-fn ptp_v6(args: Axes, g: WORD, m: DWORD) -> McclResult<c_int> {
-    let args = finite8(args)?;
-    let m = super::axis_mask(m)?;
+/// Queues a point-to-point move of a kinematic group's joints (`MCC_PtP_V6`, and
+/// `MCC_PtP`/`MCC_SyncPtP` on a kinematic group, as the vendor's library moves them):
+/// `args` are joints, resolved against the joints at the queue's end (absolute, or
+/// incremental, axes outside `m` keep theirs). Where those are not known yet (the queue
+/// ends with a path command), they are the inverse kinematics of the queue's end. The
+/// queue's Cartesian end becomes the forward kinematics of the target. `None` for a group
+/// that is not kinematic. The kinematics run on this thread with no lock held.
+pub(super) fn joint_ptp(args: Axes, g: WORD, m: u32, sync: bool) -> McclResult<Option<c_int>> {
     let shared = system::active()?;
-    let mut p = joint_plan(&*shared.group(g)?, &args, m)?;
-    // The Cartesian end, computed with no lock held.
-    let cart = p
+    let plan = {
+        let grp = shared.group(g)?;
+        let Some((fns, posture)) = grp.kinematics_fns() else {
+            return Ok(None);
+        };
+        JointPlan {
+            fns,
+            posture,
+            queue_end: grp.ctx().from,
+            joints: grp.queue_end_joints(),
+            now: grp.current_joints(),
+        }
+    };
+    let gi = usize::from(g);
+    let mut posture = plan.posture;
+    let from = match plan.joints {
+        Some(j) => j,
+        None => plan
+            .fns
+            .inverse(gi, &plan.queue_end, &plan.now, &mut posture)
+            .ok_or(McclError::NotFinished)?,
+    };
+    let target = {
+        let grp = shared.group(g)?;
+        let ctx = Ctx { from, ..grp.ctx() };
+        ctx.resolve(&args, m)
+    };
+    let cart = plan
         .fns
-        .forward(usize::from(g), &p.mv.target, &mut p.posture)
+        .forward(gi, &target, &mut posture)
         .ok_or(McclError::Parameter)?;
-    p.mv.cart_end = cart;
     with_group(g, |grp| {
-        if grp.ctx().from != p.queue_end || !grp.is_kinematic() {
-            // Another thread queued meanwhile: the joint move would start elsewhere.
+        if grp.ctx().from != plan.queue_end || !grp.is_kinematic() {
+            // Another thread queued meanwhile: the move would start elsewhere.
             return Err(McclError::NotFinished);
         }
         let pts: Vec<(usize, f64)> = cart.iter().copied().enumerate().collect();
         grp.ctx()
             .check_points(&pts)
             .map_err(|_| McclError::Parameter)?;
-        let target = p.mv.target;
-        let cmd = joint_command(p.mv, p.ratio, p.acc_ms, p.dec_ms);
-        grp.enqueue_joint_move(cmd, target)
+        let ctx = Ctx { from, ..grp.ctx() };
+        let cmd: Command = ctx.ptp(target, ctx.settings.ptp_ratio, sync)?;
+        grp.enqueue_joint_move(cmd, target, cart).map(Some)
     })
 }
 
 /// Moves the joints of a kinematic group point-to-point to (j0..j7), all starting and
-/// ending together, with the group's PtP speed ratio and acc/dec settings (per joint:
-/// the speeds and limits of the channels they run on). Joints outside `dwAxisMask` keep
-/// their position. `COMMAND_NOTACCEPTED_ERR` on a group that is not kinematic.
+/// ending together, as `MCC_SyncPtP` moves the axes of any group (the vendor's library
+/// moves them so, tick for tick): with the group's PtP speed ratio and acc/dec settings,
+/// per joint the speeds and limits of the channels they run on. Joints outside
+/// `dwAxisMask` keep their position. On a group without kinematics it is `MCC_SyncPtP`.
 #[no_mangle]
 pub extern "C" fn MCC_PtP_V6(
     j0: f64,
@@ -448,5 +388,16 @@ pub extern "C" fn MCC_PtP_V6(
     wGroupIndex: WORD,
     dwAxisMask: DWORD,
 ) -> c_int {
-    ffi_boundary! { ptp_v6([j0, j1, j2, j3, j4, j5, j6, j7], wGroupIndex, dwAxisMask) }
+    ffi_boundary! {
+        let args = finite8([j0, j1, j2, j3, j4, j5, j6, j7])?;
+        let m = super::axis_mask(dwAxisMask)?;
+        match joint_ptp(args, wGroupIndex, m, true)? {
+            Some(i) => Ok(i),
+            None => with_group(wGroupIndex, |grp| {
+                let ctx = grp.ctx();
+                let cmd = ctx.ptp(ctx.resolve(&args, m), ctx.settings.ptp_ratio, true)?;
+                grp.enqueue(cmd)
+            }),
+        }
+    }
 }

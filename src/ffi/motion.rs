@@ -151,6 +151,10 @@ per_axis_getters! {
 fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
     let args = finite8(args)?;
     let m = axis_mask(m)?;
+    // A kinematic group's PtP moves its joints.
+    if let Some(i) = super::kinematics::joint_ptp(args, g, m, sync)? {
+        return Ok(i);
+    }
     queue(g, |ctx| {
         ctx.ptp(ctx.resolve(&args, m), ctx.settings.ptp_ratio, sync)
     })

@@ -70,7 +70,8 @@ pointer_fns! {
     /// Reads the encoder configuration last set for one channel.
     MCC_GetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
         = get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder);
-    /// Sets the go-home parameters of one channel (§2.4.3); mode 3..16.
+    /// Sets the go-home parameters of one channel (§2.4.3); mode 0..19 (`MCC_Home` runs
+    /// 3..16).
     MCC_SetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
         = set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config);
     /// Reads the go-home parameters last set for one channel.

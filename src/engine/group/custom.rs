@@ -4,15 +4,18 @@
 //! A custom command does not advance in the tick (`execution.rs` leaves it to its stage):
 //! the stage moves its track ([`super::track::Track`], the library's profile along the
 //! total distance) one period ahead when it asks the callback for the next position. It
-//! ends (the tick after retires it at the offset the callback gave last) when the
-//! callback returns FALSE, sets `*AbortThisCommand`, or the track reaches the total
-//! distance. A hold, a continue and an override act on the track as on any motion's.
+//! ends (the tick after retires it at the offset the callback gave last) when an infinite
+//! motion's callback returns FALSE or sets `*AbortThisCommand`, or the track reaches the
+//! total distance; FALSE from a custom motion's callback stops the group with error
+//! record 0xF107. A hold, a continue and an override act on the track as on any motion's.
 
 use super::track::Track;
 use super::GroupState;
 use crate::config::{range, AXES};
 use crate::engine::command::{Command, Ctx, Plan};
-use crate::engine::custom::{CustomSpec, Interp, CTYPE_CUSTOM, ERR_CUSTOM_MOTION};
+use crate::engine::custom::{
+    CustomSpec, Interp, CTYPE_CUSTOM, ERR_CUSTOM_FALSE, ERR_CUSTOM_MOTION,
+};
 use crate::planner::{ramp_periods, Axes, Shape, TickProfile};
 use std::os::raw::c_int;
 use std::sync::Arc;
@@ -120,9 +123,6 @@ fn translate(cmd: &mut Command, d: &Axes) {
             }
         }
         Plan::Delay(_) | Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) | Plan::Fault(_) => {}
-        // A joint move (MCC_PtP_V6) goes to the joints it names, wherever the curve ended:
-        // neither it nor its target moves.
-        Plan::Joint(_) => return,
     }
     for (t, d) in cmd.target.iter_mut().zip(d) {
         *t += d;
@@ -361,6 +361,14 @@ impl GroupState {
         let Some((_, m)) = self.custom_running(Some(id)) else {
             return false;
         };
+        if !ok && matches!(m.spec.interp, Interp::Custom(_)) {
+            // As the vendor's library: FALSE is a failure, not an end. The group stops
+            // where the last good offset put it, with error record 0xF107.
+            let blend_end = m.run.blending && !m.run.blend_done;
+            m.run.blend_done |= blend_end;
+            self.stop_for(Some(ERR_CUSTOM_FALSE));
+            return blend_end;
+        }
         let mask = m.spec.mask;
         let next: Axes = std::array::from_fn(|i| if mask & (1 << i) != 0 { next[i] } else { 0.0 });
         let bad = (0..AXES).any(|i| {

@@ -125,7 +125,7 @@ impl Running {
                 }
             }
             Plan::Delay(n) => Progress::Delay { left: *n },
-            Plan::Custom(_) | Plan::Joint(_) => Progress::Staged,
+            Plan::Custom(_) => Progress::Staged,
             Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_) | Plan::Fault(_) => Progress::Switch,
         };
         Running {
@@ -265,7 +265,6 @@ impl Running {
                 })
             }
             (_, Plan::Custom(m)) => m.sample().0,
-            (_, Plan::Joint(j)) => j.cart_at(self.periods),
             _ => self.cmd.target,
         }
     }
@@ -281,7 +280,6 @@ impl Running {
             Progress::Switch => self.periods >= 1,
             Progress::Staged => match &self.cmd.plan {
                 Plan::Custom(m) => m.ended(),
-                Plan::Joint(j) => self.periods >= j.periods(),
                 _ => false,
             },
         }

@@ -1,15 +1,37 @@
 //! A kinematic group's joints (`MCC_SetKinematicTrans`) and its side of the kinematics
-//! stage: what the stage reads under the group's lock (`GroupState::kinematics_job`),
-//! the callbacks it runs without the lock ([`Job::call`]), and what it stores afterwards
-//! (`GroupState::kinematics_done`). The model is in [`crate::engine::kinematics`].
+//! stage: which space its planner is in, what the stage reads under the group's lock
+//! (`GroupState::kinematics_job`), the callbacks it runs without the lock ([`Job::call`]),
+//! and what it stores afterwards (`GroupState::kinematics_done`). The model is in
+//! [`crate::engine::kinematics`].
+//!
+//! # The planner's two spaces
+//!
+//! In joint space (after the kinematics are applied, and for point-to-point moves) the
+//! group's positions are its joints: a PtP runs as on any group, and what it publishes
+//! is the joints' own positions, speeds and command. In Cartesian space (for path
+//! commands) its positions are the tool's, and it publishes the joints the stage computed
+//! from them instead (`GroupState::kinematics_published`). The group's queue end is
+//! Cartesian in both (path commands are resolved and planned against it; a joint move
+//! queued sets it to the forward kinematics of its target).
+//!
+//! The space changes only while nothing runs, when the next command to start needs the
+//! other one; that command waits until then (`GroupState::kinematics_ready`):
+//!
+//! * to joint space, under the lock (no callback needed): the planner's position becomes
+//!   the joints out now; the PtP is planned again from there if it was queued from other
+//!   joints;
+//! * to Cartesian space, in the stage: the forward kinematics of the joints is where the
+//!   tool is; the path command is planned again from there if it was queued from another
+//!   point (a line keeps its target, a curve its shape), so that the joints never jump.
 
 use super::GroupState;
 use crate::config::AXES;
 use crate::engine::command::{Command, Plan};
-use crate::engine::kinematics::{JointMove, KinFns, KIN_AXES};
+use crate::engine::kinematics::{KinFns, KIN_AXES};
+use crate::engine::snapshot::{whole_pulses, Motion};
 use crate::error::{McclError, McclResult};
 use crate::error_record::ErrorRecord;
-use crate::planner::{Axes, Path, PathMove};
+use crate::planner::{Axes, Path, PathMove, PtpMove};
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, PRE_PROCESS_MOTION_COMMAND};
 use std::os::raw::c_int;
@@ -24,24 +46,39 @@ pub const ERR_INVERSE: i32 = ErrorRecord::InverseKinematics.code();
 /// dropped.
 static GENERATION: AtomicU64 = AtomicU64::new(1);
 
+/// The space a kinematic group's planner works in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Space {
+    /// Positions are joints (point-to-point moves).
+    Joint,
+    /// Positions are the tool's (path commands).
+    Cartesian,
+}
+
 /// The kinematics of a group.
 #[derive(Debug)]
 pub struct Kinematics {
     fns: KinFns,
     pre: PRE_PROCESS_MOTION_COMMAND,
     generation: u64,
+    space: Space,
     /// The joints the channels carry now.
     joints: Axes,
-    /// The joints the next tick applies (computed by the stage).
+    /// The joints the next tick applies (computed by the stage, Cartesian space).
     next: Option<Axes>,
-    /// The Cartesian point of the latest joints (`None` inside a joint move).
+    /// In Cartesian space, the Cartesian point of the latest joints.
     cart: Option<Axes>,
+    /// The joints' speeds over the last period (UU/s) and their composed speed, what the
+    /// group publishes in Cartesian space.
+    vel: Axes,
+    feed: f64,
+    /// In joint space, the joints whose Cartesian point is the queue end, when the group
+    /// stopped somewhere else (an abort, an error): the stage finds where the tool is.
+    queue_end_stale: bool,
     /// The posture handed to the kinematics (each V6 command sets it when it starts;
     /// the callbacks may change it).
     posture: DWORD,
-    /// A joint move seen running: its joint target and Cartesian end.
-    joint_move: Option<(Axes, Axes)>,
-    /// The joints at the end of the queue when that end is a joint target:
+    /// The joints at the end of the queue when that end is a joint move:
     /// `(Cartesian queue end, joints)`.
     queued_joints: Option<(Axes, Axes)>,
     /// The queued command the pre-process callback has seen: (commands started then,
@@ -63,18 +100,16 @@ pub struct Job {
 #[derive(Debug)]
 enum Step {
     None,
-    /// Joints given directly (a joint move), with their Cartesian point when known.
-    Direct(Axes, Option<Axes>),
     /// The inverse kinematics of `cart`, from the previous joints.
     Inverse {
         cart: Axes,
         prev: Axes,
     },
-    /// A joint move stopped part-way: the Cartesian point of the joints, the group
-    /// standing at `at`.
+    /// The forward kinematics of the joints the group stands at: for the path command
+    /// at the front (`switch`), or for the queue end.
     Forward {
         joints: Axes,
-        at: Axes,
+        switch: bool,
     },
 }
 
@@ -97,9 +132,12 @@ pub struct Done {
 #[derive(Debug)]
 enum StepDone {
     None,
-    Direct(Axes, Option<Axes>),
     Inverse(Axes, Option<Axes>),
-    Forward(Axes, Option<Axes>),
+    Forward {
+        joints: Axes,
+        switch: bool,
+        cart: Option<Axes>,
+    },
 }
 
 impl Job {
@@ -125,14 +163,17 @@ impl Job {
         });
         let step = match self.step {
             Step::None => StepDone::None,
-            Step::Direct(j, c) => StepDone::Direct(j, c),
             Step::Inverse { cart, prev } => {
                 let r = self.fns.inverse(self.group, &cart, &prev, &mut posture);
                 StepDone::Inverse(cart, r)
             }
-            Step::Forward { joints, at } => {
-                let r = self.fns.forward(self.group, &joints, &mut posture);
-                StepDone::Forward(at, r)
+            Step::Forward { joints, switch } => {
+                let cart = self.fns.forward(self.group, &joints, &mut posture);
+                StepDone::Forward {
+                    joints,
+                    switch,
+                    cart,
+                }
             }
         };
         Done {
@@ -147,6 +188,12 @@ impl Job {
 /// The identity of a queued command for the pre-process callback.
 fn pre_id(ld: i32, cmd: &Command) -> (i32, i32, Axes) {
     (ld, cmd.index, cmd.target)
+}
+
+/// Whether a command moves the tool in Cartesian space on a kinematic group (a path
+/// command or a custom motion); a PtP moves the joints, the rest moves nothing.
+fn cartesian(plan: &Plan) -> bool {
+    matches!(plan, Plan::Path(_) | Plan::Custom(_))
 }
 
 impl GroupState {
@@ -164,32 +211,30 @@ impl GroupState {
         }
     }
 
-    /// For `MCC_GetCurPos`: the kinematics, the joints out now, the posture and the
-    /// registration's generation; `None` for a group that is not kinematic.
-    pub fn kinematics_reading(&self) -> Option<(KinFns, Axes, DWORD, u64)> {
-        self.kin
-            .as_ref()
-            .map(|k| (k.fns.clone(), k.joints, k.posture, k.generation))
+    /// The kinematics of the group and its posture (`None` for a group that is not
+    /// kinematic).
+    pub fn kinematics_fns(&self) -> Option<(KinFns, DWORD)> {
+        self.kin.as_ref().map(|k| (k.fns.clone(), k.posture))
     }
 
-    /// The forward kinematics failed in a reading of registration `generation`: the
-    /// group stops with 0xF105 (it no longer knows where the tool is).
-    pub fn forward_failed(&mut self, generation: u64) {
-        if self
-            .kin
-            .as_ref()
-            .is_some_and(|k| k.generation == generation)
-        {
-            self.stop_for(Some(ERR_FORWARD));
-        }
+    /// What a kinematic group in Cartesian space publishes: the joints, their speeds and
+    /// composed speed (in joint space its own positions are the joints, and it publishes
+    /// them as any group). `None` otherwise.
+    pub(super) fn kinematics_published(&self) -> Option<Motion> {
+        let k = self.kin.as_ref()?;
+        (k.space == Space::Cartesian).then_some(Motion {
+            status: self.status,
+            pos: k.joints,
+            vel: k.vel,
+            feed: k.feed,
+        })
     }
 
-    /// `MCC_SetKinematicTrans`, after the extension was initialised and the forward
-    /// kinematics gave `cart` for `joints` (read with [`GroupState::current_joints`]
-    /// before, without the lock): the group becomes kinematic, its channels keep
-    /// `joints`, its command position becomes `cart`. Refused while it moves or homes
-    /// (`COMMAND_NOTFINISHED_ERR`), if its joints moved meanwhile (the same), or on an
-    /// MC3B (`COMMAND_NOTACCEPTED_ERR`).
+    /// The kinematics registered before init take effect (the forward kinematics gave
+    /// `cart` for `joints`, read with [`GroupState::current_joints`] before, without the
+    /// lock): the group becomes kinematic in joint space, standing at `joints`, with its
+    /// queue end at `cart`. Refused while it moves or homes (`COMMAND_NOTFINISHED_ERR`),
+    /// if its joints moved meanwhile (the same), or on an MC3B (`COMMAND_NOTACCEPTED_ERR`).
     pub fn set_kinematics(
         &mut self,
         fns: KinFns,
@@ -203,23 +248,25 @@ impl GroupState {
         if self.busy() || self.homing != 0 || self.current_joints() != joints {
             return Err(McclError::NotFinished);
         }
-        let pre = self.kin.as_ref().and_then(|k| k.pre);
         self.kin = Some(Box::new(Kinematics {
             fns,
-            pre,
+            pre: None,
             generation: GENERATION.fetch_add(1, Ordering::Relaxed),
+            space: Space::Joint,
             joints,
             next: None,
-            cart: Some(cart),
+            cart: None,
+            vel: [0.0; AXES],
+            feed: 0.0,
+            queue_end_stale: false,
             posture,
-            joint_move: None,
             queued_joints: None,
             pre_done: None,
         }));
         self.offset = [0.0; AXES];
         self.info_touched();
-        self.pos = cart;
-        self.base = cart;
+        self.pos = joints;
+        self.base = joints;
         self.queue_end = cart;
         self.vel = [0.0; AXES];
         Ok(())
@@ -238,7 +285,7 @@ impl GroupState {
     /// end of the queue (the group at rest, or the queue ending with a joint move).
     pub fn queue_end_joints(&self) -> Option<Axes> {
         let k = self.kin.as_ref()?;
-        if self.queue.is_empty() && self.running.is_empty() && k.joint_move.is_none() {
+        if self.queue.is_empty() && self.running.is_empty() {
             return Some(k.next.unwrap_or(k.joints));
         }
         k.queued_joints
@@ -246,19 +293,53 @@ impl GroupState {
             .map(|(_, j)| j)
     }
 
-    /// Queues `cmd`, a joint move to `target` (`MCC_PtP_V6`).
-    pub fn enqueue_joint_move(&mut self, cmd: Command, target: Axes) -> McclResult<i32> {
-        let end = cmd.target;
+    /// Queues `cmd`, a point-to-point move of the joints to `target` (planned from the
+    /// joints at the queue end when known), whose tool point there is `cart_end`: the
+    /// queue's (Cartesian) end becomes `cart_end`. A group at rest changes to joint
+    /// space at once.
+    pub fn enqueue_joint_move(
+        &mut self,
+        cmd: Command,
+        target: Axes,
+        cart_end: Axes,
+    ) -> McclResult<i32> {
         let i = self.enqueue(cmd)?;
+        self.queue_end = cart_end;
         if let Some(k) = self.kin.as_mut() {
-            k.queued_joints = Some((end, target));
+            k.queued_joints = Some((cart_end, target));
+        }
+        if self.running.is_empty() {
+            self.enter_joint_space();
         }
         Ok(i)
     }
 
-    /// Called as `cmd` starts: a V6 command sets the posture; a joint move is planned
-    /// from the joints where it starts (a plan that fails — it cannot, as its numbers
-    /// were checked when it was queued — stops the group as a fault of the library).
+    /// Nothing runs and the next command moves the joints: the planner's position becomes
+    /// the joints out now (or due next).
+    fn enter_joint_space(&mut self) {
+        let Some(k) = self.kin.as_mut() else {
+            return;
+        };
+        if k.space == Space::Joint {
+            return;
+        }
+        let joints = k.next.take().unwrap_or(k.joints);
+        k.space = Space::Joint;
+        k.cart = None;
+        k.queue_end_stale = false;
+        self.pos = joints;
+        self.base = joints;
+        self.vel = [0.0; AXES];
+    }
+
+    /// Called as `cmd` starts: a V6 command sets the posture; a PtP (in joint space, see
+    /// [`GroupState::kinematics_ready`]) queued from other joints than where the group
+    /// stands moves each joint by what it was queued to move, from there, with the
+    /// speeds, ramps and shapes it was queued with: never a jump, and a jog moves its
+    /// joint by its distance. (`MCC_PtP_V6` and `MCC_PtP` plan from the joints at the
+    /// queue end, so theirs start where they were planned.) A plan that fails — it
+    /// cannot, as its numbers were checked when it was queued — stops the group as a
+    /// fault of the library.
     pub(super) fn kinematics_start(&mut self, mut cmd: Command) -> Command {
         let Some(k) = self.kin.as_mut() else {
             return cmd;
@@ -266,27 +347,51 @@ impl GroupState {
         if let Some(p) = cmd.posture {
             k.posture = p;
         }
-        let from = k.next.unwrap_or(k.joints);
-        if let Plan::Joint(j) = &mut cmd.plan {
-            match j.plan(&from) {
-                Ok(m) => j.planned = Some(m),
-                Err(_) => self.set_error(crate::engine::safety::ERR_INTERNAL),
+        let from = self.pos;
+        let ratio = cmd.info_feed;
+        let (acc_ms, dec_ms) = (cmd.acc_ms, cmd.dec_ms);
+        let mut replanned_end = None;
+        if let Plan::Ptp(p) = &mut cmd.plan {
+            let (s, e) = (p.start(), p.end());
+            if s != from {
+                let period_ms = self.period_s * 1000.0;
+                let periods = |ms: f64| (ms / period_ms).round() as u32;
+                let speed: Axes = std::array::from_fn(|i| self.axes[i].safe_speed * ratio / 100.0);
+                let ramps = [(periods(acc_ms), periods(dec_ms)); AXES];
+                let shapes = [p.shapes(); AXES];
+                let end: Axes = std::array::from_fn(|i| from[i] + (e[i] - s[i]));
+                let sync = p.is_sync();
+                match PtpMove::new(&from, &end, &speed, &ramps, &shapes, self.period_s, sync) {
+                    Ok(m) => {
+                        replanned_end = Some(m.end());
+                        *p = m;
+                    }
+                    Err(_) => self.set_error(crate::engine::safety::ERR_INTERNAL),
+                }
             }
+        }
+        if let Some(end) = replanned_end {
+            cmd.target = end;
         }
         cmd
     }
 
-    /// Whether the front command may start: with a pre-process callback, a Cartesian
-    /// move waits until the callback has seen it (the stage after the tick calls it).
+    /// Whether the front command may start: one that needs the other space waits until
+    /// nothing runs and the group has changed to it (into joint space after the tick
+    /// that ends what runs, see [`GroupState::kinematics_apply`]; into Cartesian space in
+    /// the stage); with a pre-process callback, a path command waits until the callback
+    /// has seen it.
     pub(super) fn kinematics_ready(&self) -> bool {
         let Some(k) = &self.kin else {
             return true;
         };
-        if k.pre.is_none() {
+        let Some(cmd) = self.front_moving() else {
             return true;
-        }
-        match self.front_moving() {
-            Some(cmd) if matches!(cmd.plan, Plan::Path(_)) => {
+        };
+        match (&cmd.plan, k.space) {
+            (Plan::Ptp(_), Space::Cartesian) => false,
+            (plan, Space::Joint) if cartesian(plan) => false,
+            (Plan::Path(_), Space::Cartesian) if k.pre.is_some() => {
                 k.pre_done == Some(pre_id(self.cmd_index.ld, cmd))
             }
             _ => true,
@@ -300,25 +405,56 @@ impl GroupState {
             .find(|c| !matches!(c.plan, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
     }
 
-    /// In the tick, after the group's own tick: the joints the stage computed go out;
-    /// while the joints still owe the planner's position, the group is not stopped.
+    /// In Cartesian space, whether the joints still owe the planner's position.
+    fn kinematics_owed(&self) -> bool {
+        self.kin.as_ref().is_some_and(|k| {
+            k.space == Space::Cartesian && (k.next.is_some() || k.cart != Some(self.pos))
+        })
+    }
+
+    /// In the tick, after the group's own tick: the joints go out (in joint space the
+    /// group's positions, in Cartesian space those the stage computed), with their speeds
+    /// over the period; while the joints still owe the planner's position, the group is
+    /// not stopped.
     pub fn kinematics_apply(&mut self) {
+        let pos: Axes = std::array::from_fn(|i| self.pos[i] + self.offset[i]);
+        let (dt, compose) = (self.period_s, self.settings.compose);
         let Some(k) = self.kin.as_mut() else {
             return;
         };
-        if let Some(j) = k.next.take() {
-            k.joints = j;
+        let before = k.joints;
+        match k.space {
+            Space::Joint => {
+                k.joints = pos;
+                k.next = None;
+            }
+            Space::Cartesian => {
+                if let Some(j) = k.next.take() {
+                    k.joints = j;
+                }
+            }
+        }
+        if dt > 0.0 {
+            k.vel = std::array::from_fn(|i| (k.joints[i] - before[i]) / dt);
+            k.feed = crate::planner::compose::composed_speed(&k.vel, compose);
+        }
+        if k.space == Space::Joint && k.joints != before {
+            // Wherever this move ends, the stage finds the tool there if the group
+            // stops short of the queue end.
+            k.queue_end_stale = true;
+        }
+        let ptp_next = self
+            .front_moving()
+            .is_some_and(|c| matches!(c.plan, Plan::Ptp(_)));
+        if ptp_next && self.running.is_empty() && !self.kinematics_owed() {
+            self.enter_joint_space();
         }
         self.running_while_owed();
     }
 
     /// A group whose joints have not yet reached its planner's position is running.
     fn running_while_owed(&mut self) {
-        let Some(k) = self.kin.as_ref() else {
-            return;
-        };
-        let owed = k.next.is_some() || k.cart != Some(self.pos) || k.joint_move.is_some();
-        if owed && self.status == c::GMS_STOP && self.error == 0 {
+        if self.kinematics_owed() && self.status == c::GMS_STOP && self.error == 0 {
             self.status = c::GMS_RUNNING;
         }
     }
@@ -327,52 +463,42 @@ impl GroupState {
     pub(super) fn kinematics_pulses(&self, i: usize) -> Option<i64> {
         self.kin
             .as_ref()
-            .map(|k| crate::engine::snapshot::round_pulses(k.joints[i] * self.axes[i].factor))
-    }
-
-    /// The pulses of a kinematic group's joints (`None` for another group).
-    pub fn kinematics_joint_pulses(&self) -> Option<[i64; AXES]> {
-        self.kin.as_ref()?;
-        Some(std::array::from_fn(|i| self.pulses(i)))
+            .map(|k| whole_pulses(k.joints[i] * self.axes[i].factor))
     }
 
     /// The stage, under the lock: what to compute for the next tick.
     pub(crate) fn kinematics_job(&mut self) -> Option<Job> {
-        if self.kin.as_ref().is_some_and(|k| k.pre.is_some()) {
+        let k = self.kin.as_ref()?;
+        let (space, pre_set) = (k.space, k.pre.is_some());
+        let idle = self.running.is_empty();
+        let front_path = self.front_moving().is_some_and(|c| cartesian(&c.plan));
+        if space == Space::Cartesian && pre_set {
             self.rebase_front();
         }
-        let joint_running = self.running.iter().find_map(|r| match &r.cmd.plan {
-            Plan::Joint(j) => Some((
-                j.target,
-                j.cart_end,
-                j.joints_at(r.periods),
-                r.periods >= j.periods(),
-            )),
-            _ => None,
-        });
-        let pre = self.pre_request();
+        let pre = if space == Space::Cartesian {
+            self.pre_request()
+        } else {
+            None
+        };
         let pos = self.pos;
+        let queue_empty = self.queue.is_empty();
         let k = self.kin.as_mut()?;
         let latest = k.next.unwrap_or(k.joints);
-        let step = if let Some((target, cart_end, joints, done)) = joint_running {
-            k.joint_move = Some((target, cart_end));
-            Step::Direct(joints, done.then_some(cart_end))
-        } else if let Some((target, cart_end)) = k.joint_move.take() {
-            if pos == cart_end {
-                Step::Direct(target, Some(cart_end))
-            } else {
-                Step::Forward {
-                    joints: latest,
-                    at: pos,
-                }
-            }
-        } else if k.cart != Some(pos) {
-            Step::Inverse {
+        let step = match space {
+            Space::Cartesian if k.cart != Some(pos) => Step::Inverse {
                 cart: pos,
                 prev: latest,
-            }
-        } else {
-            Step::None
+            },
+            Space::Cartesian => Step::None,
+            Space::Joint if idle && front_path => Step::Forward {
+                joints: k.joints,
+                switch: true,
+            },
+            Space::Joint if idle && queue_empty && k.queue_end_stale => Step::Forward {
+                joints: k.joints,
+                switch: false,
+            },
+            Space::Joint => Step::None,
         };
         if matches!(step, Step::None) && pre.is_none() {
             return None;
@@ -408,6 +534,9 @@ impl GroupState {
     /// The stage, under the lock again: stores what the callbacks returned (dropped if
     /// the registration changed or the group moved meanwhile).
     pub(crate) fn kinematics_done(&mut self, d: Done) {
+        let idle = self.running.is_empty();
+        let queue_empty = self.queue.is_empty();
+        let front_path = self.front_moving().is_some_and(|c| cartesian(&c.plan));
         let Some(k) = self.kin.as_mut() else {
             return;
         };
@@ -417,18 +546,14 @@ impl GroupState {
         k.posture = d.posture;
         match d.step {
             StepDone::None => {}
-            StepDone::Direct(j, cart) => {
-                k.next = Some(j);
-                k.cart = cart;
-            }
             StepDone::Inverse(cart, Some(j)) => {
-                if self.pos == cart {
+                if k.space == Space::Cartesian && self.pos == cart {
                     k.next = Some(j);
                     k.cart = Some(cart);
                 }
             }
             StepDone::Inverse(cart, None) => {
-                if self.pos == cart {
+                if k.space == Space::Cartesian && self.pos == cart {
                     // Unreachable: stop; the joints stay, the planner goes back to the
                     // last point they reached.
                     let good = k.cart;
@@ -438,30 +563,57 @@ impl GroupState {
                     }
                 }
             }
-            StepDone::Forward(at, r) => {
-                if self.pos == at && self.running.is_empty() && self.queue.is_empty() {
-                    match r {
-                        Some(cart) => {
-                            k.cart = Some(cart);
-                            self.rest_at(cart);
-                        }
-                        None => {
-                            k.cart = Some(at);
-                            self.stop_for(Some(ERR_FORWARD));
-                        }
+            StepDone::Forward {
+                joints,
+                switch,
+                cart,
+            } => {
+                let here = k.space == Space::Joint && idle && k.joints == joints;
+                match (here, switch, cart) {
+                    (false, _, _) => {}
+                    (true, _, None) => self.stop_for(Some(ERR_FORWARD)),
+                    (true, true, Some(cart)) if front_path => self.enter_cartesian_space(cart),
+                    (true, false, Some(cart)) if queue_empty => {
+                        k.queue_end_stale = false;
+                        self.queue_end = cart;
                     }
+                    _ => {}
                 }
             }
         }
         if let Some((id, off)) = d.pre {
             self.apply_offset(id, off);
         }
-        self.update_status();
         self.running_while_owed();
     }
 
-    /// With offsets, a queued delay or joint move starts where the command before it
-    /// actually ends (a delay holds that position).
+    /// Nothing runs and the next command is a path command: the planner stands where
+    /// the tool is, `cart` (the forward kinematics of the joints), and that command is
+    /// planned again from there if it was queued from another point.
+    fn enter_cartesian_space(&mut self, cart: Axes) {
+        let Some(k) = self.kin.as_mut() else {
+            return;
+        };
+        k.space = Space::Cartesian;
+        k.cart = Some(cart);
+        k.next = None;
+        k.queue_end_stale = false;
+        self.rest_at_keeping_queue(cart);
+        let Some(pos) = self.queue.iter().position(|c| cartesian(&c.plan)) else {
+            return;
+        };
+        if self.queue[pos].start() != cart {
+            let moved = replanned(&self.queue[pos], &cart, &[0.0; AXES]);
+            if let Some((target, plan)) = moved {
+                let cmd = &mut self.queue[pos];
+                cmd.target = target;
+                cmd.plan = plan;
+            }
+        }
+    }
+
+    /// With offsets, a queued delay starts where the command before it actually ends
+    /// (it holds that position).
     fn rebase_front(&mut self) {
         let start = self.actual_start();
         let Some(cmd) = self
@@ -471,18 +623,21 @@ impl GroupState {
         else {
             return;
         };
-        match &mut cmd.plan {
-            Plan::Delay(_) => cmd.target = start,
-            Plan::Joint(j) => j.cart_start = start,
-            _ => {}
+        if let Plan::Delay(_) = cmd.plan {
+            cmd.target = start;
         }
     }
 
     /// The group stands at Cartesian `cart` (its planner's position and queue end).
     fn rest_at(&mut self, cart: Axes) {
+        self.rest_at_keeping_queue(cart);
+        self.queue_end = cart;
+    }
+
+    /// The planner stands at `cart`; the queue end stays.
+    fn rest_at_keeping_queue(&mut self, cart: Axes) {
         self.pos = cart;
         self.base = cart;
-        self.queue_end = cart;
         self.vel = [0.0; AXES];
     }
 
@@ -515,19 +670,9 @@ impl GroupState {
         if pre_id(ld, cmd) != id {
             return;
         }
-        if let Plan::Path(m) = &cmd.plan {
-            let target: Axes = std::array::from_fn(|i| cmd.target[i] + off[i]);
-            let s = m.path.start();
-            let path = match &m.path {
-                Path::Line(_) => Path::try_line(&start, &target).ok(),
-                p => Some(p.translated(&std::array::from_fn(|i| start[i] - s[i]))),
-            };
-            let (feed, ramps, shapes, t) = (m.feed, m.ramps, m.shapes, m.profile.period());
-            let planned = path.map(|path| PathMove::new(path, feed, ramps, shapes, t));
-            if let Some(mv) = planned {
-                cmd.target = mv.path.end();
-                cmd.plan = Plan::Path(mv);
-            }
+        if let Some((target, plan)) = replanned(cmd, &start, &off) {
+            cmd.target = target;
+            cmd.plan = plan;
         }
         let done = pre_id(ld, cmd);
         if let Some(k) = self.kin.as_mut() {
@@ -536,16 +681,20 @@ impl GroupState {
     }
 }
 
-/// A queued joint move's command (`MCC_PtP_V6`): the plan is made when it starts.
-pub fn joint_command(j: JointMove, ratio: f64, acc_ms: f64, dec_ms: f64) -> Command {
-    Command {
-        index: 0,
-        ctype: crate::engine::command::ctype::PTP,
-        info_feed: ratio,
-        target: j.cart_end,
-        acc_ms,
-        dec_ms,
-        posture: None,
-        plan: Plan::Joint(Box::new(j)),
-    }
+/// A path command planned again to start at `start`: a line to its target + `off`, an
+/// arc or circle translated (it keeps its shape); its new target and plan. `None` for
+/// another command, or a line that can no longer be planned (it stays as it was).
+fn replanned(cmd: &Command, start: &Axes, off: &Axes) -> Option<(Axes, Plan)> {
+    let Plan::Path(m) = &cmd.plan else {
+        return None;
+    };
+    let target: Axes = std::array::from_fn(|i| cmd.target[i] + off[i]);
+    let s = m.path.start();
+    let path = match &m.path {
+        Path::Line(_) => Path::try_line(start, &target).ok()?,
+        p => p.translated(&std::array::from_fn(|i| start[i] - s[i])),
+    };
+    let (feed, ramps, shapes, t) = (m.feed, m.ramps, m.shapes, m.profile.period());
+    let mv = PathMove::new(path, feed, ramps, shapes, t);
+    Some((mv.path.end(), Plan::Path(mv)))
 }

@@ -351,8 +351,9 @@ impl GroupState {
         }
     }
 
-    /// Notes the running commands as cut short (they are about to be dropped).
-    fn note_stopped(&mut self) {
+    /// Notes the running commands as cut short (they are about to be dropped, or the
+    /// system closes).
+    pub(crate) fn note_stopped(&mut self) {
         if let Some(v) = self.trace_notes.as_mut() {
             for r in &self.running {
                 v.push(super::trace::Note::End {

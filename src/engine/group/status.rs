@@ -148,6 +148,10 @@ impl GroupState {
     /// The part of the published state that changes every tick.
     #[inline]
     pub fn motion(&self) -> Motion {
+        // A kinematic group whose planner is in Cartesian space publishes its joints.
+        if let Some(m) = self.kinematics_published() {
+            return m;
+        }
         // The output position and velocity (after the filters, `post.rs`); readers derive
         // the path speed from the velocities and the compose mask.
         Motion {
@@ -159,18 +163,19 @@ impl GroupState {
     }
 
     /// Publishes [`GroupState::motion`] to `cell`: straight from the group's fields when
-    /// its output is its reference (no filter stage), which is what `motion` copies then.
+    /// its output is its reference (no filter stage, no kinematics), which is what
+    /// `motion` copies then.
     #[inline]
     pub fn store_motion(&self, cell: &SnapshotCell) {
-        if self.output_is_reference() {
+        if self.output_is_reference() && self.kin.is_none() {
             cell.store_motion_parts(self.status, &self.pos, &self.vel, self.feed_now);
         } else {
             self.store_filtered_motion(cell);
         }
     }
 
-    /// [`GroupState::store_motion`] of a group with filter stages, out of line: the
-    /// motion it assembles would give every publication a stack frame.
+    /// [`GroupState::store_motion`] of a group with filter stages or kinematics, out of
+    /// line: the motion it assembles would give every publication a stack frame.
     #[inline(never)]
     fn store_filtered_motion(&self, cell: &SnapshotCell) {
         cell.store_motion(&self.motion());

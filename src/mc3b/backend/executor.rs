@@ -354,7 +354,7 @@ impl ExternalExecutor for Executor {
         }
         let points = match &cmd.plan {
             // Custom motion needs a position every period, which the MC3B cannot take.
-            Plan::Blend(true) | Plan::InPos(true, _) | Plan::Custom(_) | Plan::Joint(_) => {
+            Plan::Blend(true) | Plan::InPos(true, _) | Plan::Custom(_) => {
                 return Err(McclError::NotAccepted)
             }
             // A curve with no geometry: the device has nothing to run.

@@ -404,6 +404,10 @@ impl Header {
 
     fn parse_types(&mut self, file: &str, text: &str) -> Result<(), Error> {
         let mut depth = 0usize;
+        // One entry per open `#if`: whether it is an `#ifdef __cplusplus` still in its
+        // C++ branch. The bindings take the C declarations; a type the header declares
+        // twice (a C++ form, then a C form under `#else`) is read once, in its C form.
+        let mut cpp_only: Vec<bool> = Vec::new();
         let mut values: BTreeMap<String, i64> = BTreeMap::new();
         let mut open: Option<(usize, Vec<Field>)> = None;
         for (n, raw) in text.lines().enumerate() {
@@ -446,8 +450,16 @@ impl Header {
             }
             if line.starts_with("#if") {
                 depth += 1;
+                cpp_only.push(line == "#ifdef __cplusplus");
+            } else if line.starts_with("#else") {
+                if let Some(top) = cpp_only.last_mut() {
+                    *top = false;
+                }
             } else if line.starts_with("#endif") {
                 depth = depth.saturating_sub(1);
+                cpp_only.pop();
+            } else if cpp_only.contains(&true) {
+                continue;
             } else if let Some(rest) = line.strip_prefix("#define ") {
                 let (name, value) = match rest.split_once(char::is_whitespace) {
                     Some((a, b)) => (a, b.trim()),
@@ -719,5 +731,29 @@ mod tests {
         assert!(f.has_clong());
         assert_eq!(f.params[4].ty, CType::Bool);
         assert_eq!(h.callbacks[0].params[0].name, "arg0");
+    }
+
+    /// A callback the header declares for C++ (a reference) and for C (a pointer) under
+    /// `#ifdef __cplusplus`/`#else` is read once, in its C form.
+    #[test]
+    fn cpp_branch_is_skipped() {
+        let h = Header::parse(
+            (
+                "a.h",
+                "typedef uint32_t DWORD;\n#ifdef __cplusplus\ntypedef void (MCC_CALLBACK *K)(DWORD &p, int cpp);\n#else\ntypedef void (MCC_CALLBACK *K)(DWORD *p);\n#endif\ntypedef void (MCC_CALLBACK *L)(int n);\n",
+            ),
+            ("b.h", ""),
+        )
+        .unwrap();
+        let names: Vec<&str> = h.callbacks.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(names, ["K", "L"]);
+        assert_eq!(h.callbacks[0].params.len(), 1);
+        assert_eq!(
+            h.callbacks[0].params[0].ty,
+            CType::Ptr(Box::new(CType::Int {
+                bytes: 4,
+                signed: false
+            }))
+        );
     }
 }

@@ -280,10 +280,32 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
         body.push('\n');
     }
     let body = in_type_order(&collapse_blank_lines(&body), &raw.type_order)?;
+    let body = posture_by_reference(&body);
     Ok(format!(
         "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
+}
+
+/// The kinematics callbacks (`FWDKINEFUN`, `INVKINEFUN`) take the posture as the vendor's
+/// header declares it, a C++ reference `DWORD &dwPosture`, so that a C++ program whose
+/// callbacks are written for the vendor's header converts to the callback type; C has no
+/// references and keeps the pointer, `DWORD *dwPosture` (the same ABI: a reference is
+/// passed as the address). cbindgen writes the pointer form; each typedef with it becomes
+/// an `#ifdef __cplusplus` pair.
+fn posture_by_reference(body: &str) -> String {
+    const C_FORM: &str = "DWORD *dwPosture";
+    let mut out = String::new();
+    for line in body.lines() {
+        if line.starts_with("typedef") && line.contains(C_FORM) {
+            let cpp = line.replace(C_FORM, "DWORD &dwPosture");
+            let _ = write!(out, "#ifdef __cplusplus\n{cpp}\n#else\n{line}\n#endif\n");
+        } else {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    out
 }
 
 /// The name a type declaration block declares: `typedef ... NAME;`, `typedef struct {
@@ -781,6 +803,15 @@ mod tests {
             "#define A 1\n\ntypedef uint16_t T;\n\ntypedef struct {\n  T x;\n} S;\n\ntypedef void (MCC_CALLBACK *F)(S *p);\n\n#define B 2"
         );
         assert!(in_type_order(body, &order[..2]).is_err());
+    }
+
+    #[test]
+    fn posture_is_a_reference_in_cpp_and_a_pointer_in_c() {
+        let body = "typedef void (MCC_CALLBACK *G)(int n);\ntypedef BOOL (MCC_CALLBACK *F)(int n, DWORD *dwPosture, void *p);\n";
+        assert_eq!(
+            posture_by_reference(body),
+            "typedef void (MCC_CALLBACK *G)(int n);\n#ifdef __cplusplus\ntypedef BOOL (MCC_CALLBACK *F)(int n, DWORD &dwPosture, void *p);\n#else\ntypedef BOOL (MCC_CALLBACK *F)(int n, DWORD *dwPosture, void *p);\n#endif\n"
+        );
     }
 
     #[test]

@@ -102,13 +102,8 @@ impl Executor {
     pub(super) fn peek(&self, host: &dyn Host) -> Option<Next> {
         let cmd = host.front()?;
         Some(match &cmd.plan {
-            // Custom motion and joint moves (kinematic groups) are refused when queued
-            // (`check`), so never reach here.
-            Plan::Blend(_)
-            | Plan::InPos(..)
-            | Plan::Custom(_)
-            | Plan::Joint(_)
-            | Plan::Fault(_) => Next::Switch,
+            // Custom motion is refused when queued (`check`), so never reaches here.
+            Plan::Blend(_) | Plan::InPos(..) | Plan::Custom(_) | Plan::Fault(_) => Next::Switch,
             Plan::Output(_) => Next::Output,
             Plan::Path(m) => Next::Path(match m.path {
                 Path::Line(_) => SegKind::Line {
