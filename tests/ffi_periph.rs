@@ -770,9 +770,15 @@ fn watchdog_expiry_resets_the_card() {
     assert_eq!(status(0), GMS_RUNNING, "refreshed in time");
     assert_eq!(MCC_GetErrorCode(0), 0);
     MCC_TimeDelay(1);
-    // Expired: the card was reset.
-    assert_eq!(status(0), GMS_STOP);
+    // Expired: the card was reset. Its motion stops at once, as an abort at once: the
+    // status reads running for that period and STOP the period after (as the vendor's
+    // library shows an abort; nothing is held, so never GMS_HOLD).
     assert_eq!(MCC_GetErrorCode(0), ERR_WATCHDOG_RESET);
+    let x = x_pos(0);
+    assert_eq!(status(0), GMS_RUNNING);
+    MCC_TimeDelay(1);
+    assert_eq!(status(0), GMS_STOP);
+    assert_eq!(x_pos(0), x);
     let shared = MCCLPCI_IMP::system::active().unwrap();
     assert_eq!(shared.servo_on[0].load(SeqCst), 0);
     assert!(!shared.pos_ready[0].load(SeqCst));
