@@ -5,13 +5,15 @@
 //! Timing (docs/compatibility.md, "Custom motion"): the command is taken from the queue at
 //! tick 1 after it was queued (position: its start); after tick j the stage calls
 //! `interp` with the distance the profile reaches at tick j+1, `s(j·dt)`, so tick j+1
-//! shows the offset for `s(j·dt)`. With 1 ms ticks, feed F = 10 UU/s and Ta = Td = 0.1 s:
+//! shows the offset for `s(j·dt)`. The profile is a line's, on the grid of periods as
+//! the vendor's library plans one: with 1 ms ticks, feed F = 10 UU/s and Ta = Td = 0.1 s
+//! the ramps take na = nd = 100 periods, the cruise nc = ceil(L/F/dt − 100) whole
+//! periods at V = L/(0.1 + nc·dt) (at most F), so the profile lasts D = (200 + nc)·dt:
 //!
-//! * 'T' ramps: s(t) = ½·(F/Ta)·t² = 50 t² for t ≤ Ta; cruise s = F·Ta/2 + F·(t − Ta)
-//!   = 0.5 + 10 (t − 0.1); deceleration mirrors the acceleration: s = L − 50 (D − t)²,
-//!   with duration D = L/F + (Ta + Td)/2 = L/10 + 0.1.
-//! * 'S' ramps: jerk J = 4F/Ta² = 4000; s = J t³/6 for t ≤ Ta/2; for Ta/2 < t ≤ Ta with
-//!   r = Ta − t: s = F·Ta/2 − (F r − J r³/6); cruise and deceleration as above.
+//! * 'T' ramps: s(t) = V t²/(2 Ta) for t ≤ Ta; cruise s = V·Ta/2 + V·(t − Ta);
+//!   deceleration mirrors the acceleration: s = L − V (D − t)²/(2 Td).
+//! * 'S' ramps: the speed is V times the smoothstep 3x² − 2x³ of x = t/Ta, so
+//!   s = V·Ta·(x³ − x⁴/2) for t ≤ Ta; cruise and deceleration as above.
 
 mod common;
 
@@ -30,20 +32,31 @@ const F: f64 = 10.0;
 const TA: f64 = 0.1;
 const DT: f64 = 0.001;
 
+/// The periods at cruise speed of a profile of length `l` (module documentation).
+fn cruise_periods(l: f64) -> f64 {
+    (l / F / DT - TA / DT).ceil()
+}
+
+/// The cruise speed of a profile of length `l`.
+fn cruise_speed(l: f64) -> f64 {
+    l / (TA + cruise_periods(l) * DT)
+}
+
+/// The profile's duration for length `l`, s.
+fn duration(l: f64) -> f64 {
+    (2.0 * TA / DT + cruise_periods(l)) * DT
+}
+
 /// The profile's distance at time t for length `l` (module documentation).
 fn profile_s(t: f64, l: f64, s_shape: bool) -> f64 {
-    let d = l / F + TA;
+    let d = duration(l);
+    let v = cruise_speed(l);
     let ramp = |t: f64| {
+        let x = t / TA;
         if !s_shape {
-            0.5 * F / TA * t * t
+            v * t * x * 0.5
         } else {
-            let j = 4.0 * F / (TA * TA);
-            if t <= TA / 2.0 {
-                j * t * t * t / 6.0
-            } else {
-                let r = TA - t;
-                F * TA / 2.0 - (F * r - j * r * r * r / 6.0)
-            }
+            v * TA * (x * x * x - 0.5 * x * x * x * x)
         }
     };
     if t >= d {
@@ -51,7 +64,7 @@ fn profile_s(t: f64, l: f64, s_shape: bool) -> f64 {
     } else if t <= TA {
         ramp(t)
     } else if t <= d - TA {
-        F * TA / 2.0 + F * (t - TA)
+        v * TA / 2.0 + v * (t - TA)
     } else {
         l - ramp(d - t)
     }
@@ -291,6 +304,18 @@ extern "C" fn on_blend_end(_g: c_int, _i: c_int, buf: *mut c_void) -> c_int {
     1
 }
 
+/// A position as `MCC_GetCurPos` reads it: whole pulses (500 per UU, the default
+/// mechanism) toward 0, a position within 1e-7 pulse of a whole one being that one.
+fn read_as(x: f64) -> f64 {
+    let p = x * 500.0;
+    let whole = if (p - p.round()).abs() <= 1e-7 {
+        p.round()
+    } else {
+        p.trunc()
+    };
+    whole / 500.0
+}
+
 fn pos(g: u16) -> [f64; 8] {
     let mut p = [0.0; 8];
     let [a, b, c, d, e, f, h, i] = &mut p;
@@ -392,10 +417,9 @@ fn run_curve(clock: &str, s_shape: bool, curve: Curve) {
     assert_eq!(log.starts, 1);
     assert_eq!(log.cleanups, 1, "cleanup exactly once");
     assert_eq!(&log.start_pos[..2], &[1.0, -2.0]);
-    // One call per tick until t = D: D / dt calls (D = L/10 + 0.1).
-    let d = l / F + TA;
+    // One call per tick until t = D: D / dt = 200 + nc calls.
     let n = log.calls.len();
-    assert_eq!(n, (d / DT).ceil() as usize, "calls: {n}");
+    assert_eq!(n as f64, 200.0 + cruise_periods(l), "calls: {n}");
     let mut prev = (0.0, 0.0, 0.0);
     for (m, c) in log.calls.iter().enumerate() {
         let t = (m + 1) as f64 * DT;
@@ -417,14 +441,17 @@ fn run_curve(clock: &str, s_shape: bool, curve: Curve) {
         prev = (c.0, c.4, c.5);
     }
     assert_eq!(log.calls[n - 1].0, l, "ends at tot");
-    // Cruise speed is the feed: in the middle of the move Δs = F·dt.
+    // In the middle of the move it cruises: Δs = V·dt, V short of the feed by less
+    // than a period's worth (nc < L/F/dt - 100 + 1, so V > F/(1 + F·dt/L)).
     let mid = &log.calls[n / 2 - 1..=n / 2];
-    assert!(((mid[1].0 - mid[0].0) / DT - F).abs() < 1e-9);
+    let v = cruise_speed(l);
+    assert!(((mid[1].0 - mid[0].0) / DT - v).abs() < 1e-9);
+    assert!(v <= F && v > F / (1.0 + F * DT / l), "{v}");
     let end = pos(0);
     let (ex, ey) = p.curve.at(l);
     assert_eq!(
         (end[0], end[1]),
-        (1.0 + ex, -2.0 + ey),
+        (read_as(1.0 + ex), read_as(-2.0 + ey)),
         "ends at the last offset"
     );
     drop(log);
@@ -454,43 +481,51 @@ fn hold_continue_override_abort() {
     setup("stepped", false);
     let p = Prog::new(straight());
     assert_eq!(custom(&p, 0), 0);
-    // Tick 1 takes it (position 0), tick j shows s((j−1)·dt): after tick 501, s(0.5) = 4.5.
+    // 20 UU: nc = 1900, V = 20/(0.1 + 1.9) = 10. Tick 1 takes it (position 0), tick j
+    // shows s((j−1)·dt): after tick 501, s(0.5) = 0.5 + 10 x 0.4 = 4.5.
     tick(501);
     assert!((pos(0)[0] - 4.5).abs() < 1e-9, "{}", pos(0)[0]);
     assert_eq!(MCC_HoldMotion(0, 0), NO_ERR);
-    // The offset for tick 502 was computed before the hold (s(0.501)); from there the
-    // hold ramp (1 → 0 over Td = 0.1 s) counts from its second period:
-    // τ = 0.501 + ∫_{0.001}^{0.1} (1 − t/0.1) dt = 0.501 + 0.05 − 0.000995 = 0.550005;
-    // s = 0.5 + 10·(0.550005 − 0.1) = 5.00005.
+    // The offset for tick 502 was computed before the hold (s(0.501) = 4.51); from there
+    // the hold ramps the speed v0 = 10 down over the distance v0² Td/(2F) = 100 x
+    // 0.1/20 = 0.5 (as a line's hold): held at 5.01 (2505 pulses).
     tick(200);
     let held = pos(0)[0];
-    assert!((held - 5.00005).abs() < 1e-9, "held at {held}");
+    assert!((held - 5.01).abs() < 1e-9, "held at {held}");
     tick(300);
     assert_eq!(pos(0)[0], held, "stands while held");
     assert_eq!(MCC_GetMotionStatus(0), GMS_HOLD);
     assert_eq!(MCC_ContiMotion(0), NO_ERR);
     tick(300);
-    // Override 50 %: the speed ramps to 5 UU/s over the dec time and stays there.
+    // Override 50 %: what is left is planned again from the speed it has, at 5 UU/s
+    // with the acc/dec ramps and whole periods of cruise, so the cruise speed is 5
+    // lowered by less than a period's worth of the distance left (about 11.5 UU at
+    // 5 UU/s: V > 5/(1 + 5 x 0.001/11.4)).
     assert!(MCC_OverrideSpeed(50.0, 0) >= 0.0);
     tick(300);
     let n0 = p.log.lock().calls.len();
     tick(10);
-    {
+    let v = {
         let l = p.log.lock();
-        let ds = l.calls[n0 + 9].0 - l.calls[n0 + 8].0;
-        assert!((ds / DT - 5.0).abs() < 1e-9, "overridden speed {}", ds / DT);
-    }
-    // Abort with a 50 ms deceleration: the speed at 5 UU/s ramps to 0 (again one period
-    // late): Δs = 5·(0.001 + ∫_{0.001}^{0.05} (1 − t/0.05) dt) = 5·0.02501 = 0.12505 from
-    // the offset shown when it was called.
-    let here = p.log.lock().calls.last().map(|c| c.0).unwrap_or(0.0) - 0.005;
+        (l.calls[n0 + 9].0 - l.calls[n0 + 8].0) / DT
+    };
+    assert!(
+        v <= 5.0 + 1e-9 && v > 5.0 / (1.0 + 5.0 * DT / 11.4),
+        "overridden speed {v}"
+    );
+    // Abort with a 50 ms deceleration: the offset computed before it (the last call's
+    // distance, one period ahead of the position shown) is reached, then the stop
+    // covers v² Td/(2 F') with the overridden feed F' = 5: v²/200.
+    let last = p.log.lock().calls.last().map(|c| c.0).unwrap_or(0.0);
+    let here = last - v * DT;
     let shown = pos(0)[0];
-    assert!((shown - here).abs() < 1e-9, "shown {shown} here {here}");
+    assert_eq!(shown, read_as(here), "shown {shown} here {here}");
     assert!(MCC_AbortMotionEx(50.0, 0) == NO_ERR);
     wait_stop(0);
     let stop = pos(0)[0];
-    assert!(
-        (stop - (here + 0.12505)).abs() < 1e-9,
+    assert_eq!(
+        stop,
+        read_as(last + v * v / 200.0),
         "stopped at {stop}, from {here}"
     );
     let l = p.log.lock();
@@ -519,13 +554,16 @@ fn override_motion_false_keeps_the_feed() {
         IMP_AXIS_ALL,
     );
     assert_eq!(r, 0);
+    // 20 UU at 10 UU/s: nc = 1900, V = 20/(0.1 + 1.9) = 10, cruising after 500 ticks.
     tick(500);
     let l = p.log.lock();
     let n = l.calls.len();
     let ds = l.calls[n - 1].0 - l.calls[n - 2].0;
     assert!((ds / DT - F).abs() < 1e-9, "feed kept: {}", ds / DT);
     drop(l);
-    // With the override (MCC_CustomMotion) the same curve runs at 5 UU/s.
+    // With the override (MCC_CustomMotion) the same curve runs at 5 UU/s, planned at
+    // the rate in effect when it starts, as a line is (20 UU at 5 UU/s: nc =
+    // ceil(4000 - 100) = 3900 periods at V = 20/(0.1 + 3.9) = 5).
     assert_eq!(MCC_AbortMotion(0, 0), NO_ERR);
     tick(2);
     let q = Prog::new(straight());
@@ -625,10 +663,11 @@ fn callbacks_may_read_but_not_queue_into_their_group_or_close() {
     tick(50);
     let l = p.log.lock();
     assert!(!l.get_cur_pos.is_empty());
-    // MCC_GetCurPos works from the callback and reads the position it was called with.
+    // MCC_GetCurPos works from the callback and reads the position it was called with
+    // (in whole pulses, as it reads every position).
     for (c, g) in l.calls.iter().zip(&l.get_cur_pos) {
         assert_eq!(g.0, NO_ERR);
-        assert_eq!(g.1, c.2);
+        assert_eq!(g.1, read_as(c.2));
     }
     assert_eq!(l.queue_own, Some(COMMAND_NOTACCEPTED_ERR));
     assert_eq!(l.close_from_callback, Some(COMMAND_NOTACCEPTED_ERR));
