@@ -60,6 +60,24 @@ fn line(p: [f64; 8]) -> i32 {
     )
 }
 
+/// X's speed as read (`MCC_GetSpeed`: the period's move over the period).
+fn speed_x() -> f64 {
+    let mut v = [0.0; 8];
+    let [a, b, c, d, e, f, g, h] = &mut v;
+    // SAFETY: eight valid pointers.
+    assert_eq!(unsafe { MCC_GetSpeed(a, b, c, d, e, f, g, h, 0) }, NO_ERR);
+    v[0]
+}
+
+/// Every axis's speed as read (`MCC_GetSpeed`).
+fn speeds() -> [f64; 8] {
+    let mut v = [0.0; 8];
+    let [a, b, c, d, e, f, g, h] = &mut v;
+    // SAFETY: eight valid pointers.
+    assert_eq!(unsafe { MCC_GetSpeed(a, b, c, d, e, f, g, h, 0) }, NO_ERR);
+    v
+}
+
 fn close(a: f64, b: f64, what: &str) {
     assert!((a - b).abs() < 1e-9, "{what}: {a} vs {b}");
 }
@@ -75,39 +93,32 @@ fn compose_axes_measure_the_feed() {
     assert_eq!(MCC_SetComposeAxis(0x100, 0), PARAMETER_ERR);
     assert_eq!(MCC_SetComposeAxis(0b1011, 7), GROUP_PARAMETER_ERR);
 
-    // Default X|Y|Z: (3, 4, U 12) is 5 long: 0.5 s + (0.1 + 0.1)/2 = 0.6 s = 600 ticks;
+    // Default X|Y|Z: (3, 4, U 12) is 5 long: na = nd = 100 periods, nc = ceil(500 -
+    // 100) = 400 at V = 5/(0.1 + 0.4) = 10, N = 600 periods, STOP read in period 603;
     // at full speed X/Y move 10 UU/s, U follows at 12/5 of it.
     assert_eq!(line([3.0, 4.0, 0.0, 12.0, 0.0, 0.0, 0.0, 0.0]), 0);
-    tick(299);
-    let a = pos(0);
-    tick(1);
-    let b = pos(0);
-    let d = |i: usize| (b[i] - a[i]) / 0.001;
-    close((d(0).powi(2) + d(1).powi(2)).sqrt(), 10.0, "X/Y speed");
-    close(d(3), 24.0, "U speed");
-    assert_eq!(ticks_until_stop(0, 2000), 300);
+    tick(300);
+    let v = speeds();
+    close(v[0].hypot(v[1]), 10.0, "X/Y speed");
+    close(v[3], 24.0, "U speed");
+    assert_eq!(ticks_until_stop(0, 2000), 303);
     assert_eq!(pos(0)[..4], [3.0, 4.0, 0.0, 12.0]);
 
-    // X|Y|U: back to 0 is sqrt(9 + 16 + 144) = 13 long: 1.3 s + 0.1 s = 1400 ticks, and
-    // at full speed |d(x, y, u)/dt| = 10.
+    // X|Y|U: back to 0 is sqrt(9 + 16 + 144) = 13 long: nc = ceil(1300 - 100) = 1200
+    // at V = 13/1.3 = 10, N = 1400 periods, STOP in period 1403; at full speed
+    // |d(x, y, u)/dt| = 10.
     assert_eq!(MCC_SetComposeAxis(0b1011, 0), NO_ERR);
     assert_eq!(line([0.0; 8]), 1);
-    tick(699);
-    let a = pos(0);
-    tick(1);
-    let b = pos(0);
-    let s = [0, 1, 3]
-        .iter()
-        .map(|&i| ((b[i] - a[i]) / 0.001).powi(2))
-        .sum::<f64>()
-        .sqrt();
+    tick(700);
+    let v = speeds();
+    let s = [0, 1, 3].iter().map(|&i| v[i].powi(2)).sum::<f64>().sqrt();
     close(s, 10.0, "X/Y/U speed");
     close(
         MCC_GetCurFeedSpeed(0),
         10.0,
         "path speed over the compose axes",
     );
-    assert_eq!(ticks_until_stop(0, 3000), 700);
+    assert_eq!(ticks_until_stop(0, 3000), 703);
     assert_eq!(pos(0), [0.0; 8]);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
@@ -120,13 +131,16 @@ fn acc_dec_after_interpolation_rounds_the_corner_and_adds_its_time() {
     assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
     assert_eq!(MCC_EnableAccDecAfterIPO(9), GROUP_PARAMETER_ERR);
 
-    // Acc time 0: the filter is 0 periods long; each 1 UU line runs at 10 UU/s from its
-    // first period to its last: 100 + 100 ticks, the raw interpolation time.
+    // Acc time 0: the filter is 0 periods long and the raw interpolation is what runs:
+    // each 1 UU line at 10 UU/s for 100 periods and its end period (1..100, 101;
+    // 102..201, 202), then a period with nothing running and STOP in period 204, as
+    // without the filter (checked last).
     ramps(0.0);
     assert_eq!(MCC_EnableAccDecAfterIPO(0), NO_ERR);
     assert_eq!(line([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), 0);
     assert_eq!(line([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), 1);
-    assert_eq!(ticks_until_stop(0, 1000), 200);
+    let unfiltered = ticks_until_stop(0, 1000);
+    assert_eq!(pos(0)[..2], [1.0, 1.0]);
     assert_eq!(line([0.0; 8]), 2);
     // Not while the group moves.
     assert_eq!(MCC_EnableAccDecAfterIPO(0), COMMAND_NOTFINISHED_ERR);
@@ -134,31 +148,37 @@ fn acc_dec_after_interpolation_rounds_the_corner_and_adds_its_time() {
 
     // Acc time 100 ms: L = 100 periods, the output is the trapezoidal mean of the raw
     // positions p(k-100) .. p(k) (ends ½, / 100). Raw: x = k/100 for k <= 100, then
-    // y = (k-100)/100.
+    // the first line's end period (101), then y = (k-101)/100 for k = 102..201.
     ramps(100.0);
     assert_eq!(MCC_EnableAccDecAfterIPO(0), NO_ERR);
     assert_eq!(line([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), 3);
     assert_eq!(line([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), 4);
-    // Tick 1: only p(1) = 0.01, weighing ½: x = 0.005 / 100.
+    // Tick 1: only p(1) = 0.01, weighing ½: x = 0.005 / 100, read as 0 whole pulses
+    // (0.025 of one); the speed read is 0.00005 UU over 1 ms.
     tick(1);
-    close(pos(0)[0], 0.00005, "first period: the ramp starts");
+    assert_eq!(pos(0)[0], 0.0);
+    close(speed_x(), 0.05, "first period: the ramp starts");
     // Tick 150, the window around the corner (1, 0):
     // x = (p50/2 + Σ51..100 j/100 + 49·1 + 1/2)/100 = (0.25 + 37.75 + 49 + 0.5)/100 = 0.875
-    // y = (Σ1..49 i/100 + 0.5/2)/100 = (12.25 + 0.25)/100 = 0.125
-    // on the chord x + y = 1, 0.177 from the corner: the corner is rounded.
+    // y = (Σ102..149 (k-101)/100 + 0.49/2)/100 = (11.76 + 0.245)/100 = 0.12005
+    // within 0.18 of the chord x + y = 1 from the corner: the corner is rounded. Read in
+    // whole pulses: 437 and 60 of 500 per UU.
     tick(149);
     let p = pos(0);
-    close(p[0], 0.875, "x at the corner");
-    close(p[1], 0.125, "y at the corner");
-    // 200 raw ticks + the filter's 100: it stops at tick 300, exactly at the end.
-    assert_eq!(ticks_until_stop(0, 1000), 150);
+    close(p[0], 0.874, "x at the corner");
+    close(p[1], 0.12, "y at the corner");
+    // The raw motion last changes at 201, the window holds only the end from 301: the
+    // status reads STOP in period 301, exactly at the end.
+    assert_eq!(ticks_until_stop(0, 1000), 151);
     assert_eq!(pos(0)[..2], [1.0, 1.0]);
     assert_eq!(MCC_DisableAccDecAfterIPO(0), NO_ERR);
-    // Acc/dec before interpolation again: 0.1 s + (0.1 + 0.1)/2 = 200 ticks.
+    // Acc/dec before interpolation again: na = nd = 100, nc = ceil(100 - 100) = 0, V =
+    // 1/0.1 = 10, N = 200 periods, STOP read in period 203.
     assert_eq!(line([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]), 5);
-    assert_eq!(ticks_until_stop(0, 1000), 200);
+    assert_eq!(ticks_until_stop(0, 1000), 203);
     assert_eq!(pos(0)[..2], [1.0, 0.0]);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
+    assert_eq!(unfiltered, 204, "a filter of 0 periods changes no timing");
 }
 
 #[test]
@@ -180,12 +200,14 @@ fn moving_average_of_five_positions() {
     }
     tick(44); // tick 50
     close(pos(0)[0], 0.48, "x(48)");
-    // The raw line ends at tick 100, the mean 4 ticks later, exactly at 1.
+    // The raw line ends at tick 100, the mean 4 ticks later, exactly at 1, and the
+    // status reads STOP then (after the raw line's STOP, in period 103).
     assert_eq!(ticks_until_stop(0, 1000), 54);
     assert_eq!(pos(0)[0], 1.0);
     assert_eq!(MCC_DisableMovingAverage(0), NO_ERR);
+    // Unfiltered, 100 periods, STOP read in period 103.
     assert_eq!(line([0.0; 8]), 1);
-    assert_eq!(ticks_until_stop(0, 1000), 100);
+    assert_eq!(ticks_until_stop(0, 1000), 103);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
@@ -245,7 +267,8 @@ fn reverse_interpolation_retraces_the_path_exactly() {
     CALLS.store(0, Ordering::SeqCst);
     assert_eq!(MCC_SetReverseInterpRoutine(Some(retract), 0), NO_ERR);
     assert_eq!(MCC_EnableReverseInterp(1, 0), NO_ERR);
-    // 10 UU along X (U follows to 5): 1.0 s + (0.1 + 0.1)/2 = 1100 ticks unreversed.
+    // 10 UU along X (U follows to 5): na = nd = 100, nc = ceil(1000 - 100) = 900, N =
+    // 1100 periods unreversed, STOP read in period 1103.
     assert_eq!(line([10.0, 0.0, 0.0, 5.0, 0.0, 0.0, 0.0, 0.0]), 0);
     let mut seen = vec![pos(0)];
     for _ in 0..FWD {
@@ -282,7 +305,7 @@ fn reverse_interpolation_retraces_the_path_exactly() {
     }
     // Then the command goes on and ends as it would have, 2·BACK ticks later.
     let n = ticks_until_stop(0, 5000);
-    assert_eq!(FWD as u64 + 2 * BACK as u64 + n, 1100 + 2 * BACK as u64);
+    assert_eq!(FWD as u64 + 2 * BACK as u64 + n, 1103 + 2 * BACK as u64);
     assert_eq!(pos(0)[..4], [10.0, 0.0, 0.0, 5.0]);
     assert_eq!(MCC_EnableReverseInterp(0, 0), NO_ERR);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
