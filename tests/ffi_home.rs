@@ -334,14 +334,11 @@ fn read_trace(path: &str) -> Vec<(f64, [f64; 8], f64)> {
         .collect()
 }
 
-/// The speeds (UU/s, signed) of X from a trace where only X moves: the trace's path
-/// speed with the sign of the motion, at each peak (where the speed stops rising) and
-/// each plateau (held 10 ticks), in order, without repeats.
-fn step_speeds(rows: &[(f64, [f64; 8], f64)]) -> Vec<f64> {
-    let v: Vec<f64> = rows
-        .windows(2)
-        .map(|w| ((w[1].2 * (w[1].1[0] - w[0].1[0]).signum()) * 1e3).round() / 1e3)
-        .collect();
+/// The speeds (UU/s, signed) of X where only X moves, from its speed read each period
+/// (`MCC_GetSpeed`): at each peak (where the speed stops rising) and each plateau (held
+/// 10 periods), in order, without repeats.
+fn step_speeds(speeds: &[f64]) -> Vec<f64> {
+    let v: Vec<f64> = speeds.iter().map(|x| (x * 1e3).round() / 1e3).collect();
     let mut out: Vec<f64> = Vec::new();
     let mut run = 0;
     for k in 1..v.len() {
@@ -355,8 +352,27 @@ fn step_speeds(rows: &[(f64, [f64; 8], f64)]) -> Vec<f64> {
     out
 }
 
+/// X's speed (`MCC_GetSpeed`) and position read after each period until the homing
+/// ends.
+fn sample_home() -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    for _ in 0..200_000 {
+        MCC_TimeDelay(1);
+        let mut v = [0.0; 8];
+        let [a, b, c, d, e, f, g, h] = &mut v;
+        // SAFETY: eight valid pointers.
+        let r = unsafe { MCCLPCI_IMP::ffi::motion::MCC_GetSpeed(a, b, c, d, e, f, g, h, 0) };
+        assert_eq!(r, NO_ERR);
+        out.push((v[0], cur_pos()[0]));
+        if MCC_GetGoHomeStatus() != 0 {
+            return out;
+        }
+    }
+    panic!("homing did not end");
+}
+
 #[test]
-fn speed_of_every_step_from_the_trace() {
+fn speed_of_every_step() {
     let _g = fresh();
     // nIndexCount 1 puts the index searched 1 UU further, so every step reaches its speed.
     // Direction negative: forward steps are negative. High 10, low 2 UU/s.
@@ -376,30 +392,26 @@ fn speed_of_every_step_from_the_trace() {
         (15, &[-10.0, 10.0, -2.0]),
         (16, &[-10.0, 2.0]),
     ];
-    let path = std::env::temp_dir().join(format!("mccl-home-{}.csv", std::process::id()));
-    let path = path.to_str().unwrap();
     for (mode, speeds) in want {
         let mut h = cfg(mode);
         h.nIndexCount = 1;
-        start(MACHINE, &[(0, h)], Some(path));
+        start(MACHINE, &[(0, h)], None);
         assert_eq!(MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0), NO_ERR);
-        assert_eq!(wait_home().0, 1);
+        let rows = sample_home();
+        assert_eq!(MCC_GetGoHomeStatus(), 1);
         assert_eq!(MCC_CloseSystem(), NO_ERR);
-        let rows = read_trace(path);
-        assert_eq!(step_speeds(&rows), speeds, "mode {mode}");
+        let v: Vec<f64> = rows.iter().map(|r| r.0).collect();
+        assert_eq!(step_speeds(&v), speeds, "mode {mode}");
         if mode == 3 {
-            // dfAccTime 100 ms: 10 UU/s is reached at 100 ms (x = -0.5), not before;
-            // dfDecTime: the stop takes 100 ms after the edge seen at 251 ms.
-            let x = |ms: usize| rows[ms - 1].1[0];
+            // dfAccTime 100 ms: 10 UU/s is reached at 100 ms (x = -0.5), not before (in
+            // the 99th ms it is at least half a period's 100 UU/s² short of it);
+            // dfDecTime: the stop takes 100 ms after the edge seen at 251 ms. Positions
+            // read whole pulses.
+            let x = |ms: usize| rows[ms - 1].1;
+            let speed = |ms: usize| rows[ms - 1].0;
             assert!((x(100) + 0.5).abs() < 1e-9);
-            assert!(
-                (x(101) - x(100) + 0.01).abs() < 1e-9,
-                "cruising after 100 ms"
-            );
-            assert!(
-                (x(100) - x(99) + 0.01).abs() > 1e-6,
-                "still accelerating at 99 ms"
-            );
+            assert!((speed(101) + 10.0).abs() < 1e-9, "cruising after 100 ms");
+            assert!(speed(99) > -10.0 + 0.05, "still accelerating at 99 ms");
             assert!(
                 (x(350) + 2.5).abs() < 1e-9 && x(349) > -2.5,
                 "stopped at 350 ms"
@@ -456,7 +468,14 @@ home = [-1.5, -1.0]
     for ms in 350..=450 {
         assert!((x(ms, 0) + 2.5).abs() < 1e-9, "channel 0 waits at {ms} ms");
     }
-    assert!(x(451, 0) < -2.5, "channel 0 moves again with the phase");
+    // From rest it covers 50 t² UU (dfAccTime 100 ms to 10 UU/s), t from 1 ms at 451
+    // ms; positions read whole pulses toward 0 (500 per UU): trunc(0.025 k²) pulses
+    // after k ms, the first at k = 7 (457 ms).
+    assert!(
+        (x(456, 0) + 2.5).abs() < 1e-9,
+        "less than a pulse after 6 ms"
+    );
+    assert!(x(457, 0) < -2.5, "channel 0 moves again with the phase");
     // Channel 2 has no phase 2: it stands at -1.5 UU until the last channel ends phase 2
     // (channel 1's deceleration from 532 ms ends at 631 ms), then all start phase 3 in
     // the tick that sees it.
@@ -482,20 +501,29 @@ fn orders_run_one_after_the_other() {
     assert_eq!((motor(0), motor(1)), (-1250, -1250));
     assert_eq!(MCC_CloseSystem(), NO_ERR);
     let rows = read_trace(path);
-    for (t, p, _) in &rows[..351] {
-        assert_eq!(p[1], 0.0, "channel 1 stands at {t} ms");
+    // Channel 1 starts at 352 ms from rest: trunc(0.025 k²) whole pulses after k ms
+    // (see above), the first at k = 7, 358 ms.
+    for (t, p, _) in &rows[..357] {
+        assert_eq!(
+            p[1], 0.0,
+            "channel 1 stands (or moves less than a pulse) at {t} ms"
+        );
     }
-    assert!(rows[351].1[1] < 0.0, "channel 1 starts at 352 ms");
+    assert!(rows[357].1[1] < 0.0, "channel 1 started at 352 ms");
 }
 
 #[test]
 fn abort_emergency_stop_and_failure() {
     let _g = fresh();
+
     // Abort at 150 ms of mode 3: cruising since 100 ms at 5 p a tick, at -500 p; the
     // abort decelerates over dfDecTime: 250 p further. The status says "not homed".
+    // Before any homing the status reads 1, as the vendor's library reads it right
+    // after init (scenario state_after_init), and there is nothing to abort.
     start(MACHINE, &[(0, cfg(3))], None);
-    assert_eq!(MCC_GetGoHomeStatus(), HOME_COMMAND_NOTCALLED_ERR);
-    assert_eq!(MCC_AbortGoHome(), HOME_COMMAND_NOTCALLED_ERR);
+    assert_eq!(MCC_GetGoHomeStatus(), 1);
+    assert_eq!(MCC_AbortGoHome(), NO_ERR);
+    assert_eq!(MCC_GetGoHomeStatus(), 1);
     assert_eq!(MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0), NO_ERR);
     MCC_TimeDelay(150);
     assert_eq!(MCC_GetGoHomeStatus(), 0);
@@ -594,11 +622,8 @@ fn arguments_and_states() {
         MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 12),
         PARAMETER_ERR
     );
-    assert_eq!(
-        MCC_GetGoHomeStatus(),
-        HOME_COMMAND_NOTCALLED_ERR,
-        "nothing changed"
-    );
+    // The status reads 1 before any homing (scenario state_after_init).
+    assert_eq!(MCC_GetGoHomeStatus(), 1, "nothing changed");
     // A group with motion to do: not now, and nothing changes.
     assert_eq!(
         MCCLPCI_IMP::ffi::motion::MCC_Line(1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, IMP_AXIS_ALL),
@@ -608,7 +633,7 @@ fn arguments_and_states() {
         MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0),
         COMMAND_NOTFINISHED_ERR
     );
-    assert_eq!(MCC_GetGoHomeStatus(), HOME_COMMAND_NOTCALLED_ERR);
+    assert_eq!(MCC_GetGoHomeStatus(), 1);
     while MCC_GetMotionStatus(0) != GMS_STOP {
         MCC_TimeDelay(10);
     }
@@ -638,9 +663,19 @@ fn arguments_and_states() {
     assert_eq!(unsafe { MCC_GetCommandCount(&mut n, 0) }, NO_ERR);
     assert_eq!(n, 0);
     // MCC_ResetMotion drops the homing: the axis stays where it is, nothing is homed.
+    // A busy card answers COMMAND_NOTACCEPTED_ERR and is reset all the same, and the
+    // go-home status then reads 0, as the vendor's library answers (scenario
+    // state_after_reset), though nothing homes.
     MCC_TimeDelay(50);
-    assert_eq!(MCC_ResetMotion(), NO_ERR);
-    assert_eq!(MCC_GetGoHomeStatus(), HOME_COMMAND_NOTCALLED_ERR);
+    let here = motor(0);
+    // The status reads running one more period, as after an abort (scenario
+    // state_after_reset), then STOP.
+    assert_eq!(MCC_ResetMotion(), COMMAND_NOTACCEPTED_ERR);
+    assert_eq!(MCC_GetGoHomeStatus(), 0);
+    MCC_TimeDelay(1);
     assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    MCC_TimeDelay(50);
+    assert_eq!(motor(0), here, "stands");
+    assert_eq!(MCC_GetGoHomeStatus(), 0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
