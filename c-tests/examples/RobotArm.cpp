@@ -151,12 +151,15 @@ std::vector<std::vector<double> > TakePoints()
     return v;
 }
 
+// A kinematic group's pulse position is its joints', round(joint x pulses per UU) (the
+// library's rule for joints, docs/compatibility.md "Robot kinematics"; other axes count
+// whole pulses toward 0, PulsesOf).
 void CheckPulsesAreJoints(const double j[8])
 {
     long p[8];
     CHECK_EQ(MCC_GetPulsePos(&p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &p[6], &p[7], 0), NO_ERR);
     for (int i = 0; i < 8; i++)
-        CHECK_EQ(p[i], PulsesOf(j[i]));
+        CHECK_EQ(p[i], lround(j[i] * EX_PPR));
 }
 
 } // namespace
