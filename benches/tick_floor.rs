@@ -6,9 +6,10 @@
 //!   line (as `benches/engine.rs` runs it), per tick of `MCC_TimeDelay`: the engine
 //!   thread's CPU time (its CPU-time clock) and wall time; also with a snapshot published
 //!   every tick, as under the realtime clock.
-//! * **floor**: the crate's own planner sampling the same lines (`PathMove::sample_into`
-//!   of 8 axes) and rounding every axis to pulses, per tick, results kept live: the
-//!   calling thread's CPU time and wall time.
+//! * **floor**: the crate's own planner sampling the same lines (the profile's fraction
+//!   of the period, `Path::point_at` of 8 axes, the speeds from the move of the period)
+//!   and every axis in whole pulses, per tick, results kept live: the calling thread's
+//!   CPU time and wall time.
 //!
 //! Engine and floor alternate over [`ROUNDS`] short rounds. The headline ratios are the
 //! medians of each round's own ratio (engine over the floor measured next to it, the
@@ -23,7 +24,7 @@ mod engine_thread;
 use engine_thread::{cpu_clock_ns, engine_cpu_clock, thread_cpu_ns};
 use std::hint::black_box;
 use std::time::Instant;
-use MCCLPCI_IMP::engine::snapshot::round_pulses;
+use MCCLPCI_IMP::engine::snapshot::whole_pulses;
 use MCCLPCI_IMP::ffi::motion::{MCC_Line, MCC_SetFeedSpeed};
 use MCCLPCI_IMP::ffi::system::*;
 use MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay;
@@ -111,29 +112,38 @@ fn engine_tick_us(live: bool, engine: libc::clockid_t, ticks: u32) -> (f64, f64)
     (us, cpu)
 }
 
-/// Floor time per tick, µs: `groups` moves of 8 axes sampled and rounded to pulses:
-/// (wall, CPU time of this thread).
+/// Floor time per tick, µs: `groups` moves of 8 axes sampled on the grid of 1 ms
+/// periods from `t0` s on and counted in whole pulses: (wall, CPU time of this thread).
 fn floor_tick_us(groups: usize, t0: f64, ticks: u32) -> (f64, f64) {
     let start = [0.0; 8];
     let end = [LEN; 8];
+    // The engine's lines: 300 ms ramps (300 periods of 1 ms), its default S curve.
     let moves: Vec<PathMove> = (0..groups)
         .map(|_| {
-            PathMove::new(Path::line(&start, &end), FEED, 0.3, 0.3, Shape::T, Shape::T)
-                .expect("a valid line")
+            PathMove::new(
+                Path::try_line(&start, &end).expect("a valid line"),
+                FEED,
+                (300, 300),
+                (Shape::S, Shape::S),
+                1e-3,
+            )
         })
         .collect();
-    let mut pos = [0.0; 8];
+    let k0 = (t0 * 1e3) as u64;
+    let mut last = vec![start; groups];
     let mut vel = [0.0; 8];
     let mut pulses = vec![[0i64; 8]; groups];
     let c = thread_cpu_ns();
     let t = Instant::now();
     for k in 0..ticks {
-        let tk = t0 + f64::from(k) * 1e-3;
-        for (m, p) in moves.iter().zip(pulses.iter_mut()) {
-            m.sample_into(black_box(tk), &mut pos, &mut vel);
-            for (out, x) in p.iter_mut().zip(pos) {
-                *out = round_pulses(x * PULSES_PER_UU);
+        let kk = k0 + u64::from(k);
+        for ((m, p), prev) in moves.iter().zip(pulses.iter_mut()).zip(last.iter_mut()) {
+            let pos = m.path.point_at(m.profile.fraction(black_box(kk)));
+            for i in 0..8 {
+                vel[i] = (pos[i] - prev[i]) * 1e3;
+                p[i] = whole_pulses(pos[i] * PULSES_PER_UU);
             }
+            *prev = pos;
         }
         black_box(&mut pulses);
         black_box(&vel);
