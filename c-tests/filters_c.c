@@ -50,13 +50,14 @@ int main(void)
 
     /* Acc/dec after interpolation over 100 periods: X 0 -> 1 at 10 UU/s is 100 periods
      * of interpolation at full speed; the output at period 50 is the trapezoidal mean of
-     * x(j) = j/100, j = 0..50: (12.25 + 0.25) / 100 = 0.125; it arrives at period 200. */
+     * x(j) = j/100, j = 0..50: (12.25 + 0.25) / 100 = 0.125, read in whole pulses toward
+     * 0 (trunc(62.5) = 62 of 500 per UU: 0.124); it arrives at period 200. */
     MCC_SetFeedSpeed(10, 0);
     CHECK_EQ(MCC_SetAccTime(100, 0), NO_ERR);
     CHECK_EQ(MCC_EnableAccDecAfterIPO(0), NO_ERR);
     CHECK_EQ(MCC_Line(1, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL), 0);
     MCC_TimeDelay(50);
-    CHECK_NEAR(cur_x(), 0.125, 1e-9);
+    CHECK_NEAR(cur_x(), 0.124, 1e-9);
     MCC_TimeDelay(149);
     CHECK_EQ(MCC_GetMotionStatus(0), GMS_RUNNING);
     MCC_TimeDelay(1);

@@ -38,7 +38,10 @@ int main(void)
     h.dfLowSpeed = 2;
     CHECK_EQ(MCC_SetHomeConfig(&h, 0, 0), NO_ERR);
     CHECK_EQ(MCC_InitSystem(1, card, 1), NO_ERR);
-    CHECK_EQ(MCC_AbortGoHome(), HOME_COMMAND_NOTCALLED_ERR);   /* nothing started yet */
+    /* Nothing started yet: the go-home status reads 1 (as the vendor's library reads it
+     * right after init) and there is nothing to stop. */
+    CHECK_EQ(MCC_GetGoHomeStatus(), 1);
+    CHECK_EQ(MCC_AbortGoHome(), NO_ERR);
 
     CHECK_EQ(MCC_Home(0, 255, 255, 255, 255, 255, 255, 255, 0), NO_ERR);
     MCC_TimeDelay(320);

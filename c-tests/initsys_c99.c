@@ -27,6 +27,7 @@ int main(void)
     stAxisParam.dfHighLimit = 50000.0;
     stAxisParam.dfLowLimit = -50000.0;
     stAxisParam.wPulseMode = DDA_FMT_PD;
+    stAxisParam.wPulseWidth = 100;   /* the vendor's library refuses a pulse width of 0 */
     stAxisParam.wCommandMode = OCM_PULSE;
     stAxisParam.wOverTravelUpSensorMode = SL_UNUSED;
     stAxisParam.wOverTravelDownSensorMode = SL_UNUSED;
@@ -52,8 +53,14 @@ int main(void)
     stCardConfig[CARD_INDEX].wCardType = IMP_III_8_AXIS_PCI_CARD;
     CHECK_EQ(MCC_InitSystem(INTERPOLATION_TIME, stCardConfig, 1), GROUP_PARAMETER_ERR);
     CHECK_EQ(MCC_CloseGroup(2), NO_ERR);
-    CHECK_EQ(MCC_InitSystem(INTERPOLATION_TIME, NULL, 1), PARAMETER_ERR);
     CHECK_EQ(MCC_InitSystem(INTERPOLATION_TIME, stCardConfig, 0), PARAMETER_ERR);
+    /* A NULL card table is taken as IMP-III cards, as the vendor's library takes it; a
+     * close forgets the group table, so the groups are made again. */
+    CHECK_EQ(MCC_InitSystem(INTERPOLATION_TIME, NULL, 1), NO_ERR);
+    CHECK_EQ(MCC_GetMotionStatus(1), GMS_STOP);
+    CHECK_EQ(MCC_CloseSystem(), NO_ERR);
+    CHECK_EQ(MCC_CreateGroup(0, 1, 2, -1, -1, -1, -1, -1, CARD_INDEX), 0);
+    CHECK_EQ(MCC_CreateGroupEx(3, 4, 5, -1, -1, -1, -1, -1, CARD_INDEX, 50), 1);
 
     nRet = MCC_InitSystem(INTERPOLATION_TIME, stCardConfig, 1);
     CHECK_EQ(nRet, NO_ERR);

@@ -127,7 +127,8 @@ static void Cycle(int bCloseFromRoutine)
         CHECK_EQ(atomic_load(&nCloses), 1);
         CHECK_EQ(atomic_load(&nCloseRet), NO_ERR);
         CHECK_EQ(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR);
-        CHECK_EQ(MCC_CloseSystem(), INITIAL_MOTION_ERR);
+        /* Closing what is closed answers NO_ERR, as the vendor's library answers. */
+        CHECK_EQ(MCC_CloseSystem(), NO_ERR);
     }
     else
     {

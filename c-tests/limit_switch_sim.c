@@ -29,12 +29,14 @@ int main(void)
     CHECK_EQ(MCC_GetErrorCode(0), 0xF701);
     MCC_GetCurPos(&x[0], &x[1], &x[2], &x[3], &x[4], &x[5], &x[6], &x[7], 0);
     CHECK(x[0] > 0.0 && x[0] < 10.0);
-    /* Refused until cleared. */
-    CHECK(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL) >= 0);
+    /* Refused until cleared: with an error record every motion command answers
+     * RUN_TIME_ERR, as the vendor's library answers. */
+    CHECK_EQ(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL), RUN_TIME_ERR);
     MCC_TimeDelay(200);
     MCC_GetCurPos(&x2[0], &x2[1], &x2[2], &x2[3], &x2[4], &x2[5], &x2[6], &x2[7], 0);
     CHECK(x2[0] == x[0]);
     CHECK_EQ(MCC_ClearError(0), NO_ERR);
+    CHECK(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL) >= 0);
     while (MCC_GetMotionStatus(0) != GMS_STOP)
         MCC_TimeDelay(1);
     MCC_GetCurPos(&x2[0], &x2[1], &x2[2], &x2[3], &x2[4], &x2[5], &x2[6], &x2[7], 0);

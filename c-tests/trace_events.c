@@ -1,7 +1,7 @@
 /* trace_events.c: the events file beside MCCL_TRACE (issue 15). A 1 ms card runs a line
- * that is held, continued and aborted, a refused arc records an error that is cleared,
- * and the emergency-stop input stops a second line. Each expected line is derived by
- * hand below. C99 + POSIX setenv. */
+ * that is held, continued and aborted, a bad arc records an error that is cleared, and
+ * the emergency-stop input stops a second line. Each expected line is derived by hand
+ * below. C99 + POSIX setenv. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -49,17 +49,18 @@ int main(int argc, char **argv)
     /* Abort at 800 ms stops at once: the abort, then command 0 ends cut short, at 801. */
     CHECK_EQ(MCC_AbortMotion(0, 0), NO_ERR);
     MCC_TimeDelay(10);
-    /* A collinear arc at 810 ms is refused and records 0xF104 (written at 811). */
-    CHECK_EQ(MCC_ArcXY(20, 0, 30, 0, 0), PARAMETER_ERR);
+    /* A collinear arc at 810 ms is queued (index 1), as the vendor's library takes it, and
+     * fails as it starts in the tick of 811 ms: 0xF104 (it never ran: no start or end). */
+    CHECK_EQ(MCC_ArcXY(20, 0, 30, 0, 0), 1);
     MCC_TimeDelay(10);
     CHECK_EQ(MCC_GetErrorCode(0), 0xF104);
     CHECK_EQ(MCC_ClearError(0), NO_ERR);
-    /* The next line (index 1) is queued at 820 ms and starts in the tick of 821 ms. */
-    CHECK(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL) == 1);
+    /* The next line (index 2) is queued at 820 ms and starts in the tick of 821 ms. */
+    CHECK(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL) == 2);
     MCC_TimeDelay(100);
     /* Emergency stop pressed at 920 ms: the input changes in the tick of 921 ms; the
      * safety check of that tick stops the group after its row was written, so the
-     * group's record and the end of command 1 show in the row of 922 ms. */
+     * group's record and the end of command 2 show in the row of 922 ms. */
     CHECK_EQ(MCCL_SimSetEmergencyStop(0, 1), NO_ERR);
     MCC_TimeDelay(10);
     CHECK_EQ(MCC_GetErrorCode(0), 0xF102);
@@ -79,8 +80,8 @@ int main(int argc, char **argv)
     expect("\n701.000000,0,0,continue,\n");
     expect("\n801.000000,0,0,abort,dec_ms=0.000 block_end=0\n801.000000,0,0,cmd_end,index=0 type=LINE end=stopped\n");
     expect("\n811.000000,0,0,error_set,code=0xF104\n");
-    expect("\n821.000000,0,0,error_cleared,code=0xF104\n821.000000,0,0,cmd_start,index=1 type=LINE\n");
+    expect("\n821.000000,0,0,error_cleared,code=0xF104\n821.000000,0,0,cmd_start,index=2 type=LINE\n");
     expect("\n921.000000,0,-1,emergency_stop,active=1\n");
-    expect("\n922.000000,0,0,cmd_end,index=1 type=LINE end=stopped\n922.000000,0,0,error_set,code=0xF102\n");
+    expect("\n922.000000,0,0,cmd_end,index=2 type=LINE end=stopped\n922.000000,0,0,error_set,code=0xF102\n");
     return check_done("trace_events");
 }

@@ -67,8 +67,10 @@ fn encoder_follows_the_motor() {
     assert_eq!(enc(0), 5000);
     assert_eq!(MCC_SetENCInputRate(1, 0, 0), NO_ERR);
     assert_eq!(enc(0), 5000, "the count keeps its value at the change");
+    // The first line's 1000 periods have run; its end period (phase 21) comes next,
+    // then the second line's 400 periods (4 UU at 10 UU/s).
     assert_eq!(line_x(14.0), 1);
-    run(400);
+    run(401);
     assert_eq!(enc(0), 5000 + 2000 / 4, "2000 pulses at x1");
     assert_eq!(MCC_ClearENCCounter(0, 0), NO_ERR);
     assert_eq!(enc(0), 0);
@@ -102,11 +104,8 @@ fn over_travel_never_passes_the_high_limit() {
     assert_eq!(unsafe { MCC_SetMacParam(&mut m, 0, 0) }, NO_ERR);
     assert_eq!(init_ms(1, 1), NO_ERR);
     assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
-    assert_eq!(MCC_SetOverTravelCheck(1, 0, 0, 0, 0, 0, 0, 0, 0), NO_ERR);
-    assert_eq!(
-        MCC_SetOverTravelCheck(2, 0, 0, 0, 0, 0, 0, 0, 0),
-        PARAMETER_ERR
-    );
+    // Any nonzero switches the check on, read back as 1 (scenario setters_inpos_group).
+    assert_eq!(MCC_SetOverTravelCheck(2, 0, 0, 0, 0, 0, 0, 0, 0), NO_ERR);
     let mut ot = [0; 8];
     let [a, b, c, d, e, f, g, h] = &mut ot;
     // SAFETY: eight valid pointers.
@@ -125,11 +124,13 @@ fn over_travel_never_passes_the_high_limit() {
     assert!(max > 4.9, "stopped within a tick of the limit: {max}");
     assert_eq!(MCC_GetErrorCode(0), 0xF301);
     assert_eq!(status(), GMS_STOP);
-    // Refused until the error is cleared; then back into the zone.
-    assert_eq!(line_x(0.0), 1);
+    // Refused (RUN_TIME_ERR) until the error is cleared, as the vendor's library
+    // answers; then back into the zone.
+    assert_eq!(line_x(0.0), RUN_TIME_ERR);
     run(100);
-    assert_eq!(x(), max, "waits for MCC_ClearError");
+    assert_eq!(x(), max, "stands");
     assert_eq!(MCC_ClearError(0), NO_ERR);
+    assert_eq!(line_x(0.0), 1);
     run(1000);
     assert_eq!(x(), 0.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
@@ -303,12 +304,20 @@ fn compensation_sends_15011_pulses() {
     // SAFETY: valid pointers.
     unsafe { MCCL_SimGetMotor(0, 0, &mut pos, &mut n) };
     assert_eq!(n, 15011, "user manual §2.7.5");
-    assert_eq!(x(), 30.0, "the command position is not compensated");
+    // The command position and the pulse count include the compensation, as the
+    // vendor's library counts them (scenario compensation): 15011 pulses = 30.022 UU;
+    // the reference position does not.
+    assert_eq!(x(), 15011.0 / 500.0, "the command position is compensated");
+    let mut r = [0.0; 8];
+    let [a, b, c, d, e, f, g, h] = &mut r;
+    // SAFETY: eight valid pointers.
+    unsafe { MCC_GetCurRefPos(a, b, c, d, e, f, g, h, 0) };
+    assert_eq!(r[0], 30.0);
     let mut pl = [0 as c_long; 8];
     let [a, b, c, d, e, f, g, h] = &mut pl;
     // SAFETY: eight valid pointers.
     unsafe { MCC_GetPulsePos(a, b, c, d, e, f, g, h, 0) };
-    assert_eq!(pl[0], 15000);
+    assert_eq!(pl[0], 15011);
     assert_eq!(enc(0), 15011, "the encoder sees the compensated motor");
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
@@ -333,18 +342,22 @@ fn in_position_waits_for_the_motor() {
     assert_eq!(MCC_SetInPosMode(IPM_ONETIME_BLOCK, 0), NO_ERR);
     assert_eq!(MCC_SetInPosMode(4, 0), PARAMETER_ERR);
     assert_eq!(MCC_SetInPosMaxCheckTime(1000, 0), NO_ERR);
+    // A NaN tolerance is taken as the vendor's library takes it (its 32-bit pulse
+    // conversion: 2^31 pulses, scenario setters_inpos_group); then 0.01 UU = 5 pulses.
+    assert_eq!(
+        MCC_SetInPosToleranceEx(f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0),
+        NO_ERR
+    );
     assert_eq!(
         MCC_SetInPosToleranceEx(0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0),
         NO_ERR
     );
-    assert_eq!(
-        MCC_SetInPosToleranceEx(f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0),
-        PARAMETER_ERR
-    );
+    // The switch is a command of one period (type 11, scenario inpos_switches), then
+    // the line's 500 periods (5 UU at 10 UU/s).
     assert!(MCC_EnableInPos(0, IMP_AXIS_X) >= 0);
-    assert!(line_x(5.0) >= 0); // 500 ms of motion
+    assert!(line_x(5.0) >= 0);
     assert!(line_x(6.0) >= 0);
-    run(500);
+    run(501);
     assert_eq!(x(), 5.0, "the first line ended");
     let mut st = [0u8; 8];
     let read = |st: &mut [u8; 8]| {

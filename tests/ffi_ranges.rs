@@ -3,10 +3,12 @@
 //! changes nothing; a value just inside the range is taken and behaves (issue 12,
 //! defect 3).
 //!
-//! Ranges used below: times 0..=4,294,967,295 ms (2^32 − 1); speeds 1e-6..=1e9 UU/s;
+//! Ranges used below: times 0..=4,294,967,295 ms (2^32 − 1); speeds 1e-6..=1e9 UU/s
+//! (a feed speed: any size above 0 up to 1e9, as the vendor's library takes it);
 //! positions |x| × pulses per UU <= 1e15 pulses (default 500 pulses/UU: ±2e12 UU);
 //! pulses per UU 1e-6..=1e9; encoder gear rate 1e-3..=1e3; encoder counts |n| <= 1e18;
-//! percentages (override, PtP and jog ratios) from 0.01 %.
+//! percentages (override, PtP and jog ratios) above 0, at most 100 % (PtP, jog) or
+//! 10^6 % (override).
 
 mod common;
 
@@ -91,14 +93,25 @@ fn abort_time_beyond_the_longest_time_is_refused() {
     MCC_TimeDelay(1000);
     assert!((x() - 20.0).abs() < 1e-9, "{}", x());
     assert_eq!(line_x(0.0), 1, "not aborting");
-    // The longest time is taken: the rate falls linearly from 1 to 0 over
-    // 4,294,967.295 s, so 1 s later X has gone 10 × (1 − 0.5 / 4294967.295) UU further.
+    // The longest time is taken. A timed abort runs as a hold with Td = t: from v0 = 10
+    // (= F) over n = floor(Td v0/F/T) + 1 = 4,294,967,296 periods it covers d = v0^2
+    // Td/(2F) = 21,474,836.475 UU, starting at v_s = 2d/(nT) = 9.99999999767 UU/s and
+    // falling as the line's deceleration (the default S-curve: after 1000 of its
+    // periods the fall is (1000/n)^3 of it, nothing). 1 s later X = 20 + 9.99999999767,
+    // whole pulses toward 0: trunc(14999.9999988) = 14999, and it never ran faster than
+    // it did.
     assert_eq!(MCC_AbortMotionEx(MAX_MS, 0), NO_ERR);
     assert_eq!(line_x(0.0), ABORT_NOT_FINISH_ERR, "aborting");
-    MCC_TimeDelay(1000);
-    let want = 30.0 - 10.0 * 0.5 / 4_294_967.295;
-    assert!((x() - want).abs() < 1e-9, "{} vs {want}", x());
+    MCC_TimeDelay(1);
+    let v = MCC_GetCurFeedSpeed(0);
+    assert!(
+        v <= 10.0 && v > 9.9999,
+        "the abort's first period at {v} UU/s"
+    );
+    MCC_TimeDelay(999);
+    assert_eq!(pulses_x(), 14_999, "X = {}", x());
     assert_eq!(MCC_AbortMotion(0, 0), NO_ERR);
+    MCC_TimeDelay(2);
     assert_eq!(status(), GMS_STOP);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
@@ -128,17 +141,25 @@ fn acc_and_dec_times_beyond_the_longest_time_are_refused() {
         );
     }
     assert_eq!(t, [300.0; 8], "unchanged");
-    // The longest acc time is taken and moves at the derived speed: F = 10 UU/s,
-    // Ta = 4,294,967.295 s, so the acceleration is F / Ta = 2.3283e-6 UU/s²; a 10 UU line
-    // cannot reach F (that needs F·Ta/2 = 2.1e7 UU) and accelerates for its first
-    // ~2900 s, so after 60 s X = a·t²/2 = 10 / 4294967.295 × 3600 / 2 = 4.1910e-3 UU.
-    assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
+    // The longest acc time is taken. A line with it and the 300 ms deceleration would
+    // last longer than the longest time (ramps keep their time, even in a short move):
+    // refused, nothing queued.
+    assert_eq!(MCC_SetFeedSpeed(100.0, 0), 100.0);
     assert_eq!(MCC_SetAccTime(MAX_MS, 0), NO_ERR);
     assert_eq!(MCC_GetAccTime(0), MAX_MS);
-    assert_eq!(line_x(10.0), 0);
+    assert_eq!(line_x(10.0), PARAMETER_ERR);
+    assert_eq!(queued(), 0);
+    // Ta = 2^32 - 2 ms and no deceleration: na = 4,294,967,294 periods of 1 ms, nd = 0
+    // (even), 4,294,967.294 s: taken. A trapezoid ramp; L = 2e8 UU is short of
+    // F (Ta + Td)/2 = 2.1e8, so it peaks at V = 2L/(Ta + Td) and after t = 60 s X =
+    // V t^2/(2 Ta) = L t^2/Ta^2 = 2e8 x 3600/4294967.294^2 = 0.039031 UU: whole pulses,
+    // trunc(19.516) = 19.
+    assert_eq!(MCC_SetAccType(b'T' as std::os::raw::c_char, 0), NO_ERR);
+    assert_eq!(MCC_SetAccTime(MAX_MS - 1.0, 0), NO_ERR);
+    assert_eq!(MCC_SetDecTime(0.0, 0), NO_ERR);
+    assert_eq!(line_x(2e8), 0);
     MCC_TimeDelay(60_000);
-    let want = 10.0 / 4_294_967.295 * 3600.0 / 2.0;
-    assert!((x() - want).abs() < 1e-12, "{} vs {want}", x());
+    assert_eq!(pulses_x(), 19, "X = {}", x());
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
@@ -152,8 +173,9 @@ fn sys_max_speed_outside_the_speed_range_is_refused() {
     assert_eq!(MCC_GetSysMaxSpeed(), 250.0, "unchanged");
     // The slowest speed is taken; the feed comes back clamped to it. A 10 UU line
     // would last 10 / 1e-6 = 1e7 s, longer than 4,294,967.295 s: refused, nothing
-    // queued. A 1 UU line lasts 1e6 s + 0.3 s: queued, and after 1 s (0.3 s ramp at
-    // 1e-6 / 0.3 UU/s², then 0.7 s at 1e-6 UU/s) X = 1.5e-7 + 7e-7 = 8.5e-7 UU.
+    // queued. A 1 UU line (the default 300 ms ramps: na = nd = 300, nc = ceil(1e9 -
+    // 300) = 999,999,700 periods, V = 1/(0.3 + 999,999.7) = 1e-6) is queued, and after
+    // 1 s it cruises at 1e-6 UU/s (well short of a pulse: X still reads 0).
     assert_eq!(MCC_SetSysMaxSpeed(1e-6), NO_ERR);
     assert_eq!(init_ms(1, 1), NO_ERR);
     assert_eq!(MCC_SetFeedSpeed(10.0, 0), 1e-6);
@@ -162,7 +184,10 @@ fn sys_max_speed_outside_the_speed_range_is_refused() {
     assert_eq!(status(), GMS_STOP);
     assert_eq!(line_x(1.0), 0);
     MCC_TimeDelay(1000);
-    assert!((x() - 8.5e-7).abs() < 1e-15, "{}", x());
+    assert_eq!(status(), GMS_RUNNING);
+    let v = MCC_GetCurFeedSpeed(0);
+    assert!((v - 1e-6).abs() < 1e-15, "{v}");
+    assert_eq!(x(), 0.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
     assert_eq!(MCC_SetSysMaxSpeed(1e9), NO_ERR, "the fastest speed");
 }
@@ -172,24 +197,39 @@ fn feed_and_ratios_outside_their_ranges_are_refused() {
     let _g = fresh();
     assert_eq!(init_ms(1, 1), NO_ERR);
     assert_eq!(MCC_SetFeedSpeed(20.0, 0), 20.0);
-    for bad in [1e-12, 1.1e9, 1e300] {
+    // A feed of 0, NaN or above the speed range is refused; a negative one counts by
+    // its size and a tiny one is taken, as the vendor's library takes them (scenario
+    // setters_feed: -1 -> 1, 1e-9 taken, 0 refused).
+    for bad in [0.0, f64::NAN, 1.1e9, 1e300] {
         assert_eq!(MCC_SetFeedSpeed(bad, 0), f64::from(PARAMETER_ERR), "{bad}");
         assert_eq!(MCC_ChangeFeedSpeed(bad, 0), f64::from(PARAMETER_ERR));
     }
     assert_eq!(MCC_GetFeedSpeed(0), 20.0, "unchanged");
-    // Above the system maximum (100000) but inside the range: clamped as before.
-    assert_eq!(MCC_SetFeedSpeed(1e9, 0), 100_000.0);
+    assert_eq!(MCC_SetFeedSpeed(-20.0, 0), 20.0);
+    assert_eq!(MCC_SetFeedSpeed(1e-9, 0), 1e-9);
+    // Above the system maximum (100 by default) but inside the range: clamped.
+    assert_eq!(MCC_SetFeedSpeed(1e9, 0), 100.0);
+    // Ratios: positive; a PtP ratio at most 100 %, an override up to 10^6 %: 0.001 %
+    // and 5000 % are taken, 0, -1 and 100.5 % (PtP) refused, as the vendor's library
+    // answers (scenarios setters_ptp_speed, setters_override).
     assert_eq!(MCC_SetPtPSpeed(50.0, 0), 50.0);
-    for bad in [1e-300, 0.0099] {
-        assert_eq!(MCC_SetPtPSpeed(bad, 0), f64::from(PARAMETER_ERR));
-        assert_eq!(MCC_OverrideSpeed(bad, 0), f64::from(PARAMETER_ERR));
+    for bad in [0.0, -1.0, f64::NAN, 100.5] {
+        assert_eq!(MCC_SetPtPSpeed(bad, 0), f64::from(PARAMETER_ERR), "{bad}");
         assert_eq!(MCC_JogSpace(1.0, bad, 0, 0), PARAMETER_ERR);
         assert_eq!(MCC_JogConti(1, bad, 0, 0), PARAMETER_ERR);
     }
+    for bad in [0.0, -1.0, f64::NAN, 1.1e6] {
+        assert_eq!(MCC_OverrideSpeed(bad, 0), f64::from(PARAMETER_ERR), "{bad}");
+    }
     assert_eq!(MCC_GetPtPSpeed(0), 50.0, "unchanged");
-    assert_eq!(MCC_GetOverrideRate(0), 100.0, "unchanged");
+    MCC_TimeDelay(1);
+    assert_eq!(MCC_GetOverrideRate(0), 1.0, "unchanged");
     assert_eq!(queued(), 0);
-    assert_eq!(MCC_OverrideSpeed(0.01, 0), 0.01, "the smallest percentage");
+    assert_eq!(MCC_SetPtPSpeed(1e-3, 0), 1e-3);
+    assert_eq!(MCC_OverrideSpeed(1e-3, 0), 1e-3);
+    assert_eq!(MCC_OverrideSpeed(5000.0, 0), 5000.0);
+    MCC_TimeDelay(1);
+    assert_eq!(MCC_GetOverrideRate(0), 50.0, "5000 %, read as a fraction");
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
@@ -267,38 +307,54 @@ fn positions_beyond_the_pulse_counter_are_refused() {
         MCC_HelicaXY_Z(1.0, 0.0, 1e300, 1.0, CIR_CW as u8, 0),
         PARAMETER_ERR
     );
-    assert_eq!(MCC_JogSpace(far, 10.0, b'X' as _, 0), PARAMETER_ERR);
+    assert_eq!(MCC_JogSpace(far, 10.0, 0, 0), PARAMETER_ERR);
     assert_eq!(MCC_DefinePos(0, 1e300, 0), PARAMETER_ERR);
     assert_eq!(MCC_DefinePos(0, far, 0), PARAMETER_ERR);
     assert_eq!(queued(), 0);
     assert_eq!(status(), GMS_STOP);
     assert_eq!(x(), 0.0, "unchanged");
     assert_eq!(MCC_GetErrorCode(0), 0, "no error recorded (not a bad arc)");
-    // A renamed position counts too: after DefinePos(X = -1), the same pulse count 0 is
-    // X = -1, so X = 2e12 − 1 is the farthest target (reference 2e12 = 1e15 pulses).
+    // A renamed position counts too. DefinePos(X = -1) renames the position, the
+    // reference and the pulse count alike (-500 pulses), as the vendor's library does
+    // (scenario define_origin); DefineOrigin then makes the reference 0 here and leaves
+    // the position. Targets are in the reference, and both the reference and the
+    // position (the pulse count) must stay within 1e15 pulses: reference 2e12 + 1 is
+    // beyond, and so is reference -2e12 (position -2e12 - 1); -2e12 + 1 (position
+    // -2e12, -1e15 pulses) is the farthest below.
     assert_eq!(MCC_DefinePos(0, -1.0, 0), NO_ERR);
-    assert_eq!(line_x(2e12), PARAMETER_ERR);
+    assert_eq!((x(), pulses_x()), (-1.0, -500));
+    assert_eq!(MCC_DefineOrigin(0, 0), NO_ERR);
+    assert_eq!((x(), pulses_x()), (-1.0, -500));
+    assert_eq!(line_x(2e12 + 1.0), PARAMETER_ERR);
+    assert_eq!(line_x(-2e12), PARAMETER_ERR);
     assert_eq!(queued(), 0);
-    // From X = -1 to 2e12 − 1 at 1e9 UU/s (2e12 UU in 2000 s + 0.3 s, inside the longest
-    // time): taken. (Its 2.5e10 pulses per 50 ms tick would trip the card's pulse speed
-    // check at once; it is aborted before it runs.)
+    // From reference 0 to -2e12 + 1 at 1e9 UU/s (2e12 UU in 2000 s + 0.3 s, inside the
+    // longest time): taken. (Its 2.5e10 pulses per 50 ms tick would trip the card's
+    // pulse speed check at once; it is aborted before it runs.)
     assert_eq!(MCC_SetFeedSpeed(1e9, 0), 1e9);
-    assert_eq!(line_x(2e12 - 1.0), 0);
+    assert_eq!(line_x(-2e12 + 1.0), 0);
     assert_eq!(queued(), 1);
     assert_eq!(MCC_AbortMotion(0, 0), NO_ERR);
+    MCC_TimeDelay(100);
+    assert_eq!(status(), GMS_STOP);
     assert_eq!(x(), -1.0);
-    // The user position may be renamed to the edge (the pulse count stays 0): then a
-    // move of -1 UU at 10 UU/s (1 s + 0.3 s = 26 ticks of 50 ms) ends exactly on
-    // 2e12 − 2 with the pulse count at -1 UU × 500 = -500.
+    // The reference may be renamed to the edge: DefinePos(X = 2e12 - 1) moves the
+    // position and the pulse count by as much (position 2e12 - 2, 999,999,999,999,000
+    // pulses). A move of -1 UU at 10 UU/s (50 ms periods, the default 300 ms S-curve
+    // ramps: na = nd = 6; a short move, 1 < 10 x 0.6/2, so nc = 0 and 12 periods,
+    // STOP in the 15th = 750 ms) ends on reference 2e12 - 2: position 2e12 - 3,
+    // 999,999,999,998,500 pulses.
     assert_eq!(MCC_DefinePos(0, 2e12 - 1.0, 0), NO_ERR);
-    assert_eq!(x(), 2e12 - 1.0);
-    assert_eq!(pulses_x(), 0);
+    assert_eq!(x(), 2e12 - 2.0);
+    assert_eq!(pulses_x(), 999_999_999_999_000);
     assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
     assert_eq!(line_x(2e12 - 2.0), 1);
-    MCC_TimeDelay(1350);
+    MCC_TimeDelay(700);
+    assert_eq!(status(), GMS_RUNNING);
+    MCC_TimeDelay(50);
     assert_eq!(status(), GMS_STOP);
-    assert_eq!(x(), 2e12 - 2.0);
-    assert_eq!(pulses_x(), -500);
+    assert_eq!(x(), 2e12 - 3.0);
+    assert_eq!(pulses_x(), 999_999_999_998_500);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
@@ -394,10 +450,24 @@ fn configuration_values_outside_their_ranges_are_refused() {
     assert_eq!(got, good, "unchanged");
     assert_eq!(init_ms(1, 1), NO_ERR);
     assert_eq!(MCC_SetTrackErrorLimit(1e300, 0, 0), PARAMETER_ERR);
+    // The in-position tolerance is kept as the vendor's library keeps it, a 32-bit
+    // pulse count: a value too large for one is taken as 2^31 pulses (its 32-bit
+    // conversion's out-of-range answer, 0x80000000, by its size), 2^31/500 UU here
+    // (scenario setters_inpos_group: 1e6 UU at 10000 pulses/UU reads 214748.3648).
     assert_eq!(
         MCC_SetInPosToleranceEx(1e300, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0),
-        PARAMETER_ERR
+        NO_ERR
     );
+    let mut tol = [0.0; 8];
+    {
+        let [a, b, c, d, e, f, h, i] = &mut tol;
+        // SAFETY: eight valid pointers.
+        assert_eq!(
+            unsafe { MCC_GetInPosToleranceEx(a, b, c, d, e, f, h, i, 0) },
+            NO_ERR
+        );
+    }
+    assert_eq!(tol[0], 2_147_483_648.0 / 500.0);
     assert_eq!(
         MCCL_SimPlaceSensor(0, 0, MCCL_SIM_HOME, 1e300, 1e301),
         PARAMETER_ERR

@@ -80,10 +80,11 @@ fn mac_param_checks_and_round_trip() {
         assert_eq!(MCC_GetMacParam(&mut out, 0, 12), PARAMETER_ERR);
         assert_eq!(out, SYS_MAC_PARAM::default(), "nothing written on error");
     }
-    // 1000 x 2 / 5 = 400 pulses per UU
+    // 1000 x 2 / 5 = 400 pulses per UU; a bad channel or card reads 0, as the vendor's
+    // library answers (scenario convfactor).
     assert_eq!(MCC_GetConvFactor(7, 11), 400.0);
-    assert_eq!(MCC_GetConvFactor(8, 0), f64::from(PARAMETER_ERR));
-    assert_eq!(MCC_GetConvFactor(0, 12), f64::from(PARAMETER_ERR));
+    assert_eq!(MCC_GetConvFactor(8, 0), 0.0);
+    assert_eq!(MCC_GetConvFactor(0, 12), 0.0);
 }
 
 #[test]
@@ -133,75 +134,81 @@ fn encoder_and_home_config_checks() {
 fn group_table_rules() {
     let _g = fresh();
     assert_eq!(MCC_CloseAllGroups(), NO_ERR);
-    // Before any group is created the default group 0 exists (queue 10000).
+    // Before any group is created the default group 0 exists (queue 10000); a group
+    // that does not exist has a queue of 0, as the vendor's library answers (scenarios
+    // groups_table, overlap_groups).
     assert_eq!(MCC_GetCmdQueueSize(0), MOTION_QUEUE_SIZE);
-    assert_eq!(MCC_GetCmdQueueSize(1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_GetCmdQueueSize(1), 0);
     assert_eq!(MCC_CreateGroup(0, 1, 2, -1, -1, -1, -1, -1, 0), 0);
     assert_eq!(MCC_CreateGroupEx(3, 4, 5, -1, -1, -1, -1, -1, 0, 50), 1);
     assert_eq!(MCC_GetCmdQueueSize(1), 50);
-    // Bad mappings: nothing is created.
+    // Bad mappings, cards and queue sizes: PARAMETER_ERR and nothing is created
+    // (scenario create_group_odd), a channel another group has as well (scenario
+    // overlap_groups).
+    for (map, card) in [
+        ([0, 0, -1, -1, -1, -1, -1, -1], 0),
+        ([8, -1, -1, -1, -1, -1, -1, -1], 0),
+        ([-7, 6, -1, -1, -1, -1, -1, -1], 0),
+        ([6, -1, -1, -1, -1, -1, -1, -1], 12),
+        ([6, -1, -1, -1, -1, -1, -1, -1], -1),
+        ([2, 6, -1, -1, -1, -1, -1, -1], 0),
+    ] {
+        let [x, y, z, u, v, w, a, b] = map;
+        assert_eq!(
+            MCC_CreateGroup(x, y, z, u, v, w, a, b, card),
+            PARAMETER_ERR,
+            "{map:?} on card {card}"
+        );
+    }
     assert_eq!(
-        MCC_CreateGroup(-1, -1, -1, -1, -1, -1, -1, -1, 0),
-        GROUP_PARAMETER_ERR
-    );
-    assert_eq!(
-        MCC_CreateGroup(0, 0, -1, -1, -1, -1, -1, -1, 0),
-        GROUP_PARAMETER_ERR
-    );
-    assert_eq!(
-        MCC_CreateGroup(8, -1, -1, -1, -1, -1, -1, -1, 0),
+        MCC_CreateGroupEx(6, -1, -1, -1, -1, -1, -1, -1, 0, 0),
         PARAMETER_ERR
     );
     assert_eq!(
-        MCC_CreateGroup(-7, 0, -1, -1, -1, -1, -1, -1, 0),
+        MCC_CreateGroupEx(6, -1, -1, -1, -1, -1, -1, -1, 0, -5),
         PARAMETER_ERR
     );
-    assert_eq!(
-        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 12),
-        PARAMETER_ERR
-    );
-    assert_eq!(
-        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, -1),
-        PARAMETER_ERR
-    );
-    assert_eq!(
-        MCC_CreateGroupEx(0, -1, -1, -1, -1, -1, -1, -1, 0, 0),
-        PARAMETER_ERR
-    );
-    assert_eq!(
-        MCC_CreateGroupEx(0, -1, -1, -1, -1, -1, -1, -1, 0, -5),
-        PARAMETER_ERR
-    );
+    assert_eq!(MCC_GetCmdQueueSize(2), 0, "none was created");
     assert_eq!(
         MCC_CreateGroup(6, -1, -1, -1, -1, -1, -1, -1, 0),
         2,
         "next free slot"
     );
-    // Closing.
-    assert_eq!(MCC_CloseGroup(-1), GROUP_PARAMETER_ERR);
-    assert_eq!(MCC_CloseGroup(96), GROUP_PARAMETER_ERR);
-    assert_eq!(MCC_CloseGroup(5), GROUP_PARAMETER_ERR);
+    // A group of no axis is a group (the vendor's library creates it).
+    assert_eq!(MCC_CreateGroup(-1, -1, -1, -1, -1, -1, -1, -1, 0), 3);
+    // Closing: a group that does not exist, or an index outside the table, is
+    // PARAMETER_ERR (scenario create_group_odd).
+    assert_eq!(MCC_CloseGroup(-1), PARAMETER_ERR);
+    assert_eq!(MCC_CloseGroup(96), PARAMETER_ERR);
+    assert_eq!(MCC_CloseGroup(5), PARAMETER_ERR);
     assert_eq!(MCC_CloseGroup(1), NO_ERR);
-    assert_eq!(MCC_CloseGroup(1), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CloseGroup(1), PARAMETER_ERR);
     assert_eq!(
         MCC_CreateGroup(7, -1, -1, -1, -1, -1, -1, -1, 0),
         1,
         "reuses slot 1"
     );
-    // Queue size.
-    assert_eq!(MCC_SetCmdQueueSize(0, 0), PARAMETER_ERR);
-    assert_eq!(MCC_SetCmdQueueSize(-1, 0), PARAMETER_ERR);
-    assert_eq!(MCC_SetCmdQueueSize(100, 9), GROUP_PARAMETER_ERR);
+    // Queue size: set only by MCC_CreateGroupEx; MCC_SetCmdQueueSize changes nothing
+    // (GROUP_PARAMETER_ERR below 1, else RUN_TIME_ERR, whatever the group: scenario
+    // queue_size_before_init).
+    assert_eq!(MCC_SetCmdQueueSize(0, 0), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_SetCmdQueueSize(-1, 0), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_SetCmdQueueSize(100, 9), RUN_TIME_ERR);
+    assert_eq!(MCC_SetCmdQueueSize(100, 0), RUN_TIME_ERR);
     assert_eq!(MCC_GetCmdQueueSize(0), MOTION_QUEUE_SIZE, "unchanged");
-    assert_eq!(MCC_SetCmdQueueSize(100, 0), NO_ERR);
-    assert_eq!(MCC_GetCmdQueueSize(0), 100);
-    // The 96-group table fills up.
+    // The 96-group table fills up: one channel each, 12 cards x 8 channels. Then a
+    // channel already in a group is refused first (PARAMETER_ERR), and a group of no
+    // axis finds no free slot (GROUP_PARAMETER_ERR).
     assert_eq!(MCC_CloseAllGroups(), NO_ERR);
     for i in 0..96 {
-        assert_eq!(MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, i % 12), i);
+        assert_eq!(MCC_CreateGroup(i % 8, -1, -1, -1, -1, -1, -1, -1, i / 8), i);
     }
     assert_eq!(
         MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 0),
+        PARAMETER_ERR
+    );
+    assert_eq!(
+        MCC_CreateGroup(-1, -1, -1, -1, -1, -1, -1, -1, 0),
         GROUP_PARAMETER_ERR
     );
 }
@@ -210,8 +217,9 @@ fn group_table_rules() {
 fn init_argument_checks_leave_the_system_closed() {
     let _g = fresh();
     let mut c = cards(2);
-    // SAFETY: c holds 2 valid entries; NULL is refused.
+    // SAFETY: c holds 2 valid entries; a NULL table is read as IMP-III cards.
     unsafe {
+        // Periods 1..=50 ms (scenario init_periods: 0, -1, 51 and 100 refused).
         for ms in [0, 51, -1] {
             assert_eq!(
                 MCC_InitSystem(ms, c.as_mut_ptr(), 1),
@@ -222,26 +230,44 @@ fn init_argument_checks_leave_the_system_closed() {
         for ms in [f64::NAN, f64::INFINITY, 0.5, 50.5] {
             assert_eq!(MCC_InitSystemEx(ms, c.as_mut_ptr(), 1), PARAMETER_ERR);
         }
-        assert_eq!(MCC_InitSystem(2, null_mut(), 1), PARAMETER_ERR);
+        // 1..=12 cards (scenarios card_count0, card_count13).
         assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 0), PARAMETER_ERR);
         assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 13), PARAMETER_ERR);
-        c[1].wCardType = EPCIO_6_AXIS_PCI_CARD;
-        assert_eq!(
-            MCC_InitSystem(2, c.as_mut_ptr(), 2),
-            PARAMETER_ERR,
-            "EPCIO card"
-        );
+        assert_eq!(MCC_InitSystem(2, null_mut(), 13), PARAMETER_ERR);
+        // Card types the vendor's library does not know (scenarios card_type6,
+        // card_type99), and an ISA card (types 0, 1) without a valid address and IRQ
+        // (card_type0).
+        for t in [6, 99, EPCIO_4_AXIS_ISA_CARD, EPCIO_6_AXIS_ISA_CARD] {
+            c[1].wCardType = t;
+            assert_eq!(
+                MCC_InitSystem(2, c.as_mut_ptr(), 2),
+                PARAMETER_ERR,
+                "card type {t}"
+            );
+        }
         assert_eq!(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR, "still closed");
+        // The PCI types 2..5 are taken (scenarios card_type2..card_type5), and a NULL
+        // table (card_null_table).
+        c[1].wCardType = EPCIO_6_AXIS_PCI_CARD;
+        assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 2), NO_ERR);
+        assert_eq!(MCC_CloseSystem(), NO_ERR);
+        assert_eq!(MCC_InitSystem(2, null_mut(), 3), NO_ERR);
+        assert_eq!(MCC_CloseSystem(), NO_ERR);
         c[1].wCardType = IMP_II_8_AXIS_PCI_CARD;
         assert_eq!(MCC_InitSystem(2, c.as_mut_ptr(), 2), NO_ERR);
-        assert_eq!(MCC_InitSystemEx(1.5, c.as_mut_ptr(), 2), NO_ERR, "re-init");
-        assert_eq!(MCC_InitSimulation(50, c.as_mut_ptr(), 1), NO_ERR);
-        // A failed re-init leaves the running system running.
+        // A second init while the system runs is refused with RUN_TIME_ERR (scenario
+        // init_twice), a bad one with its argument's error; either leaves the running
+        // system running.
+        assert_eq!(MCC_InitSystemEx(1.5, c.as_mut_ptr(), 2), RUN_TIME_ERR);
+        assert_eq!(MCC_InitSimulation(50, c.as_mut_ptr(), 1), RUN_TIME_ERR);
         assert_eq!(MCC_InitSystem(99, c.as_mut_ptr(), 1), PARAMETER_ERR);
         assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
     }
+    // Closing a closed system answers NO_ERR, as the vendor's library does (scenarios
+    // close_twice, close_without_init).
     assert_eq!(MCC_CloseSystem(), NO_ERR);
-    assert_eq!(MCC_CloseSystem(), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_GetMotionStatus(0), INITIAL_MOTION_ERR);
+    assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
 #[test]
@@ -275,13 +301,25 @@ fn calls_that_need_a_running_system() {
     assert_eq!(MCC_DisableDryRun(), NO_ERR);
     assert_eq!(MCC_CheckDryRun(), 1);
     assert_eq!(MCC_ResetMotion(), NO_ERR);
-    // Groups are fixed while the card runs.
-    assert_eq!(MCC_CloseAllGroups(), COMMAND_NOTACCEPTED_ERR);
-    assert_eq!(MCC_CloseGroup(0), COMMAND_NOTACCEPTED_ERR);
+    // Groups are made and closed while the card runs, as the vendor's library lets a
+    // program (scenario groups_after_init). The default group (X..B on channels 0..7
+    // of card 0) has every channel of the card, so a new group needs it closed first;
+    // with every group closed the card runs none until the next init.
     assert_eq!(
-        MCC_CreateGroup(0, -1, -1, -1, -1, -1, -1, -1, 0),
-        COMMAND_NOTACCEPTED_ERR
+        MCC_CreateGroup(3, 4, -1, -1, -1, -1, -1, -1, 0),
+        PARAMETER_ERR
     );
+    assert_eq!(MCC_CloseGroup(0), NO_ERR);
+    assert_eq!(MCC_GetMotionStatus(0), GROUP_PARAMETER_ERR);
+    assert_eq!(MCC_CreateGroup(3, 4, -1, -1, -1, -1, -1, -1, 0), 0);
+    assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    assert_eq!(
+        MCC_CreateGroupEx(3, 4, -1, -1, -1, -1, -1, -1, 0, 10),
+        PARAMETER_ERR,
+        "channels 3 and 4 are group 0's"
+    );
+    assert_eq!(MCC_CloseAllGroups(), NO_ERR);
+    assert_eq!(MCC_GetMotionStatus(0), GROUP_PARAMETER_ERR);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 

@@ -233,13 +233,18 @@ fn feed_hold_continue_and_abort_act_as_the_vendor_calls() {
     MCC_TimeDelay(100);
     let hold = r#"{"action":"hold","group":0}"#;
     assert_eq!(post(&addr, &token, hold).0, 200);
+    // Without dec time the hold stops in one period (n = floor(0) + 1, covering
+    // nothing), the next shows the hold (phase 22) and the status reads HOLD two
+    // periods after that, in the fourth, as MCC_HoldMotion does.
+    let x0 = cur_pos()[0];
+    MCC_TimeDelay(3);
+    assert_eq!(MCC_GetMotionStatus(0), GMS_RUNNING);
+    MCC_TimeDelay(1);
     assert_eq!(MCC_GetMotionStatus(0), GMS_HOLD);
-    // Without dec time the hold stops at once: x stays.
-    MCC_TimeDelay(100);
     let held = cur_pos()[0];
+    assert_eq!(held, x0, "stopped where the hold came");
     MCC_TimeDelay(100);
     assert_eq!(cur_pos()[0], held);
-    // A hold while held is refused by the group, as MCC_HoldMotion would be: 409.
     let (st, _) = post(&addr, &token, r#"{"action":"continue","group":0}"#);
     assert_eq!(st, 200);
     MCC_TimeDelay(100);
@@ -250,11 +255,14 @@ fn feed_hold_continue_and_abort_act_as_the_vendor_calls() {
     );
     MCC_TimeDelay(10);
     assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    let here = cur_pos()[0];
+    // Nothing held: the group changes nothing and answers NO_ERR, as MCC_ContiMotion
+    // does (the vendor's library answers 0): 200.
     let (st, _) = post(&addr, &token, r#"{"action":"continue","group":0}"#);
-    assert_eq!(
-        st, 409,
-        "nothing held: the group refuses, as MCC_ContiMotion does"
-    );
+    assert_eq!(st, 200);
+    MCC_TimeDelay(10);
+    assert_eq!(MCC_GetMotionStatus(0), GMS_STOP);
+    assert_eq!(cur_pos()[0], here);
     assert_eq!(post(&addr, &token, r#"{"action":"hold","group":7}"#).0, 400);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

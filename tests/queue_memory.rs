@@ -59,10 +59,10 @@ fn child() {
     limit_address_space(vm_size_bytes() + HEADROOM);
     assert_eq!(MCC_CloseAllGroups(), NO_ERR);
     for g in 0..GROUPS {
-        // Groups may share channels; each maps X to channel g % 8 of card 0.
-        let ch = g % 8;
+        // A channel belongs to one group only: group g maps X to channel g % 8 of card
+        // g / 8, 12 cards of 8 channels.
         assert_eq!(
-            MCC_CreateGroupEx(ch, -1, -1, -1, -1, -1, -1, -1, 0, QUEUE),
+            MCC_CreateGroupEx(g % 8, -1, -1, -1, -1, -1, -1, -1, g / 8, QUEUE),
             g,
             "group {g}"
         );
@@ -70,9 +70,9 @@ fn child() {
     let mut cards = [SYS_CARD_CONFIG {
         wCardType: IMP_III_8_AXIS_PCI_CARD,
         ..Default::default()
-    }];
-    // SAFETY: one valid SYS_CARD_CONFIG.
-    let r = unsafe { MCC_InitSystem(1, cards.as_mut_ptr(), 1) };
+    }; 12];
+    // SAFETY: twelve valid SYS_CARD_CONFIG.
+    let r = unsafe { MCC_InitSystem(1, cards.as_mut_ptr(), 12) };
     assert_eq!(r, NO_ERR, "MCC_InitSystem with 96 queues of 1,000,000");
     let mut limited = None;
     'groups: for g in 0..GROUPS as u16 {

@@ -3,16 +3,18 @@
 // MCC_SetPtPAccTime/MCC_SetPtPDecTime change them; "acc time = required speed / required
 // acceleration".
 //
-// Expected durations (docs/decisions.md, "Motion conventions": a move of length L
-// reaching F lasts L/F + (Ta+Td)/2):
-//   line 10 UU at 20 UU/s, defaults 300/300 ms:            0.5 + 0.3  = 800 ms
+// Expected durations (MotionSys.h: na + nc + nd periods of 1 ms, nc = ceil(L/F/T - na/2
+// - nd/2); the status reads GMS_STOP three periods after the last, a PtP's four):
+//   line 10 UU at 20 UU/s, defaults 300/300 ms:            300 + 200 + 300 = 800 ms
 //   same with acceleration 200 UU/s^2 -> Ta = 20/200 = 100 ms, Td = 300 ms:
-//                                                           0.5 + 0.2  = 700 ms
-//   a 1 UU line at 20 UU/s with Ta = Td = 300 ms ('T') cannot reach 20 UU/s: the
-//   accelerations stay a = 20/0.3 = 66.67 UU/s^2, the peak is sqrt(a L) = 8.165 UU/s and
-//   the move lasts 2 sqrt(L/a) = 2 sqrt(0.015) s = 244.9 ms
-//   PtP X 10 UU at 20 % (10 UU/s), PtP acc/dec 100 ms:       1.0 + 0.1  = 1100 ms
-//   PtP X back, per-axis times: X acc 200 / dec 400 ms:      1.0 + 0.3  = 1300 ms
+//                                                           100 + 300 + 300 = 700 ms
+//   a 1 UU line at 20 UU/s with Ta = Td = 300 ms cannot reach 20 UU/s (that takes
+//   20 x 0.6/2 = 6 UU): the vendor's library keeps the ramp times and lowers the peak to
+//   V = 2L/(Ta+Td) = 3.33 UU/s: 300 + 300 = 600 ms
+//   PtP X 10 UU at 20 % (10 UU/s): the PtP acc/dec times are kept per axis but a PtP
+//   ramps with the group's acc/dec times (the vendor's library, scenario
+//   ptp_axis_times), 300/300 ms:                            300 + 700 + 300 = 1300 ms
+//   PtP X back, per-axis times X acc 200 / dec 400 ms: the same 1300 ms
 #include "MotionSys.h"
 
 int main()
@@ -50,15 +52,15 @@ int main()
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 0, 0, 0);
 
-    // A move too short to reach the feed speed keeps the accelerations.
+    // A move too short to reach the feed speed keeps the ramp times (the peak is lower).
     CHECK_EQ(MCC_SetAccTime(300, g_nGroupIndex), NO_ERR);
     CHECK_EQ(MCC_SetDecTime(300, g_nGroupIndex), NO_ERR);
     CHECK(MCC_Line(0, 1, 0, 0, 0, 0, 0, 0, g_nGroupIndex) >= 0);
-    CheckEndsIn(g_nGroupIndex, 2000 * sqrt(1.0 / (20 / 0.3)), "1 UU at 20 UU/s (triangle)");
+    CheckEndsIn(g_nGroupIndex, 600, "1 UU at 20 UU/s (short of the feed)");
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 0, 1, 0);
 
-    // Point-to-point: its own times.
+    // Point-to-point: its own times, kept (the PtP ramps with the group's 300/300 ms).
     CHECK_EQ(MCC_SetPtPAccTime(100, 100, 100, 100, 100, 100, 100, 100, g_nGroupIndex), NO_ERR);
     CHECK_EQ(MCC_SetPtPDecTime(100, 100, 100, 100, 100, 100, 100, 100, g_nGroupIndex), NO_ERR);
     CHECK_EQ(MCC_GetPtPAccTime(&a[0], &a[1], &a[2], &a[3], &a[4], &a[5], &a[6], &a[7], g_nGroupIndex), NO_ERR);
@@ -67,7 +69,7 @@ int main()
     CHECK(MCC_GetAccTime(g_nGroupIndex) == 300.0);   // general motion unchanged
     MCC_SetPtPSpeed(20, g_nGroupIndex);               // 20 % of 50 UU/s = 10 UU/s
     CHECK(MCC_PtP(10, 1, 0, 0, 0, 0, 0, 0, g_nGroupIndex) >= 0);
-    CheckEndsIn(g_nGroupIndex, 1100, "PtP X 10 UU at 10 UU/s, 100/100 ms");
+    CheckEndsIn(g_nGroupIndex, 1300 + 1, "PtP X 10 UU at 10 UU/s, the group's 300/300 ms");
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 10, 1, 0);
 
@@ -77,7 +79,7 @@ int main()
     CHECK_EQ(MCC_GetPtPDecTime(&d[0], &d[1], &d[2], &d[3], &d[4], &d[5], &d[6], &d[7], g_nGroupIndex), NO_ERR);
     CHECK(d[0] == 400.0 && d[1] == 100.0 && d[7] == 100.0);
     CHECK(MCC_PtP(0, 1, 0, 0, 0, 0, 0, 0, g_nGroupIndex) >= 0);
-    CheckEndsIn(g_nGroupIndex, 1300, "PtP X 10 UU at 10 UU/s, 200/400 ms");
+    CheckEndsIn(g_nGroupIndex, 1300 + 1, "PtP X 10 UU at 10 UU/s, X's 200/400 ms kept");
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 0, 1, 0);
 

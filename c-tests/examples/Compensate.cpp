@@ -1,8 +1,10 @@
 // Compensate.cpp: examples manual §22 (gear backlash and gap compensation) with the user
 // manual's worked example (§2.7.5): interval 10000 pulses, home at point 4, forward table
 // 22 20 15 11 0 10 12 15. Moving X forward 15000 pulses sends
-// 15000 + 10 + (int)(5000 / 10000 x 2) = 15011 pulses; the command position (and
-// MCC_GetPulsePos) is not compensated. Interval 0 turns compensation off.
+// 15000 + 10 + 5000 / 10000 x 2 = 15011 pulses; the command position (MCC_GetCurPos) and
+// MCC_GetPulsePos include the compensation, as the vendor's library counts them (30.022
+// UU, 15011 pulses), the reference position (MCC_GetCurRefPos) does not (30 UU).
+// Interval 0 turns compensation off.
 #include "MotionSys.h"
 #include "MCCL_Sim.h"
 
@@ -37,8 +39,11 @@ int main()
     MCC_GetPulsePos(&lX, &lY, &lZ, &lU, &lV, &lW, &lA, &lB, g_nGroupIndex);
     printf("X +15000 pulses with compensation: %lld pulses sent (command %ld)\n", llSent, lX);
     CHECK_EQ(llSent, 15011);
-    CHECK_EQ(lX, 15000);
-    CheckPosXYZ(g_nGroupIndex, 30, 0, 0);
+    CHECK_EQ(lX, 15011);
+    CheckPosXYZ(g_nGroupIndex, 30.022, 0, 0);
+    double r[8];
+    CHECK_EQ(MCC_GetCurRefPos(&r[0], &r[1], &r[2], &r[3], &r[4], &r[5], &r[6], &r[7], g_nGroupIndex), NO_ERR);
+    CHECK_NEAR(r[0], 30, POS_TOL);
 
     // Compensation off: dwInterval 0.
     stUserCompParam.dwInterval = 0;

@@ -8,11 +8,13 @@
 // centre 5 UU to the left of the start, given by arc length s: θ = s/R,
 // offset = (R cos θ − R, R sin θ). Length L = 2πR = 31.4159 UU.
 // Expected (F = 10 UU/s, Ta = Td = 300 ms, 1 ms period):
-//   the profile lasts L/F + (Ta + Td)/2 = 3.1416 + 0.3 = 3.4416 s; the command is taken at
-//   the first tick and each offset is shown one tick after it was computed, so it ends
-//   3443 ms after it was queued (stepped clock);
+//   the profile is a line's on the grid of periods: 300 + ceil(3141.59 - 300) + 300 =
+//   3442 periods; the command is taken at the first tick and each offset is shown one
+//   tick after it was computed, so it ends 3443 ms after it was queued (stepped clock);
 //   every position on the way lies on the circle (within 1e-9);
-//   cleanup runs exactly once; MCC_GetCurPos works from inside the callback.
+//   cleanup runs exactly once; MCC_GetCurPos works from inside the callback and reads
+//   the position the callback is given, in whole pulses toward 0 (as it reads every
+//   position).
 // Then an infinite motion along +X whose callback sets *AbortThisCommand past 3.005 UU.
 #include "MotionSys.h"
 
@@ -55,7 +57,8 @@ static BOOL MCC_CALLBACK CircleInterp(int nGroup, int nSynAxisNum, int nCommandI
     // Status calls are allowed from here (no library lock is held).
     double p[8];
     if (MCC_GetCurPos(&p[0], &p[1], &p[2], &p[3], &p[4], &p[5], &p[6], &p[7], (WORD)nGroup) != NO_ERR
-        || p[0] != pdfCurPos[0] || p[1] != pdfCurPos[1])
+        || p[0] != PulsesOf(pdfCurPos[0]) / (double)EX_PPR
+        || p[1] != PulsesOf(pdfCurPos[1]) / (double)EX_PPR)
         s->nGetPosFailures++;
     double th = dfCurDist / R;
     pdfNextPosOffset[0] = R * cos(th) - R;
@@ -108,7 +111,7 @@ int main()
     CHECK_EQ(s.nGetPosFailures, 0);
     CHECK(s.bMonotonic);
     CHECK_NEAR(s.dfLastDist, 2.0 * M_PI * R, 1e-12);
-    if (SteppedClock()) CHECK_EQ(s.nCalls, 3442);   // ceil(3.4416 s / 1 ms)
+    if (SteppedClock()) CHECK_EQ(s.nCalls, 3442);   // one a period of the profile
     double p[8];
     GetPos(g, p);
     CHECK_NEAR(p[0], 10, 1e-9);   // a full turn: back at the start

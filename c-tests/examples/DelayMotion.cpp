@@ -1,12 +1,16 @@
 // DelayMotion.cpp: examples manual §17 (forced delay): after the first line the next
 // command waits MCC_DelayMotion(3000) = 3000 ms; meanwhile the status is GMS_DELAYING.
 //
-// Expected numbers (F = 20 UU/s, Ta = Td = 300 ms):
-//   MCC_Line(10, 10): L = 10 sqrt(2) = 14.1421: 0.7071 + 0.3 = 1007.1 ms
-//   MCC_DelayMotion(3000): 1007.1 .. 4007.1 ms GMS_DELAYING, axes stand at (10, 10);
-//     the running command is a delay (type 6) whose dfFeedSpeed is the remaining time
-//     (ms): 2990 ms, 10 ms into the delay (stepped clock)
-//   MCC_Line(20, 20): 4007.1 .. 5014.2 ms; total 5014.2 ms.
+// Expected numbers (F = 20 UU/s, Ta = Td = 300 ms, periods of 1 ms, as the vendor's
+// library runs them):
+//   MCC_Line(10, 10): L = 10 sqrt(2) = 14.1421: 300 + ceil(707.1 - 300) + 300 = 1008
+//     periods (1..1008), then its end period (1009)
+//   MCC_DelayMotion(3000): periods 1010 .. 4009 GMS_DELAYING, axes stand at (10, 10);
+//     the running command is a delay (type 8, the vendor's library's number; the manual
+//     says 6) whose dfFeedSpeed is the time left after the period (ms): 3000 - k in its
+//     k-th period
+//   MCC_Line(20, 20): periods 4010 .. 5017 (a delay has no end period), its end period,
+//     one period with nothing running, GMS_STOP in period 5020.
 // The manual writes MCC_Line(10, 10, 0, 0, 0, 0, 0, 0, 0, g_nGroupIndex) (group in the
 // axis-mask place); eight positions and the group are written here.
 #include "MotionSys.h"
@@ -19,7 +23,6 @@ int main()
 
     CHECK_EQ(MCC_SetAbsolute(g_nGroupIndex), NO_ERR);
     MCC_SetFeedSpeed(20, g_nGroupIndex);
-    const double dfLine = 1000 * 10 * sqrt(2.0) / 20 + 300;   // 1007.1 ms
 
     // Step 2: the first line.  Step 3: the delay.  Then the next line.
     CHECK_EQ(MCC_ResetCommandIndex(g_nGroupIndex), NO_ERR);
@@ -29,33 +32,33 @@ int main()
 
     if (SteppedClock())
     {
-        // Line until 1007.1 ms.
-        MCC_TimeDelay((DWORD)dfLine - TOL_MS);
+        // The line's last period.
+        MCC_TimeDelay(1008);
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_RUNNING);
-        MCC_TimeDelay(10);   // now about 1015 ms: 8 ms into the delay (+- a tick)
+        MCC_TimeDelay(12);   // period 1020: the delay's 11th
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_DELAYING);
         COMMAND_INFO stInfo;
         CHECK_EQ(MCC_GetCurCommand(&stInfo, g_nGroupIndex), NO_ERR);
         printf("  [stepped clock] during the delay: command type %d, index %d, %.0f ms left\n",
                stInfo.nType, stInfo.nCommandIndex, stInfo.dfFeedSpeed);
-        CHECK_EQ(stInfo.nType, 6);
+        CHECK_EQ(stInfo.nType, 8);
         CHECK_EQ(stInfo.nCommandIndex, 1);
-        CHECK_NEAR(stInfo.dfFeedSpeed, 3000 - (floor(dfLine) - TOL_MS + 10 + 1 - dfLine), 2 * TOL_MS + 1);
+        CHECK(stInfo.dfFeedSpeed == 3000 - 11);
         CheckPosXYZ(g_nGroupIndex, 10, 10, 0);
-        // Still delaying shortly before 4007.1 ms, the line runs shortly after.
-        MCC_TimeDelay(3000 - 10 - 2 * TOL_MS - 2);
+        // The delay's last period, then the line.
+        MCC_TimeDelay(4009 - 1020);
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_DELAYING);
         CheckPosXYZ(g_nGroupIndex, 10, 10, 0);
-        MCC_TimeDelay(4 * TOL_MS + 2);
+        MCC_TimeDelay(1);
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_RUNNING);
+        MCC_TimeDelay(300);
         double p[8];
         GetPos(g_nGroupIndex, p);
         CHECK(p[0] > 10 && p[0] < 20);
-        // The second line ends 1007.1 ms after the delay, at 5014.2 ms. Now is about
-        // 4012 ms (+- the ticks of the status polls), so bracket a little wider.
-        MCC_TimeDelay(1003 - 2 * TOL_MS - 3);
+        // The second line's last period is 5017, GMS_STOP reads in 5020.
+        MCC_TimeDelay(5019 - 4310);
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_RUNNING);
-        MCC_TimeDelay(4 * TOL_MS + 6);
+        MCC_TimeDelay(1);
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_STOP);
     }
     else

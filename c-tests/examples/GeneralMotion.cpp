@@ -17,8 +17,13 @@
 // MCC_ArcXY(10, 20, 20, g_nGroupIndex) lost one number in the PDF; the figure's arc ends
 // at (20, 20), where the circle about (25, 20) starts.
 //
-// Durations (each command alone, F = 10 UU/s, Ta = Td = 300 ms): L/F + 0.3 s
-//   line 1714.2 ms, arc 2521.4 ms, circle 3441.6 ms.
+// Durations (each command alone, F = 10 UU/s, Ta = Td = 300 ms, 1 ms periods: 300 +
+// ceil(L/F/T - 300) + 300 periods, so L/F + 0.3 s rounded up to a whole ms, at a speed V
+// = L/(0.3 s + nc T) a little under F):
+//   line 1715 ms (V = 9.9944), arc 2522 ms (V = 9.9975), circle 3442 ms (V = 9.9987);
+//   GMS_STOP reads three periods after each (MotionSys.h).
+// Positions read whole pulses toward 0 (500 per UU): the points sampled on the arcs are
+// within sqrt(2)/500 UU of their circle.
 #include "MotionSys.h"
 
 #define PI 3.14159265358979323846
@@ -45,46 +50,53 @@ int main()
     printf("MCC_Line(10, 10, 0, ...): returned command index %d\n", nRet);
     CHECK_EQ(nRet, 0);                                    // first command after the reset
     CHECK(MCC_GetMotionStatus(g_nGroupIndex) != GMS_STOP); // queued: no longer stopped
-    CheckEndsIn(g_nGroupIndex, 1000.0 * (10 * sqrt(2.0) / 10) + 300, "line");
+    CheckEndsIn(g_nGroupIndex, 1715, "line");
     WaitStop(g_nGroupIndex);
     PrintPos(g_nGroupIndex, "After the line");
     CheckPosXYZ(g_nGroupIndex, 10, 10, 0);
 
     // Step 3: an arc through the reference point (10, 20) to (20, 20). First a bad one:
-    // start (10,10), reference (15,15) and end (20,20) lie on one line -> PARAMETER_ERR.
+    // start (10,10), reference (15,15) and end (20,20) lie on one line. The vendor's
+    // library queues it (its index) and finds the fault when it starts: user manual
+    // §2.6.3 VI, the error is recorded (0xF104), the group stops, its queue is dropped
+    // and every motion command is refused (RUN_TIME_ERR) until MCC_ClearError.
     nRet = MCC_ArcXY(15, 15, 20, 20, g_nGroupIndex);
-    printf("MCC_ArcXY(15, 15, 20, 20) with three points on one line: returned %d (PARAMETER_ERR)\n", nRet);
-    CHECK_EQ(nRet, PARAMETER_ERR);
-    // User manual §2.6.3 VI: an arc parameter error is also recorded (0xF104) and the
-    // group runs no further command until MCC_ClearError.
+    printf("MCC_ArcXY(15, 15, 20, 20) with three points on one line: returned %d\n", nRet);
+    CHECK_EQ(nRet, 1);
+    MCC_TimeDelay(1);
     printf("MCC_GetErrorCode: 0x%X (bad arc); MCC_ClearError\n", MCC_GetErrorCode(g_nGroupIndex));
     CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0xF104);
+    CHECK_EQ(MCC_ArcXY(10, 20, 20, 20, g_nGroupIndex), RUN_TIME_ERR);
     CHECK_EQ(MCC_ClearError(g_nGroupIndex), NO_ERR);
     CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0);
+    CheckPosXYZ(g_nGroupIndex, 10, 10, 0);   // the bad arc did not move
     nRet = MCC_ArcXY(10, 20, 20, 20, g_nGroupIndex);
     printf("MCC_ArcXY(10, 20, 20, 20): returned command index %d\n", nRet);
-    CHECK_EQ(nRet, 1);   // the rejected arc took no index
+    CHECK_EQ(nRet, 2);   // the refused call took no index
     if (SteppedClock())
     {
         // Sample the arc: every point is on the circle about (15,15), on the clockwise
         // side through (10,20) (y >= x), and at 1300 ms the arc length covered is
-        // 1.5 (acceleration) + 10 x 1.0 = 11.5 UU = 11.5/sqrt(50) rad past 225 deg.
+        // 0.15 V (acceleration) + V x 1.0 = 11.497 UU = 11.497/sqrt(50) rad past 225 deg.
         double p[8];
         for (int i = 0; i < 4; i++)
         {
             MCC_TimeDelay(i == 0 ? 1300 : 300);
             GetPos(g_nGroupIndex, p);
-            CHECK_NEAR(hypot(p[0] - 15, p[1] - 15), sqrt(50.0), 1e-9);
-            CHECK(p[1] - p[0] >= -1e-9);
+            CHECK_NEAR(hypot(p[0] - 15, p[1] - 15), sqrt(50.0), 0.003);
+            CHECK(p[1] - p[0] >= -0.003);
             if (i == 0)
             {
-                double dfAngle = 225.0 * PI / 180 - 11.5 / sqrt(50.0);
+                double dfAngle = 225.0 * PI / 180 - 11.497 / sqrt(50.0);
                 CHECK_NEAR(p[0], 15 + sqrt(50.0) * cos(dfAngle), 0.03);
                 CHECK_NEAR(p[1], 15 + sqrt(50.0) * sin(dfAngle), 0.03);
                 COMMAND_INFO stInfo;
                 CHECK_EQ(MCC_GetCurCommand(&stInfo, g_nGroupIndex), NO_ERR);
-                CHECK_EQ(stInfo.nType, 2);            // clockwise arc (user manual §2.6.5)
-                CHECK_EQ(stInfo.nCommandIndex, 1);
+                // An arc through a point reads type 3 whichever way it turns, as the
+                // vendor's library reports it (scenario arc_xy_cw; user manual §2.6.5
+                // has 2 for a clockwise one).
+                CHECK_EQ(stInfo.nType, 3);
+                CHECK_EQ(stInfo.nCommandIndex, 2);
                 CHECK(stInfo.dfFeedSpeed == 10.0);
                 CHECK_NEAR(stInfo.dfPos[0], 20, POS_TOL);
                 CHECK_NEAR(stInfo.dfPos[1], 20, POS_TOL);
@@ -97,30 +109,35 @@ int main()
     PrintPos(g_nGroupIndex, "After the arc");
     CheckPosXYZ(g_nGroupIndex, 20, 20, 0);
 
-    // Step 4: a full clockwise circle about (25, 20).
-    nRet = MCC_CircleXY(25, 20, 2, g_nGroupIndex);        // direction must be CIR_CW/CIR_CCW
+    // Step 4: a full clockwise circle about (25, 20) (CIR_CW; any other direction byte
+    // is counter-clockwise, as the vendor's library takes it).
+    nRet = MCC_CircleXY(25, NAN, CIR_CW, g_nGroupIndex);
     CHECK_EQ(nRet, PARAMETER_ERR);
     CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0);        // argument errors record nothing
-    nRet = MCC_CircleXY(20, 20, CIR_CW, g_nGroupIndex);   // centre on the start point: no circle
-    CHECK_EQ(nRet, PARAMETER_ERR);
+    // Centre on the start point: no circle; it fails when it starts (0xF104), as a bad
+    // arc does.
+    nRet = MCC_CircleXY(20, 20, CIR_CW, g_nGroupIndex);
+    CHECK_EQ(nRet, 3);
+    MCC_TimeDelay(1);
     CHECK_EQ(MCC_GetErrorCode(g_nGroupIndex), 0xF104);
     CHECK_EQ(MCC_ClearError(g_nGroupIndex), NO_ERR);
+    CheckPosXYZ(g_nGroupIndex, 20, 20, 0);
     nRet = MCC_CircleXY(25, 20, CIR_CW, g_nGroupIndex);
     printf("MCC_CircleXY(25, 20, CIR_CW): returned command index %d\n", nRet);
-    CHECK_EQ(nRet, 2);
+    CHECK_EQ(nRet, 4);
     if (SteppedClock())
     {
-        // 800 ms in: 1.5 + 10 x 0.5 = 6.5 UU = 1.3 rad clockwise from the left point
-        // (180 deg): clockwise from there goes up, so Y > 20.
+        // 800 ms in: 0.15 V + 0.5 V = 6.499 UU = 1.2998 rad clockwise from the left
+        // point (180 deg): clockwise from there goes up, so Y > 20.
         MCC_TimeDelay(800);
         double p[8];
         GetPos(g_nGroupIndex, p);
         printf("  during the circle: X = %.3f, Y = %.3f\n", p[0], p[1]);
-        CHECK_NEAR(hypot(p[0] - 25, p[1] - 20), 5.0, 1e-9);
+        CHECK_NEAR(hypot(p[0] - 25, p[1] - 20), 5.0, 0.003);
         CHECK(p[1] > 20);
-        CHECK_NEAR(p[0], 25 + 5 * cos(PI - 1.3), 0.03);
-        CHECK_NEAR(p[1], 20 + 5 * sin(PI - 1.3), 0.03);
-        CheckEndsIn(g_nGroupIndex, 1000.0 * (10 * PI / 10) + 300 - 800, "circle");
+        CHECK_NEAR(p[0], 25 + 5 * cos(PI - 1.2998), 0.03);
+        CHECK_NEAR(p[1], 20 + 5 * sin(PI - 1.2998), 0.03);
+        CheckEndsIn(g_nGroupIndex, 3442 - 800, "circle");
     }
     WaitStop(g_nGroupIndex);
     PrintPos(g_nGroupIndex, "After the circle");
@@ -145,8 +162,8 @@ int main()
     int nCount = -1;
     CHECK_EQ(MCC_GetCommandCount(&nCount, g_nGroupIndex), NO_ERR);
     CHECK(nCount >= 2 && nCount <= 3);   // 3 queued, or 2 once the line has started
-    CheckEndsIn(g_nGroupIndex, 1000.0 * (10 * sqrt(2.0) + PI * sqrt(50.0) + 10 * PI) / 10 + 3 * 300,
-                "line + arc + circle");
+    // One after the other, each with its end period: 1715 + 1 + 2522 + 1 + 3442 ms.
+    CheckEndsIn(g_nGroupIndex, 1715 + 1 + 2522 + 1 + 3442, "line + arc + circle");
     WaitStop(g_nGroupIndex);
     PrintPos(g_nGroupIndex, "After line, arc and circle");
     CheckPosXYZ(g_nGroupIndex, 20, 20, 0);

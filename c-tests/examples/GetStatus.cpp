@@ -2,7 +2,8 @@
 // MCC_GetCurFeedSpeed, MCC_GetSpeed, MCC_GetCurPos, MCC_GetPulsePos, MCC_GetCurCommand,
 // MCC_GetCommandCount.
 //
-// Three lines are queued at F = 20 UU/s (Ta = Td = 300 ms):
+// Three lines are queued at F = 20 UU/s (Ta = Td = 300 ms), each followed by its end
+// period (one period of 1 ms) before the next starts:
 //   A: (0,0) -> (600,800)   L = 1000: 50.3 s; direction (0.6, 0.8): X at 12, Y at 16 UU/s
 //   B: (600,800) -> (0,800) L = 600:  30.3 s
 //   C: (0,800) -> (0,0)     L = 800:  40.3 s
@@ -13,8 +14,9 @@
 //   the point is on the segment (0.8 X == 0.6 Y); on the stepped clock it has covered
 //   F x Ta / 2 = 20 x 0.3 / 2 = 3 UU while accelerating, then 20 x 0.7 = 14 UU: 17 UU,
 //   i.e. X = 10.2, Y = 13.6.
-// Pulse positions: round(UU x GearRatio / Pitch x PPR) = round(UU x 500), e.g. after
-// MCC_Line(1.2345, -2.5, 0.0007): 617, -1250, 0.
+// Pulse positions: UU x GearRatio / Pitch x PPR = UU x 500 in whole pulses toward 0, and
+// MCC_GetCurPos reads them back (pulses / 500), as the vendor's library does, e.g. after
+// MCC_Line(1.2345, -2.5, 0.0007): 617 (1.234 UU), -1250, 0.
 #include "MotionSys.h"
 
 int main()
@@ -89,7 +91,8 @@ int main()
     CHECK_EQ(MCC_GetCommandCount(&nCount, g_nGroupIndex), NO_ERR);
     CHECK_EQ(nCount, 2);                  // B and C wait; A runs
 
-    // On the stepped clock: A ends at 50.3 s, B at 80.6 s, C at 120.9 s.
+    // On the stepped clock: A's last period ends at 50.3 s, B runs from 50.302 s to
+    // 80.601 s, C from 80.603 s to 120.902 s.
     if (SteppedClock())
     {
         MCC_TimeDelay(50300);                 // now 1000 ms + 50300 ms: 1 s into B
@@ -106,7 +109,7 @@ int main()
     CHECK_EQ(nCount, 0);
     CHECK(MCC_GetCurFeedSpeed(g_nGroupIndex) == 0.0);
 
-    // Step 5: pulse positions = round(UU x 500).
+    // Step 5: pulse positions = UU x 500 in whole pulses toward 0.
     CHECK(MCC_Line(1.2345, -2.5, 0.0007, 3, 0, 0, 0, -0.0031, g_nGroupIndex) >= 0);
     WaitStop(g_nGroupIndex);
     CHECK_EQ(MCC_GetCurPos(&dfCurPosX, &dfCurPosY, &dfCurPosZ, &dfCurPosU, &dfCurPosV, &dfCurPosW,
@@ -116,15 +119,14 @@ int main()
     printf("At (%.4f, %.4f, %.4f, U %.4f, B %.4f): pulses %ld, %ld, %ld, U %ld, B %ld\n",
            dfCurPosX, dfCurPosY, dfCurPosZ, dfCurPosU, dfCurPosB,
            lCurPulseX, lCurPulseY, lCurPulseZ, lCurPulseU, lCurPulseB);
-    CHECK_NEAR(dfCurPosX, 1.2345, POS_TOL);
-    CHECK_NEAR(dfCurPosB, -0.0031, POS_TOL);
-    CHECK_EQ(lCurPulseX, PulsesOf(1.2345));   // 617
-    CHECK_EQ(lCurPulseX, 617);
+    CHECK_NEAR(dfCurPosX, 1.234, POS_TOL);    // 617 pulses / 500
+    CHECK_NEAR(dfCurPosB, -0.002, POS_TOL);   // -1 pulse / 500
+    CHECK_EQ(lCurPulseX, 617);                // 617.25 toward 0
     CHECK_EQ(lCurPulseY, -1250);
-    CHECK_EQ(lCurPulseZ, 0);                  // 0.35 rounds to 0
+    CHECK_EQ(lCurPulseZ, 0);                  // 0.35 toward 0
     CHECK_EQ(lCurPulseU, 1500);
     CHECK_EQ(lCurPulseV, 0);
-    CHECK_EQ(lCurPulseB, -2);                 // -1.55 rounds to -2
+    CHECK_EQ(lCurPulseB, -1);                 // -1.55 toward 0
 
     // Bad input.
     CHECK_EQ(MCC_GetCurPos(&dfCurPosX, &dfCurPosY, &dfCurPosZ, &dfCurPosU, &dfCurPosV, &dfCurPosW,

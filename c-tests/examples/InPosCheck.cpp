@@ -60,7 +60,12 @@ int main()
     printf("IPM_ONETIME_UNBLOCK: no error, the queue went on to X = 0\n");
 
     CHECK_EQ(MCC_SetInPosMode(9, g_nGroupIndex), PARAMETER_ERR);
-    CHECK_EQ(MCC_SetInPosToleranceEx(-1, 0, 0, 0, 0, 0, 0, 0, g_nGroupIndex), PARAMETER_ERR);
+    // A negative tolerance counts by its size, as the vendor's library keeps it (whole
+    // pulses, |trunc(x x 500)|: -1 UU is 500 pulses, read back as 1 UU).
+    CHECK_EQ(MCC_SetInPosToleranceEx(-1, 0, 0, 0, 0, 0, 0, 0, g_nGroupIndex), NO_ERR);
+    double t[8];
+    CHECK_EQ(MCC_GetInPosToleranceEx(&t[0], &t[1], &t[2], &t[3], &t[4], &t[5], &t[6], &t[7], g_nGroupIndex), NO_ERR);
+    CHECK_NEAR(t[0], 1.0, 1e-12);
     CHECK(MCC_EnableInPos(BAD_GROUP) == GROUP_PARAMETER_ERR);
     Close();
     return check_done("InPosCheck");

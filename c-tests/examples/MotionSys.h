@@ -6,10 +6,18 @@
 //   => 500 pulses per UU; maximum safe (PtP 100 %) speed = 3000/60 x 1/1 = 50 UU/s
 //   MCC_SetSysMaxSpeed(100): feed speeds above 100 UU/s are clamped to 100
 //   interpolation time 1 ms, so MCC_TimeDelay(1) is exactly one tick of virtual time
-//   acc/dec time 300 ms, type 'T' (the library defaults, user manual §2.6.2)
+//   acc/dec time 300 ms, type 'S' (a cubic smoothstep speed ramp), feed 1 UU/s: the
+//   defaults the vendor's library reads right after init
 //
-// Expected times come from docs/decisions.md ("Motion conventions the manuals leave open"):
-// an unblended move of length L that reaches the feed speed F lasts L/F + (Ta+Td)/2.
+// Expected times follow the vendor's library (docs/decisions.md): a move runs on the
+// grid of periods, na = ceil(Ta/T) and nd = ceil(Td/T) periods of ramps and nc =
+// ceil(L/F/T - na/2 - nd/2) at the speed V = L/((na+nd)/2 T + nc T) (at most F); a move
+// too short to reach F (L < F (Ta+Td)/2) keeps its ramps and peaks at V = 2L/(Ta+Td).
+// With 1 ms periods an unblended move that reaches F so lasts L/F + (Ta+Td)/2 rounded up
+// to a whole ms, a short one Ta + Td. The period after its last is its end period
+// (phase 21), the next runs nothing, and the status reads GMS_STOP in the third
+// (STOP_AFTER_END_MS); a point-to-point move shows one period more.
+// Positions read whole pulses toward 0 (500 per UU here: 0.002 UU).
 //
 // Virtual-time assertions. With MCCL_CLOCK=fast the engine runs ahead on its own while
 // a group is busy, so what a program sees in the middle of a move depends on thread
@@ -37,6 +45,7 @@
 #define EX_MAX_SPEED        100.0   // MCC_SetSysMaxSpeed
 #define EX_PTP_MAX_SPEED    50.0    // (wRPM / 60) x dfPitch / dfGearRatio, UU/s
 #define TOL_MS              (INTERPOLATION_TIME + 1)   // one period + 1 ms
+#define STOP_AFTER_END_MS   (3 * INTERPOLATION_TIME)   // GMS_STOP three periods after a move's last
 #define POS_TOL             1e-9    // end positions, UU
 #define BAD_GROUP           100     // >= MAX_GROUP_NUM (96): never a group
 
@@ -115,13 +124,16 @@ static inline void WaitStop(int nGroup)
     CHECK_EQ(MCC_GetMotionStatus((WORD)nGroup), GMS_STOP);
 }
 
-// Stepped clock only (no-op otherwise): the group queued its motion "now" and is expected
-// to come to GMS_STOP dfMs of virtual time later. Checks that it is still busy at
-// dfMs - TOL_MS and stopped by dfMs + TOL_MS (+1 ms for the status poll's own tick).
+// Stepped clock only (no-op otherwise): the group queued its motion "now" and its last
+// motion period is expected to end dfMs of virtual time later, so GMS_STOP reads
+// STOP_AFTER_END_MS after that. Checks that it is still busy at dfMs + STOP_AFTER_END_MS
+// - TOL_MS and stopped by dfMs + STOP_AFTER_END_MS + TOL_MS (+1 ms for the status poll's
+// own tick).
 static inline void CheckEndsIn(int nGroup, double dfMs, const char *what)
 {
     if (!SteppedClock())
         return;
+    dfMs += STOP_AFTER_END_MS;
     long lBefore = (long)floor(dfMs) - TOL_MS;
     if (lBefore > 0)
         MCC_TimeDelay((DWORD)lBefore);
@@ -168,10 +180,14 @@ static inline void PrintPos(int nGroup, const char *when)
     printf("  %s: X = %.3f, Y = %.3f, Z = %.3f\n", when, p[0], p[1], p[2]);
 }
 
-// Pulse position the card reports for an axis at dfUU (GearRatio 1, Pitch 1, PPR 500).
+// Pulse position the card reports for an axis at dfUU (GearRatio 1, Pitch 1, PPR 500):
+// whole pulses toward 0, a count within 1e-7 of a whole one being that one (as the
+// vendor's library counts).
 static inline long PulsesOf(double dfUU)
 {
-    return lround(dfUU * 1.0 / 1.0 * EX_PPR);
+    double p = dfUU * 1.0 / 1.0 * EX_PPR;
+    double r = round(p);
+    return fabs(p - r) <= 1e-7 ? (long)r : (long)trunc(p);
 }
 
 static inline void Close()

@@ -2,7 +2,8 @@
 // own speed; the axes start together and need not arrive together (unlike a line).
 //
 // Expected numbers: MCC_SetPtPSpeed(20) -> 20 % of (3000/60) x 1/1 = 10 UU/s per axis,
-// PtP acc/dec 300 ms (default):
+// ramped with the group's acc/dec times, 300 ms (as the vendor's library runs a PtP),
+// whole periods of 1 ms; GMS_STOP reads four periods after the last axis arrives:
 //   MCC_PtP(10, 20): X 10 UU: 1.0 + 0.3 = 1.3 s; Y 20 UU: 2.0 + 0.3 = 2.3 s.
 //     At 1.3 s X has arrived (10) while Y is at 10 x 1.3 - 1.5 = 11.5 and still moving.
 //   MCC_SyncPtP(0, 0) from (10, 20): all axes end together, paced by the slowest (Y):
@@ -41,7 +42,7 @@ int main()
         CHECK_NEAR(p[0], 10, POS_TOL);                     // X arrived
         CHECK_NEAR(p[1], 10 * (1.3 + (2 * TOL_MS + 1) / 1000.0) - 1.5, 0.03);
         CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_RUNNING);
-        CheckEndsIn(g_nGroupIndex, 2300 - 1300 - TOL_MS - 1, "PtP Y 20 UU at 10 UU/s");
+        CheckEndsIn(g_nGroupIndex, 2300 + 1 - 1300 - TOL_MS - 1, "PtP Y 20 UU at 10 UU/s");
     }
     else
     {
@@ -67,14 +68,14 @@ int main()
         GetPos(g_nGroupIndex, p);
         CHECK(p[0] > 0);                                   // X still moving
         CHECK_NEAR(p[0] * 2, p[1], 1e-6);                  // both on one straight line
-        CheckEndsIn(g_nGroupIndex, 2300 - 1300 - 2 * TOL_MS, "SyncPtP paced by Y");
+        CheckEndsIn(g_nGroupIndex, 2300 + 1 - 1300 - 2 * TOL_MS, "SyncPtP paced by Y");
     }
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 0, 0, 0);
 
     // One axis: MCC_PtPX.
     CHECK(MCC_PtPX(5, g_nGroupIndex) >= 0);
-    CheckEndsIn(g_nGroupIndex, 800, "PtPX 5 UU");
+    CheckEndsIn(g_nGroupIndex, 800 + 1, "PtPX 5 UU");
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 5, 0, 0);
 

@@ -2,17 +2,21 @@
 // command goes from its cruise speed straight into the next command's cruise speed
 // without stopping; MCC_CheckBlend returns 0 when blending is on, 1 when it is off.
 //
-// Convention (docs/decisions.md, "Motion conventions"): the next command starts when
-// the previous one starts to decelerate, and the two velocity profiles add. Expected
-// numbers (Ta = Td = 300 ms):
-//   off: Line (10,0) then (10,10) at 10 UU/s: 1.3 + 1.3 s = 2600 ms; the path passes
-//        exactly through the corner (10, 0), reached at 1300 ms
+// As the vendor's library blends (docs/decisions.md): the next command starts when the
+// previous one starts to decelerate, both ramps of the overlap are S ramps (the cubic
+// smoothstep), and the two velocity profiles add. Expected numbers (Ta = Td = 300 ms,
+// periods of 1 ms; GMS_STOP three periods after the last):
+//   off: Line (10,0) then (10,10) at 10 UU/s: 1300 periods, the first's end period,
+//        1300 more: 2601 ms; the path passes exactly through the corner (10, 0),
+//        reached at 1300 ms
 //   on:  Line (0,10) then (0,0) from (10,10) at 10 UU/s: the second starts at 1.0 s:
 //        1.0 + 1.3 = 2300 ms. Half-way through the overlap (1150 ms) the first still has
-//        10 x 0.15^2 / (2 x 0.3) = 0.375 UU to go and the second has covered 0.375 UU:
-//        the axes are at (0.375, 9.625), inside the corner (0, 10).
+//        V Td x (the integral of 1 - smoothstep over [1/2, 1]: 1/2 - 13/32 = 3/32) =
+//        10 x 0.3 x 0.09375 = 0.28125 UU to go and the second has covered as much: the
+//        axes are at (0.28125, 9.71875), inside the corner (0, 10); read in whole pulses
+//        toward 0: (0.28, 9.718).
 //   on, different speeds: (10,0) at 10 UU/s, then (10,10) at 20 UU/s:
-//        1.0 + (10/20 + 0.3) = 1800 ms (off it would be 1300 + 800 = 2100 ms).
+//        1.0 + (10/20 + 0.3) = 1800 ms (off it would be 1300 + 1 + 800 = 2101 ms).
 #include "MotionSys.h"
 
 int main()
@@ -38,7 +42,7 @@ int main()
         printf("  [stepped clock] blending off, 1.3 s: X = %.3f, Y = %.3f\n", p[0], p[1]);
         CHECK_NEAR(p[0], 10, POS_TOL);      // went all the way to the corner
         CHECK(p[1] >= 0 && p[1] < 0.01);
-        CheckEndsIn(g_nGroupIndex, 2600 - 1300 - TOL_MS, "two lines, blending off");
+        CheckEndsIn(g_nGroupIndex, 2601 - 1300 - TOL_MS, "two lines, blending off");
     }
     else
     {
@@ -65,8 +69,8 @@ int main()
         MCC_TimeDelay(1150);
         GetPos(g_nGroupIndex, p);
         printf("  [stepped clock] blending on, 1.15 s: X = %.3f, Y = %.3f\n", p[0], p[1]);
-        CHECK_NEAR(p[0], 0.375, 0.03);
-        CHECK_NEAR(p[1], 9.625, 0.03);
+        CHECK_NEAR(p[0], 0.28, POS_TOL);
+        CHECK_NEAR(p[1], 9.718, POS_TOL);
         CheckEndsIn(g_nGroupIndex, 2300 - 1150, "two lines, blending on");
     }
     else

@@ -2,11 +2,13 @@
 // circle and helix, not above MCC_SetSysMaxSpeed; MCC_SetPtPSpeed as a percentage of
 // (wRPM / 60) x dfPitch / dfGearRatio.
 //
-// Expected numbers (Ta = Td = 300 ms, so every duration is L/F + 0.3 s):
+// Expected numbers (Ta = Td = 300 ms, so every move below lasts L/F + 0.3 s, a whole
+// number of 1 ms periods; GMS_STOP reads three periods after, a PtP's four):
 //   MCC_SetFeedSpeed(20): MCC_GetFeedSpeed() = 20; line 10 UU: 800 ms
 //   MCC_SetFeedSpeed(150) with MCC_SetSysMaxSpeed(100): the feed speed becomes 100
 //     (user manual §2.6.2 E); line 100 UU: 1.0 + 0.3 = 1300 ms
-//   MCC_SetPtPSpeed(50): 50 % of 3000/60 x 1/1 = 25 UU/s; PtP X 10 UU: 0.4 + 0.3 = 700 ms
+//   MCC_SetPtPSpeed(50): 50 % of 3000/60 x 1/1 = 25 UU/s; PtP X 10 UU with the group's
+//     300/300 ms ramps: 0.4 + 0.3 = 700 ms
 //   a line that moves only U and V (no X/Y/Z): the feed speed applies to the axis going
 //     furthest (U, 10 UU at 20 UU/s: 800 ms), V arrives with it (user manual §2.6.2 E)
 //   a line with X/Y and U: only X/Y/Z count for the speed, U follows linearly
@@ -39,7 +41,7 @@ int main()
     MCC_SetPtPSpeed(50, g_nGroupIndex);
     CHECK(MCC_GetPtPSpeed(g_nGroupIndex) == 50.0);
     CHECK(MCC_PtP(100, 0, 0, 0, 0, 0, 0, 0, g_nGroupIndex) >= 0);
-    CheckEndsIn(g_nGroupIndex, 700, "PtP 10 UU at 50 % = 25 UU/s");
+    CheckEndsIn(g_nGroupIndex, 700 + 1, "PtP 10 UU at 50 % = 25 UU/s");
     WaitStop(g_nGroupIndex);
     CheckPosXYZ(g_nGroupIndex, 100, 0, 0);
 
@@ -76,13 +78,14 @@ int main()
     double e2[8] = {30, 40, 0, 100, 5, 0, 0, 0};
     CheckPos8(g_nGroupIndex, e2);
 
-    // Bad input leaves the speeds alone.
+    // Bad input leaves the speeds alone; a negative feed counts by its size, as the
+    // vendor's library takes it (-5 is 5 UU/s).
     MCC_SetFeedSpeed(NAN, g_nGroupIndex);
     CHECK(MCC_GetFeedSpeed(g_nGroupIndex) == 10.0);
-    MCC_SetFeedSpeed(-5, g_nGroupIndex);
-    CHECK(MCC_GetFeedSpeed(g_nGroupIndex) == 10.0);
+    CHECK(MCC_SetFeedSpeed(-5, g_nGroupIndex) == 5.0);
+    CHECK(MCC_GetFeedSpeed(g_nGroupIndex) == 5.0);
     MCC_SetFeedSpeed(20, BAD_GROUP);
-    CHECK(MCC_GetFeedSpeed(g_nGroupIndex) == 10.0);
+    CHECK(MCC_GetFeedSpeed(g_nGroupIndex) == 5.0);
     MCC_SetPtPSpeed(NAN, g_nGroupIndex);
     CHECK(MCC_GetPtPSpeed(g_nGroupIndex) == 50.0);
     MCC_SetPtPSpeed(-1, g_nGroupIndex);

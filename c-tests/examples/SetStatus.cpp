@@ -7,9 +7,11 @@
 //   MCC_Line(2, ...) ends at X = 2.
 // - MCC_GetCoordType: 1 after MCC_SetAbsolute, 0 after MCC_SetIncrease (the values vendor
 //   client programs test for; the manuals do not print them).
-// - MCC_GetAccType / MCC_GetDecType return the curve letter that was set ('T' or 'S').
+// - MCC_GetAccType / MCC_GetDecType return 0 for 'T' and 1 for 'S' (as the vendor's
+//   library answers; MCC_GetPtPAccType / MCC_GetPtPDecType likewise per axis).
 // - 'T' acceleration with 'S' deceleration: a 10 UU line at 20 UU/s still lasts
-//   10/20 + (0.3 + 0.3)/2 = 0.8 s (both shapes cover F*T/2 while ramping).
+//   300 + ceil(500 - 300) + 300 = 800 periods of 1 ms (both shapes cover F*T/2 while
+//   ramping).
 // The manual passes seven letters and the group to MCC_SetPtPAccType; the prototype has
 // eight axes, so eight letters are written here.
 #include "MotionSys.h"
@@ -25,9 +27,9 @@ int main()
 
     // 'T' acceleration, 'S' deceleration for line/arc/circle/helix.
     CHECK_EQ(MCC_SetAccType('T', g_nGroupIndex), NO_ERR);
-    CHECK_EQ(MCC_GetAccType(g_nGroupIndex), 'T');
+    CHECK_EQ(MCC_GetAccType(g_nGroupIndex), 0);
     CHECK_EQ(MCC_SetDecType('S', g_nGroupIndex), NO_ERR);
-    CHECK_EQ(MCC_GetDecType(g_nGroupIndex), 'S');
+    CHECK_EQ(MCC_GetDecType(g_nGroupIndex), 1);
 
     // 'T' acceleration and 'S' deceleration for every axis of point-to-point motion.
     CHECK_EQ(MCC_SetPtPAccType('T', 'T', 'T', 'T', 'T', 'T', 'T', 'T', g_nGroupIndex), NO_ERR);
@@ -39,15 +41,16 @@ int main()
     CHECK_EQ(MCC_GetPtPDecType(&d[0], &d[1], &d[2], &d[3], &d[4], &d[5], &d[6], &d[7], g_nGroupIndex), NO_ERR);
     for (int i = 0; i < 8; i++)
     {
-        CHECK_EQ(c[i], 'T');
-        CHECK_EQ(d[i], 'S');
+        CHECK_EQ(c[i], 0);
+        CHECK_EQ(d[i], 1);
     }
 
     // Servo on for channel 0, position-ready output on.
     CHECK_EQ(MCC_SetServoOn(0, CARD_INDEX), NO_ERR);
     CHECK_EQ(MCC_EnablePosReady(CARD_INDEX), NO_ERR);
 
-    // The curve types do not change the duration: 10/20 + (300 + 300)/2 ms = 800 ms.
+    // The curve types do not change the duration: na = nd = 300, nc = ceil(10/20/0.001 -
+    // 300) = 200 periods at 20 UU/s: 800 ms.
     MCC_SetFeedSpeed(20, g_nGroupIndex);
     CHECK(MCC_Line(10, 0, 0, 0, 0, 0, 0, 0, g_nGroupIndex) >= 0);
     CheckEndsIn(g_nGroupIndex, 800, "T/S line of 10 UU at 20 UU/s");
@@ -56,7 +59,7 @@ int main()
 
     // 'S' acceleration too: same 800 ms.
     CHECK_EQ(MCC_SetAccType('S', g_nGroupIndex), NO_ERR);
-    CHECK_EQ(MCC_GetAccType(g_nGroupIndex), 'S');
+    CHECK_EQ(MCC_GetAccType(g_nGroupIndex), 1);
     CHECK(MCC_Line(0, 0, 0, 0, 0, 0, 0, 0, g_nGroupIndex) >= 0);
     CheckEndsIn(g_nGroupIndex, 800, "S/S line of 10 UU at 20 UU/s");
     WaitStop(g_nGroupIndex);
@@ -81,9 +84,9 @@ int main()
 
     // Bad input changes nothing.
     CHECK_EQ(MCC_SetAccType('X', g_nGroupIndex), PARAMETER_ERR);
-    CHECK_EQ(MCC_GetAccType(g_nGroupIndex), 'S');
+    CHECK_EQ(MCC_GetAccType(g_nGroupIndex), 1);
     CHECK_EQ(MCC_SetDecType(0, g_nGroupIndex), PARAMETER_ERR);
-    CHECK_EQ(MCC_GetDecType(g_nGroupIndex), 'S');
+    CHECK_EQ(MCC_GetDecType(g_nGroupIndex), 1);
     CHECK_EQ(MCC_SetPtPAccType('T', 'T', 'Q', 'T', 'T', 'T', 'T', 'T', g_nGroupIndex), PARAMETER_ERR);
     CHECK_EQ(MCC_SetAbsolute(BAD_GROUP), GROUP_PARAMETER_ERR);
     CHECK_EQ(MCC_SetIncrease(BAD_GROUP), GROUP_PARAMETER_ERR);

@@ -1,20 +1,24 @@
 // SyncLine.cpp: examples manual §23 (continuous 8-axis motion).
 //
 // Part 1: one group of 8 axes. MCC_Line(10, 20, 30, 40, 50, 60, 70, 80) at F = 10: only
-//   X/Y/Z set the speed (L = sqrt(10^2+20^2+30^2) = 37.4166: 3.7417 + 0.3 = 4041.7 ms);
-//   U..B start and end with them, moving linearly (U = 4 X, ..., B = 8 X at every instant).
+//   X/Y/Z set the speed (L = sqrt(10^2+20^2+30^2) = 37.4166: 300 + ceil(3741.66 - 300) +
+//   300 = 4042 periods of 1 ms at V = 37.4166/3.742 = 9.9991, after the blend switch's
+//   one period); U..B start and end with them, moving linearly (U = 4 X, ..., B = 8 X at
+//   every instant; each read in whole pulses toward 0, so within (i+1)/500 UU of it).
 // Part 2: the manual's fnSyncLine with three groups, X/Y/Z on channels 0-2, U/V/W on 3-5,
 //   A/B on 6-7, each blending; the second and third group's speeds are scaled by their
 //   distance over the first group's, so all three take the same time. The manual's
 //   fnSyncLine uses each call's arguments as distances, i.e. incremental coordinates
 //   (MCC_SetIncrease here). Calls: fnSyncLine(10,20,30, 40,50,60, 70,80, 10) and
 //   fnSyncLine(40,50,60, 10,20,30, 70,80, 10):
-//     segment 1: 37.4166/10 = 3.7417 s in every group, segment 2: 87.7496/10 = 8.7750 s;
-//     blended (next starts when the previous decelerates, Ta = Td = 300 ms):
-//     3.7417 + 8.7750 + 0.3 = 12816.6 ms for all three groups;
+//     segment 1: 37.4166/10 = 3.7417 s in every group (300 + 3442 + 300 periods),
+//     segment 2: 87.7496/10 = 8.7750 s (300 + 8475 + 300 periods); blended (the next
+//     starts when the previous decelerates, Ta = Td = 300 ms), after the blend switch's
+//     period: 1 + 3742 + 9075 = 12818 periods for all three groups;
 //     end: group 0 (50, 70, 90), group 1 (50, 70, 90) on channels 3-5, group 2
 //     (140, 160) on channels 6-7.
-//   During segment 1 the three groups have covered the same fraction of their segment.
+//   During segment 1 the three groups have covered the same fraction of their segment
+//   (within the whole-pulse readings: 0.002/10 + 0.002/40 = 0.00025).
 // The manual's CreateGroup for the third group lists seven channels and its MCC_Line
 // calls six positions; eight of each are written here.
 #include "MotionSys.h"
@@ -60,12 +64,12 @@ static void PartOneGroup()
     printf("One group, 2 s in: X = %.3f, U = %.3f, B = %.3f\n", p[0], p[3], p[7]);
     CHECK(p[0] > 0 && p[0] <= 10);
     for (int i = 1; i < 8; i++)
-        CHECK_NEAR(p[i], p[0] * (i + 1), 1e-6);        // all 8 on one straight line
+        CHECK_NEAR(p[i], p[0] * (i + 1), (i + 1) * 0.002);   // all 8 on one straight line
     if (SteppedClock())
     {
-        // 2 s: 1.5 + 10 x 1.7 = 18.5 of 37.4166 UU.
-        CHECK_NEAR(p[0], 10 * 18.5 / sqrt(1400.0), 0.01);
-        CheckEndsIn(g_nGroupIndex, 1000 * sqrt(1400.0) / 10 + 300 - 2000, "8-axis line");
+        // 2 s (the line's 1999th period): 0.15 V + 1.699 V = 18.49 of 37.4166 UU.
+        CHECK_NEAR(p[0], 10 * 18.49 / sqrt(1400.0), 0.01);
+        CheckEndsIn(g_nGroupIndex, 1 + 4042 - 2000, "8-axis line");
     }
     WaitStop(g_nGroupIndex);
     double e[8] = {10, 20, 30, 40, 50, 60, 70, 80};
@@ -107,7 +111,7 @@ static void PartThreeGroups()
     fnSyncLine(10, 20, 30, 40, 50, 60, 70, 80, 10);
     fnSyncLine(40, 50, 60, 10, 20, 30, 70, 80, 10);
 
-    const double dfTotal = 1000 * (sqrt(1400.0) + sqrt(7700.0)) / 10 + 300;   // 12816.6 ms
+    const double dfTotal = 1 + 3742 + 9075 + STOP_AFTER_END_MS;   // GMS_STOP in period 12821
     if (SteppedClock())
     {
         // 2 s in (segment 1): the same fraction everywhere.
@@ -118,9 +122,9 @@ static void PartThreeGroups()
         GetPos(g[2], p2);
         printf("  [stepped clock] 2 s in: X = %.3f, U = %.3f, A = %.3f\n", p0[0], p1[0], p2[0]);
         CHECK(p0[0] > 0 && p0[0] < 10);
-        CHECK_NEAR(p1[0] / 40, p0[0] / 10, 1e-6);
-        CHECK_NEAR(p2[0] / 70, p0[0] / 10, 1e-6);
-        CHECK_NEAR(p2[1] / 80, p0[0] / 10, 1e-6);
+        CHECK_NEAR(p1[0] / 40, p0[0] / 10, 0.00025);
+        CHECK_NEAR(p2[0] / 70, p0[0] / 10, 0.00025);
+        CHECK_NEAR(p2[1] / 80, p0[0] / 10, 0.00025);
         // All three still moving shortly before the end, all stopped shortly after (each
         // status poll of a busy group may run one tick: room for three).
         long lBefore = (long)floor(dfTotal) - 2000 - TOL_MS - 3;

@@ -67,6 +67,10 @@ int main()
     int nErr = MCC_GetErrorCode(g_nGroupIndex);
     printf("  10 s without a refresh: error code 0x%X, status %d\n", nErr, MCC_GetMotionStatus(g_nGroupIndex));
     CHECK_EQ(nErr, 0xF103);
+    // The reset stops the group at once, as an abort at once: running for that period,
+    // GMS_STOP the period after (as the vendor's library shows an abort).
+    CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_RUNNING);
+    MCC_TimeDelay(1);
     CHECK_EQ(MCC_GetMotionStatus(g_nGroupIndex), GMS_STOP);
     GetPos(g_nGroupIndex, p);
     // 40 s of motion at 10 UU/s after a 300 ms ramp: 400 - 1.5 UU.

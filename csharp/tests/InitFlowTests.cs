@@ -44,7 +44,9 @@ public static class InitFlowTests
         Check.Eq(q.wCommandMode, (ushort)MCCL.OCM_VOLTAGE, "wCommandMode");
         Check.Eq(q.wOverTravelUpSensorMode, (ushort)MCCL.SL_NORMAL_CLOSE, "wOverTravelUpSensorMode");
         Check.Eq(q.wOverTravelDownSensorMode, (ushort)MCCL.SL_NORMAL_OPEN, "wOverTravelDownSensorMode (last field)");
-        Check.Eq(MCCL.MCC_GetConvFactor(7, CARD), 70000.0 * 3.0 / 2.5, "GetConvFactor = dwPPR x gear / pitch");
+        // wPosToEncoderDir 1 reverses the output: the factor reads negative, as the vendor's
+        // library answers.
+        Check.Eq(MCCL.MCC_GetConvFactor(7, CARD), -70000.0 * 3.0 / 2.5, "GetConvFactor = -(dwPPR x gear / pitch)");
         // Bad channel / card / content.
         Check.Eq(MCCL.MCC_SetMacParam(ref p, 8, CARD), MCCL.PARAMETER_ERR, "SetMacParam ch 8");
         Check.Eq(MCCL.MCC_SetMacParam(ref p, 0, MCCL.MAX_CARD_NUM), MCCL.PARAMETER_ERR, "SetMacParam card 12");
@@ -101,7 +103,12 @@ public static class InitFlowTests
         Check.Eq(MCCL.MCC_InitSystem(2, cards, MCCL.MAX_CARD_NUM + 1), MCCL.PARAMETER_ERR, "InitSystem 13 cards");
         Check.Eq(MCCL.MCC_InitSystem(0, cards, 1), MCCL.PARAMETER_ERR, "InitSystem period 0");
         Check.Eq(MCCL.MCC_InitSystem(MCCL.IPO_PERIOD_MAX + 1, cards, 1), MCCL.PARAMETER_ERR, "InitSystem period 51");
-        Check.Eq(MCCL.MCC_InitSystem(2, null, 1), MCCL.PARAMETER_ERR, "InitSystem null cards");
+        // A null card table is taken as IMP-III cards, as the vendor's library takes it; a
+        // close forgets the group table, so the groups are made again.
+        Check.Eq(MCCL.MCC_InitSystem(2, null, 1), MCCL.NO_ERR, "InitSystem null cards");
+        Check.Eq(MCCL.MCC_CloseSystem(), MCCL.NO_ERR, "CloseSystem after the null table");
+        Check.Eq(MCCL.MCC_CreateGroup(0, 1, 2, -1, -1, -1, -1, -1, CARD), 0, "CreateGroup -> 0 again");
+        Check.Eq(MCCL.MCC_CreateGroupEx(3, 4, 5, -1, -1, -1, -1, -1, CARD, 50), 1, "CreateGroupEx -> 1 again");
 
         Check.Eq(MCCL.MCC_InitSystem(2, cards, 1), MCCL.NO_ERR, "MCC_InitSystem(2, cards, 1)");
         Check.Eq(MCCL.MCC_GetMotionStatus(0), MCCL.GMS_STOP, "GetMotionStatus(0)");
