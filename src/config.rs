@@ -651,7 +651,13 @@ mod tests {
         let h = default_home_config();
         let m = default_mac_param();
         assert!(validate_home_config(&h, &m).is_ok());
+        // Modes 0..19 are kept, as the vendor's library keeps them (home_config_ranges);
+        // 20 and above are refused.
         for mode in [0u16, 2, 17, 19] {
+            let b = SYS_HOME_CONFIG { wMode: mode, ..h };
+            assert_eq!(validate_home_config(&b, &m), Ok(()));
+        }
+        for mode in [20u16, 0xFFFF] {
             let b = SYS_HOME_CONFIG { wMode: mode, ..h };
             assert_eq!(validate_home_config(&b, &m), Err(McclError::Parameter));
         }

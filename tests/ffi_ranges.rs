@@ -94,12 +94,12 @@ fn abort_time_beyond_the_longest_time_is_refused() {
     assert!((x() - 20.0).abs() < 1e-9, "{}", x());
     assert_eq!(line_x(0.0), 1, "not aborting");
     // The longest time is taken. A timed abort runs as a hold with Td = t: from v0 = 10
-    // (= F) over n = floor(Td v0/F/T) + 1 = 4,294,967,296 periods it covers d = v0^2
-    // Td/(2F) = 21,474,836.475 UU, starting at v_s = 2d/(nT) = 9.99999999767 UU/s and
-    // falling as the line's deceleration (the default S-curve: after 1000 of its
-    // periods the fall is (1000/n)^3 of it, nothing). 1 s later X = 20 + 9.99999999767,
-    // whole pulses toward 0: trunc(14999.9999988) = 14999, and it never ran faster than
-    // it did.
+    // (= F) over n = floor(Td v0/F/T) + 1 = 4,294,967,296 periods, more than the
+    // 1,000,000,001 a profile counts: it ramps over those, starting at
+    // v0 (n - 1)/n = 9.99999999 UU/s and falling as the line's deceleration (the default
+    // S-curve: after 1000 of its periods the fall is (1000/n)^3 of it, nothing). 1 s
+    // later X = 20 + 9.99999999, whole pulses toward 0: trunc(14999.999995) = 14999, and
+    // it never ran faster than it did.
     assert_eq!(MCC_AbortMotionEx(MAX_MS, 0), NO_ERR);
     assert_eq!(line_x(0.0), ABORT_NOT_FINISH_ERR, "aborting");
     MCC_TimeDelay(1);

@@ -95,7 +95,8 @@ fn mach_param_is_the_three_newer_setters_in_one() {
         |m: &mut SYS_MACH_PARAM| m.dfPitch = f64::NAN,
         |m: &mut SYS_MACH_PARAM| m.dfHighLimit = f64::INFINITY,
         |m: &mut SYS_MACH_PARAM| m.stHome.wType = HM_INDEX_ONLY as WORD,
-        |m: &mut SYS_MACH_PARAM| m.stHome.wType = 17,
+        // The old form's home types run 3..19 (HM_FIRST..HM_LAST); 20 is past them.
+        |m: &mut SYS_MACH_PARAM| m.stHome.wType = 20,
         |m: &mut SYS_MACH_PARAM| m.stHome.wLeaveDir = 2,
         |m: &mut SYS_MACH_PARAM| m.stHome.dfOffset = f64::NAN,
         |m: &mut SYS_MACH_PARAM| m.stEncoder.wInputRate = 0,

@@ -143,8 +143,16 @@ impl TickProfile {
     pub fn stop(v0: f64, feed: f64, dec_s: f64, shape: Shape, t: f64) -> TickProfile {
         let (d, n) = if v0 > 0.0 && feed > 0.0 && t > 0.0 {
             let time = dec_s * v0 / feed;
-            let n = (time / t).floor().min(1.0e9) as u32 + 1;
-            (v0 * v0 * dec_s / (2.0 * feed), n)
+            let periods = (time / t).floor();
+            if periods > 1.0e9 {
+                // Longer than the periods a profile counts: the ramp over the most it
+                // counts, starting a hair under `v0` (a stop never speeds up, and the
+                // vendor's ramp this long starts under `v0` too).
+                let n = 1_000_000_001u32;
+                (0.5 * v0 * f64::from(n - 1) * t, n)
+            } else {
+                (v0 * v0 * dec_s / (2.0 * feed), periods as u32 + 1)
+            }
         } else {
             (0.0, 0)
         };
