@@ -34,7 +34,9 @@ use std::fmt;
 use std::io;
 use std::time::{Duration, Instant};
 
-use serialport::{ClearBuffer, DataBits, FlowControl, Parity, SerialPort, StopBits, TTYPort};
+use serialport::{ClearBuffer, DataBits, FlowControl, Parity, SerialPort, StopBits};
+
+use crate::platform::SerialLine;
 
 use super::codec::{encode, Command, ErrorCode, ProtocolError, Response, ResponseParser};
 use super::emulator::Emulator;
@@ -103,7 +105,7 @@ fn serial_recv(port: &mut dyn SerialPort, buf: &mut [u8], timeout: Duration) -> 
     }
 }
 
-impl Transport for TTYPort {
+impl Transport for SerialLine {
     fn send(&mut self, data: &[u8]) -> io::Result<()> {
         serial_send(self, data)
     }
@@ -160,15 +162,15 @@ pub fn timeout_from_env() -> Duration {
         .unwrap_or(DEFAULT_TIMEOUT)
 }
 
-/// Open a serial device at 19200 8N1 without flow control.
-pub fn open_port(path: &str, timeout: Duration) -> Result<TTYPort, serialport::Error> {
+/// Open a serial device (`/dev/ttyS0`, `COM1`, ...) at 19200 8N1 without flow control.
+pub fn open_port(path: &str, timeout: Duration) -> Result<SerialLine, serialport::Error> {
     let builder = serialport::new(path, BAUD_RATE)
         .data_bits(DataBits::Eight)
         .parity(Parity::None)
         .stop_bits(StopBits::One)
         .flow_control(FlowControl::None)
         .timeout(timeout);
-    let port = TTYPort::open(&builder)?;
+    let port = SerialLine::open(&builder)?;
     // Best effort: a pty may refuse some tty requests.
     let _ = port.clear(ClearBuffer::All);
     Ok(port)
