@@ -1,6 +1,6 @@
 //! The extern "C" layer: argument checks, pointer checks, panic boundary, and Rust errors
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
-//! plain `#[no_mangle] pub extern "C" fn` whose body is one `ffi_boundary! { ... }`
+//! plain `#[no_mangle] pub extern "system" fn` whose body is one `ffi_boundary! { ... }`
 //! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
 //! `ffi_boundary` integration test rejects an exported body that does not enter it.
 //!
@@ -35,7 +35,7 @@ macro_rules! on_off {
     ) => {
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
+        pub extern "system" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
             ffi_boundary! {
                 let $flag = $v;
                 $body
@@ -52,7 +52,7 @@ macro_rules! value_fns {
     (@fn $(#[$doc:meta])* $name:ident($($v:ident: $t:ty)?) ($($a:ident),+) $body:expr) => {
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             $($v: $t,)?
             $($a: $crate::vendor::WORD),+
         ) -> ::std::os::raw::c_int {
@@ -84,7 +84,7 @@ macro_rules! pointer_fns {
             " valid `", stringify!($t), "`."
         )]
         #[no_mangle]
-        pub unsafe extern "C" fn $name(
+        pub unsafe extern "system" fn $name(
             $p: *mut $t,
             $($a: $crate::vendor::WORD),+
         ) -> ::std::os::raw::c_int {
@@ -107,7 +107,7 @@ macro_rules! per_axis_setters {
     ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             v0: $t, v1: $t, v2: $t, v3: $t, v4: $t, v5: $t, v6: $t, v7: $t,
             $ix: $crate::vendor::WORD,
         ) -> ::std::os::raw::c_int {
@@ -131,7 +131,7 @@ macro_rules! per_axis_getters {
         /// # Safety
         /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
         #[no_mangle]
-        pub unsafe extern "C" fn $name(
+        pub unsafe extern "system" fn $name(
             p0: *mut $t, p1: *mut $t, p2: *mut $t, p3: *mut $t,
             p4: *mut $t, p5: *mut $t, p6: *mut $t, p7: *mut $t,
             $ix: $crate::vendor::WORD,

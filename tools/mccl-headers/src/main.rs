@@ -558,7 +558,7 @@ fn rust_fn_type(v: &Proto) -> Result<String, String> {
         r => format!(" -> {}", rust_type(&tokens(r))?),
     };
     Ok(format!(
-        "{unsafety}extern \"C\" fn({}){ret}",
+        "{unsafety}extern \"system\" fn({}){ret}",
         params.join(", ")
     ))
 }
@@ -758,17 +758,20 @@ mod tests {
         let p = |s| rust_fn_type(&parse_proto(s).unwrap()).unwrap();
         assert_eq!(
             p("int MCC_SetPGain(WORD wGain0, WORD wCardIndex = 0)"),
-            "extern \"C\" fn(WORD, WORD) -> c_int"
+            "extern \"system\" fn(WORD, WORD) -> c_int"
         );
         assert_eq!(
             p("int MCC_GetPulsePos(long *plX, long long *plY, void *pv, char c)"),
-            "unsafe extern \"C\" fn(*mut c_long, *mut c_longlong, *mut c_void, c_char) -> c_int"
+            "unsafe extern \"system\" fn(*mut c_long, *mut c_longlong, *mut c_void, c_char) -> c_int"
         );
         assert_eq!(
             p("void MCC_GetVersion(char *strVersion)"),
-            "unsafe extern \"C\" fn(*mut c_char)"
+            "unsafe extern \"system\" fn(*mut c_char)"
         );
-        assert_eq!(p("double MCC_GetSysMaxSpeed()"), "extern \"C\" fn() -> f64");
+        assert_eq!(
+            p("double MCC_GetSysMaxSpeed()"),
+            "extern \"system\" fn() -> f64"
+        );
         assert!(rust_fn_type(&parse_proto("int f(unsigned short w)").unwrap()).is_err());
     }
 
