@@ -1,7 +1,7 @@
 //! libMCCLPCI_IMP: a drop-in replacement for the EPCIO IMP-series motion card library,
 //! with a virtual card that runs the motion in software.
 //!
-//! Layers, outermost first: [`ffi`] (the extern "C" entry points), [`system`] (the one
+//! Layers, outermost first: [`ffi`] (the C entry points), [`system`] (the one
 //! process-wide system), [`engine`] and [`clock`] (the virtual card's tick thread),
 //! [`planner`] (pure trajectory math), [`config`] and [`vendor`] (the vendor's data),
 //! [`mc3b`] (the MC3B stepper controller: protocol, emulator, its `mcl_*` C library), and

@@ -1,5 +1,5 @@
 //! Custom motion through the C entry points (`MCC_CustomMotion`, `MCC_CustomMotionEx`,
-//! `MCC_InfiniteMotion`), with Rust `extern "C"` callbacks, under the stepped and fast
+//! `MCC_InfiniteMotion`), with Rust `extern "system"` callbacks, under the stepped and fast
 //! clocks.
 //!
 //! Timing (docs/compatibility.md, "Custom motion"): the command is taken from the queue at

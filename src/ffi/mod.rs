@@ -1,6 +1,8 @@
-//! The extern "C" layer: argument checks, pointer checks, panic boundary, and Rust errors
+//! The C entry points: argument checks, pointer checks, panic boundary, and Rust errors
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
-//! plain `#[no_mangle] pub extern "system" fn` whose body is one `ffi_boundary! { ... }`
+//! plain `#[no_mangle] pub extern "system" fn` (the vendor's `MCC_CALL`: stdcall on
+//! 32-bit Windows, the C convention everywhere else; the `MCCL_Sim*` extension is
+//! `extern "C"`, as its header declares no convention) whose body is one `ffi_boundary! { ... }`
 //! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
 //! `ffi_boundary` integration test rejects an exported body that does not enter it.
 //!
@@ -13,7 +15,7 @@
 
 /// The panic boundary of an exported function: the block runs as a closure returning
 /// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
-/// to `RUN_TIME_ERR`. Every `extern "C"` body in this module is exactly one of these.
+/// to `RUN_TIME_ERR`. Every exported function's body in this module is exactly one of these.
 macro_rules! ffi_boundary {
     ($($body:tt)*) => {
         $crate::ffi::guard(|| { $($body)* })

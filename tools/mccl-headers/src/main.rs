@@ -1,6 +1,8 @@
 //! Generates the C headers of libMCCLPCI_IMP from the Rust sources.
 //!
-//! cbindgen reads the crate (vendor types, constants, `#[no_mangle] extern "C"` functions);
+//! cbindgen reads the crate (vendor types, constants, `#[no_mangle] extern "C"` functions:
+//! `mcl_*` and `MCCL_Sim*`; the `MCC_*` entry points are `extern "system"`, which cbindgen
+//! skips, and the vendor table gives their prototypes);
 //! this program then adds what cbindgen cannot express and writes:
 //!
 //! * `include/MCCL.h`      typedefs, constants, structs and ISR callback types;
@@ -15,10 +17,11 @@
 //!   signature against the table.
 //!
 //! `MCCL_Fun.h` is written from the vendor table rather than from cbindgen's output because
-//! cbindgen does not expand macros, and families of entry points in `src/ffi` are declared by
-//! `macro_rules!` macros. The generated test covers those: a wrong parameter type, count or
-//! return type, or a table function the crate does not export, fails to compile. The
-//! functions cbindgen does see are still checked against the table here (return type,
+//! cbindgen neither expands macros (families of entry points in `src/ffi` are declared by
+//! `macro_rules!` macros) nor reads `extern "system"` functions. The generated test covers
+//! every one: a wrong parameter type, count, return type or calling convention, or a table
+//! function the crate does not export, fails to compile. An `extern "C"` `MCC_*` function,
+//! which cbindgen does see, is still checked against the table here (return type,
 //! parameter count, types and names), and every `#define` against the vendor constants of
 //! `src/vendor/consts.rs`. `--check` compares instead of writing and fails on drift.
 
@@ -541,7 +544,8 @@ fn rust_type(ty: &[String]) -> Result<String, String> {
 }
 
 /// The Rust function-pointer type a vendor prototype must have: `unsafe` when it takes a
-/// pointer (the caller vouches for it), `extern "C"`, no return type for `void`.
+/// pointer (the caller vouches for it), `extern "system"` (the vendor's `MCC_CALL`), no
+/// return type for `void`.
 fn rust_fn_type(v: &Proto) -> Result<String, String> {
     let params = v
         .params
