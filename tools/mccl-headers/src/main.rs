@@ -283,9 +283,33 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
         body.push('\n');
     }
     let body = in_type_order(&collapse_blank_lines(&body), &raw.type_order)?;
+    let body = windows_base_types(&body)?;
     Ok(format!(
-        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
+        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n#if defined(_WIN32)\n#include <windows.h>\n#endif\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on Windows MSVC's\n * spelling of __stdcall (which GCC in strict ISO mode does not know), on other systems\n * than Windows a calling convention keyword that means nothing. */\n#if defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall __stdcall\n#endif\n#else\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
+    ))
+}
+
+/// The four base types as cbindgen declares them, in the order of cbindgen.toml.
+const BASE_TYPES: &str =
+    "typedef uint16_t WORD;\n\ntypedef uint8_t BYTE;\n\ntypedef uint32_t DWORD;\n\ntypedef int BOOL;";
+
+/// `body` with the base types taken from `<windows.h>` on Windows, as the vendor's header
+/// does: a program that includes `<windows.h>` as well (most Windows programs do) then
+/// sees one definition of each instead of a conflicting one (`DWORD` is `unsigned long`
+/// there, 32 bits like `uint32_t` but another type to a C compiler).
+fn windows_base_types(body: &str) -> Result<String, String> {
+    if !body.contains(BASE_TYPES) {
+        return Err(format!(
+            "MCCL.h: the base types are not declared as expected:\n{BASE_TYPES}"
+        ));
+    }
+    Ok(body.replacen(
+        BASE_TYPES,
+        &format!(
+            "/* On Windows the base types are those of <windows.h> (included above), as in the\n * vendor's header. */\n#if !defined(_WIN32)\n{BASE_TYPES}\n#endif"
+        ),
+        1,
     ))
 }
 
