@@ -40,7 +40,7 @@ windows: deps-windows
 	scripts/windows/build.sh $(BUILD)/windows
 
 windows-test: windows
-	scripts/windows/test.sh $(BUILD)/windows
+	scripts/windows/test.sh $(BUILD)/windows $(BUILD)/cargo
 
 # Performance numbers of the engine (not a test).
 bench:

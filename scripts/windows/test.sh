@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
 # make windows-test: the Windows DLLs of `make windows`, tested under Wine.
 #
-#   scripts/windows/test.sh OUT        (OUT: the folder build.sh made, e.g. build/windows)
+#   scripts/windows/test.sh OUT [HOST_TARGET_DIR]
 #
-# 1. the headers compile with MinGW-w64 for x64 and x86 (header_matrix.sh --windows);
+# OUT is the folder build.sh made (e.g. build/windows); HOST_TARGET_DIR the cargo target
+# directory for the Linux tools run here (default OUT/host-cargo; make passes the Linux
+# build's, which has them already).
+#
+# 1. the headers compile with MinGW-w64 for x64 and x86 (header_matrix.sh --windows), and
+#    the C# and VB bindings declare exactly what the DLLs export, undecorated, with the
+#    calling conventions they use (mccl-bindings --verify on each DLL);
 # 2. for x64 (wine64) and x86 (wine32): every C/C++ test program of c-tests/, built by
 #    CMake with MinGW-w64 against OUT/<arch> (cmake/mingw-wine.cmake), run by CTest in
 #    the same variants (fast and stepped clock, machine files) as on Linux; each run
@@ -16,6 +22,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:?usage: test.sh OUT}
 out=$(cd "$out" && pwd)
+host_target=${2:-$out/host-cargo}
 prefix="$out/wineprefix"
 times=()
 step() { times+=("$(printf '%-44s %4d s' "$1" "$2")"); }
@@ -39,6 +46,14 @@ trap 'WINEPREFIX="$prefix" wineserver -k 2>/dev/null || true' EXIT
 t=$(now)
 "$root/c-tests/scripts/header_matrix.sh" --windows | tail -1
 step "headers, MinGW x64 and x86" $(($(now) - t))
+
+t=$(now)
+for arch in x64 x86; do
+  echo "bindings against the $arch DLL:"
+  (cd "$root" && CARGO_TARGET_DIR="$host_target" cargo run --release -q -p mccl-bindings -- \
+    --verify "$out/$arch/MCCLPCI_IMP.dll") | sed 's/^/  /'
+done
+step "C#/VB bindings against the DLLs' exports" $(($(now) - t))
 
 summary=()
 for arch in x64 x86; do
