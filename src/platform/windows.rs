@@ -178,8 +178,8 @@ pub(super) fn com_port_device(n: u32) -> String {
 pub(super) fn pseudo_terminal_pair() -> io::Result<(SerialLine, SerialLine)> {
     Err(io::Error::new(
         io::ErrorKind::Unsupported,
-        "Windows has no pseudo-terminals: run the MC3B emulator on Linux, or connect a real \
-         MC3B (or a null-modem pair such as com0com) and name its port in MCL_COM<N>",
+        "Windows has no pseudo-terminals, which the MC3B emulator needs: run it on Linux \
+         (on Windows the library talks to a real MC3B on COM<N>, or the port MCL_COM<N> names)",
     ))
 }
 
