@@ -14,8 +14,9 @@
 #    CMake with MinGW-w64 against OUT/<arch> (cmake/mingw-wine.cmake), run by CTest in
 #    the same variants (fast and stepped clock, machine files) as on Linux; each run
 #    passes only with exit status 0 and its "N passed, 0 failed" line (wine-run.sh);
-# 3. the library's Rust unit tests, built for x86_64-pc-windows-gnu, under wine64 (the
-#    "test result: ok" line is checked, not only cargo's status).
+# 3. the library's Rust unit tests, built for x86_64-pc-windows-gnu under wine64 and for
+#    i686-pc-windows-gnu under wine32 (the "test result: ok" line is checked, not only
+#    cargo's status).
 # Each step's time is printed at the end. What Wine cannot show (real Windows timing, a
 # real COM port, VB6) is in docs/windows.md.
 set -euo pipefail
@@ -79,23 +80,33 @@ for arch in x64 x86; do
   summary+=("$wine: $line")
 done
 
-t=$(now)
 export RUSTC=/usr/bin/rustc RUSTDOC=/usr/bin/rustdoc RUSTC_BOOTSTRAP=1
 export CARGO_TARGET_DIR="$out/cargo"
-export CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER=x86_64-w64-mingw32-gcc
-export CARGO_TARGET_X86_64_PC_WINDOWS_GNU_RUNNER="$root/scripts/windows/wine-run.sh --rust x64 $out/x64 $prefix"
-log="$out/rust-unit-tests.log"
-status=0
-(cd "$root" && /usr/bin/cargo test --release --lib -q -Zbuild-std=std,panic_unwind \
-  --target x86_64-pc-windows-gnu) >"$log" 2>&1 || status=$?
-line=$(grep -E '^test result:' "$log" || true)
-step "Rust unit tests, build and wine64" $(($(now) - t))
-if [ $status -ne 0 ] || [ "$(grep -c . <<<"$line")" -ne 1 ] || ! grep -q '^test result: ok\. [0-9]* passed; 0 failed' <<<"$line"; then
-  cat "$log"
-  echo "test.sh: the Rust unit tests failed under wine64" >&2
-  exit 1
-fi
-summary+=("wine64: Rust unit tests: $line")
+for arch in x64 x86; do
+  t=$(now)
+  case $arch in
+    x64) triple=x86_64-pc-windows-gnu; mingw=x86_64-w64-mingw32; wine=wine64 ;;
+    x86) triple=i686-pc-windows-gnu; mingw=i686-w64-mingw32; wine=wine32 ;;
+  esac
+  var=$(echo "$triple" | tr 'a-z-' 'A-Z_')
+  export "CARGO_TARGET_${var}_LINKER=$mingw-gcc"
+  export "CARGO_TARGET_${var}_RUNNER=$root/scripts/windows/wine-run.sh --rust $arch $out/$arch $prefix"
+  # The startup objects build.sh made for i686.
+  [ $arch = x64 ] || export "CARGO_TARGET_${var}_RUSTFLAGS=-L native=$out/rtstartup/$triple"
+  log="$out/rust-unit-tests-$arch.log"
+  status=0
+  (cd "$root" && /usr/bin/cargo test --release --lib -q -Zbuild-std=std,panic_unwind \
+    --target "$triple") >"$log" 2>&1 || status=$?
+  line=$(grep -E '^test result:' "$log" || true)
+  step "Rust unit tests, build and $wine" $(($(now) - t))
+  if [ $status -ne 0 ] || [ "$(grep -c . <<<"$line")" -ne 1 ] ||
+     ! grep -q '^test result: ok\. [0-9]* passed; 0 failed' <<<"$line"; then
+    cat "$log"
+    echo "test.sh: the Rust unit tests failed under $wine" >&2
+    exit 1
+  fi
+  summary+=("$wine: Rust unit tests: $line")
+done
 
 echo "Windows tests:"
 printf '  %s\n' "${summary[@]}"
