@@ -1,16 +1,22 @@
 # The two commands of the README:
 #   make example   run a vendor-style sample program (GeneralMotion) on the virtual card
 #   make test      build everything and run every test (Rust, C, C++, headers, bindings)
+# and for Windows (README, "Windows"):
+#   make windows        the Windows DLLs, x64 and x86, in $(BUILD)/windows/
+#   make windows-test   those DLLs tested under Wine (C/C++ programs, Rust unit tests)
 BUILD ?= build
 EXAMPLE ?= GeneralMotion
 # The example runs on the fast virtual clock unless told otherwise (MCCL_CLOCK=realtime).
 MCCL_CLOCK ?= fast
 export MCCL_CLOCK
 
-.PHONY: deps build example test bench headers docs-image docs-panel docs-mc3b mc3b-demo clean fuzz vendor-record
+.PHONY: deps deps-windows build example test windows windows-test bench headers docs-image docs-panel docs-mc3b mc3b-demo clean fuzz vendor-record
 
 deps:
 	@scripts/install-deps.sh
+
+deps-windows:
+	@scripts/install-deps.sh --windows
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
@@ -28,6 +34,13 @@ example: build
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure
+
+# The same from CMake: cmake --build $(BUILD) --target windows.
+windows: deps-windows
+	scripts/windows/build.sh $(BUILD)/windows
+
+windows-test: windows
+	scripts/windows/test.sh $(BUILD)/windows $(BUILD)/cargo
 
 # Performance numbers of the engine (not a test).
 bench:

@@ -246,7 +246,7 @@ static ISR_HIST: AtomicPtr<LatencyHistogram> = AtomicPtr::new(std::ptr::null_mut
 static ENGINE_CPU: AtomicI32 = AtomicI32::new(-1);
 static ENGINE_STALLED: AtomicBool = AtomicBool::new(false);
 
-unsafe extern "C" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
+unsafe extern "system" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
     let now = mono_ns();
     let (s, h) = (
         SHARED.load(Ordering::Acquire),

@@ -7,7 +7,8 @@
 #include "mcl.h"
 #include "MCCL_Sim.h"
 
-static void isr(ENCINT *p) { (void)p; }
+/* A routine has the library's calling convention (stdcall on 32-bit Windows). */
+static void MCC_CALLBACK isr(ENCINT *p) { (void)p; }
 
 int smoke(void);
 int smoke(void)

@@ -4,6 +4,12 @@
 #include "mcl.h"
 #include "check.h"
 
+/* The C runtime of Windows names POSIX's setenv _putenv_s (it also sets the process's
+ * environment, which the library reads). */
+#ifdef _WIN32
+#define setenv(name, value, overwrite) _putenv_s(name, value)
+#endif
+
 int main(void)
 {
     int version = -1, n = -1, status = -1;

@@ -1,7 +1,7 @@
 /* trace_events.c: the events file beside MCCL_TRACE (issue 15). A 1 ms card runs a line
  * that is held, continued and aborted, a bad arc records an error that is cleared, and
  * the emergency-stop input stops a second line. Each expected line is derived by hand
- * below. C99 + POSIX setenv. */
+ * below. C99 + POSIX setenv (_putenv_s on Windows). */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +10,12 @@
 #include "MCCL_Fun.h"
 #include "MCCL_Sim.h"
 #include "check.h"
+
+/* The C runtime of Windows names POSIX's setenv _putenv_s (it also sets the process's
+ * environment, which the library reads). */
+#ifdef _WIN32
+#define setenv(name, value, overwrite) _putenv_s(name, value)
+#endif
 
 static char events[65536];
 

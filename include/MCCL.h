@@ -6,6 +6,9 @@
 #define MCCL_H_LIBMCCLPCI_IMP
 
 #include <stdint.h>
+#if defined(_WIN32)
+#include <windows.h>
+#endif
 
 #ifndef MCC_CALLBACK
 #if defined(_WIN32)
@@ -17,9 +20,14 @@
 
 #define MULTI_CARD_SUPPORT
 
-/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems
- * than Windows the calling convention keywords mean nothing. */
-#if !defined(_WIN32)
+/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on Windows MSVC's
+ * spelling of __stdcall (which GCC in strict ISO mode does not know), on other systems
+ * than Windows a calling convention keyword that means nothing. */
+#if defined(_WIN32)
+#ifndef _stdcall
+#define _stdcall __stdcall
+#endif
+#else
 #ifndef _stdcall
 #define _stdcall
 #endif
@@ -126,6 +134,9 @@
 
 #define GROUP_RAN_OUT_ERR (-16)
 
+/* On Windows the base types are those of <windows.h> (included above), as in the
+ * vendor's header. */
+#if !defined(_WIN32)
 typedef uint16_t WORD;
 
 typedef uint8_t BYTE;
@@ -133,6 +144,7 @@ typedef uint8_t BYTE;
 typedef uint32_t DWORD;
 
 typedef int BOOL;
+#endif
 
 typedef double (MCC_CALLBACK *CUSTOM_START_MOTION)(int, int, int, BOOL, const double*, void*);
 

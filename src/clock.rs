@@ -5,11 +5,12 @@
 //!   (absolute deadlines, never a relative sleep). A tick that starts a whole period or
 //!   more after its deadline is counted as missed; the engine then catches up back to
 //!   back, so virtual time never silently drifts from real time. The engine thread
-//!   sleeps with `clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME)` straight to the
-//!   deadline (in slices of at most [`STOP_SLICE`], so that `stop` is seen promptly),
-//!   takes no lock and makes no other system call on the way to a tick, and counts how
-//!   late each tick started ([`Clock::lateness`]). Optionally (`MCCL_RT_SPIN_US`, off by
-//!   default) it wakes a little early and spins on the clock up to the deadline.
+//!   sleeps straight to the deadline ([`sleep_until_ns`]: `clock_nanosleep(CLOCK_MONOTONIC,
+//!   TIMER_ABSTIME)` on Linux, a high-resolution waitable timer on Windows), in slices
+//!   of at most [`STOP_SLICE`] so that `stop` is seen promptly, takes no lock and makes
+//!   no other system call on the way to a tick, and counts how late each tick started
+//!   ([`Clock::lateness`]). Optionally (`MCCL_RT_SPIN_US`, off by default) it wakes a
+//!   little early and spins on the clock up to the deadline.
 //! * `fast` and `stepped`: virtual time runs only while the program waits, back to back
 //!   as fast as the CPU allows, so a program always sees the same sequence of states
 //!   whatever the machine's load. `MCC_TimeDelay(ms)` runs exactly the ticks covering
@@ -114,71 +115,18 @@ enum Source {
     Fake(std::sync::Arc<tests::FakeTime>),
 }
 
-/// Now on the monotonic clock, ns (the clock `Instant` reads on Linux). CLOCK_MONOTONIC
-/// always exists; were the call to fail, this reads 0.
-pub fn monotonic_ns() -> u64 {
-    clock_ns(libc::CLOCK_MONOTONIC).unwrap_or(0)
-}
+/// Now on the monotonic clock, ns ([`crate::platform::monotonic_ns`]).
+pub use crate::platform::monotonic_ns;
 
-/// Now on a monotonic clock that may lag by up to a scheduler tick (1–10 ms), ns: for
-/// spacing things tens of ms apart. Reading it costs a fifth of [`monotonic_ns`] (about
-/// 6.5 ns against 32 ns on the development VM), which matters to a tick of 0.1 µs. Where
-/// there is no coarse clock (or it fails) it is [`monotonic_ns`]: the same time base.
-pub(crate) fn coarse_monotonic_ns() -> u64 {
-    // CLOCK_MONOTONIC_COARSE exists on every Linux since 2.6.32.
-    #[cfg(any(target_os = "linux", target_os = "android"))]
-    if let Some(ns) = clock_ns(libc::CLOCK_MONOTONIC_COARSE) {
-        return ns;
-    }
-    monotonic_ns()
-}
+/// Now on a monotonic clock that may lag by up to a scheduler tick, ns, on the time base
+/// of [`monotonic_ns`] ([`crate::platform::coarse_monotonic_ns`]): for spacing things tens
+/// of ms apart. Reading it costs a fifth of [`monotonic_ns`] on Linux (about 6.5 ns
+/// against 32 ns on the development VM), which matters to a tick of 0.1 µs.
+pub(crate) use crate::platform::coarse_monotonic_ns;
 
-/// Now on clock `id`, ns (`None` if the call fails). The monotonic clocks are answered by
-/// the vDSO, without a system call.
-#[inline]
-fn clock_ns(id: libc::clockid_t) -> Option<u64> {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid, writable timespec; an unknown clock only makes the call
-    // fail.
-    if unsafe { libc::clock_gettime(id, &mut ts) } != 0 {
-        return None;
-    }
-    let s = u64::try_from(ts.tv_sec).unwrap_or(0);
-    let ns = u64::try_from(ts.tv_nsec).unwrap_or(0);
-    Some(s.saturating_mul(1_000_000_000).saturating_add(ns))
-}
-
-/// Sleeps until `ns` on the monotonic clock (absolute: a late wake-up does not push the
-/// next deadline). Returns early on a signal; the caller checks the time again.
-pub fn sleep_until_ns(ns: u64) {
-    #[cfg(any(target_os = "linux", target_os = "android", target_os = "freebsd"))]
-    {
-        let ts = libc::timespec {
-            tv_sec: libc::time_t::try_from(ns / 1_000_000_000).unwrap_or(libc::time_t::MAX),
-            tv_nsec: libc::c_long::try_from(ns % 1_000_000_000).unwrap_or(0),
-        };
-        // SAFETY: `ts` is a valid timespec; with TIMER_ABSTIME the remainder pointer is
-        // not used, so NULL is allowed. An interrupted sleep (EINTR) just returns.
-        unsafe {
-            libc::clock_nanosleep(
-                libc::CLOCK_MONOTONIC,
-                libc::TIMER_ABSTIME,
-                &ts,
-                std::ptr::null_mut(),
-            )
-        };
-    }
-    #[cfg(not(any(target_os = "linux", target_os = "android", target_os = "freebsd")))]
-    {
-        let now = monotonic_ns();
-        if ns > now {
-            std::thread::sleep(Duration::from_nanos(ns - now));
-        }
-    }
-}
+/// Sleeps until `ns` on the monotonic clock, an absolute deadline
+/// ([`crate::platform::sleep_until_ns`]).
+pub use crate::platform::sleep_until_ns;
 
 impl Source {
     fn now_ns(&self) -> u64 {

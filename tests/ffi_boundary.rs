@@ -1,11 +1,12 @@
-//! Every exported `extern "C"` function of `src/ffi` enters the panic boundary: its body
+//! Every exported function of `src/ffi` (`extern "system"`, the vendor's calling
+//! convention, or `extern "C"`) enters the panic boundary: its body
 //! is exactly one `ffi_boundary! { ... }` (src/ffi/mod.rs), so no panic can cross the C
 //! boundary and every error maps to a vendor code the same way. A body that calls a
 //! helper which enters the boundary somewhere else is refused too: the boundary must be
 //! visible where the function is exported.
 //!
-//! A family of entry points declared by a `macro_rules!` macro (`pub extern "C" fn $name`
-//! in its expansion) is checked in the macro, once for all its members, and its members
+//! A family of entry points declared by a `macro_rules!` macro (`pub extern "system" fn
+//! $name` in its expansion) is checked in the macro, once for all its members, and its members
 //! are counted from the macro's invocations, so the scan accounts for every vendor
 //! function: written out or made by a macro, 345 `MCC_*` names (docs/functions.md).
 
@@ -50,11 +51,23 @@ fn matching(s: &[u8], open: usize) -> Option<usize> {
     None
 }
 
-/// The next `extern "C" fn` at or after byte `from` of `src`: the byte after its
+/// How an exported function begins, for each calling convention the library exports.
+const EXTERN_FNS: [&str; 2] = ["extern \"system\" fn ", "extern \"C\" fn "];
+
+/// Where the first exported-function keywords ([`EXTERN_FNS`]) of `s` are, and their
+/// length.
+fn find_extern_fn(s: &str) -> Option<(usize, usize)> {
+    EXTERN_FNS
+        .iter()
+        .filter_map(|k| s.find(k).map(|at| (at, k.len())))
+        .min()
+}
+
+/// The next `extern "..." fn` at or after byte `from` of `src`: the byte after its
 /// `fn `, and its name (`$name` in a family macro's expansion).
 fn next_extern_fn(src: &str, from: usize) -> Option<(usize, String)> {
-    const KEYWORDS: &str = "extern \"C\" fn ";
-    let start = from + src[from..].find(KEYWORDS)? + KEYWORDS.len();
+    let (at, len) = find_extern_fn(&src[from..])?;
+    let start = from + at + len;
     let name = src[start..]
         .chars()
         .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '$')
@@ -96,7 +109,7 @@ fn offenders(src: &str) -> (usize, Vec<String>) {
 }
 
 /// The family macros of a file: those whose expansion exports a function
-/// (`extern "C" fn $name`).
+/// (`extern "system" fn $name`).
 fn family_macros(src: &str) -> Vec<String> {
     let b = src.as_bytes();
     let mut out = Vec::new();
@@ -109,7 +122,10 @@ fn family_macros(src: &str) -> Vec<String> {
             .collect();
         let open = start + src[start..].find('{').expect("a macro body");
         let end = matching(b, open).expect("a closed macro body");
-        if src[open..end].contains("extern \"C\" fn $") {
+        if EXTERN_FNS
+            .iter()
+            .any(|k| src[open..end].contains(&format!("{k}$")))
+        {
             out.push(name);
         }
         from = end;
@@ -117,7 +133,8 @@ fn family_macros(src: &str) -> Vec<String> {
     out
 }
 
-/// The names of the functions a file exports: those written out (`extern "C" fn MCC_X`)
+/// The names of the functions a file exports: those written out (`extern "system" fn
+/// MCC_X`)
 /// and the members of the family macros `families` invoked in it, the `MCC_*`/`MCCL_*`
 /// names in each invocation (comments left out).
 fn exported_names(src: &str, families: &[String]) -> Vec<String> {
@@ -205,6 +222,8 @@ fn the_scan_refuses_a_body_outside_the_boundary() {
     let ok = "pub extern \"C\" fn A(x: u16) -> c_int { ffi_boundary! { f(x, '{') } }";
     let helper = "pub extern \"C\" fn B(x: u16) -> c_int { helper(x) }";
     let after = "pub extern \"C\" fn C() -> c_int { ffi_boundary! { f() }; g() }";
+    let stdcall = "pub extern \"system\" fn D() -> c_int { helper() }";
+    assert_eq!(offenders(stdcall), (1, vec!["D".to_string()]));
     assert_eq!(offenders(ok), (1, vec![]));
     assert_eq!(offenders(helper), (1, vec!["B".to_string()]));
     assert_eq!(offenders(after), (1, vec!["C".to_string()]));
@@ -216,7 +235,7 @@ fn the_scan_checks_and_counts_family_macros() {
         ($($(#[$doc:meta])* $name:ident => $v:expr;)*) => {$(
             $(#[$doc])*
             #[no_mangle]
-            pub extern \"C\" fn $name(w: u16) -> c_int { ffi_boundary! { f(w, $v) } }
+            pub extern \"system\" fn $name(w: u16) -> c_int { ffi_boundary! { f(w, $v) } }
         )*};
     }
     fam! {

@@ -1,5 +1,5 @@
 //! Custom motion through the C entry points (`MCC_CustomMotion`, `MCC_CustomMotionEx`,
-//! `MCC_InfiniteMotion`), with Rust `extern "C"` callbacks, under the stepped and fast
+//! `MCC_InfiniteMotion`), with Rust `extern "system"` callbacks, under the stepped and fast
 //! clocks.
 //!
 //! Timing (docs/compatibility.md, "Custom motion"): the command is taken from the queue at
@@ -162,7 +162,7 @@ fn prog<'a>(buf: *mut c_void) -> &'a Prog {
     unsafe { &*(buf as *const Prog) }
 }
 
-extern "C" fn on_start(
+extern "system" fn on_start(
     _g: c_int,
     n: c_int,
     _i: c_int,
@@ -225,7 +225,7 @@ fn interp_common(
     c_int::from(dist <= p.stop_after)
 }
 
-extern "C" fn on_interp(
+extern "system" fn on_interp(
     g: c_int,
     _n: c_int,
     _i: c_int,
@@ -239,7 +239,7 @@ extern "C" fn on_interp(
     interp_common(g, cur, dist, tot, next, buf, false)
 }
 
-extern "C" fn on_infinite(
+extern "system" fn on_infinite(
     g: c_int,
     _n: c_int,
     _i: c_int,
@@ -259,11 +259,11 @@ extern "C" fn on_infinite(
     r
 }
 
-extern "C" fn on_cleanup(_g: c_int, _i: c_int, buf: *mut c_void) {
+extern "system" fn on_cleanup(_g: c_int, _i: c_int, buf: *mut c_void) {
     prog(buf).log.lock().cleanups += 1;
 }
 
-extern "C" fn on_blend_start(
+extern "system" fn on_blend_start(
     _g: c_int,
     _n: c_int,
     _i: c_int,
@@ -284,7 +284,7 @@ extern "C" fn on_blend_start(
     1
 }
 
-extern "C" fn on_blend(
+extern "system" fn on_blend(
     g: c_int,
     _n: c_int,
     _i: c_int,
@@ -299,7 +299,7 @@ extern "C" fn on_blend(
     interp_common(g, cur, dist, tot, next, buf, true)
 }
 
-extern "C" fn on_blend_end(_g: c_int, _i: c_int, buf: *mut c_void) -> c_int {
+extern "system" fn on_blend_end(_g: c_int, _i: c_int, buf: *mut c_void) -> c_int {
     prog(buf).log.lock().blend_ends += 1;
     1
 }

@@ -213,7 +213,7 @@ fn moving_average_of_five_positions() {
 
 static CYCLES: AtomicU64 = AtomicU64::new(0);
 
-extern "C" fn count_cycle() {
+extern "system" fn count_cycle() {
     CYCLES.fetch_add(1, Ordering::SeqCst);
 }
 
@@ -245,7 +245,7 @@ static LAST_TIME: AtomicI32 = AtomicI32::new(-2);
 const FWD: i32 = 300;
 const BACK: i32 = 120;
 
-extern "C" fn retract(group: c_int, cmd: c_int, time: c_int, buf: *mut c_void) -> c_int {
+extern "system" fn retract(group: c_int, cmd: c_int, time: c_int, buf: *mut c_void) -> c_int {
     assert!(group == 0 && buf.is_null());
     let c = CALLS.fetch_add(1, Ordering::SeqCst) + 1;
     LAST_CMD.store(cmd, Ordering::SeqCst);
@@ -313,7 +313,7 @@ fn reverse_interpolation_retraces_the_path_exactly() {
 
 static DECISION: AtomicI32 = AtomicI32::new(1);
 
-extern "C" fn steer(_g: c_int, _c: c_int, _t: c_int, _b: *mut c_void) -> c_int {
+extern "system" fn steer(_g: c_int, _c: c_int, _t: c_int, _b: *mut c_void) -> c_int {
     DECISION.load(Ordering::SeqCst)
 }
 

@@ -557,7 +557,7 @@ static ORDER_LOG: Mutex<Vec<(u8, char, Vec<u8>)>> = Mutex::new(Vec::new());
 
 macro_rules! order_cb {
     ($name:ident, $t:ty, $card:expr, $tag:expr) => {
-        unsafe extern "C" fn $name(p: *mut $t) {
+        unsafe extern "system" fn $name(p: *mut $t) {
             // SAFETY: the library passes a valid struct for the call's duration.
             let s = unsafe { *p };
             let bytes = (0..std::mem::size_of::<$t>())
@@ -612,13 +612,13 @@ fn delivery_order_is_card_then_lio_enc_pcl_adc_tmr_rio_hsk() {
         ),
     ] {
         let (l, e, p, a, t, r, h): (
-            unsafe extern "C" fn(*mut LIOINT),
-            unsafe extern "C" fn(*mut ENCINT),
-            unsafe extern "C" fn(*mut PCLINT),
-            unsafe extern "C" fn(*mut ADCINT),
-            unsafe extern "C" fn(*mut TMRINT),
-            unsafe extern "C" fn(*mut RIOINT),
-            unsafe extern "C" fn(*mut HSKINT),
+            unsafe extern "system" fn(*mut LIOINT),
+            unsafe extern "system" fn(*mut ENCINT),
+            unsafe extern "system" fn(*mut PCLINT),
+            unsafe extern "system" fn(*mut ADCINT),
+            unsafe extern "system" fn(*mut TMRINT),
+            unsafe extern "system" fn(*mut RIOINT),
+            unsafe extern "system" fn(*mut HSKINT),
         ) = (l, e, p, a, t, r, h);
         assert_eq!(MCC_SetLIORoutineEx(Some(l), card), NO_ERR);
         assert_eq!(MCC_SetENCRoutine(Some(e), card), NO_ERR);
@@ -691,7 +691,7 @@ fn delivery_order_is_card_then_lio_enc_pcl_adc_tmr_rio_hsk() {
 static TMR_CALLS: AtomicU32 = AtomicU32::new(0);
 static TMR_SUM: AtomicU32 = AtomicU32::new(0);
 
-unsafe extern "C" fn tmr_count(p: *mut TMRINT) {
+unsafe extern "system" fn tmr_count(p: *mut TMRINT) {
     TMR_CALLS.fetch_add(1, SeqCst);
     // SAFETY: valid for the call.
     TMR_SUM.fetch_add(u32::from(unsafe { (*p).TIMER }), SeqCst);
@@ -849,7 +849,7 @@ static ADC_COMP0: AtomicU32 = AtomicU32::new(0);
 static ADC_CONV: AtomicU32 = AtomicU32::new(0);
 static ADC_TAG: AtomicU32 = AtomicU32::new(0);
 
-unsafe extern "C" fn adc_count(p: *mut ADCINT) {
+unsafe extern "system" fn adc_count(p: *mut ADCINT) {
     // SAFETY: valid for the call.
     let s = unsafe { *p };
     if s.COMP0 != 0 {
@@ -964,7 +964,7 @@ fn adc_comparator_counts_crossings_of_the_dac_wired_to_it() {
 
 static RIO_BYTES: Mutex<Vec<[u8; 9]>> = Mutex::new(Vec::new());
 
-unsafe extern "C" fn rio_log(p: *mut RIOINT) {
+unsafe extern "system" fn rio_log(p: *mut RIOINT) {
     // SAFETY: the library passes 9 bytes (RIOINT and the driver's FAIL byte).
     let b: [u8; 9] = unsafe { *(p as *const [u8; 9]) };
     RIO_BYTES.lock().push(b);
@@ -1230,7 +1230,7 @@ static CB_ABORT_RET: AtomicU32 = AtomicU32::new(99);
 static CB_CLOSE_RET: AtomicU32 = AtomicU32::new(99);
 static CB_AFTER_CLOSE: AtomicBool = AtomicBool::new(false);
 
-unsafe extern "C" fn tmr_calls_in(_: *mut TMRINT) {
+unsafe extern "system" fn tmr_calls_in(_: *mut TMRINT) {
     if CB_AFTER_CLOSE.load(SeqCst) {
         // A tick after MCC_CloseSystem must not deliver.
         CB_TICKS.store(1_000_000, SeqCst);
@@ -1250,7 +1250,7 @@ unsafe extern "C" fn tmr_calls_in(_: *mut TMRINT) {
 
 static HSK_AFTER_CLOSE: AtomicU32 = AtomicU32::new(0);
 
-unsafe extern "C" fn hsk_after_close(_: *mut HSKINT) {
+unsafe extern "system" fn hsk_after_close(_: *mut HSKINT) {
     HSK_AFTER_CLOSE.fetch_add(1, SeqCst);
 }
 

@@ -149,7 +149,7 @@ use std::sync::atomic::{AtomicU32, Ordering::SeqCst};
 static HSK_CALLS: AtomicU32 = AtomicU32::new(0);
 static HSK_SUM: AtomicU32 = AtomicU32::new(0);
 
-unsafe extern "C" fn hsk_count(p: *mut HSKINT) {
+unsafe extern "system" fn hsk_count(p: *mut HSKINT) {
     HSK_CALLS.fetch_add(1, SeqCst);
     // SAFETY: valid for the call.
     HSK_SUM.fetch_add(u32::from(unsafe { (*p).HANDSHAKE }), SeqCst);

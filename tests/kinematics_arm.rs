@@ -46,7 +46,7 @@ static PRE: Mutex<Vec<([f64; 8], [f64; 8])>> = Mutex::new(Vec::new());
 const L1: f64 = 100.0;
 const L2: f64 = 80.0;
 
-unsafe extern "C" fn init_ext(p: *mut c_void) {
+unsafe extern "system" fn init_ext(p: *mut c_void) {
     // SAFETY: the library hands a zeroed buffer of size_of::<Ext>() bytes, 16-aligned.
     let e = unsafe { &mut *p.cast::<Ext>() };
     e.zero_at_init = u64::from(e.zero_at_init == 0 && e.l1 == 0.0 && e.l2 == 0.0);
@@ -85,7 +85,7 @@ fn inv(c: &[f64; 8], posture: DWORD, l: (f64, f64)) -> Option<[f64; 8]> {
     Some(q)
 }
 
-unsafe extern "C" fn fwd_cb(
+unsafe extern "system" fn fwd_cb(
     _g: c_int,
     n: c_int,
     from: *const f64,
@@ -101,7 +101,7 @@ unsafe extern "C" fn fwd_cb(
     1
 }
 
-unsafe extern "C" fn inv_cb(
+unsafe extern "system" fn inv_cb(
     g: c_int,
     n: c_int,
     from: *const f64,
@@ -133,7 +133,7 @@ unsafe extern "C" fn inv_cb(
     }
 }
 
-unsafe extern "C" fn pre_cb(
+unsafe extern "system" fn pre_cb(
     _g: c_int,
     _n: c_int,
     cur: *const f64,

@@ -29,11 +29,11 @@ use MCCLPCI_IMP::vendor::{BOOL, COMMAND_INFO, DWORD};
 
 static INITS: Mutex<u32> = Mutex::new(0);
 
-unsafe extern "C" fn init_ext(_p: *mut c_void) {
+unsafe extern "system" fn init_ext(_p: *mut c_void) {
     *INITS.lock() += 1;
 }
 
-unsafe extern "C" fn fwd_cb(
+unsafe extern "system" fn fwd_cb(
     _g: c_int,
     _n: c_int,
     from: *const f64,
@@ -52,7 +52,7 @@ unsafe extern "C" fn fwd_cb(
     1
 }
 
-unsafe extern "C" fn inv_cb(
+unsafe extern "system" fn inv_cb(
     _g: c_int,
     _n: c_int,
     _from: *const f64,
@@ -110,7 +110,7 @@ fn read(g: u16) -> Read {
 /// Every period: (group 0, group 1).
 static PERIODS: Mutex<Vec<(Read, Read)>> = Mutex::new(Vec::new());
 
-extern "C" fn cycle() {
+extern "system" fn cycle() {
     let r = (read(0), read(1));
     PERIODS.lock().push(r);
 }

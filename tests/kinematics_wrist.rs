@@ -43,7 +43,7 @@ fn inv(c: &[f64; 8]) -> [f64; 8] {
     q
 }
 
-unsafe extern "C" fn fwd_cb(
+unsafe extern "system" fn fwd_cb(
     _g: c_int,
     _n: c_int,
     from: *const f64,
@@ -56,7 +56,7 @@ unsafe extern "C" fn fwd_cb(
     1
 }
 
-unsafe extern "C" fn inv_cb(
+unsafe extern "system" fn inv_cb(
     _g: c_int,
     _n: c_int,
     from: *const f64,

@@ -23,7 +23,7 @@ static REINITS: AtomicU32 = AtomicU32::new(0);
 static REFUSED: AtomicU32 = AtomicU32::new(0);
 
 /// Re-initialises the system from the engine thread, on every call.
-unsafe extern "C" fn routine(_: *mut TMRINT) {
+unsafe extern "system" fn routine(_: *mut TMRINT) {
     match common::init(1) {
         NO_ERR => REINITS.fetch_add(1, Ordering::Relaxed),
         _ => REFUSED.fetch_add(1, Ordering::Relaxed),

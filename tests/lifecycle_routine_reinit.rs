@@ -22,7 +22,7 @@ static REINITS: AtomicU32 = AtomicU32::new(0);
 
 /// Every 5th call re-initialises the system from the engine thread; the others read a
 /// conversion factor (a call that takes the system lock).
-unsafe extern "C" fn routine(_: *mut TMRINT) {
+unsafe extern "system" fn routine(_: *mut TMRINT) {
     if CALLS.fetch_add(1, Ordering::Relaxed) % 5 == 4 {
         if common::init(1) == NO_ERR {
             REINITS.fetch_add(1, Ordering::Relaxed);

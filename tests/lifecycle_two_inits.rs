@@ -14,7 +14,7 @@ use MCCLPCI_IMP::vendor::TMRINT;
 
 static CALLS: AtomicU32 = AtomicU32::new(0);
 
-unsafe extern "C" fn routine(_: *mut TMRINT) {
+unsafe extern "system" fn routine(_: *mut TMRINT) {
     CALLS.fetch_add(1, Ordering::Relaxed);
     let _ = MCC_GetConvFactor(0, 0);
 }

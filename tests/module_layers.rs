@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 
 /// The layers, bottom up. A module may use the modules listed before it.
 const LAYERS: &[&str] = &[
+    "platform",     // what differs between the operating systems
     "vendor",       // the vendor's typedefs, constants, structs, callback types
     "error",        // return codes
     "error_record", // the 0xF... error records

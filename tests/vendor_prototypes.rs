@@ -50,10 +50,19 @@ use MCCLPCI_IMP::vendor::{
 #[test]
 fn every_vendor_function_has_the_vendor_signature() {
     // System Management
-    let _: unsafe extern "C" fn(*mut c_char) = MCC_GetVersion;
-    let _: extern "C" fn(c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int) -> c_int =
-        MCC_CreateGroup;
-    let _: extern "C" fn(
+    let _: unsafe extern "system" fn(*mut c_char) = MCC_GetVersion;
+    let _: extern "system" fn(
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+    ) -> c_int = MCC_CreateGroup;
+    let _: extern "system" fn(
         c_int,
         c_int,
         c_int,
@@ -65,65 +74,66 @@ fn every_vendor_function_has_the_vendor_signature() {
         c_int,
         c_int,
     ) -> c_int = MCC_CreateGroupEx;
-    let _: extern "C" fn(c_int) -> c_int = MCC_CloseGroup;
-    let _: extern "C" fn() -> c_int = MCC_CloseAllGroups;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetComposeAxis;
-    let _: extern "C" fn(HSKISR, WORD) -> c_int = MCC_SetHSKRoutine;
-    let _: extern "C" fn(WORD) -> c_int = MCC_HostInterrupt;
-    let _: extern "C" fn(WORD) -> c_int = MCC_SlaveInterrupt;
-    let _: unsafe extern "C" fn(*mut SYS_MAC_PARAM, WORD, WORD) -> c_int = MCC_SetMacParam;
-    let _: unsafe extern "C" fn(*mut SYS_MAC_PARAM, WORD, WORD) -> c_int = MCC_GetMacParam;
-    let _: unsafe extern "C" fn(*mut SYS_ENCODER_CONFIG, WORD, WORD) -> c_int =
+    let _: extern "system" fn(c_int) -> c_int = MCC_CloseGroup;
+    let _: extern "system" fn() -> c_int = MCC_CloseAllGroups;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetComposeAxis;
+    let _: extern "system" fn(HSKISR, WORD) -> c_int = MCC_SetHSKRoutine;
+    let _: extern "system" fn(WORD) -> c_int = MCC_HostInterrupt;
+    let _: extern "system" fn(WORD) -> c_int = MCC_SlaveInterrupt;
+    let _: unsafe extern "system" fn(*mut SYS_MAC_PARAM, WORD, WORD) -> c_int = MCC_SetMacParam;
+    let _: unsafe extern "system" fn(*mut SYS_MAC_PARAM, WORD, WORD) -> c_int = MCC_GetMacParam;
+    let _: unsafe extern "system" fn(*mut SYS_ENCODER_CONFIG, WORD, WORD) -> c_int =
         MCC_SetEncoderConfig;
-    let _: unsafe extern "C" fn(*mut SYS_ENCODER_CONFIG, WORD, WORD) -> c_int =
+    let _: unsafe extern "system" fn(*mut SYS_ENCODER_CONFIG, WORD, WORD) -> c_int =
         MCC_GetEncoderConfig;
-    let _: extern "C" fn() -> c_int = MCC_UpdateParam;
-    let _: extern "C" fn(WORD, WORD) -> f64 = MCC_GetConvFactor;
-    let _: extern "C" fn(INTERP, WORD) -> c_int = MCC_SetReverseInterpRoutine;
-    let _: extern "C" fn(BOOL, WORD) -> c_int = MCC_EnableReverseInterp;
-    let _: extern "C" fn(c_int, WORD) -> c_int = MCC_SetCmdQueueSize;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetCmdQueueSize;
-    let _: unsafe extern "C" fn(c_int, *mut SYS_CARD_CONFIG, WORD) -> c_int = MCC_InitSystem;
-    let _: unsafe extern "C" fn(f64, *mut SYS_CARD_CONFIG, WORD) -> c_int = MCC_InitSystemEx;
-    let _: unsafe extern "C" fn(c_int, *mut SYS_CARD_CONFIG, WORD) -> c_int = MCC_InitSimulation;
-    let _: extern "C" fn() -> c_int = MCC_CloseSystem;
-    let _: extern "C" fn() -> c_int = MCC_ResetMotion;
-    let _: extern "C" fn() -> c_int = MCC_EnableDryRun;
-    let _: extern "C" fn() -> c_int = MCC_DisableDryRun;
-    let _: extern "C" fn() -> c_int = MCC_CheckDryRun;
-    let _: extern "C" fn(f64) -> c_int = MCC_SetSysMaxSpeed;
-    let _: extern "C" fn() -> f64 = MCC_GetSysMaxSpeed;
+    let _: extern "system" fn() -> c_int = MCC_UpdateParam;
+    let _: extern "system" fn(WORD, WORD) -> f64 = MCC_GetConvFactor;
+    let _: extern "system" fn(INTERP, WORD) -> c_int = MCC_SetReverseInterpRoutine;
+    let _: extern "system" fn(BOOL, WORD) -> c_int = MCC_EnableReverseInterp;
+    let _: extern "system" fn(c_int, WORD) -> c_int = MCC_SetCmdQueueSize;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetCmdQueueSize;
+    let _: unsafe extern "system" fn(c_int, *mut SYS_CARD_CONFIG, WORD) -> c_int = MCC_InitSystem;
+    let _: unsafe extern "system" fn(f64, *mut SYS_CARD_CONFIG, WORD) -> c_int = MCC_InitSystemEx;
+    let _: unsafe extern "system" fn(c_int, *mut SYS_CARD_CONFIG, WORD) -> c_int =
+        MCC_InitSimulation;
+    let _: extern "system" fn() -> c_int = MCC_CloseSystem;
+    let _: extern "system" fn() -> c_int = MCC_ResetMotion;
+    let _: extern "system" fn() -> c_int = MCC_EnableDryRun;
+    let _: extern "system" fn() -> c_int = MCC_DisableDryRun;
+    let _: extern "system" fn() -> c_int = MCC_CheckDryRun;
+    let _: extern "system" fn(f64) -> c_int = MCC_SetSysMaxSpeed;
+    let _: extern "system" fn() -> f64 = MCC_GetSysMaxSpeed;
     // Local I/O Control
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetServoOn;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetServoOff;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnablePosReady;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisablePosReady;
-    let _: unsafe extern "C" fn(*mut WORD, WORD) -> c_int = MCC_GetEmgcStopStatus;
-    let _: extern "C" fn(LIOISR, WORD) -> c_int = MCC_SetLIORoutine;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTriggerType;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableLIOTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableLIOTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetLedLightOn;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetLedLightOff;
-    let _: unsafe extern "C" fn(WORD, *mut WORD, WORD) -> c_int = MCC_GetLedLightStatus;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLedTrigOutEnable;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLedTrigOutValue;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLedTrigOutSource;
-    let _: extern "C" fn(DWORD, DWORD, WORD) -> c_int = MCC_SetLIOTrigOutValueEx;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTrigOutEnable;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTrigOutValue;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTrigOutSource;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetLIOTrigOutPeriod;
-    let _: unsafe extern "C" fn(*mut WORD, WORD) -> c_int = MCC_GetLIOCompStockCount;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EraseLIOCompValue;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetLimitFilterClk;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetHomeFilterClk;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetGpioFilterClk;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetServoOn;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetServoOff;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnablePosReady;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisablePosReady;
+    let _: unsafe extern "system" fn(*mut WORD, WORD) -> c_int = MCC_GetEmgcStopStatus;
+    let _: extern "system" fn(LIOISR, WORD) -> c_int = MCC_SetLIORoutine;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTriggerType;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableLIOTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableLIOTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetLedLightOn;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetLedLightOff;
+    let _: unsafe extern "system" fn(WORD, *mut WORD, WORD) -> c_int = MCC_GetLedLightStatus;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLedTrigOutEnable;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLedTrigOutValue;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLedTrigOutSource;
+    let _: extern "system" fn(DWORD, DWORD, WORD) -> c_int = MCC_SetLIOTrigOutValueEx;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTrigOutEnable;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTrigOutValue;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetLIOTrigOutSource;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetLIOTrigOutPeriod;
+    let _: unsafe extern "system" fn(*mut WORD, WORD) -> c_int = MCC_GetLIOCompStockCount;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EraseLIOCompValue;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetLimitFilterClk;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetHomeFilterClk;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetGpioFilterClk;
     // Coordinate Management
-    let _: extern "C" fn(WORD) -> c_int = MCC_SetAbsolute;
-    let _: extern "C" fn(WORD) -> c_int = MCC_SetIncrease;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetCoordType;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(WORD) -> c_int = MCC_SetAbsolute;
+    let _: extern "system" fn(WORD) -> c_int = MCC_SetIncrease;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetCoordType;
+    let _: unsafe extern "system" fn(
         *mut f64,
         *mut f64,
         *mut f64,
@@ -134,7 +144,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut f64,
         WORD,
     ) -> c_int = MCC_GetCurRefPos;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut f64,
         *mut f64,
         *mut f64,
@@ -145,7 +155,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut f64,
         WORD,
     ) -> c_int = MCC_GetCurPos;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut c_long,
         *mut c_long,
         *mut c_long,
@@ -156,7 +166,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_long,
         WORD,
     ) -> c_int = MCC_GetPulsePos;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut c_longlong,
         *mut c_longlong,
         *mut c_longlong,
@@ -167,15 +177,24 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_longlong,
         WORD,
     ) -> c_int = MCC_GetPulsePosEx;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DefineOrigin;
-    let _: extern "C" fn(WORD, f64, WORD) -> c_int = MCC_DefinePos;
-    let _: extern "C" fn(WORD, DWORD) -> c_int = MCC_DefinePosHere;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DefineOrigin;
+    let _: extern "system" fn(WORD, f64, WORD) -> c_int = MCC_DefinePos;
+    let _: extern "system" fn(WORD, DWORD) -> c_int = MCC_DefinePosHere;
     // Software Over Travel Check & Hardware Limit Switch Check
-    let _: extern "C" fn(c_int) -> c_int = MCC_EnableLimitSwitchCheck;
-    let _: extern "C" fn() -> c_int = MCC_DisableLimitSwitchCheck;
-    let _: extern "C" fn(c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int, WORD) -> c_int =
-        MCC_SetOverTravelCheck;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(c_int) -> c_int = MCC_EnableLimitSwitchCheck;
+    let _: extern "system" fn() -> c_int = MCC_DisableLimitSwitchCheck;
+    let _: extern "system" fn(
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        WORD,
+    ) -> c_int = MCC_SetOverTravelCheck;
+    let _: unsafe extern "system" fn(
         *mut c_int,
         *mut c_int,
         *mut c_int,
@@ -186,23 +205,24 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_int,
         WORD,
     ) -> c_int = MCC_GetOverTravelCheck;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetLimitSwitchStatus;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD, WORD) -> c_int =
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD, WORD) -> c_int =
+        MCC_GetLimitSwitchStatus;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD, WORD) -> c_int =
         MCC_GetLatchedLimitSwitchStatus;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_ClearLatchedLimitSwitchStatus;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_ClearLatchedLimitSwitchStatus;
     // General Motions(Line, Arc, Circle Motions)
-    let _: extern "C" fn(c_char, WORD) -> c_int = MCC_SetAccType;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetAccType;
-    let _: extern "C" fn(c_char, WORD) -> c_int = MCC_SetDecType;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetDecType;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_SetAccTime;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetAccTime;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_SetDecTime;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetDecTime;
-    let _: extern "C" fn(f64, WORD) -> f64 = MCC_SetFeedSpeed;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetFeedSpeed;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetCurFeedSpeed;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(c_char, WORD) -> c_int = MCC_SetAccType;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetAccType;
+    let _: extern "system" fn(c_char, WORD) -> c_int = MCC_SetDecType;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetDecType;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_SetAccTime;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetAccTime;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_SetDecTime;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetDecTime;
+    let _: extern "system" fn(f64, WORD) -> f64 = MCC_SetFeedSpeed;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetFeedSpeed;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetCurFeedSpeed;
+    let _: unsafe extern "system" fn(
         *mut f64,
         *mut f64,
         *mut f64,
@@ -213,56 +233,73 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut f64,
         WORD,
     ) -> c_int = MCC_GetSpeed;
-    let _: extern "C" fn(f64, WORD) -> f64 = MCC_SetPtPSpeed;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetPtPSpeed;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int = MCC_PtP;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int =
+    let _: extern "system" fn(f64, WORD) -> f64 = MCC_SetPtPSpeed;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetPtPSpeed;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int =
+        MCC_PtP;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int =
         MCC_SyncPtP;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPX;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPY;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPZ;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPU;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPV;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPW;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPA;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_PtPB;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int = MCC_Line;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, WORD) -> c_int = MCC_ArcXYZ;
-    let _: extern "C" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_ArcXY;
-    let _: extern "C" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_ArcYZ;
-    let _: extern "C" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_ArcZX;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
-        MCC_ArcXYZ_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPX;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPY;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPZ;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPU;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPV;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPW;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPA;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_PtPB;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int =
+        MCC_Line;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, WORD) -> c_int = MCC_ArcXYZ;
+    let _: extern "system" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_ArcXY;
+    let _: extern "system" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_ArcYZ;
+    let _: extern "system" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_ArcZX;
+    let _: extern "system" fn(
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        WORD,
+    ) -> c_int = MCC_ArcXYZ_Aux;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_ArcXY_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_ArcYZ_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_ArcZX_Aux;
-    let _: extern "C" fn(f64, f64, f64, WORD) -> c_int = MCC_ArcThetaXY;
-    let _: extern "C" fn(f64, f64, f64, WORD) -> c_int = MCC_ArcThetaYZ;
-    let _: extern "C" fn(f64, f64, f64, WORD) -> c_int = MCC_ArcThetaZX;
-    let _: extern "C" fn(f64, f64, BYTE, WORD) -> c_int = MCC_CircleXY;
-    let _: extern "C" fn(f64, f64, BYTE, WORD) -> c_int = MCC_CircleYZ;
-    let _: extern "C" fn(f64, f64, BYTE, WORD) -> c_int = MCC_CircleZX;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_CircleXY_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_CircleYZ_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_CircleZX_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_HelicalXY_Z;
-    let _: extern "C" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_HelicalYZ_X;
-    let _: extern "C" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_HelicalZX_Y;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(f64, f64, f64, WORD) -> c_int = MCC_ArcThetaXY;
+    let _: extern "system" fn(f64, f64, f64, WORD) -> c_int = MCC_ArcThetaYZ;
+    let _: extern "system" fn(f64, f64, f64, WORD) -> c_int = MCC_ArcThetaZX;
+    let _: extern "system" fn(f64, f64, BYTE, WORD) -> c_int = MCC_CircleXY;
+    let _: extern "system" fn(f64, f64, BYTE, WORD) -> c_int = MCC_CircleYZ;
+    let _: extern "system" fn(f64, f64, BYTE, WORD) -> c_int = MCC_CircleZX;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, BYTE, WORD) -> c_int =
+        MCC_CircleXY_Aux;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, BYTE, WORD) -> c_int =
+        MCC_CircleYZ_Aux;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, BYTE, WORD) -> c_int =
+        MCC_CircleZX_Aux;
+    let _: extern "system" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_HelicalXY_Z;
+    let _: extern "system" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_HelicalYZ_X;
+    let _: extern "system" fn(f64, f64, f64, f64, WORD) -> c_int = MCC_HelicalZX_Y;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_HelicalXY_Z_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_HelicalYZ_X_Aux;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_HelicalZX_Y_Aux;
     // Jog Motion
-    let _: extern "C" fn(c_int, c_char, WORD) -> c_int = MCC_JogPulse;
-    let _: extern "C" fn(f64, f64, c_char, WORD) -> c_int = MCC_JogSpace;
-    let _: extern "C" fn(c_int, f64, c_char, WORD) -> c_int = MCC_JogConti;
+    let _: extern "system" fn(c_int, c_char, WORD) -> c_int = MCC_JogPulse;
+    let _: extern "system" fn(f64, f64, c_char, WORD) -> c_int = MCC_JogSpace;
+    let _: extern "system" fn(c_int, f64, c_char, WORD) -> c_int = MCC_JogConti;
     // Point-to-Point Motion
-    let _: extern "C" fn(
+    let _: extern "system" fn(
         c_char,
         c_char,
         c_char,
@@ -273,7 +310,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         c_char,
         WORD,
     ) -> c_int = MCC_SetPtPAccType;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut c_char,
         *mut c_char,
         *mut c_char,
@@ -284,7 +321,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_char,
         WORD,
     ) -> c_int = MCC_GetPtPAccType;
-    let _: extern "C" fn(
+    let _: extern "system" fn(
         c_char,
         c_char,
         c_char,
@@ -295,7 +332,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         c_char,
         WORD,
     ) -> c_int = MCC_SetPtPDecType;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut c_char,
         *mut c_char,
         *mut c_char,
@@ -306,8 +343,9 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_char,
         WORD,
     ) -> c_int = MCC_GetPtPDecType;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int = MCC_SetPtPAccTime;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+        MCC_SetPtPAccTime;
+    let _: unsafe extern "system" fn(
         *mut f64,
         *mut f64,
         *mut f64,
@@ -318,8 +356,9 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut f64,
         WORD,
     ) -> c_int = MCC_GetPtPAccTime;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int = MCC_SetPtPDecTime;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+        MCC_SetPtPDecTime;
+    let _: unsafe extern "system" fn(
         *mut f64,
         *mut f64,
         *mut f64,
@@ -331,30 +370,39 @@ fn every_vendor_function_has_the_vendor_signature() {
         WORD,
     ) -> c_int = MCC_GetPtPDecTime;
     // Motion Status
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetMotionStatus;
-    let _: unsafe extern "C" fn(*mut COMMAND_INFO, WORD) -> c_int = MCC_GetCurCommand;
-    let _: unsafe extern "C" fn(*mut c_int, WORD) -> c_int = MCC_GetCommandCount;
-    let _: extern "C" fn(WORD) -> c_int = MCC_ResetCommandIndex;
-    let _: extern "C" fn(WORD) -> c_int = MCC_ResetCommandIndexLD;
-    let _: extern "C" fn(WORD, BOOL, WORD) -> c_int = MCC_SetCommandIndex;
-    let _: unsafe extern "C" fn(*mut WORD, WORD) -> c_int = MCC_GetCommandIndex;
-    let _: extern "C" fn(c_int) -> c_int = MCC_SetMaxPulseStockNum;
-    let _: extern "C" fn() -> c_int = MCC_GetMaxPulseStockNum;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetCurPulseStockCount;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetErrorCode;
-    let _: extern "C" fn(WORD) -> c_int = MCC_ClearError;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetMotionStatus;
+    let _: unsafe extern "system" fn(*mut COMMAND_INFO, WORD) -> c_int = MCC_GetCurCommand;
+    let _: unsafe extern "system" fn(*mut c_int, WORD) -> c_int = MCC_GetCommandCount;
+    let _: extern "system" fn(WORD) -> c_int = MCC_ResetCommandIndex;
+    let _: extern "system" fn(WORD) -> c_int = MCC_ResetCommandIndexLD;
+    let _: extern "system" fn(WORD, BOOL, WORD) -> c_int = MCC_SetCommandIndex;
+    let _: unsafe extern "system" fn(*mut WORD, WORD) -> c_int = MCC_GetCommandIndex;
+    let _: extern "system" fn(c_int) -> c_int = MCC_SetMaxPulseStockNum;
+    let _: extern "system" fn() -> c_int = MCC_GetMaxPulseStockNum;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetCurPulseStockCount;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetErrorCode;
+    let _: extern "system" fn(WORD) -> c_int = MCC_ClearError;
     // Go Home
-    let _: unsafe extern "C" fn(*mut SYS_HOME_CONFIG, WORD, WORD) -> c_int = MCC_SetHomeConfig;
-    let _: unsafe extern "C" fn(*mut SYS_HOME_CONFIG, WORD, WORD) -> c_int = MCC_GetHomeConfig;
-    let _: extern "C" fn(c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int, WORD) -> c_int =
-        MCC_Home;
-    let _: extern "C" fn() -> c_int = MCC_GetGoHomeStatus;
-    let _: extern "C" fn() -> c_int = MCC_AbortGoHome;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetHomeSensorStatus;
+    let _: unsafe extern "system" fn(*mut SYS_HOME_CONFIG, WORD, WORD) -> c_int = MCC_SetHomeConfig;
+    let _: unsafe extern "system" fn(*mut SYS_HOME_CONFIG, WORD, WORD) -> c_int = MCC_GetHomeConfig;
+    let _: extern "system" fn(
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        WORD,
+    ) -> c_int = MCC_Home;
+    let _: extern "system" fn() -> c_int = MCC_GetGoHomeStatus;
+    let _: extern "system" fn() -> c_int = MCC_AbortGoHome;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetHomeSensorStatus;
     // Position Control
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
         MCC_SetPGain;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut WORD,
         *mut WORD,
         *mut WORD,
@@ -365,9 +413,9 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut WORD,
         WORD,
     ) -> c_int = MCC_GetPGain;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
         MCC_SetIGain;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut WORD,
         *mut WORD,
         *mut WORD,
@@ -378,9 +426,9 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut WORD,
         WORD,
     ) -> c_int = MCC_GetIGain;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
         MCC_SetDGain;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut WORD,
         *mut WORD,
         *mut WORD,
@@ -391,9 +439,9 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut WORD,
         WORD,
     ) -> c_int = MCC_GetDGain;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
         MCC_SetFGain;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut WORD,
         *mut WORD,
         *mut WORD,
@@ -404,9 +452,9 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut WORD,
         WORD,
     ) -> c_int = MCC_GetFGain;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetIGainClockDivider;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetDGainClockDivider;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetIGainClockDivider;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetDGainClockDivider;
+    let _: unsafe extern "system" fn(
         *mut c_int,
         *mut c_int,
         *mut c_int,
@@ -417,10 +465,19 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_int,
         WORD,
     ) -> c_int = MCC_GetErrorCount;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetErrorCountThreshold;
-    let _: extern "C" fn(c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int, WORD) -> c_int =
-        MCC_SetMaxPulseSpeed;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetErrorCountThreshold;
+    let _: extern "system" fn(
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        WORD,
+    ) -> c_int = MCC_SetMaxPulseSpeed;
+    let _: unsafe extern "system" fn(
         *mut c_int,
         *mut c_int,
         *mut c_int,
@@ -431,9 +488,18 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_int,
         WORD,
     ) -> c_int = MCC_GetMaxPulseSpeed;
-    let _: extern "C" fn(c_int, c_int, c_int, c_int, c_int, c_int, c_int, c_int, WORD) -> c_int =
-        MCC_SetMaxPulseAcc;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        c_int,
+        WORD,
+    ) -> c_int = MCC_SetMaxPulseAcc;
+    let _: unsafe extern "system" fn(
         *mut c_int,
         *mut c_int,
         *mut c_int,
@@ -444,14 +510,14 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut c_int,
         WORD,
     ) -> c_int = MCC_GetMaxPulseAcc;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetInPosMode;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetInPosMaxCheckTime;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetInPosSettleTime;
-    let _: extern "C" fn(WORD, DWORD) -> c_int = MCC_EnableInPos;
-    let _: extern "C" fn(WORD, DWORD) -> c_int = MCC_DisableInPos;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetInPosMode;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetInPosMaxCheckTime;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetInPosSettleTime;
+    let _: extern "system" fn(WORD, DWORD) -> c_int = MCC_EnableInPos;
+    let _: extern "system" fn(WORD, DWORD) -> c_int = MCC_DisableInPos;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD) -> c_int =
         MCC_SetInPosToleranceEx;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut f64,
         *mut f64,
         *mut f64,
@@ -462,7 +528,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut f64,
         WORD,
     ) -> c_int = MCC_GetInPosToleranceEx;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut BYTE,
         *mut BYTE,
         *mut BYTE,
@@ -473,160 +539,173 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut BYTE,
         WORD,
     ) -> c_int = MCC_GetInPosStatus;
-    let _: extern "C" fn(WORD, DWORD) -> c_int = MCC_EnableTrackError;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableTrackError;
-    let _: extern "C" fn(f64, c_char, WORD) -> c_int = MCC_SetTrackErrorLimit;
-    let _: unsafe extern "C" fn(*mut f64, c_char, WORD) -> c_int = MCC_GetTrackErrorLimit;
-    let _: extern "C" fn(PCLISR, WORD) -> c_int = MCC_SetPCLRoutine;
-    let _: unsafe extern "C" fn(*mut SYS_COMP_PARAM, WORD, WORD) -> c_int = MCC_SetCompParam;
-    let _: extern "C" fn() -> c_int = MCC_UpdateCompParam;
+    let _: extern "system" fn(WORD, DWORD) -> c_int = MCC_EnableTrackError;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableTrackError;
+    let _: extern "system" fn(f64, c_char, WORD) -> c_int = MCC_SetTrackErrorLimit;
+    let _: unsafe extern "system" fn(*mut f64, c_char, WORD) -> c_int = MCC_GetTrackErrorLimit;
+    let _: extern "system" fn(PCLISR, WORD) -> c_int = MCC_SetPCLRoutine;
+    let _: unsafe extern "system" fn(*mut SYS_COMP_PARAM, WORD, WORD) -> c_int = MCC_SetCompParam;
+    let _: extern "system" fn() -> c_int = MCC_UpdateCompParam;
     // Trajectory Planning
-    let _: extern "C" fn(WORD, BOOL) -> c_int = MCC_HoldMotion;
-    let _: extern "C" fn(WORD) -> c_int = MCC_ContiMotion;
-    let _: extern "C" fn(WORD, BOOL) -> c_int = MCC_AbortMotion;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_AbortMotionEx;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableSingleBlock;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableSingleBlock;
-    let _: extern "C" fn(WORD) -> c_int = MCC_RunSingleBlock;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableBlendInstant;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableBlendInstant;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableBlend;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableBlend;
-    let _: extern "C" fn(WORD) -> c_int = MCC_CheckBlend;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_DelayMotion;
-    let _: extern "C" fn(WORD) -> c_int = MCC_CheckDelay;
-    let _: extern "C" fn(DWORD) = MCC_TimeDelay;
-    let _: extern "C" fn(f64, WORD) -> f64 = MCC_OverrideSpeed;
-    let _: extern "C" fn(f64, BOOL, WORD) -> f64 = MCC_OverrideSpeedEx;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetOverrideRate;
-    let _: extern "C" fn(BOOL, WORD) -> c_int = MCC_FixSpeed;
+    let _: extern "system" fn(WORD, BOOL) -> c_int = MCC_HoldMotion;
+    let _: extern "system" fn(WORD) -> c_int = MCC_ContiMotion;
+    let _: extern "system" fn(WORD, BOOL) -> c_int = MCC_AbortMotion;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_AbortMotionEx;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableSingleBlock;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableSingleBlock;
+    let _: extern "system" fn(WORD) -> c_int = MCC_RunSingleBlock;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableBlendInstant;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableBlendInstant;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableBlend;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableBlend;
+    let _: extern "system" fn(WORD) -> c_int = MCC_CheckBlend;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_DelayMotion;
+    let _: extern "system" fn(WORD) -> c_int = MCC_CheckDelay;
+    let _: extern "system" fn(DWORD) = MCC_TimeDelay;
+    let _: extern "system" fn(f64, WORD) -> f64 = MCC_OverrideSpeed;
+    let _: extern "system" fn(f64, BOOL, WORD) -> f64 = MCC_OverrideSpeedEx;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetOverrideRate;
+    let _: extern "system" fn(BOOL, WORD) -> c_int = MCC_FixSpeed;
     // Encoder Control
-    let _: extern "C" fn(ENCISR, WORD) -> c_int = MCC_SetENCRoutine;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetENCFilterClock;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetENCInputRate;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_ClearENCCounter;
-    let _: unsafe extern "C" fn(*mut c_long, WORD, WORD) -> c_int = MCC_GetENCValue;
-    let _: unsafe extern "C" fn(*mut c_longlong, WORD, WORD) -> c_int = MCC_GetENCValueEx;
-    let _: extern "C" fn(c_long, WORD, WORD) -> c_int = MCC_SetENCValue;
-    let _: extern "C" fn(f64, WORD, WORD) -> c_int = MCC_SetENCGearRate;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetENCLatchType;
-    let _: extern "C" fn(DWORD, WORD, WORD) -> c_int = MCC_SetENCLatchSource;
-    let _: unsafe extern "C" fn(*mut c_long, WORD, WORD) -> c_int = MCC_GetENCLatchValue;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableENCIndexTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableENCIndexTrigger;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetENCIndexStatus;
-    let _: extern "C" fn(c_long, WORD, WORD) -> c_int = MCC_SetENCCompValue;
-    let _: unsafe extern "C" fn(*mut c_long, WORD, WORD) -> c_int = MCC_GetENCCompValue;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetENCCompStockCount;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableENCCompTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableENCCompTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EraseENCCompValue;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_Set3DCompareTolerance;
-    let _: extern "C" fn(c_long, c_long, c_long, WORD, WORD) -> c_int = MCC_SetENCCompValueTab;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_Enable3DCompareChannel;
+    let _: extern "system" fn(ENCISR, WORD) -> c_int = MCC_SetENCRoutine;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetENCFilterClock;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetENCInputRate;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_ClearENCCounter;
+    let _: unsafe extern "system" fn(*mut c_long, WORD, WORD) -> c_int = MCC_GetENCValue;
+    let _: unsafe extern "system" fn(*mut c_longlong, WORD, WORD) -> c_int = MCC_GetENCValueEx;
+    let _: extern "system" fn(c_long, WORD, WORD) -> c_int = MCC_SetENCValue;
+    let _: extern "system" fn(f64, WORD, WORD) -> c_int = MCC_SetENCGearRate;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetENCLatchType;
+    let _: extern "system" fn(DWORD, WORD, WORD) -> c_int = MCC_SetENCLatchSource;
+    let _: unsafe extern "system" fn(*mut c_long, WORD, WORD) -> c_int = MCC_GetENCLatchValue;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableENCIndexTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableENCIndexTrigger;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetENCIndexStatus;
+    let _: extern "system" fn(c_long, WORD, WORD) -> c_int = MCC_SetENCCompValue;
+    let _: unsafe extern "system" fn(*mut c_long, WORD, WORD) -> c_int = MCC_GetENCCompValue;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetENCCompStockCount;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableENCCompTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableENCCompTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EraseENCCompValue;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_Set3DCompareTolerance;
+    let _: extern "system" fn(c_long, c_long, c_long, WORD, WORD) -> c_int = MCC_SetENCCompValueTab;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_Enable3DCompareChannel;
     // Timer & Watch Dog Control
-    let _: extern "C" fn(TMRISR, WORD) -> c_int = MCC_SetTMRRoutine;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetTimer;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableTimer;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableTimer;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableTimerTrigger;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableTimerTrigger;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetWatchDogTimer;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetWatchDogResetPeriod;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableWatchDogTimer;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableWatchDogTimer;
-    let _: extern "C" fn(WORD) -> c_int = MCC_RefreshWatchDogTimer;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_QueueLIOOutputValue;
+    let _: extern "system" fn(TMRISR, WORD) -> c_int = MCC_SetTMRRoutine;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetTimer;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableTimer;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableTimer;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableTimerTrigger;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableTimerTrigger;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetWatchDogTimer;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetWatchDogResetPeriod;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableWatchDogTimer;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableWatchDogTimer;
+    let _: extern "system" fn(WORD) -> c_int = MCC_RefreshWatchDogTimer;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_QueueLIOOutputValue;
     // Remote Input/Output Control
-    let _: extern "C" fn(RIOISR, WORD) -> c_int = MCC_SetRIORoutine;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableRIOSetControl;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableRIOSetControl;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_EnableRIOSlaveControl;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_DisableRIOSlaveControl;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetRIOTransStatus;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetRIOMasterStatus;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetRIOSlaveStatus;
-    let _: unsafe extern "C" fn(*mut DWORD, WORD, WORD) -> c_int = MCC_GetRIOSlaveFail;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetRIOInputValue;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetRIOOutputValue;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetRIOOutputValue;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetRIOTransError;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetRIOTriggerType;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_EnableRIOInputTrigger;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_DisableRIOInputTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableRIOTransTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableRIOTransTrigger;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD) -> c_int = MCC_QueueRIOOutputValue;
-    let _: extern "C" fn(f64, WORD, WORD) -> c_int = MCC_SetARIOUpdateRate;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetARIOClockDivider;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_EnableARIOSlaveControl;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_DisableARIOSlaveControl;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetARIOTransStatus;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetARIOMasterStatus;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetARIOSlaveStatus;
-    let _: unsafe extern "C" fn(*mut DWORD, WORD, WORD) -> c_int = MCC_GetARIOSlaveFail;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetARIOInputValue;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetARIOOutputValue;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetARIOOutputValue;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD) -> c_int = MCC_QueueARIOOutputValue;
-    let _: extern "C" fn(DWORD, WORD) -> c_int = MCC_SetARIONode2NodeDelay;
+    let _: extern "system" fn(RIOISR, WORD) -> c_int = MCC_SetRIORoutine;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableRIOSetControl;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableRIOSetControl;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_EnableRIOSlaveControl;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_DisableRIOSlaveControl;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetRIOTransStatus;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetRIOMasterStatus;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetRIOSlaveStatus;
+    let _: unsafe extern "system" fn(*mut DWORD, WORD, WORD) -> c_int = MCC_GetRIOSlaveFail;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetRIOInputValue;
+    let _: extern "system" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetRIOOutputValue;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetRIOOutputValue;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetRIOTransError;
+    let _: extern "system" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetRIOTriggerType;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_EnableRIOInputTrigger;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_DisableRIOInputTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableRIOTransTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableRIOTransTrigger;
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD) -> c_int = MCC_QueueRIOOutputValue;
+    let _: extern "system" fn(f64, WORD, WORD) -> c_int = MCC_SetARIOUpdateRate;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetARIOClockDivider;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_EnableARIOSlaveControl;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_DisableARIOSlaveControl;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetARIOTransStatus;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetARIOMasterStatus;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetARIOSlaveStatus;
+    let _: unsafe extern "system" fn(*mut DWORD, WORD, WORD) -> c_int = MCC_GetARIOSlaveFail;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetARIOInputValue;
+    let _: extern "system" fn(WORD, WORD, WORD, WORD) -> c_int = MCC_SetARIOOutputValue;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD, WORD) -> c_int = MCC_GetARIOOutputValue;
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD) -> c_int = MCC_QueueARIOOutputValue;
+    let _: extern "system" fn(DWORD, WORD) -> c_int = MCC_SetARIONode2NodeDelay;
     // D/A Converter Control
-    let _: extern "C" fn(f32, WORD, WORD) -> c_int = MCC_SetDACOutput;
-    let _: extern "C" fn(f32, WORD, WORD) -> c_int = MCC_SetDACTriggerOutput;
-    let _: extern "C" fn(DWORD, WORD, WORD) -> c_int = MCC_SetDACTriggerSource;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableDACTriggerMode;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableDACTriggerMode;
-    let _: extern "C" fn(WORD) -> c_int = MCC_StartDACConv;
-    let _: extern "C" fn(WORD) -> c_int = MCC_StopDACConv;
+    let _: extern "system" fn(f32, WORD, WORD) -> c_int = MCC_SetDACOutput;
+    let _: extern "system" fn(f32, WORD, WORD) -> c_int = MCC_SetDACTriggerOutput;
+    let _: extern "system" fn(DWORD, WORD, WORD) -> c_int = MCC_SetDACTriggerSource;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableDACTriggerMode;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableDACTriggerMode;
+    let _: extern "system" fn(WORD) -> c_int = MCC_StartDACConv;
+    let _: extern "system" fn(WORD) -> c_int = MCC_StopDACConv;
     // A/D Converter Control
-    let _: extern "C" fn(ADCISR, WORD) -> c_int = MCC_SetADCRoutine;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetADCConvType;
-    let _: unsafe extern "C" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetADCConvType;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetADCConvMode;
-    let _: unsafe extern "C" fn(*mut f32, WORD, WORD) -> c_int = MCC_GetADCInput;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetADCSingleChannel;
-    let _: unsafe extern "C" fn(*mut WORD, WORD) -> c_int = MCC_GetADCWorkStatus;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableADCConvTrigger;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableADCConvTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetADCTagChannel;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableADCTagTrigger;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableADCTagTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetADCCompMask;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetADCCompType;
-    let _: extern "C" fn(f32, WORD, WORD) -> c_int = MCC_SetADCCompValue;
-    let _: unsafe extern "C" fn(*mut f32, WORD, WORD) -> c_int = MCC_GetADCCompValue;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableADCCompTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableADCCompTrigger;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_EnableADCConvChannel;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_DisableADCConvChannel;
-    let _: extern "C" fn(WORD) -> c_int = MCC_StartADCConv;
-    let _: extern "C" fn(WORD) -> c_int = MCC_StopADCConv;
+    let _: extern "system" fn(ADCISR, WORD) -> c_int = MCC_SetADCRoutine;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetADCConvType;
+    let _: unsafe extern "system" fn(*mut WORD, WORD, WORD) -> c_int = MCC_GetADCConvType;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetADCConvMode;
+    let _: unsafe extern "system" fn(*mut f32, WORD, WORD) -> c_int = MCC_GetADCInput;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetADCSingleChannel;
+    let _: unsafe extern "system" fn(*mut WORD, WORD) -> c_int = MCC_GetADCWorkStatus;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableADCConvTrigger;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableADCConvTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetADCTagChannel;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableADCTagTrigger;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableADCTagTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetADCCompMask;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetADCCompType;
+    let _: extern "system" fn(f32, WORD, WORD) -> c_int = MCC_SetADCCompValue;
+    let _: unsafe extern "system" fn(*mut f32, WORD, WORD) -> c_int = MCC_GetADCCompValue;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableADCCompTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableADCCompTrigger;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_EnableADCConvChannel;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_DisableADCConvChannel;
+    let _: extern "system" fn(WORD) -> c_int = MCC_StartADCConv;
+    let _: extern "system" fn(WORD) -> c_int = MCC_StopADCConv;
     // Obsolete functions in earlier version of MCCL (header: "existed only for compatibility")
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineX;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineY;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineZ;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineU;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineV;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineW;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineA;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_LineB;
-    let _: extern "C" fn(f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_HelicaXY_Z;
-    let _: extern "C" fn(f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_HelicaYZ_X;
-    let _: extern "C" fn(f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_HelicaZX_Y;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_ConeXY_Z;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_ConeYZ_X;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_ConeZX_Y;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineX;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineY;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineZ;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineU;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineV;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineW;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineA;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_LineB;
+    let _: extern "system" fn(f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_HelicaXY_Z;
+    let _: extern "system" fn(f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_HelicaYZ_X;
+    let _: extern "system" fn(f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_HelicaZX_Y;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_ConeXY_Z;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_ConeYZ_X;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, BYTE, WORD) -> c_int = MCC_ConeZX_Y;
     // Special functions only for Robot Control
-    let _: extern "C" fn(FWDKINEFUN, INVKINEFUN, DWORD, INIT_EXTENSION, c_int) -> c_int =
+    let _: extern "system" fn(FWDKINEFUN, INVKINEFUN, DWORD, INIT_EXTENSION, c_int) -> c_int =
         MCC_SetKinematicTrans;
-    let _: extern "C" fn(PRE_PROCESS_MOTION_COMMAND, WORD) -> c_int =
+    let _: extern "system" fn(PRE_PROCESS_MOTION_COMMAND, WORD) -> c_int =
         MCC_SetPreProcessMotionCommandCallback;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int = MCC_PtP_V6;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, DWORD, WORD, DWORD) -> c_int =
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, WORD, DWORD) -> c_int =
+        MCC_PtP_V6;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, f64, f64, f64, DWORD, WORD, DWORD) -> c_int =
         MCC_Line_V6;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, DWORD, WORD, DWORD) -> c_int =
-        MCC_Arc_V6;
-    let _: extern "C" fn(
+    let _: extern "system" fn(
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        DWORD,
+        WORD,
+        DWORD,
+    ) -> c_int = MCC_Arc_V6;
+    let _: extern "system" fn(
         f64,
         f64,
         f64,
@@ -641,27 +720,42 @@ fn every_vendor_function_has_the_vendor_signature() {
         WORD,
         DWORD,
     ) -> c_int = MCC_ArcTheta_V6;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, BYTE, DWORD, WORD) -> c_int = MCC_CircleXY_V6;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, BYTE, DWORD, WORD) -> c_int = MCC_CircleYZ_V6;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, BYTE, DWORD, WORD) -> c_int = MCC_CircleZX_V6;
-    let _: extern "C" fn(f64, f64, f64, f64, f64, f64, f64, f64, f64, DWORD, WORD, DWORD) -> c_int =
-        MCC_Circle_V6;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, BYTE, DWORD, WORD) -> c_int =
+        MCC_CircleXY_V6;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, BYTE, DWORD, WORD) -> c_int =
+        MCC_CircleYZ_V6;
+    let _: extern "system" fn(f64, f64, f64, f64, f64, BYTE, DWORD, WORD) -> c_int =
+        MCC_CircleZX_V6;
+    let _: extern "system" fn(
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        f64,
+        DWORD,
+        WORD,
+        DWORD,
+    ) -> c_int = MCC_Circle_V6;
     // Obsolete functions in earlier version of MCCL (header: "existed only for compatibility") (2)
-    let _: extern "C" fn(CYCLE_INTERRUPT_ISR) -> c_int = MCC_SetCycleInterruptRoutine;
-    let _: unsafe extern "C" fn(*mut SYS_MACH_PARAM, WORD, WORD) -> c_int = MCC_SetMachParam;
-    let _: unsafe extern "C" fn(*mut SYS_MACH_PARAM, WORD, WORD) -> c_int = MCC_GetMachParam;
-    let _: extern "C" fn() -> c_int = MCC_UpdateMachParam;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetDACClockDivider;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_SetDACUpdateRate;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetADCClockDivider;
-    let _: extern "C" fn(f64, WORD) -> c_int = MCC_SetADCUpdateRate;
-    let _: extern "C" fn(WORD, WORD, WORD) -> c_int = MCC_SetRIOClockDivider;
-    let _: extern "C" fn(f64, WORD, WORD) -> c_int = MCC_SetRIOUpdateRate;
-    let _: extern "C" fn(WORD, WORD) -> c_int = MCC_SetInPosCheckTime;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetInPosStableTime;
-    let _: extern "C" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
+    let _: extern "system" fn(CYCLE_INTERRUPT_ISR) -> c_int = MCC_SetCycleInterruptRoutine;
+    let _: unsafe extern "system" fn(*mut SYS_MACH_PARAM, WORD, WORD) -> c_int = MCC_SetMachParam;
+    let _: unsafe extern "system" fn(*mut SYS_MACH_PARAM, WORD, WORD) -> c_int = MCC_GetMachParam;
+    let _: extern "system" fn() -> c_int = MCC_UpdateMachParam;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetDACClockDivider;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_SetDACUpdateRate;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetADCClockDivider;
+    let _: extern "system" fn(f64, WORD) -> c_int = MCC_SetADCUpdateRate;
+    let _: extern "system" fn(WORD, WORD, WORD) -> c_int = MCC_SetRIOClockDivider;
+    let _: extern "system" fn(f64, WORD, WORD) -> c_int = MCC_SetRIOUpdateRate;
+    let _: extern "system" fn(WORD, WORD) -> c_int = MCC_SetInPosCheckTime;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetInPosStableTime;
+    let _: extern "system" fn(WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD, WORD) -> c_int =
         MCC_SetInPosTolerance;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         *mut WORD,
         *mut WORD,
         *mut WORD,
@@ -672,16 +766,16 @@ fn every_vendor_function_has_the_vendor_signature() {
         *mut WORD,
         WORD,
     ) -> c_int = MCC_GetInPosTolerance;
-    let _: extern "C" fn(f64, WORD) -> f64 = MCC_SetOverSpeed;
-    let _: extern "C" fn(WORD) -> f64 = MCC_GetOverSpeed;
-    let _: extern "C" fn(f64, WORD) -> f64 = MCC_ChangeFeedSpeed;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableAccDecAfterIPO;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableAccDecAfterIPO;
-    let _: extern "C" fn(c_int, WORD) -> c_int = MCC_SetUnit;
-    let _: extern "C" fn(WORD) -> c_int = MCC_GetUnit;
-    let _: extern "C" fn(WORD) -> c_int = MCC_EnableMovingAverage;
-    let _: extern "C" fn(WORD) -> c_int = MCC_DisableMovingAverage;
-    let _: unsafe extern "C" fn(
+    let _: extern "system" fn(f64, WORD) -> f64 = MCC_SetOverSpeed;
+    let _: extern "system" fn(WORD) -> f64 = MCC_GetOverSpeed;
+    let _: extern "system" fn(f64, WORD) -> f64 = MCC_ChangeFeedSpeed;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableAccDecAfterIPO;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableAccDecAfterIPO;
+    let _: extern "system" fn(c_int, WORD) -> c_int = MCC_SetUnit;
+    let _: extern "system" fn(WORD) -> c_int = MCC_GetUnit;
+    let _: extern "system" fn(WORD) -> c_int = MCC_EnableMovingAverage;
+    let _: extern "system" fn(WORD) -> c_int = MCC_DisableMovingAverage;
+    let _: unsafe extern "system" fn(
         CUSTOM_START_MOTION,
         CUSTOM_INTERPOLATION,
         CUSTOM_CLEANUP,
@@ -693,7 +787,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         WORD,
         DWORD,
     ) -> c_int = MCC_CustomMotionEx;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         CUSTOM_START_MOTION,
         CUSTOM_INTERPOLATION,
         CUSTOM_CLEANUP,
@@ -701,7 +795,7 @@ fn every_vendor_function_has_the_vendor_signature() {
         WORD,
         DWORD,
     ) -> c_int = MCC_CustomMotion;
-    let _: unsafe extern "C" fn(
+    let _: unsafe extern "system" fn(
         INFINITE_START_MOTION,
         INFINITE_INTERPOLATION,
         INFINITE_CLEANUP,
@@ -711,5 +805,5 @@ fn every_vendor_function_has_the_vendor_signature() {
         DWORD,
     ) -> c_int = MCC_InfiniteMotion;
     // Names the IMP manuals use that the headers lack
-    let _: extern "C" fn(LIOISR, WORD) -> c_int = MCC_SetLIORoutineEx;
+    let _: extern "system" fn(LIOISR, WORD) -> c_int = MCC_SetLIORoutineEx;
 }

@@ -5,9 +5,10 @@ use std::io::{self, BufRead, Read, Write};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use serialport::{SerialPort, TTYPort};
+use serialport::SerialPort;
 use MCCLPCI_IMP::mc3b::codec::CommandCode;
 use MCCLPCI_IMP::mc3b::emulator::Emulator;
+use MCCLPCI_IMP::platform::pseudo_terminal_pair;
 
 /// Usage and control-channel documentation.
 const HELP: &str = "\
@@ -16,7 +17,8 @@ mc3b-emu: an RW Automation MC3B stepper controller emulated on a pseudo-terminal
 USAGE: mc3b-emu [--help]
 
 The emulator opens a pty pair and prints the device path of the slave side
-(e.g. /dev/pts/7) as the FIRST line on stdout. Point a client at it, e.g.
+(e.g. /dev/pts/7) as the FIRST line on stdout. (Windows has no pseudo-terminals:
+there the emulator says so and exits with status 1.) Point a client at it, e.g.
 MCL_COM1=/dev/pts/7 for mcl_initialize(1, ..). The serial side speaks the
 MC3B ASCII command set (User's Guide section 6); the emulated device runs in
 real time with its limit inputs sampled at 1 kHz.
@@ -165,7 +167,7 @@ fn control(emu: &mut Emulator, line: &str) -> (String, bool) {
 }
 
 fn run() -> io::Result<()> {
-    let (mut master, slave) = TTYPort::pair().map_err(io::Error::from)?;
+    let (mut master, slave) = pseudo_terminal_pair()?;
     let path = slave
         .name()
         .ok_or_else(|| io::Error::other("pty has no name"))?;

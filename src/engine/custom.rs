@@ -58,7 +58,7 @@ pub const CTYPE_CUSTOM: i32 = 20;
 pub enum Interp {
     /// `MCC_CustomMotion(Ex)`: ends at the total distance or on FALSE.
     Custom(
-        unsafe extern "C" fn(
+        unsafe extern "system" fn(
             c_int,
             c_int,
             c_int,
@@ -72,7 +72,7 @@ pub enum Interp {
     ),
     /// `MCC_InfiniteMotion`: ends on FALSE or when it sets `*AbortThisCommand`.
     Infinite(
-        unsafe extern "C" fn(
+        unsafe extern "system" fn(
             c_int,
             c_int,
             c_int,
@@ -104,7 +104,8 @@ pub struct CustomSpec {
     /// Unique per queued command (identifies it across the stage's lock releases).
     pub id: u64,
     /// `pfnStartMotion` (never NULL).
-    pub start: unsafe extern "C" fn(c_int, c_int, c_int, c_int, *const f64, *mut c_void) -> f64,
+    pub start:
+        unsafe extern "system" fn(c_int, c_int, c_int, c_int, *const f64, *mut c_void) -> f64,
     /// `pfnInterpolation` (never NULL).
     pub interp: Interp,
     /// `pfnCleanUp` (may be NULL).

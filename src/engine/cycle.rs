@@ -23,9 +23,9 @@ pub struct CycleRoutines {
 }
 
 /// `CYCLE_INTERRUPT_ISR`.
-type RawCycle = unsafe extern "C" fn();
+type RawCycle = unsafe extern "system" fn();
 /// `INTERP`.
-type RawInterp = unsafe extern "C" fn(
+type RawInterp = unsafe extern "system" fn(
     std::os::raw::c_int,
     std::os::raw::c_int,
     std::os::raw::c_int,

@@ -89,7 +89,7 @@ pub struct IsrTable {
 }
 
 /// The C signature every routine shares: `void f(XXXINT *)` (the struct differs by kind).
-type RawIsr = unsafe extern "C" fn(*mut u8);
+type RawIsr = unsafe extern "system" fn(*mut u8);
 
 impl IsrTable {
     /// A table for `cards` cards with nothing registered.

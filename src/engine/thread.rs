@@ -1,7 +1,11 @@
-//! Real-time settings of the engine thread under the realtime clock.
+//! Real-time settings of the engine thread under the realtime clock. What each means on
+//! Linux and on Windows is in [`crate::platform`]; on Windows a setting the system lacks
+//! (`MCCL_RT_LOCK`, an asked-for `MCCL_RT_SLICE_US`) is refused with a message saying so.
 //!
-//! Always: the thread's timer slack is set to 1 ns (`PR_SET_TIMERSLACK`), so the kernel
-//! does not defer its wake-up by the default 50 µs a normal thread may be kept waiting.
+//! Always: the thread's deadline sleeps are made as precise as the system allows
+//! ([`crate::platform::prepare_precise_sleep`]): on Linux its timer slack is set to 1 ns
+//! (`PR_SET_TIMERSLACK`), so the kernel does not defer its wake-up by the default 50 µs a
+//! normal thread may be kept waiting; on Windows it gets a high-resolution waitable timer.
 //!
 //! By default, changeable: under normal scheduling the thread asks for a time slice of
 //! [`DEFAULT_SLICE_US`] (`sched_setattr` with `sched_runtime`; Linux 6.12 and later, whose
@@ -13,7 +17,8 @@
 //!
 //! Optional, off unless the environment asks (read at each `MCC_InitSystem`):
 //!
-//! * `MCCL_RT_PRIORITY=N` (1..=99): the engine thread runs `SCHED_FIFO` at priority N.
+//! * `MCCL_RT_PRIORITY=N` (1..=99): the engine thread runs `SCHED_FIFO` at priority N
+//!   (Windows: at `THREAD_PRIORITY_TIME_CRITICAL`, whatever N).
 //! * `MCCL_RT_CPU=N`: the engine thread runs on CPU N only.
 //! * `MCCL_RT_LOCK=1`: the process's memory is locked (`mlockall(MCL_CURRENT |
 //!   MCL_FUTURE)`), so no page fault on the tick path waits for the disk. Process-wide and
@@ -27,6 +32,7 @@
 //! of the above prints one line on stderr and is ignored: the engine runs with normal
 //! scheduling, and `MCC_InitSystem` never fails because of it.
 
+use crate::platform;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The time slice the engine thread asks for under normal scheduling, µs: the shortest
@@ -101,7 +107,7 @@ impl RtSettings {
             |s| {
                 s.parse::<usize>()
                     .ok()
-                    .filter(|&c| c < libc::CPU_SETSIZE as usize)
+                    .filter(|&c| c < crate::platform::CPU_LIMIT)
             },
             "a CPU number",
             &mut msgs,
@@ -165,42 +171,23 @@ impl RtSettings {
     }
 }
 
-fn os_error() -> String {
-    std::io::Error::last_os_error().to_string()
-}
-
 /// `mlockall` once per process.
 static LOCKED: AtomicBool = AtomicBool::new(false);
 
-/// Applies `s` to the calling thread (and `mlockall` to the process); returns a message
-/// per setting the system refused.
+/// Applies `s` to the calling thread (and the memory lock to the process); returns a
+/// message per setting the system refused.
 pub fn apply(s: &RtSettings) -> Vec<String> {
     let mut msgs = Vec::new();
-    #[cfg(any(target_os = "linux", target_os = "android"))]
-    // SAFETY: PR_SET_TIMERSLACK takes an unsigned long and changes only this thread.
-    unsafe {
-        libc::prctl(libc::PR_SET_TIMERSLACK, 1 as libc::c_ulong, 0, 0, 0);
-    }
+    platform::prepare_precise_sleep();
     if let Some(cpu) = s.cpu {
-        #[cfg(any(target_os = "linux", target_os = "android"))]
-        {
-            // SAFETY: a zeroed cpu_set_t is a valid empty set; `cpu` < CPU_SETSIZE
-            // (checked when parsed); pid 0 is the calling thread.
-            let r = unsafe {
-                let mut set: libc::cpu_set_t = std::mem::zeroed();
-                libc::CPU_SET(cpu, &mut set);
-                libc::sched_setaffinity(0, std::mem::size_of::<libc::cpu_set_t>(), &set)
-            };
-            if r != 0 {
-                msgs.push(format!(
-                    "MCCL: MCCL_RT_CPU={cpu} refused ({}): the engine thread runs on any CPU",
-                    os_error()
-                ));
-            }
+        if let Err(e) = platform::pin_to_cpu(cpu) {
+            msgs.push(format!(
+                "MCCL: MCCL_RT_CPU={cpu} refused ({e}): the engine thread runs on any CPU"
+            ));
         }
     }
     if let (Some(us), asked) = s.slice_us {
-        if let Err(e) = request_slice(us) {
+        if let Err(e) = platform::request_slice(us) {
             if asked {
                 msgs.push(format!(
                     "MCCL: MCCL_RT_SLICE_US={us} refused ({e}): the engine thread keeps the kernel's time slice"
@@ -209,103 +196,21 @@ pub fn apply(s: &RtSettings) -> Vec<String> {
         }
     }
     if let Some(prio) = s.priority {
-        let p = libc::sched_param {
-            sched_priority: prio,
-        };
-        // SAFETY: the calling thread's handle and a valid sched_param.
-        let r = unsafe { libc::pthread_setschedparam(libc::pthread_self(), libc::SCHED_FIFO, &p) };
-        if r != 0 {
+        if let Err(e) = platform::raise_priority(prio) {
             msgs.push(format!(
-                "MCCL: MCCL_RT_PRIORITY={prio} refused ({}): the engine thread runs with normal scheduling",
-                std::io::Error::from_raw_os_error(r)
+                "MCCL: MCCL_RT_PRIORITY={prio} refused ({e}): the engine thread runs with normal scheduling"
             ));
         }
     }
     if s.lock && !LOCKED.swap(true, Ordering::AcqRel) {
-        // SAFETY: mlockall has no memory-safety preconditions.
-        if unsafe { libc::mlockall(libc::MCL_CURRENT | libc::MCL_FUTURE) } != 0 {
+        if let Err(e) = platform::lock_memory() {
             msgs.push(format!(
-                "MCCL: MCCL_RT_LOCK=1 refused ({}): memory is not locked",
-                os_error()
+                "MCCL: MCCL_RT_LOCK=1 refused ({e}): memory is not locked"
             ));
             LOCKED.store(false, Ordering::Release);
         }
     }
     msgs
-}
-
-/// `struct sched_attr` of `sched_setattr(2)` (the first version, 48 bytes), which the
-/// `libc` crate does not declare.
-#[cfg(any(target_os = "linux", target_os = "android"))]
-#[repr(C)]
-#[derive(Debug, Default)]
-struct SchedAttr {
-    size: u32,
-    sched_policy: u32,
-    sched_flags: u64,
-    sched_nice: i32,
-    sched_priority: u32,
-    sched_runtime: u64,
-    sched_deadline: u64,
-    sched_period: u64,
-}
-
-/// The calling thread's scheduling attributes (`sched_getattr(2)`).
-#[cfg(any(target_os = "linux", target_os = "android"))]
-fn own_sched_attr() -> std::io::Result<SchedAttr> {
-    let mut a = SchedAttr::default();
-    let size = std::mem::size_of::<SchedAttr>() as u32;
-    // SAFETY: `a` is a writable sched_attr of `size` bytes; pid 0 is this thread.
-    let r = unsafe {
-        libc::syscall(
-            libc::SYS_sched_getattr,
-            0,
-            &mut a as *mut SchedAttr,
-            size,
-            0,
-        )
-    };
-    if r != 0 {
-        return Err(std::io::Error::last_os_error());
-    }
-    a.size = size;
-    Ok(a)
-}
-
-/// Asks for a time slice of `us` µs for the calling thread under its normal scheduling
-/// policy, keeping its policy and nice value (read first: a nice value written back
-/// unchanged needs no privilege). A thread under `SCHED_FIFO` or `SCHED_RR` is left as it
-/// is (`Ok`).
-fn request_slice(us: u64) -> std::io::Result<()> {
-    #[cfg(any(target_os = "linux", target_os = "android"))]
-    {
-        let mut a = own_sched_attr()?;
-        let normal = [libc::SCHED_OTHER, libc::SCHED_BATCH];
-        if !normal.iter().any(|&p| p as u32 == a.sched_policy) {
-            return Ok(());
-        }
-        a.sched_flags = 0;
-        a.sched_runtime = us.saturating_mul(1000);
-        // SAFETY: `a` is a valid sched_attr of `a.size` bytes; pid 0 is this thread.
-        let r = unsafe { libc::syscall(libc::SYS_sched_setattr, 0, &a as *const SchedAttr, 0) };
-        if r != 0 {
-            return Err(std::io::Error::last_os_error());
-        }
-        Ok(())
-    }
-    #[cfg(not(any(target_os = "linux", target_os = "android")))]
-    {
-        let _ = us;
-        Err(std::io::Error::from(std::io::ErrorKind::Unsupported))
-    }
-}
-
-/// The calling thread's time slice under normal scheduling, ns, as the kernel reports it
-/// (`sched_getattr`'s `sched_runtime`; 0 on a kernel without custom slices), or `None`
-/// where the call is not allowed (a seccomp filter).
-#[cfg(test)]
-fn current_slice_ns() -> Option<u64> {
-    own_sched_attr().ok().map(|a| a.sched_runtime)
 }
 
 /// Sets up the calling thread as the realtime engine thread: 1 ns timer slack and the
@@ -377,50 +282,22 @@ mod tests {
         assert_eq!(m.len(), 1, "priority 0 is not a SCHED_FIFO priority");
     }
 
-    /// Whether the running kernel grants custom time slices to normal threads (Linux
-    /// 6.12 and later).
-    fn kernel_has_custom_slices() -> bool {
-        let release = std::fs::read_to_string("/proc/sys/kernel/osrelease").unwrap_or_default();
-        let mut v = release
-            .split(|c: char| !c.is_ascii_digit())
-            .filter_map(|n| n.parse::<u32>().ok());
-        let (major, minor) = (v.next().unwrap_or(0), v.next().unwrap_or(0));
-        (major, minor) >= (6, 12)
-    }
-
     #[test]
-    fn the_default_asks_for_a_short_slice_and_keeps_the_nice_value() {
-        // On a thread niced to 5 or more (raising the nice value needs no privilege), the
-        // default settings ask for a 100 µs slice: the kernel reports 100,000 ns where it
-        // grants custom slices, and the nice value is still the one set (written back as
-        // read: asking for 0 would need privilege and fail).
-        let (msgs, slice, nice) = std::thread::spawn(|| {
-            // SAFETY: setpriority/getpriority on the calling thread (tid) only.
-            unsafe {
-                let tid = libc::gettid() as libc::id_t;
-                // 5, or more if the tests already run niced (lowering it would need
-                // privilege).
-                let nice = (libc::getpriority(libc::PRIO_PROCESS, tid) + 1).clamp(5, 19);
-                assert_eq!(libc::setpriority(libc::PRIO_PROCESS, tid, nice), 0);
-                let msgs = apply(&RtSettings::default());
-                let now = libc::getpriority(libc::PRIO_PROCESS, tid);
-                (msgs, current_slice_ns(), (nice, now))
-            }
-        })
-        .join()
-        .unwrap();
+    fn the_default_settings_are_applied_without_a_message() {
+        // The default asks for a short slice (refused silently where the system has
+        // none: the program did not ask) and nothing else.
+        let msgs = std::thread::spawn(|| apply(&RtSettings::default()))
+            .join()
+            .unwrap();
         assert!(msgs.is_empty(), "{msgs:?}");
-        assert_eq!(nice.1, nice.0, "the nice value set before");
-        if let (Some(slice), true) = (slice, kernel_has_custom_slices()) {
-            assert_eq!(slice, DEFAULT_SLICE_US * 1000);
-        }
     }
 
     #[test]
     fn a_refused_setting_is_reported_and_the_thread_runs_on() {
-        // CPU_SETSIZE - 1 exists on no machine this runs on: refused with a message,
-        // and the thread keeps running (the call returns).
-        let cpu = libc::CPU_SETSIZE as usize - 1;
+        // The last CPU an affinity can name (1023 on Linux, 63 on 64-bit Windows)
+        // exists on no machine this runs on: refused with a message, and the thread
+        // keeps running (the call returns).
+        let cpu = crate::platform::CPU_LIMIT - 1;
         let m = std::thread::spawn(move || {
             apply(&RtSettings {
                 cpu: Some(cpu),

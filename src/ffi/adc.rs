@@ -47,7 +47,7 @@ macro_rules! adc_channel_settings {
     )*) => {$(
         $(#[$set_doc])*
         #[no_mangle]
-        pub extern "C" fn $set($v: $t, wChannel: WORD, wCardIndex: WORD) -> c_int {
+        pub extern "system" fn $set($v: $t, wChannel: WORD, wCardIndex: WORD) -> c_int {
             ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.$setter(ch, $v)) }
         }
 
@@ -83,7 +83,7 @@ pointer_fns! {
 /// # Safety
 /// `pwSTatus` must be NULL (refused with `PARAMETER_ERR`) or point to a writable WORD.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: WORD) -> c_int {
+pub unsafe extern "system" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         super::initialised()?;
         // SAFETY: forwarded under this function's contract.

@@ -43,7 +43,7 @@ macro_rules! converter_timing {
     )*) => {$(
         $(#[$divider_doc])*
         #[no_mangle]
-        pub extern "C" fn $divider(wDivider: WORD, wCardIndex: WORD) -> c_int {
+        pub extern "system" fn $divider(wDivider: WORD, wCardIndex: WORD) -> c_int {
             ffi_boundary! {
                 initialised()?;
                 on_cadence(wCardIndex, |p| &mut p.$conv.cadence, |t| t.set_divider(wDivider))
@@ -52,7 +52,7 @@ macro_rules! converter_timing {
 
         $(#[$rate_doc])*
         #[no_mangle]
-        pub extern "C" fn $rate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
+        pub extern "system" fn $rate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
             ffi_boundary! {
                 initialised()?;
                 let r = rate(dfUpdateRate)?;
@@ -83,7 +83,11 @@ converter_timing! {
 /// 10); a transfer cycle lasts `32 × transmitting slaves (at least 1) × wDivider × 10 ns`.
 /// The cycle count restarts at the call.
 #[no_mangle]
-pub extern "C" fn MCC_SetRIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetRIOClockDivider(
+    wDivider: WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         initialised()?;
         let s = set_ix(wSet)?;
@@ -94,7 +98,11 @@ pub extern "C" fn MCC_SetRIOClockDivider(wDivider: WORD, wSet: WORD, wCardIndex:
 /// At most `dfUpdateRate` transfer cycles per second (Hz, > 0) for a RIO set. The cycle
 /// count restarts at the call.
 #[no_mangle]
-pub extern "C" fn MCC_SetRIOUpdateRate(dfUpdateRate: f64, wSet: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetRIOUpdateRate(
+    dfUpdateRate: f64,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         initialised()?;
         let r = rate(dfUpdateRate)?;

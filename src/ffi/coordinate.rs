@@ -10,19 +10,19 @@ use std::os::raw::{c_int, c_long, c_longlong};
 
 /// Following motion commands take absolute coordinates (the default).
 #[no_mangle]
-pub extern "C" fn MCC_SetAbsolute(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetAbsolute(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings.absolute = true) }
 }
 
 /// Following motion commands take increments from the end of the previous command.
 #[no_mangle]
-pub extern "C" fn MCC_SetIncrease(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetIncrease(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings.absolute = false) }
 }
 
 /// 1 for absolute coordinates, 0 for incremental.
 #[no_mangle]
-pub extern "C" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(g.settings.absolute))) }
 }
 
@@ -67,7 +67,7 @@ per_axis_getters! {
 /// The current position of one axis becomes 0 (only while the group is stopped,
 /// `COMMAND_NOTFINISHED_ERR` otherwise).
 #[no_mangle]
-pub extern "C" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let a = index(wAxis, 8).map_err(|_| McclError::Group)?;
         with_group(wGroupIndex, |g| g.define_pos(a, 0.0)).map(|()| c::NO_ERR)
@@ -77,7 +77,7 @@ pub extern "C" fn MCC_DefineOrigin(wAxis: WORD, wGroupIndex: WORD) -> c_int {
 /// The position of one axis becomes `dfPos` in the program's coordinates and in the
 /// machine's pulse count alike (as the vendor's library does; only while stopped).
 #[no_mangle]
-pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let a = index(wAxis, 8).map_err(|_| McclError::Group)?;
         let v = super::finite(dfPos)?;
@@ -89,7 +89,7 @@ pub extern "C" fn MCC_DefinePos(wAxis: WORD, dfPos: f64, wGroupIndex: WORD) -> c
 /// actually output (the pulse counter converted back to UU), removing any fraction of a
 /// pulse. Only while stopped.
 #[no_mangle]
-pub extern "C" fn MCC_DefinePosHere(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
+pub extern "system" fn MCC_DefinePosHere(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
         axis_mask(dwAxisMask)?;
         with_group(wGroupIndex, |g| g.define_pos_here(dwAxisMask))?;

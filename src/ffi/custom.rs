@@ -53,7 +53,7 @@ fn custom(
 /// `pfnCleanUp` (may be NULL) is called once when it ends. The override applies.
 /// Returns the command index.
 #[no_mangle]
-pub extern "C" fn MCC_CustomMotion(
+pub extern "system" fn MCC_CustomMotion(
     pfnStartMotion: CUSTOM_START_MOTION,
     pfnInterpolation: CUSTOM_INTERPOLATION,
     pfnCleanUp: CUSTOM_CLEANUP,
@@ -78,7 +78,7 @@ pub extern "C" fn MCC_CustomMotion(
 /// change this motion's speed).
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub extern "C" fn MCC_CustomMotionEx(
+pub extern "system" fn MCC_CustomMotionEx(
     pfnStartMotion: CUSTOM_START_MOTION,
     pfnInterpolation: CUSTOM_INTERPOLATION,
     pfnCleanUp: CUSTOM_CLEANUP,
@@ -117,7 +117,7 @@ pub extern "C" fn MCC_CustomMotionEx(
 /// Queues a motion with no end: the profile accelerates to the feed and cruises until the
 /// callback returns FALSE or sets `*AbortThisCommand`, or the program aborts.
 #[no_mangle]
-pub extern "C" fn MCC_InfiniteMotion(
+pub extern "system" fn MCC_InfiniteMotion(
     pfnStartMotion: INFINITE_START_MOTION,
     pfnInterpolation: INFINITE_INTERPOLATION,
     pfnCleanUp: INFINITE_CLEANUP,

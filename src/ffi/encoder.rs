@@ -28,7 +28,7 @@ pointer_fns! {
 /// Sets the encoder count of a channel to `lValue` (|lValue| <= 1e18; the motor does not
 /// move).
 #[no_mangle]
-pub extern "C" fn MCC_SetENCValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         // `long` is 32-bit on Windows, 64-bit on Linux: convert portably.
         #[allow(clippy::useless_conversion)]
@@ -42,7 +42,7 @@ pub extern "C" fn MCC_SetENCValue(lValue: c_long, wChannel: WORD, wCardIndex: WO
 
 /// Sets the encoder count of a channel to 0.
 #[no_mangle]
-pub extern "C" fn MCC_ClearENCCounter(wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_ClearENCCounter(wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
     Ok(MCC_SetENCValue(0, wChannel, wCardIndex))
         }
@@ -51,7 +51,11 @@ pub extern "C" fn MCC_ClearENCCounter(wChannel: WORD, wCardIndex: WORD) -> c_int
 /// Counts per encoder cycle: 1, 2 or 4 (3, `ENC_RATE_X4`, also means x4). The count
 /// keeps its value at the change.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCInputRate(
+    wInputRate: WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         if !(1..=4).contains(&wInputRate) {
             return Err(McclError::Parameter);
@@ -66,7 +70,11 @@ pub extern "C" fn MCC_SetENCInputRate(wInputRate: WORD, wChannel: WORD, wCardInd
 /// Scales the encoder's counting (counts per motor pulse at x4, 1e-3..=1e3). The count
 /// keeps its value at the change.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCGearRate(
+    dfGearRate: f64,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         let r = crate::config::range::enc_gear(dfGearRate)?;
         with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
@@ -79,7 +87,7 @@ pub extern "C" fn MCC_SetENCGearRate(dfGearRate: f64, wChannel: WORD, wCardIndex
 /// Filter clock (divider) of the encoder inputs, kept per card like the other input
 /// filter clocks: the simulated encoder has no electrical noise to filter.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCFilterClock(wDivider: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCFilterClock(wDivider: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
     super::local_io::filter(crate::machine::FilterClock::Encoder, wDivider, wCardIndex)
         }
@@ -131,7 +139,7 @@ fn enc_count(v: c_long) -> McclResult<i64> {
 /// Latch type of a channel: `ENC_TRIG_FIRST` (keep the first event) or `ENC_TRIG_LAST`
 /// (every event). Setting it re-arms the latch.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         channel(wChannel)?;
         if wType > c::ENC_TRIG_LAST {
@@ -148,7 +156,11 @@ pub extern "C" fn MCC_SetENCLatchType(wType: WORD, wChannel: WORD, wCardIndex: W
 /// `ENC_TRIG_OTN0..7` (the count is latched when that index pulse passes or that limit
 /// switch turns active). Setting them re-arms the latch.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCLatchSource(wSource: DWORD, wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCLatchSource(
+    wSource: DWORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         channel(wChannel)?;
         bits(wSource, 0x00FF_FFFF)?;
@@ -195,7 +207,11 @@ on_off! {
 /// routine is called (`ENCINT.COMPn`, if the compare trigger is on), trigger-outs and DAC
 /// triggers from this channel fire, and the next value of the stock is armed.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCCompValue(
+    lValue: c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         channel(wChannel)?;
         let v = enc_count(lValue)?;
@@ -205,7 +221,7 @@ pub extern "C" fn MCC_SetENCCompValue(lValue: c_long, wChannel: WORD, wCardIndex
 
 /// Adds the compare values start, start + delta, ... up to end (inclusive) to the stock.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCCompValueTab(
+pub extern "system" fn MCC_SetENCCompValueTab(
     lStartValue: c_long,
     lEndValue: c_long,
     lDeltaValue: c_long,
@@ -234,7 +250,7 @@ on_off! {
 
 /// Removes every compare value of the channel.
 #[no_mangle]
-pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
             t.stock[ch].clear();
@@ -246,7 +262,10 @@ pub extern "C" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_i
 /// Channels compared together (bit n: channel n): with two or more, their armed values
 /// fire together when every one of them is reached within the 3-D tolerance.
 #[no_mangle]
-pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_Enable3DCompareChannel(
+    wCompareAxisMask: WORD,
+    wCardIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         bits(wCompareAxisMask, 0xFF)?;
         with_triggers(Card(wCardIndex), |t, _| {
@@ -258,7 +277,7 @@ pub extern "C" fn MCC_Enable3DCompareChannel(wCompareAxisMask: WORD, wCardIndex:
 
 /// Tolerance (counts) of the 3-D compare.
 #[no_mangle]
-pub extern "C" fn MCC_Set3DCompareTolerance(wTolerance: WORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_Set3DCompareTolerance(wTolerance: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_triggers(Card(wCardIndex), |t, _| {
             t.compare_tol = wTolerance;

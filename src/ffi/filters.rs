@@ -29,7 +29,7 @@ fn still(g: &GroupState) -> McclResult<()> {
 /// of `wAxesMask` (bit 0 X … bit 7 B; the default is X|Y|Z). `PARAMETER_ERR` for 0 or a
 /// bit above B.
 #[no_mangle]
-pub extern "C" fn MCC_SetComposeAxis(wAxesMask: WORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetComposeAxis(wAxesMask: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let mask = u32::from(wAxesMask);
         if mask == 0 || mask > 0xFF {
@@ -44,7 +44,7 @@ pub extern "C" fn MCC_SetComposeAxis(wAxesMask: WORD, wGroupIndex: WORD) -> c_in
 /// the acceleration time set now (`MCC_SetAccTime`), which makes the ramps and rounds
 /// the corners. Only while the group stands still.
 #[no_mangle]
-pub extern "C" fn MCC_EnableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_EnableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let dt = system::active()?.clock.period().as_secs_f64();
         with_group(wGroupIndex, |g| {
@@ -62,7 +62,7 @@ pub extern "C" fn MCC_EnableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
 /// Acc/dec before interpolation again (the default) for general motion queued from now
 /// on; the filter is removed. Only while the group stands still.
 #[no_mangle]
-pub extern "C" fn MCC_DisableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DisableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         with_group(wGroupIndex, |g| {
             still(g)?;
@@ -75,7 +75,7 @@ pub extern "C" fn MCC_DisableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
 /// The group's output becomes the mean of its last 5 interpolated positions. Only while
 /// the group stands still.
 #[no_mangle]
-pub extern "C" fn MCC_EnableMovingAverage(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_EnableMovingAverage(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         with_group(wGroupIndex, |g| {
             still(g)?;
@@ -87,7 +87,7 @@ pub extern "C" fn MCC_EnableMovingAverage(wGroupIndex: WORD) -> c_int {
 
 /// The moving average off. Only while the group stands still.
 #[no_mangle]
-pub extern "C" fn MCC_DisableMovingAverage(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DisableMovingAverage(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         with_group(wGroupIndex, |g| {
             still(g)?;
@@ -100,7 +100,9 @@ pub extern "C" fn MCC_DisableMovingAverage(wGroupIndex: WORD) -> c_int {
 /// Registers the routine called once per interpolation period, after the tick and the
 /// interrupt routines, on the engine thread with no lock held (NULL unregisters).
 #[no_mangle]
-pub extern "C" fn MCC_SetCycleInterruptRoutine(pfnCycleIntRoutine: CYCLE_INTERRUPT_ISR) -> c_int {
+pub extern "system" fn MCC_SetCycleInterruptRoutine(
+    pfnCycleIntRoutine: CYCLE_INTERRUPT_ISR,
+) -> c_int {
     ffi_boundary! {
         let shared = system::active()?;
         shared.cycle.set_cycle(pfnCycleIntRoutine.map_or(0, |f| f as usize));
@@ -114,7 +116,7 @@ pub extern "C" fn MCC_SetCycleInterruptRoutine(pfnCycleIntRoutine: CYCLE_INTERRU
 /// command or stands behind the front of its path; its return value decides the next
 /// period: > 0 forward, < 0 one period back along the executed path, 0 pause.
 #[no_mangle]
-pub extern "C" fn MCC_SetReverseInterpRoutine(
+pub extern "system" fn MCC_SetReverseInterpRoutine(
     pfnForwardReverse: INTERP,
     wGroupIndex: WORD,
 ) -> c_int {
@@ -140,7 +142,7 @@ pub extern "C" fn MCC_SetReverseInterpRoutine(
 /// front of its path, the group goes forward along the path to the front, then on with
 /// its commands.
 #[no_mangle]
-pub extern "C" fn MCC_EnableReverseInterp(bEnableReverse: BOOL, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_EnableReverseInterp(bEnableReverse: BOOL, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         with_group(wGroupIndex, |g| {
             if g.is_external() {

@@ -13,7 +13,7 @@ use std::os::raw::c_int;
 /// counting the requests acknowledged). `INITIAL_MOTION_ERR` before init,
 /// `PARAMETER_ERR` for a card not initialised.
 #[no_mangle]
-pub extern "C" fn MCC_HostInterrupt(wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_HostInterrupt(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card(wCardIndex, |p| {
             p.handshake.host_interrupt();
@@ -26,7 +26,7 @@ pub extern "C" fn MCC_HostInterrupt(wCardIndex: WORD) -> c_int {
 /// card's HSK routine after the next tick. `INITIAL_MOTION_ERR` before init,
 /// `PARAMETER_ERR` for a card not initialised.
 #[no_mangle]
-pub extern "C" fn MCC_SlaveInterrupt(wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SlaveInterrupt(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card(wCardIndex, |p| {
             let crate::card::Peripherals { handshake, pending, .. } = p;

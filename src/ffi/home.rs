@@ -48,7 +48,7 @@ per_axis_setters! {
 /// called, or its homing was aborted (`MCC_AbortGoHome`), stopped by the emergency-stop
 /// input or failed on a limit switch.
 #[no_mangle]
-pub extern "C" fn MCC_GetGoHomeStatus() -> c_int {
+pub extern "system" fn MCC_GetGoHomeStatus() -> c_int {
     ffi_boundary! { Ok(system::active()?.home_status()) }
 }
 
@@ -56,7 +56,7 @@ pub extern "C" fn MCC_GetGoHomeStatus() -> c_int {
 /// and the homing ends without completing. `NO_ERR` also after a homing completed;
 /// `HOME_COMMAND_NOTCALLED_ERR` when no homing was started.
 #[no_mangle]
-pub extern "C" fn MCC_AbortGoHome() -> c_int {
+pub extern "system" fn MCC_AbortGoHome() -> c_int {
     ffi_boundary! {
         system::active()?.abort_homing()?;
         Ok(c::NO_ERR)

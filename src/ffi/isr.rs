@@ -26,7 +26,7 @@ fn register(kind: Kind, f: usize, wCardIndex: WORD) -> McclResult<c_int> {
 
 /// Registers the local I/O routine (limit switches, home sensors) of a card.
 #[no_mangle]
-pub extern "C" fn MCC_SetLIORoutine(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetLIORoutine(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Lio,
         pfnLIORoutine.map_or(0, |f| f as usize),
@@ -36,7 +36,7 @@ pub extern "C" fn MCC_SetLIORoutine(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> 
 
 /// The name the IMP manuals use for [`MCC_SetLIORoutine`]; the same function.
 #[no_mangle]
-pub extern "C" fn MCC_SetLIORoutineEx(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetLIORoutineEx(pfnLIORoutine: LIOISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
     Ok(MCC_SetLIORoutine(pfnLIORoutine, wCardIndex))
         }
@@ -44,7 +44,7 @@ pub extern "C" fn MCC_SetLIORoutineEx(pfnLIORoutine: LIOISR, wCardIndex: WORD) -
 
 /// Registers the encoder routine (index, compare) of a card.
 #[no_mangle]
-pub extern "C" fn MCC_SetENCRoutine(pfnEncoderRoutine: ENCISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetENCRoutine(pfnEncoderRoutine: ENCISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Enc,
         pfnEncoderRoutine.map_or(0, |f| f as usize),
@@ -54,7 +54,7 @@ pub extern "C" fn MCC_SetENCRoutine(pfnEncoderRoutine: ENCISR, wCardIndex: WORD)
 
 /// Registers the position-control-loop routine of a card.
 #[no_mangle]
-pub extern "C" fn MCC_SetPCLRoutine(pfnPCLRoutine: PCLISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetPCLRoutine(pfnPCLRoutine: PCLISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Pcl,
         pfnPCLRoutine.map_or(0, |f| f as usize),
@@ -64,7 +64,7 @@ pub extern "C" fn MCC_SetPCLRoutine(pfnPCLRoutine: PCLISR, wCardIndex: WORD) -> 
 
 /// Registers the A/D converter routine (comparators, conversion done, tag) of a card.
 #[no_mangle]
-pub extern "C" fn MCC_SetADCRoutine(pfnADCRoutine: ADCISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetADCRoutine(pfnADCRoutine: ADCISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Adc,
         pfnADCRoutine.map_or(0, |f| f as usize),
@@ -75,7 +75,7 @@ pub extern "C" fn MCC_SetADCRoutine(pfnADCRoutine: ADCISR, wCardIndex: WORD) -> 
 /// Registers the timer routine of a card (the vendor names the parameter
 /// `pfnLIORoutine`).
 #[no_mangle]
-pub extern "C" fn MCC_SetTMRRoutine(pfnLIORoutine: TMRISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetTMRRoutine(pfnLIORoutine: TMRISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Tmr,
         pfnLIORoutine.map_or(0, |f| f as usize),
@@ -85,7 +85,7 @@ pub extern "C" fn MCC_SetTMRRoutine(pfnLIORoutine: TMRISR, wCardIndex: WORD) -> 
 
 /// Registers the remote I/O routine (digital input triggers, transmission errors).
 #[no_mangle]
-pub extern "C" fn MCC_SetRIORoutine(pfnRIORoutine: RIOISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetRIORoutine(pfnRIORoutine: RIOISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Rio,
         pfnRIORoutine.map_or(0, |f| f as usize),
@@ -96,7 +96,7 @@ pub extern "C" fn MCC_SetRIORoutine(pfnRIORoutine: RIOISR, wCardIndex: WORD) -> 
 /// Registers the handshake routine of a card (the vendor names the parameter
 /// `pfnLIORoutine`).
 #[no_mangle]
-pub extern "C" fn MCC_SetHSKRoutine(pfnLIORoutine: HSKISR, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetHSKRoutine(pfnLIORoutine: HSKISR, wCardIndex: WORD) -> c_int {
     ffi_boundary! { register(
         Kind::Hsk,
         pfnLIORoutine.map_or(0, |f| f as usize),

@@ -44,7 +44,7 @@ fn jog(
 /// Moves one axis by `nPulse` pulses (|nPulse| <= 2048) in the next period; the group
 /// reads `GMS_RUNNING` for three periods. Not a queued command: it has no index.
 #[no_mangle]
-pub extern "C" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let a = axis(cAxis)?;
         if nPulse.unsigned_abs() > MAX_JOG_PULSES.unsigned_abs() {
@@ -60,7 +60,7 @@ pub extern "C" fn MCC_JogPulse(nPulse: c_int, cAxis: c_char, wGroupIndex: WORD) 
 
 /// Moves one axis by `dfOffset` UU at `dfRatio` percent of its maximum safe speed.
 #[no_mangle]
-pub extern "C" fn MCC_JogSpace(
+pub extern "system" fn MCC_JogSpace(
     dfOffset: f64,
     dfRatio: f64,
     cAxis: c_char,
@@ -77,7 +77,7 @@ pub extern "C" fn MCC_JogSpace(
 /// Moves one axis in direction `nDir` (1 or -1) at `dfRatio` percent until the work-zone
 /// boundary (dfHighLimit / dfLowLimit); stop it earlier with `MCC_AbortMotionEx`.
 #[no_mangle]
-pub extern "C" fn MCC_JogConti(
+pub extern "system" fn MCC_JogConti(
     nDir: c_int,
     dfRatio: f64,
     cAxis: c_char,

@@ -56,7 +56,7 @@ fn set_kinematic_trans(
 /// two aux axes in A and B) through `pfnInvKinematics` every tick, its point-to-point
 /// moves move the joints. Registering a group again replaces the registration.
 #[no_mangle]
-pub extern "C" fn MCC_SetKinematicTrans(
+pub extern "system" fn MCC_SetKinematicTrans(
     pfnFwdKinematics: FWDKINEFUN,
     pfnInvKinematics: INVKINEFUN,
     dwExtensionSize: DWORD,
@@ -76,7 +76,7 @@ pub extern "C" fn MCC_SetKinematicTrans(
 /// thread without any lock, before it starts each Cartesian move: with the current and
 /// the target Cartesian position; the offset it writes is added to the target.
 #[no_mangle]
-pub extern "C" fn MCC_SetPreProcessMotionCommandCallback(
+pub extern "system" fn MCC_SetPreProcessMotionCommandCallback(
     pfnPreProcMotionCmd: PRE_PROCESS_MOTION_COMMAND,
     wGroupIndex: WORD,
 ) -> c_int {
@@ -158,7 +158,7 @@ fn check_curve(ctx: &Ctx<'_>, pts: &[[f64; 3]], aux: &[f64; 5]) -> Result<(), Pl
 /// feed speed (over X/Y/Z) with the group's acc/dec; `posture` goes to the kinematics.
 /// Axes outside `dwAxisMask` keep their position.
 #[no_mangle]
-pub extern "C" fn MCC_Line_V6(
+pub extern "system" fn MCC_Line_V6(
     x: f64,
     y: f64,
     z: f64,
@@ -187,7 +187,7 @@ macro_rules! two_point_curves_v6 {
     ($($(#[$doc:meta])* $name:ident => $path:path, $kind:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             x0: f64, y0: f64, z0: f64,
             x1: f64, y1: f64, z1: f64,
             rx: f64, ry: f64, rz: f64,
@@ -221,7 +221,7 @@ two_point_curves_v6! {
 /// the axis through (cx, cy, cz) along (nv0, nv1, nv2); the orientation goes linearly
 /// to (rx, ry, rz).
 #[no_mangle]
-pub extern "C" fn MCC_ArcTheta_V6(
+pub extern "system" fn MCC_ArcTheta_V6(
     cx: f64,
     cy: f64,
     cz: f64,
@@ -280,7 +280,7 @@ macro_rules! plane_circles_v6 {
     ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             $c0: f64, $c1: f64,
             rx: f64, ry: f64, rz: f64,
             byCirDir: BYTE, posture: DWORD, wGroupIndex: WORD,
@@ -376,7 +376,7 @@ pub(super) fn joint_ptp(args: Axes, g: WORD, m: u32, sync: bool) -> McclResult<O
 /// per joint the speeds and limits of the channels they run on. Joints outside
 /// `dwAxisMask` keep their position. On a group without kinematics it is `MCC_SyncPtP`.
 #[no_mangle]
-pub extern "C" fn MCC_PtP_V6(
+pub extern "system" fn MCC_PtP_V6(
     j0: f64,
     j1: f64,
     j2: f64,

@@ -35,6 +35,6 @@ pointer_fns! {
 
 /// Applies the parameters set since init and resets motion: `MCC_UpdateParam`.
 #[no_mangle]
-pub extern "C" fn MCC_UpdateMachParam() -> c_int {
+pub extern "system" fn MCC_UpdateMachParam() -> c_int {
     ffi_boundary! { system::update_param().map(|()| c::NO_ERR) }
 }

@@ -13,7 +13,7 @@ use std::os::raw::c_int;
 /// Turns the hardware limit switch check on: `HLP_BIDIR` (0), `HLP_UNIDIR` (1),
 /// `HLP_BIDIR_GEN_ERR` (2) or `HLP_UNIDIR_GEN_ERR` (3); rules: docs/simulated-machine.md.
 #[no_mangle]
-pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
+pub extern "system" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
     ffi_boundary! {
         let mode = limit_check_mode(nMode)?;
         system::active()?.set_limit_check(Some(mode));
@@ -23,7 +23,7 @@ pub extern "C" fn MCC_EnableLimitSwitchCheck(nMode: c_int) -> c_int {
 
 /// Turns the hardware limit switch check off.
 #[no_mangle]
-pub extern "C" fn MCC_DisableLimitSwitchCheck() -> c_int {
+pub extern "system" fn MCC_DisableLimitSwitchCheck() -> c_int {
     ffi_boundary! {
         system::active()?.set_limit_check(None);
         Ok(c::NO_ERR)
@@ -85,7 +85,7 @@ pointer_fns! {
 
 /// Clears the latched limit switch status (it latches again while the switch is active).
 #[no_mangle]
-pub extern "C" fn MCC_ClearLatchedLimitSwitchStatus(
+pub extern "system" fn MCC_ClearLatchedLimitSwitchStatus(
     wUpDown: WORD,
     wChannel: WORD,
     wCardIndex: WORD,

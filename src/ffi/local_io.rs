@@ -78,7 +78,7 @@ on_off! {
 /// # Safety
 /// `Status` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_GetLedLightStatus(
+pub unsafe extern "system" fn MCC_GetLedLightStatus(
     Channel: WORD,
     Status: *mut WORD,
     wCardIndex: WORD,
@@ -116,7 +116,7 @@ value_fns! {
 /// # Safety
 /// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_GetHomeSensorStatus(
+pub unsafe extern "system" fn MCC_GetHomeSensorStatus(
     pwStatus: *mut WORD,
     wChannel: WORD,
     wCardIndex: WORD,
@@ -149,7 +149,7 @@ fn out_point(wPoint: WORD) -> McclResult<usize> {
 /// `LIO_INT_NO`, `LIO_INT_RISE` (default), `LIO_INT_FALL`, `LIO_INT_LEVEL` (every tick
 /// while active).
 #[no_mangle]
-pub extern "C" fn MCC_SetLIOTriggerType(
+pub extern "system" fn MCC_SetLIOTriggerType(
     wTriggerType: WORD,
     wPoint: WORD,
     wCardIndex: WORD,
@@ -205,7 +205,7 @@ macro_rules! trig_out_settings {
     )*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($w: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
+        pub extern "system" fn $name($w: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
             ffi_boundary! {
                 trig_out_ready(TrigOutKind::$kind)?;
                 let s = TrigOutSetting::$setting($parse($w)?);
@@ -242,7 +242,7 @@ trig_out_settings! {
 
 /// Trigger values of several points at once: bit n of the mask selects point n.
 #[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutValueEx(
+pub extern "system" fn MCC_SetLIOTrigOutValueEx(
     dwBitMask: DWORD,
     dwBitValue: DWORD,
     wCardIndex: WORD,
@@ -258,7 +258,7 @@ pub extern "C" fn MCC_SetLIOTrigOutValueEx(
 
 /// How long a triggered output or LED holds its value, ns (rounded up to whole ticks).
 #[no_mangle]
-pub extern "C" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card_triggers(Card(wCardIndex), |t| {
             t.trig_period_ns = u64::from(dwPeriod);
@@ -276,7 +276,7 @@ pointer_fns! {
 
 /// Removes the compare values of the channels that trigger local outputs.
 #[no_mangle]
-pub extern "C" fn MCC_EraseLIOCompValue(wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_EraseLIOCompValue(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card_triggers(Card(wCardIndex), |t| {
             t.erase_lio_comp_values();

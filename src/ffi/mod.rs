@@ -1,6 +1,8 @@
-//! The extern "C" layer: argument checks, pointer checks, panic boundary, and Rust errors
+//! The C entry points: argument checks, pointer checks, panic boundary, and Rust errors
 //! to vendor return codes. One file per chapter of the manual; every entry point is a
-//! plain `#[no_mangle] pub extern "C" fn` whose body is one `ffi_boundary! { ... }`
+//! plain `#[no_mangle] pub extern "system" fn` (the vendor's `MCC_CALL`: stdcall on
+//! 32-bit Windows, the C convention everywhere else; the `MCCL_Sim*` extension is
+//! `extern "C"`, as its header declares no convention) whose body is one `ffi_boundary! { ... }`
 //! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
 //! `ffi_boundary` integration test rejects an exported body that does not enter it.
 //!
@@ -13,7 +15,7 @@
 
 /// The panic boundary of an exported function: the block runs as a closure returning
 /// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
-/// to `RUN_TIME_ERR`. Every `extern "C"` body in this module is exactly one of these.
+/// to `RUN_TIME_ERR`. Every exported function's body in this module is exactly one of these.
 macro_rules! ffi_boundary {
     ($($body:tt)*) => {
         $crate::ffi::guard(|| { $($body)* })
@@ -35,7 +37,7 @@ macro_rules! on_off {
     ) => {
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
+        pub extern "system" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
             ffi_boundary! {
                 let $flag = $v;
                 $body
@@ -52,7 +54,7 @@ macro_rules! value_fns {
     (@fn $(#[$doc:meta])* $name:ident($($v:ident: $t:ty)?) ($($a:ident),+) $body:expr) => {
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             $($v: $t,)?
             $($a: $crate::vendor::WORD),+
         ) -> ::std::os::raw::c_int {
@@ -84,7 +86,7 @@ macro_rules! pointer_fns {
             " valid `", stringify!($t), "`."
         )]
         #[no_mangle]
-        pub unsafe extern "C" fn $name(
+        pub unsafe extern "system" fn $name(
             $p: *mut $t,
             $($a: $crate::vendor::WORD),+
         ) -> ::std::os::raw::c_int {
@@ -107,7 +109,7 @@ macro_rules! per_axis_setters {
     ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             v0: $t, v1: $t, v2: $t, v3: $t, v4: $t, v5: $t, v6: $t, v7: $t,
             $ix: $crate::vendor::WORD,
         ) -> ::std::os::raw::c_int {
@@ -131,7 +133,7 @@ macro_rules! per_axis_getters {
         /// # Safety
         /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
         #[no_mangle]
-        pub unsafe extern "C" fn $name(
+        pub unsafe extern "system" fn $name(
             p0: *mut $t, p1: *mut $t, p2: *mut $t, p3: *mut $t,
             p4: *mut $t, p5: *mut $t, p6: *mut $t, p7: *mut $t,
             $ix: $crate::vendor::WORD,

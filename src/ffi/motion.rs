@@ -38,7 +38,7 @@ macro_rules! settings_setters {
     ($($(#[$doc:meta])* $name:ident($arg:ident: $ty:ty) = $check:expr => $field:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($arg: $ty, wGroupIndex: WORD) -> c_int {
+        pub extern "system" fn $name($arg: $ty, wGroupIndex: WORD) -> c_int {
             ffi_boundary! {
                 let v = $check($arg)?;
                 super::update_group(wGroupIndex, |g| g.settings.$field = v)
@@ -54,7 +54,7 @@ macro_rules! speed_setters {
     ($($(#[$doc:meta])* $name:ident($arg:ident) = $check:expr => $field:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($arg: f64, wGroupIndex: WORD) -> f64 {
+        pub extern "system" fn $name($arg: f64, wGroupIndex: WORD) -> f64 {
             ffi_boundary! {
                 let v = $check($arg)?;
                 with_group(wGroupIndex, |g| {
@@ -72,7 +72,7 @@ macro_rules! settings_getters {
     ($($(#[$doc:meta])* $name:ident -> $ret:ty = |$s:ident| $get:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(wGroupIndex: WORD) -> $ret {
+        pub extern "system" fn $name(wGroupIndex: WORD) -> $ret {
             ffi_boundary! {
                 with_group(wGroupIndex, |g| {
                     let $s = &g.settings;
@@ -138,7 +138,7 @@ settings_getters! {
 
 /// The current tangential speed (UU/s): X/Y/Z path speed, or the fastest aux axis.
 #[no_mangle]
-pub extern "C" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
     ffi_boundary! { read_published(wGroupIndex, |p| p.load_motion().path_speed()) }
 }
 
@@ -179,7 +179,7 @@ macro_rules! axes_motions {
     ($($(#[$doc:meta])* $name:ident => $f:ident($($extra:expr),*);)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             dfX0: f64, dfX1: f64, dfX2: f64, dfX3: f64,
             dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
             wGroupIndex: WORD, dwAxisMask: DWORD,
@@ -206,7 +206,7 @@ macro_rules! axis_motions {
     )*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($arg: f64, wGroupIndex: WORD) -> c_int {
+        pub extern "system" fn $name($arg: f64, wGroupIndex: WORD) -> c_int {
             ffi_boundary! { $f(one($axis, $arg), wGroupIndex, c::$mask $(, $extra)*) }
         }
     )*};
@@ -353,7 +353,7 @@ macro_rules! plane_arcs {
     )*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             $r0: f64, $r1: f64, $e0: f64, $e1: f64, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! { arc(Plane::$plane, [$r0, $r1], [$e0, $e1], None, wGroupIndex) }
@@ -361,7 +361,7 @@ macro_rules! plane_arcs {
 
         #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
         #[no_mangle]
-        pub extern "C" fn $aux(
+        pub extern "system" fn $aux(
             $r0: f64, $r1: f64, $e0: f64, $e1: f64,
             dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
             wGroupIndex: WORD,
@@ -410,7 +410,7 @@ macro_rules! arcs_xyz {
     ($(#[$doc:meta])* $name:ident, $aux:ident) => {
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
@@ -418,7 +418,7 @@ macro_rules! arcs_xyz {
 
         #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
         #[no_mangle]
-        pub extern "C" fn $aux(
+        pub extern "system" fn $aux(
             dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64,
             dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
             wGroupIndex: WORD,
@@ -454,7 +454,7 @@ macro_rules! plane_arcs_theta {
     ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($c0: f64, $c1: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
+        pub extern "system" fn $name($c0: f64, $c1: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
             ffi_boundary! { arc_theta(Plane::$plane, [$c0, $c1], dfTheta, wGroupIndex) }
         }
     )*};
@@ -485,7 +485,7 @@ macro_rules! plane_circles {
     ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name($c0: f64, $c1: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
+        pub extern "system" fn $name($c0: f64, $c1: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
             ffi_boundary! {
                 let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
                 circle(at, byCirDir, wGroupIndex)
@@ -494,7 +494,7 @@ macro_rules! plane_circles {
 
         #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
         #[no_mangle]
-        pub extern "C" fn $aux(
+        pub extern "system" fn $aux(
             $c0: f64, $c1: f64,
             dfU: f64, dfV: f64, dfW: f64, dfA: f64, dfB: f64,
             byCirDir: BYTE, wGroupIndex: WORD,
@@ -531,7 +531,7 @@ macro_rules! plane_helicals {
     ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             $c0: f64, $c1: f64, dfPitch: f64, dfTheta: f64, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! {
@@ -542,7 +542,7 @@ macro_rules! plane_helicals {
 
         #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
         #[no_mangle]
-        pub extern "C" fn $aux(
+        pub extern "system" fn $aux(
             $c0: f64, $c1: f64, dfPitch: f64,
             dfU: f64, dfV: f64, dfW: f64, dfA: f64, dfB: f64,
             dfTheta: f64, wGroupIndex: WORD,
@@ -611,7 +611,7 @@ macro_rules! plane_spirals {
     )*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $helica(
+        pub extern "system" fn $helica(
             $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, byCirDir: BYTE, wGroupIndex: WORD,
         ) -> c_int {
             ffi_boundary! {
@@ -622,7 +622,7 @@ macro_rules! plane_spirals {
 
         $(#[$cone_doc])*
         #[no_mangle]
-        pub extern "C" fn $cone(
+        pub extern "system" fn $cone(
             $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, CenterRate: f64,
             byCirDir: BYTE, wGroupIndex: WORD,
         ) -> c_int {

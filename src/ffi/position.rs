@@ -68,13 +68,13 @@ fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
 
 /// Clock divider of the integral term (>= 1).
 #[no_mangle]
-pub extern "C" fn MCC_SetIGainClockDivider(dwClockDivider: DWORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetIGainClockDivider(dwClockDivider: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! { set_divider(0, dwClockDivider, wCardIndex) }
 }
 
 /// Clock divider of the derivative term (>= 1).
 #[no_mangle]
-pub extern "C" fn MCC_SetDGainClockDivider(dwClockDivider: DWORD, wCardIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetDGainClockDivider(dwClockDivider: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! { set_divider(1, dwClockDivider, wCardIndex) }
 }
 
@@ -97,7 +97,7 @@ per_axis_getters! {
 /// Thresholds of the closed-loop error counter of one channel (kept for the PCL
 /// interrupt).
 #[no_mangle]
-pub extern "C" fn MCC_SetErrorCountThreshold(
+pub extern "system" fn MCC_SetErrorCountThreshold(
     wChannel: WORD,
     wPlusThreshold: WORD,
     wMinusThreshold: WORD,
@@ -159,7 +159,7 @@ per_axis_getters! {
 /// Tracking error check on for the axes in the mask: a following error above the
 /// axis's limit (`MCC_SetTrackErrorLimit`) stops the group with error 0xF801 + axis.
 #[no_mangle]
-pub extern "C" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
+pub extern "system" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
     ffi_boundary! {
         axis_mask(dwAxisMask)?;
         update_group(wGroupIndex, |g| g.enable_track_error(dwAxisMask))
@@ -168,14 +168,18 @@ pub extern "C" fn MCC_EnableTrackError(wGroupIndex: WORD, dwAxisMask: DWORD) -> 
 
 /// Tracking error check off for every axis.
 #[no_mangle]
-pub extern "C" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DisableTrackError(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { update_group(wGroupIndex, |g| g.disable_track_error()) }
 }
 
 /// The tracking error limit of one axis, UU (>= 0, a distance of the axis in the
 /// position range: |limit| x pulses per UU <= 1e15).
 #[no_mangle]
-pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetTrackErrorLimit(
+    dfLimit: f64,
+    cAxis: c_char,
+    wGroupIndex: WORD,
+) -> c_int {
     ffi_boundary! {
         let a = axis(cAxis)?;
         let v = finite(dfLimit)?.abs();
@@ -189,7 +193,7 @@ pub extern "C" fn MCC_SetTrackErrorLimit(dfLimit: f64, cAxis: c_char, wGroupInde
 /// # Safety
 /// `pdfLimit` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_GetTrackErrorLimit(
+pub unsafe extern "system" fn MCC_GetTrackErrorLimit(
     pdfLimit: *mut f64,
     cAxis: c_char,
     wGroupIndex: WORD,
@@ -215,7 +219,7 @@ pointer_fns! {
 
 /// Applies the compensation tables set with `MCC_SetCompParam`.
 #[no_mangle]
-pub extern "C" fn MCC_UpdateCompParam() -> c_int {
+pub extern "system" fn MCC_UpdateCompParam() -> c_int {
     ffi_boundary! {
         let comp = system::config(|c| c.comp.clone());
         system::active()?.lock_machine().apply_compensation(&comp);
@@ -226,7 +230,7 @@ pub extern "C" fn MCC_UpdateCompParam() -> c_int {
 /// In-position mode (`IPM_ONETIME_BLOCK`, `IPM_ONETIME_UNBLOCK`, `IPM_SETTLE_BLOCK`,
 /// `IPM_SETTLE_UNBLOCK`; user manual §2.7.2).
 #[no_mangle]
-pub extern "C" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         if wMode > c::IPM_SETTLE_UNBLOCK {
             return Err(McclError::Parameter);
@@ -237,7 +241,7 @@ pub extern "C" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int {
 
 /// Longest time (ms) the in-position check waits after a command's last pulse.
 #[no_mangle]
-pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         update_group(wGroupIndex, |g| g.inpos.set_max_check_ms(wMaxCheckTime))
     }
@@ -245,7 +249,7 @@ pub extern "C" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WOR
 
 /// How long (ms) the axes must stay within tolerance in the `IPM_SETTLE_*` modes.
 #[no_mangle]
-pub extern "C" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         update_group(wGroupIndex, |g| g.inpos.set_settle_ms(wSettleTime))
     }
@@ -295,7 +299,7 @@ per_axis_getters! {
 
 /// Obsolete name of [`MCC_SetInPosMaxCheckTime`].
 #[no_mangle]
-pub extern "C" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
     Ok(MCC_SetInPosMaxCheckTime(wCheckTime, wGroupIndex))
         }
@@ -303,7 +307,7 @@ pub extern "C" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD) -> 
 
 /// Obsolete: the settle (stable) time of the in-position check, ms.
 #[no_mangle]
-pub extern "C" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         with_group(wGroupIndex, |g| Ok(g.inpos.settle_ms()))
     }

@@ -110,7 +110,7 @@ macro_rules! remote_io {
 
         $(#[$set_output_doc])*
         #[no_mangle]
-        pub extern "C" fn $set_output(
+        pub extern "system" fn $set_output(
             wValue: WORD, wSet: WORD, wPort: WORD, wCardIndex: WORD,
         ) -> c_int {
             ffi_boundary! { set_do($sets, wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }

@@ -10,7 +10,7 @@ use std::os::raw::c_int;
 /// fast and stepped clocks a poll repeated at the same virtual time is a program waiting:
 /// virtual time runs (see `clock`), so `while (MCC_GetMotionStatus(g) != GMS_STOP);` ends.
 #[no_mangle]
-pub extern "C" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let shared = system::active()?;
         let published = shared.published(wGroupIndex)?;
@@ -48,13 +48,13 @@ pointer_fns! {
 
 /// The next queued command gets index 0 again (automatic numbering).
 #[no_mangle]
-pub extern "C" fn MCC_ResetCommandIndex(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_ResetCommandIndex(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_command_index(0, false)) }
 }
 
 /// The count of started commands (`COMMAND_INFO.nCommandIndex_LD`) restarts from 0.
 #[no_mangle]
-pub extern "C" fn MCC_ResetCommandIndexLD(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_ResetCommandIndexLD(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.reset_ld_index()) }
 }
 
@@ -62,7 +62,7 @@ pub extern "C" fn MCC_ResetCommandIndexLD(wGroupIndex: WORD) -> c_int {
 /// command keeps that index (the program numbers its commands itself), with FALSE the
 /// numbering counts on from it.
 #[no_mangle]
-pub extern "C" fn MCC_SetCommandIndex(
+pub extern "system" fn MCC_SetCommandIndex(
     wIndex: WORD,
     bManualIndex: crate::vendor::BOOL,
     wGroupIndex: WORD,
@@ -86,7 +86,7 @@ pointer_fns! {
 /// Depth of the card's pulse FIFO (> 0; at most [`MAX_PULSE_STOCK`], a larger one is
 /// taken as that); returns the depth set, as the vendor's library does (default 1).
 #[no_mangle]
-pub extern "C" fn MCC_SetMaxPulseStockNum(nMaxStockNum: c_int) -> c_int {
+pub extern "system" fn MCC_SetMaxPulseStockNum(nMaxStockNum: c_int) -> c_int {
     ffi_boundary! {
         let n = u32::try_from(nMaxStockNum)
             .ok()
@@ -105,7 +105,7 @@ pub const MAX_PULSE_STOCK: u32 = 63;
 
 /// The depth of the card's pulse FIFO.
 #[no_mangle]
-pub extern "C" fn MCC_GetMaxPulseStockNum() -> c_int {
+pub extern "system" fn MCC_GetMaxPulseStockNum() -> c_int {
     ffi_boundary! {
         let n = system::active()?
             .max_pulse_stock
@@ -120,7 +120,7 @@ pub extern "C" fn MCC_GetMaxPulseStockNum() -> c_int {
 /// # Safety
 /// `pwStockCount` must be NULL (refused with `PARAMETER_ERR`) or writable.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
+pub unsafe extern "system" fn MCC_GetCurPulseStockCount(
     pwStockCount: *mut WORD,
     wChannel: WORD,
     wCardIndex: WORD,
@@ -149,12 +149,12 @@ pub unsafe extern "C" fn MCC_GetCurPulseStockCount(
 
 /// The group's error record (0 when none; codes in docs/vendor-interface.md).
 #[no_mangle]
-pub extern "C" fn MCC_GetErrorCode(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_GetErrorCode(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { read_published(wGroupIndex, |p| p.load_info().error) }
 }
 
 /// Clears the group's error record; queued commands run again.
 #[no_mangle]
-pub extern "C" fn MCC_ClearError(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_ClearError(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.clear_error()) }
 }

@@ -21,7 +21,7 @@ pub const VERSION_STRING: &[u8] = b"6.00\0";
 /// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
 /// valid memory of the declared C type, as in the vendor library.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
+pub unsafe extern "system" fn MCC_GetVersion(strVersion: *mut c_char) {
     ffi_boundary! {
         if strVersion.is_null() {
             return Err(McclError::Parameter);
@@ -42,7 +42,7 @@ pub unsafe extern "C" fn MCC_GetVersion(strVersion: *mut c_char) {
 /// Sets the upper limit of the general-motion feed speed (UU/s, in the speed range
 /// 1e-6..=1e9 of `config::range`).
 #[no_mangle]
-pub extern "C" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
+pub extern "system" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
     ffi_boundary! {
         let v = config::range::speed(dfMaxSpeed)?;
         system::config(|c| c.sys_max_speed = v);
@@ -52,7 +52,7 @@ pub extern "C" fn MCC_SetSysMaxSpeed(dfMaxSpeed: f64) -> c_int {
 
 /// The upper limit of the general-motion feed speed (UU/s).
 #[no_mangle]
-pub extern "C" fn MCC_GetSysMaxSpeed() -> f64 {
+pub extern "system" fn MCC_GetSysMaxSpeed() -> f64 {
     ffi_boundary! { Ok(system::config(|c| c.sys_max_speed)) }
 }
 
@@ -81,7 +81,7 @@ pointer_fns! {
 
 /// Removes every group (only while the system is closed).
 #[no_mangle]
-pub extern "C" fn MCC_CloseAllGroups() -> c_int {
+pub extern "system" fn MCC_CloseAllGroups() -> c_int {
     ffi_boundary! { system::with(|s| s.close_all_groups()).map(|()| c::NO_ERR) }
 }
 
@@ -99,7 +99,7 @@ macro_rules! create_groups {
     ($($(#[$doc:meta])* $name:ident($($size:ident)?) = $queue:expr;)*) => {$(
         $(#[$doc])*
         #[no_mangle]
-        pub extern "C" fn $name(
+        pub extern "system" fn $name(
             xMapToCh: c_int, yMapToCh: c_int, zMapToCh: c_int, uMapToCh: c_int,
             vMapToCh: c_int, wMapToCh: c_int, aMapToCh: c_int, bMapToCh: c_int,
             nCardIndex: c_int, $($size: c_int)?
@@ -124,14 +124,14 @@ create_groups! {
 
 /// Removes one group (only while the system is closed).
 #[no_mangle]
-pub extern "C" fn MCC_CloseGroup(nGroupIndex: c_int) -> c_int {
+pub extern "system" fn MCC_CloseGroup(nGroupIndex: c_int) -> c_int {
     ffi_boundary! { system::with(|s| s.close_group(nGroupIndex)).map(|()| c::NO_ERR) }
 }
 
 /// The capacity of a group's motion command queue (0 for no such group, as the vendor's
 /// library answers).
 #[no_mangle]
-pub extern "C" fn MCC_GetCmdQueueSize(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_GetCmdQueueSize(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         match system::with(|s| s.group_def(wGroupIndex)) {
             Ok(def) => Ok(c_int::try_from(def.queue_size).unwrap_or(c_int::MAX)),
@@ -145,7 +145,7 @@ pub extern "C" fn MCC_GetCmdQueueSize(wGroupIndex: WORD) -> c_int {
 /// `RUN_TIME_ERR`. A queue's size is set when its group is created
 /// (`MCC_CreateGroupEx`), as the English user manual says (§2.3).
 #[no_mangle]
-pub extern "C" fn MCC_SetCmdQueueSize(nSize: c_int, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetCmdQueueSize(nSize: c_int, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let _ = wGroupIndex;
         if nSize < 1 {
@@ -200,7 +200,7 @@ unsafe fn init(ms: f64, p: *mut SYS_CARD_CONFIG, n: WORD, kind: InitKind) -> Mcc
 /// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
 /// valid memory of the declared C type, as in the vendor library.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_InitSystem(
+pub unsafe extern "system" fn MCC_InitSystem(
     nInterpolateTime: c_int,
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
@@ -219,7 +219,7 @@ pub unsafe extern "C" fn MCC_InitSystem(
 /// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
 /// valid memory of the declared C type, as in the vendor library.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_InitSystemEx(
+pub unsafe extern "system" fn MCC_InitSystemEx(
     dfInterpolateTime: f64,
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
@@ -236,7 +236,7 @@ pub unsafe extern "C" fn MCC_InitSystemEx(
 /// Every pointer argument must be NULL (refused with `PARAMETER_ERR`) or point to
 /// valid memory of the declared C type, as in the vendor library.
 #[no_mangle]
-pub unsafe extern "C" fn MCC_InitSimulation(
+pub unsafe extern "system" fn MCC_InitSimulation(
     nInterpolateTime: c_int,
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
@@ -257,7 +257,7 @@ pub unsafe extern "C" fn MCC_InitSimulation(
 /// Stops the card at once and releases the engine thread; with no system running it
 /// does nothing and returns `NO_ERR`, as the vendor's library does.
 #[no_mangle]
-pub extern "C" fn MCC_CloseSystem() -> c_int {
+pub extern "system" fn MCC_CloseSystem() -> c_int {
     ffi_boundary! { system::close().map(|()| c::NO_ERR) }
 }
 
@@ -265,13 +265,13 @@ pub extern "C" fn MCC_CloseSystem() -> c_int {
 /// stops at once and positions restart from 0 (`COMMAND_NOTACCEPTED_ERR`, reset all the
 /// same, when a group was busy, as the vendor's library answers).
 #[no_mangle]
-pub extern "C" fn MCC_ResetMotion() -> c_int {
+pub extern "system" fn MCC_ResetMotion() -> c_int {
     ffi_boundary! { system::reset_motion().map(|()| c::NO_ERR) }
 }
 
 /// Applies mechanism and encoder parameters set since init; resets motion (§2.4.2).
 #[no_mangle]
-pub extern "C" fn MCC_UpdateParam() -> c_int {
+pub extern "system" fn MCC_UpdateParam() -> c_int {
     ffi_boundary! { system::update_param().map(|()| c::NO_ERR) }
 }
 
@@ -279,7 +279,7 @@ pub extern "C" fn MCC_UpdateParam() -> c_int {
 /// parameters in effect, negative for a reversed output (`wPosToEncoderDir` nonzero). A
 /// bad channel or card reads 0, as the vendor's library answers.
 #[no_mangle]
-pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
+pub extern "system" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
     ffi_boundary! {
         let (Ok(cd), Ok(ch)) = (card(wCardIndex), channel(wChannel)) else {
             return Ok(0.0);
@@ -291,7 +291,7 @@ pub extern "C" fn MCC_GetConvFactor(wChannel: WORD, wCardIndex: WORD) -> f64 {
 /// Turns dry run on: trajectories are planned and reported, nothing moves
 /// (`COMMAND_NOTACCEPTED_ERR` when a card is an MC3B: its motion is the device's).
 #[no_mangle]
-pub extern "C" fn MCC_EnableDryRun() -> c_int {
+pub extern "system" fn MCC_EnableDryRun() -> c_int {
     ffi_boundary! {
         let shared = system::active()?;
         if system::has_mc3b() {
@@ -304,7 +304,7 @@ pub extern "C" fn MCC_EnableDryRun() -> c_int {
 
 /// Turns dry run off.
 #[no_mangle]
-pub extern "C" fn MCC_DisableDryRun() -> c_int {
+pub extern "system" fn MCC_DisableDryRun() -> c_int {
     ffi_boundary! {
         system::active()?.dry_run.store(false, Ordering::Release);
         Ok(c::NO_ERR)
@@ -313,7 +313,7 @@ pub extern "C" fn MCC_DisableDryRun() -> c_int {
 
 /// 0 when dry run is on, 1 when off (the same sense as `MCC_CheckBlend`).
 #[no_mangle]
-pub extern "C" fn MCC_CheckDryRun() -> c_int {
+pub extern "system" fn MCC_CheckDryRun() -> c_int {
     ffi_boundary! {
         Ok(c_int::from(
             !system::active()?.dry_run.load(Ordering::Acquire),

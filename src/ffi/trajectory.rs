@@ -8,7 +8,7 @@ use crate::vendor::DWORD;
 /// under the fast and stepped clocks (the card runs while the program waits). Before
 /// `MCC_InitSystem` it sleeps in real time.
 #[no_mangle]
-pub extern "C" fn MCC_TimeDelay(dwTime: DWORD) {
+pub extern "system" fn MCC_TimeDelay(dwTime: DWORD) {
     ffi_boundary! {
         match system::active() {
             Ok(shared) => shared.clock.delay_ms(dwTime),
@@ -30,28 +30,28 @@ use std::os::raw::c_int;
 /// (`GMS_HOLD`); with `bBlockEnd` TRUE, holds when the running command ends.
 /// `HOLD_ILLEGAL_ERR` when nothing runs or the group is already held.
 #[no_mangle]
-pub extern "C" fn MCC_HoldMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
+pub extern "system" fn MCC_HoldMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| g.hold(bBlockEnd != 0)).map(|()| c::NO_ERR) }
 }
 
 /// Resumes held motion with the command's acceleration time (`CONTI_ILLEGAL_ERR` unless
 /// held).
 #[no_mangle]
-pub extern "C" fn MCC_ContiMotion(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_ContiMotion(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| g.conti()).map(|()| c::NO_ERR) }
 }
 
 /// Stops at once and empties the queue; with `bBlockEnd` TRUE the running command
 /// finishes first.
 #[no_mangle]
-pub extern "C" fn MCC_AbortMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
+pub extern "system" fn MCC_AbortMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.abort(0.0, bBlockEnd != 0)) }
 }
 
 /// Empties the queue and stops within `dfDecTime` ms (0: at once; at most 2^32 − 1).
 /// While it decelerates, new motion commands are refused with `ABORT_NOT_FINISH_ERR`.
 #[no_mangle]
-pub extern "C" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let t = crate::config::range::time_ms(dfDecTime)?;
         super::update_group(wGroupIndex, |g| g.abort(t, false))
@@ -70,14 +70,14 @@ on_off! {
 /// Lets the next command run in single-block mode (`COMMAND_NOTACCEPTED_ERR` when the
 /// mode is off).
 #[no_mangle]
-pub extern "C" fn MCC_RunSingleBlock(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_RunSingleBlock(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| g.run_single_block()).map(|()| c::NO_ERR) }
 }
 
 /// Blending on, effective at once (not through the queue); `COMMAND_NOTACCEPTED_ERR` on
 /// an MC3B group (its moves start and end at rest).
 #[no_mangle]
-pub extern "C" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         with_group(wGroupIndex, |g| {
             if g.is_external() {
@@ -91,7 +91,7 @@ pub extern "C" fn MCC_EnableBlendInstant(wGroupIndex: WORD) -> c_int {
 
 /// Blending off, effective at once.
 #[no_mangle]
-pub extern "C" fn MCC_DisableBlendInstant(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DisableBlendInstant(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_blend_now(false)) }
 }
 
@@ -106,14 +106,14 @@ on_off! {
 
 /// 0 when blending is on (as the end of the queue will have it), 1 when off.
 #[no_mangle]
-pub extern "C" fn MCC_CheckBlend(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_CheckBlend(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued))) }
 }
 
 /// Queues a delay of `dwTime` ms (> 0) before the next command (`GMS_DELAYING`
 /// meanwhile). Returns the command index.
 #[no_mangle]
-pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         if dwTime == 0 {
             return Err(McclError::Parameter);
@@ -124,7 +124,7 @@ pub extern "C" fn MCC_DelayMotion(dwTime: DWORD, wGroupIndex: WORD) -> c_int {
 
 /// 1 while the group is delaying, 0 otherwise (as the vendor's library answers).
 #[no_mangle]
-pub extern "C" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_CheckDelay(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let status = read_published(wGroupIndex, |p| p.load_status())?;
         Ok(c_int::from(status == c::GMS_DELAYING))
@@ -148,7 +148,7 @@ pub const MAX_OVERRIDE: f64 = 1.0e6;
 /// the next period: what runs re-plans the rest of its length from its speed with its
 /// acc and dec times. Returns `dfRate`.
 #[no_mangle]
-pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
     Ok(MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex))
         }
@@ -159,7 +159,7 @@ pub extern "C" fn MCC_OverrideSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
 /// job; an instant change while the group moves or has commands queued is
 /// `COMMAND_NOTACCEPTED_ERR` (the MC3B cannot change the speed of a running move).
 #[no_mangle]
-pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
         let r = override_rate(dfRate)?;
         with_group(wGroupIndex, |g| {
@@ -175,19 +175,19 @@ pub extern "C" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIndex: 
 /// The override ratio in effect (1.0 = 100 %, as the vendor's library reports it; a new
 /// one from the period after it was set).
 #[no_mangle]
-pub extern "C" fn MCC_GetOverrideRate(wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_GetOverrideRate(wGroupIndex: WORD) -> f64 {
     ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.override_pct / 100.0)) }
 }
 
 /// With `bFix` TRUE the override no longer changes speeds (motion runs at 100 %).
 #[no_mangle]
-pub extern "C" fn MCC_FixSpeed(bFix: BOOL, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_FixSpeed(bFix: BOOL, wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.fix_speed(bFix != 0)) }
 }
 
 /// Obsolete name of [`MCC_OverrideSpeed`].
 #[no_mangle]
-pub extern "C" fn MCC_SetOverSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_SetOverSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
     Ok(MCC_OverrideSpeedEx(dfRate, 1, wGroupIndex))
         }
@@ -195,7 +195,7 @@ pub extern "C" fn MCC_SetOverSpeed(dfRate: f64, wGroupIndex: WORD) -> f64 {
 
 /// Obsolete name of [`MCC_GetOverrideRate`].
 #[no_mangle]
-pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
     Ok(MCC_GetOverrideRate(wGroupIndex))
         }
@@ -205,7 +205,7 @@ pub extern "C" fn MCC_GetOverSpeed(wGroupIndex: WORD) -> f64 {
 /// ones to `dfSpeed` UU/s (the running command ramps to it through the override ratio).
 /// Returns the feed speed now in effect.
 #[no_mangle]
-pub extern "C" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
+pub extern "system" fn MCC_ChangeFeedSpeed(dfSpeed: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
         let v = super::motion::feed_speed(dfSpeed)?;
         with_group(wGroupIndex, |g| {
@@ -248,7 +248,7 @@ fn queue_remote(
 /// bits of `wBitMask` take those of `wValue` when the queue reaches it. Returns the
 /// command index.
 #[no_mangle]
-pub extern "C" fn MCC_QueueLIOOutputValue(
+pub extern "system" fn MCC_QueueLIOOutputValue(
     wBitMask: WORD,
     wValue: WORD,
     wGroupIndex: WORD,

@@ -22,7 +22,7 @@ use std::os::raw::c_int;
 /// `GROUP_PARAMETER_ERR`. Takes effect at the next `MCC_InitSystem`, `MCC_UpdateParam`
 /// or `MCC_ResetMotion`; `MCC_GetUnit` reads it at once.
 #[no_mangle]
-pub extern "C" fn MCC_SetUnit(nUnitMode: c_int, wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_SetUnit(nUnitMode: c_int, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         if nUnitMode != c::UNIT_MM && nUnitMode != c::UNIT_INCH {
             return Err(McclError::Parameter);
@@ -46,7 +46,7 @@ pub extern "C" fn MCC_SetUnit(nUnitMode: c_int, wGroupIndex: WORD) -> c_int {
 /// The unit last set for a group (`UNIT_MM` until `MCC_SetUnit`); `GROUP_PARAMETER_ERR`
 /// for a group that does not exist (or will not, before init).
 #[no_mangle]
-pub extern "C" fn MCC_GetUnit(wGroupIndex: WORD) -> c_int {
+pub extern "system" fn MCC_GetUnit(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         system::with(|s| -> McclResult<c_int> {
             s.group_def(wGroupIndex)?;

@@ -22,7 +22,9 @@
 //!   command's. Before the next command the client resynchronizes: it sends
 //!   `<id>P` (a query with no effect) and reads everything up to its answer,
 //!   dropping the frames before it ([`Client::resync`]); a line that does not
-//!   answer fails the next command with that error, before it is sent.
+//!   answer fails the next command with that error, before it is sent. After a
+//!   timeout, a line begun before the query (a reply whose CR was lost) is taken
+//!   as ended: the query's answer is never read as its continuation.
 //!   Otherwise stale input (line noise) is discarded before each command.
 //! * A hang-up of the line (the device side of a pty closed: `EPIPE`/`EIO`, end of
 //!   file) is an I/O error ([`ClientError::Io`]).
@@ -32,7 +34,9 @@ use std::fmt;
 use std::io;
 use std::time::{Duration, Instant};
 
-use serialport::{ClearBuffer, DataBits, FlowControl, Parity, SerialPort, StopBits, TTYPort};
+use serialport::{ClearBuffer, DataBits, FlowControl, Parity, SerialPort, StopBits};
+
+use crate::platform::SerialLine;
 
 use super::codec::{encode, Command, ErrorCode, ProtocolError, Response, ResponseParser};
 use super::emulator::Emulator;
@@ -101,7 +105,7 @@ fn serial_recv(port: &mut dyn SerialPort, buf: &mut [u8], timeout: Duration) -> 
     }
 }
 
-impl Transport for TTYPort {
+impl Transport for SerialLine {
     fn send(&mut self, data: &[u8]) -> io::Result<()> {
         serial_send(self, data)
     }
@@ -158,15 +162,15 @@ pub fn timeout_from_env() -> Duration {
         .unwrap_or(DEFAULT_TIMEOUT)
 }
 
-/// Open a serial device at 19200 8N1 without flow control.
-pub fn open_port(path: &str, timeout: Duration) -> Result<TTYPort, serialport::Error> {
+/// Open a serial device (`/dev/ttyS0`, `COM1`, ...) at 19200 8N1 without flow control.
+pub fn open_port(path: &str, timeout: Duration) -> Result<SerialLine, serialport::Error> {
     let builder = serialport::new(path, BAUD_RATE)
         .data_bits(DataBits::Eight)
         .parity(Parity::None)
         .stop_bits(StopBits::One)
         .flow_control(FlowControl::None)
         .timeout(timeout);
-    let port = TTYPort::open(&builder)?;
+    let port = SerialLine::open(&builder)?;
     // Best effort: a pty may refuse some tty requests.
     let _ = port.clear(ClearBuffer::All);
     Ok(port)
@@ -368,17 +372,37 @@ impl<T: Transport> Client<T> {
         }
     }
 
+    /// Feeds the parser what the line holds already, without waiting for more.
+    fn take_waiting_input(&mut self) -> Result<(), ClientError> {
+        let mut buf = [0u8; 256];
+        // Bounded: a line that never falls silent (noise) is read by the resync anyway.
+        for _ in 0..16 {
+            let n = self.port.recv(&mut buf, Duration::ZERO)?;
+            if n == 0 {
+                break;
+            }
+            self.parser.feed(buf.get(..n).unwrap_or(&[]));
+        }
+        Ok(())
+    }
+
     /// Brings the line back in step: sends `<id>P` and reads up to its answer.
     /// Returns the well-formed frames of controller `id` that came before it: late
     /// replies to earlier commands, oldest first. Garbage and other controllers'
     /// frames are dropped. Fails when the device does not answer in time.
     pub fn resync(&mut self, id: u8) -> Result<Vec<Response>, ClientError> {
         self.in_sync = false;
-        if !std::mem::take(&mut self.keep_input) {
+        if std::mem::take(&mut self.keep_input) {
+            // After a timeout, input that is already here is kept: it may be the late
+            // reply. Its last line ends here: whatever of it came in the timeout and
+            // since is all that will come (a CR lost on the line), and the answer to
+            // the query must not be read glued to it.
+            self.take_waiting_input()?;
+            self.parser.end_line();
+        } else {
             self.parser.clear();
             let _ = self.port.discard_input();
         }
-        // After a timeout, input that is already here is kept: it may be the late reply.
         self.port.send(&encode(&Command::QueryProductId { id }))?;
         let mut stale = Vec::new();
         // One timeout for the whole resync, however many frames come before the answer.
@@ -669,6 +693,75 @@ mod tests {
         let r = c.query_limits(0);
         assert!(matches!(r, Err(ClientError::Timeout)), "{r:?}");
         assert_eq!(c.transport().reads, 5);
+    }
+
+    /// A device that answers each command line it is sent with the next scripted
+    /// reply, only once the command was sent (unlike [`Scripted`], whose replies are
+    /// there whenever the client reads); `arrived` holds bytes on the line not read yet.
+    struct Answering {
+        answers: VecDeque<Vec<u8>>,
+        arrived: VecDeque<u8>,
+        sent: Vec<u8>,
+    }
+    impl Answering {
+        fn new(answers: &[&[u8]]) -> Answering {
+            Answering {
+                answers: answers.iter().map(|a| a.to_vec()).collect(),
+                arrived: VecDeque::new(),
+                sent: Vec::new(),
+            }
+        }
+    }
+    impl Transport for Answering {
+        fn send(&mut self, data: &[u8]) -> io::Result<()> {
+            self.sent.extend_from_slice(data);
+            for _ in data.iter().filter(|&&b| b == b'\r') {
+                if let Some(a) = self.answers.pop_front() {
+                    self.arrived.extend(a);
+                }
+            }
+            Ok(())
+        }
+        fn recv(&mut self, buf: &mut [u8], _t: Duration) -> io::Result<usize> {
+            let mut n = 0;
+            while let (Some(slot), Some(b)) = (buf.get_mut(n), self.arrived.pop_front()) {
+                *slot = b;
+                n += 1;
+            }
+            Ok(n)
+        }
+    }
+
+    #[test]
+    fn a_reply_that_lost_its_carriage_return_does_not_fail_the_next_call() {
+        // 0B is answered "0B5" and the CR is lost on the line: the call times out.
+        // The next call resyncs (0P) and then asks 0B again. The answer to 0P,
+        // "0P1,100\r", follows the partial "0B5" on the line; read as one line it is
+        // "0B50P1,100", which answers nothing, and the resync would time out too. The
+        // partial line was complete as far as it will ever be when the timeout
+        // expired: it is a reply of its own (a stale one), and the call succeeds.
+        let t = Answering::new(&[b"0B5", b"0P1,100\r", b"0B7\r"]);
+        let mut c = Client::new(t, Duration::from_millis(50));
+        let r = c.query_limits(0);
+        assert!(matches!(r, Err(ClientError::Timeout)), "{r:?}");
+        assert_eq!(c.query_limits(0).ok(), Some(7));
+        assert_eq!(c.transport().sent, b"0B\r0P\r0B\r");
+        assert!(c.in_sync());
+        // The same when the bytes without their CR only arrive after the timeout,
+        // before the next call: "0B6" waits on the line when the resync starts.
+        c.transport().answers = VecDeque::from(vec![b"".to_vec()]);
+        let r = c.query_limits(0);
+        assert!(matches!(r, Err(ClientError::Timeout)), "{r:?}");
+        c.transport().arrived.extend(b"0B6");
+        c.transport().answers = VecDeque::from(vec![b"0P1,100\r".to_vec(), b"0B3\r".to_vec()]);
+        assert_eq!(c.query_limits(0).ok(), Some(3));
+        // A command whose acknowledgement lost its CR is found done by `settle`.
+        let stop = Command::Stop { id: 0, motor: 1 };
+        c.transport().answers = VecDeque::from(vec![b"0S".to_vec(), b"0P1,100\r".to_vec()]);
+        let e = c.command(&stop).err();
+        assert!(matches!(e, Some(ClientError::Timeout)), "{e:?}");
+        let r = c.settle(&stop, ClientError::Timeout);
+        assert!(r.is_ok(), "{r:?}");
     }
 
     #[test]

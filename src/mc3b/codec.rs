@@ -1086,6 +1086,13 @@ impl ResponseParser {
         }
     }
 
+    /// Ends the line being received as if its CR had come: for a reader that knows no
+    /// more of it will come (its reply timeout expired), what arrived is a frame of its
+    /// own, and the next line is not read glued to it. Nothing when no line is begun.
+    pub fn end_line(&mut self) {
+        self.feed(&[CR]);
+    }
+
     /// Next complete frame, if any.
     pub fn next_response(&mut self) -> Option<Result<Response, ProtocolError>> {
         self.ready.pop_front()

@@ -8,8 +8,9 @@
 //! # COM port numbering
 //! `com_port` N (1 = COM1, §4.2) names the device given by the environment
 //! variable `MCL_COM<N>` when it is set (e.g. `MCL_COM1=/dev/pts/7`), and
-//! otherwise `/dev/ttyS<N-1>` (COM1 = `/dev/ttyS0`, the usual Linux
-//! numbering). `com_port` < 1 is a SERIAL PORT ERROR (no such port). The port
+//! otherwise the system's name for it ([`crate::platform::com_port_device`]):
+//! `/dev/ttyS<N-1>` on Linux (COM1 = `/dev/ttyS0`, the usual numbering),
+//! `COM<N>` on Windows. `com_port` < 1 is a SERIAL PORT ERROR (no such port). The port
 //! is opened at 19200 baud, 8N1, no flow control.
 //!
 //! # Decisions
@@ -120,7 +121,7 @@ pub fn com_port_path(com_port: c_int) -> Option<String> {
     }
     match std::env::var(format!("MCL_COM{com_port}")) {
         Ok(p) if !p.is_empty() => Some(p),
-        _ => Some(format!("/dev/ttyS{}", com_port - 1)),
+        _ => Some(crate::platform::com_port_device(com_port.unsigned_abs())),
     }
 }
 
@@ -847,7 +848,10 @@ mod tests {
     fn com_port_rule() {
         assert_eq!(com_port_path(0), None);
         // Use a port number nobody sets.
-        assert_eq!(com_port_path(77).as_deref(), Some("/dev/ttyS76"));
+        assert_eq!(
+            com_port_path(77),
+            Some(crate::platform::com_port_device(77))
+        );
     }
 
     #[test]

@@ -10,10 +10,11 @@
 //!   (`mc3b_port` in `MCCL_SIM`): unit conversions, jobs, the worker thread.
 //! * [`mcl`]: the MC3B's C library of §4 (`mcl_*`, exported with C linkage).
 //!   COM port N is the device named by `MCL_COM<N>` if set, else
-//!   `/dev/ttyS<N-1>`.
+//!   `/dev/ttyS<N-1>` (Linux) or `COM<N>` (Windows).
 //!
 //! The `mc3b-emu` binary runs the emulator on a pseudo-terminal in real time
-//! (see `mc3b-emu --help`).
+//! (see `mc3b-emu --help`); Windows has no pseudo-terminals, and there it
+//! says so and exits.
 
 pub mod backend;
 pub mod client;

@@ -63,22 +63,10 @@ fn address_from(v: Option<&str>) -> Result<Option<SocketAddr>, String> {
         .map_err(|_| format!("MCCL_PANEL={v:?}: not an address such as 127.0.0.1:8321 (or 1)"))
 }
 
-/// 16 random bytes from the kernel as 32 hex digits.
+/// 16 random bytes from the system's generator (`getrandom`) as 32 hex digits.
 fn token() -> std::io::Result<String> {
     let mut b = [0u8; 16];
-    let mut got = 0;
-    while got < b.len() {
-        // SAFETY: the pointer and length describe the unfilled tail of `b`.
-        let n = unsafe { libc::getrandom(b[got..].as_mut_ptr().cast(), b.len() - got, 0) };
-        if n < 0 {
-            let e = std::io::Error::last_os_error();
-            if e.kind() != std::io::ErrorKind::Interrupted {
-                return Err(e);
-            }
-        } else {
-            got += n as usize;
-        }
-    }
+    getrandom::fill(&mut b).map_err(std::io::Error::other)?;
     Ok(b.iter().map(|x| format!("{x:02x}")).collect())
 }
 
@@ -103,17 +91,12 @@ pub fn start_from_env(shared: &Arc<Shared>, groups: &[(usize, GroupDef)]) -> Opt
     }
 }
 
-/// The panel is a best-effort observer: its thread runs at nice 10, so under CPU
-/// contention (a flood of requests, a busy 2-core host) the engine thread and the
-/// program's threads go first. Lowering one's own priority is always permitted; should
-/// it fail anyway, the panel runs at normal priority.
+/// The panel is a best-effort observer: its thread runs below normal priority (nice 10 on
+/// Linux), so under CPU contention (a flood of requests, a busy 2-core host) the engine
+/// thread and the program's threads go first. Lowering one's own priority is always
+/// permitted; should it fail anyway, the panel runs at normal priority.
 fn background_priority() {
-    // SAFETY: gettid has no preconditions and returns the calling thread's id.
-    let tid = unsafe { libc::syscall(libc::SYS_gettid) };
-    if let Ok(tid) = libc::id_t::try_from(tid) {
-        // SAFETY: setpriority on this thread's own id changes only its nice value.
-        let _ = unsafe { libc::setpriority(libc::PRIO_PROCESS, tid, 10) };
-    }
+    let _ = crate::platform::lower_thread_priority();
 }
 
 /// Starts a panel on `addr` and prints its URL on stderr.

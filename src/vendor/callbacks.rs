@@ -3,27 +3,27 @@
 use super::structs::{ADCINT, ENCINT, HSKINT, LIOINT, PCLINT, RIOINT, TMRINT};
 
 /// Position-control-loop ISR.
-pub type PCLISR = Option<unsafe extern "C" fn(*mut PCLINT)>;
+pub type PCLISR = Option<unsafe extern "system" fn(*mut PCLINT)>;
 /// A/D converter ISR.
-pub type ADCISR = Option<unsafe extern "C" fn(*mut ADCINT)>;
+pub type ADCISR = Option<unsafe extern "system" fn(*mut ADCINT)>;
 /// Local I/O ISR.
-pub type LIOISR = Option<unsafe extern "C" fn(*mut LIOINT)>;
+pub type LIOISR = Option<unsafe extern "system" fn(*mut LIOINT)>;
 /// Encoder ISR.
-pub type ENCISR = Option<unsafe extern "C" fn(*mut ENCINT)>;
+pub type ENCISR = Option<unsafe extern "system" fn(*mut ENCINT)>;
 /// Remote I/O ISR.
-pub type RIOISR = Option<unsafe extern "C" fn(*mut RIOINT)>;
+pub type RIOISR = Option<unsafe extern "system" fn(*mut RIOINT)>;
 /// Timer ISR.
-pub type TMRISR = Option<unsafe extern "C" fn(*mut TMRINT)>;
+pub type TMRISR = Option<unsafe extern "system" fn(*mut TMRINT)>;
 /// Handshake ISR.
-pub type HSKISR = Option<unsafe extern "C" fn(*mut HSKINT)>;
+pub type HSKISR = Option<unsafe extern "system" fn(*mut HSKINT)>;
 /// Cycle interrupt ISR (obsolete form).
-pub type CYCLE_INTERRUPT_ISR = Option<unsafe extern "C" fn()>;
+pub type CYCLE_INTERRUPT_ISR = Option<unsafe extern "system" fn()>;
 
 /// `CUSTOM_START_MOTION`: called when a custom motion starts; returns its total distance.
 /// Arguments: group, number of axes, command index, absolute coordinates, the start
 /// position (one value per axis), the program's buffer.
 pub type CUSTOM_START_MOTION = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         std::os::raw::c_int,
         std::os::raw::c_int,
         std::os::raw::c_int,
@@ -38,7 +38,7 @@ pub type INFINITE_START_MOTION = CUSTOM_START_MOTION;
 /// distance the speed profile reaches at the next period and the total; writes the next
 /// position's offset from the start. FALSE ends the command.
 pub type CUSTOM_INTERPOLATION = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         std::os::raw::c_int,
         std::os::raw::c_int,
         std::os::raw::c_int,
@@ -52,7 +52,7 @@ pub type CUSTOM_INTERPOLATION = Option<
 >;
 /// `INFINITE_INTERPOLATION`: [`CUSTOM_INTERPOLATION`] plus `BOOL *AbortThisCommand`.
 pub type INFINITE_INTERPOLATION = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         std::os::raw::c_int,
         std::os::raw::c_int,
         std::os::raw::c_int,
@@ -68,7 +68,7 @@ pub type INFINITE_INTERPOLATION = Option<
 /// `CUSTOM_CLEANUP`: called once when a started custom motion ends (group, command
 /// index, buffer).
 pub type CUSTOM_CLEANUP = Option<
-    unsafe extern "C" fn(std::os::raw::c_int, std::os::raw::c_int, *mut std::os::raw::c_void),
+    unsafe extern "system" fn(std::os::raw::c_int, std::os::raw::c_int, *mut std::os::raw::c_void),
 >;
 /// `INFINITE_CLEANUP`: as [`CUSTOM_CLEANUP`].
 pub type INFINITE_CLEANUP = CUSTOM_CLEANUP;
@@ -76,7 +76,7 @@ pub type INFINITE_CLEANUP = CUSTOM_CLEANUP;
 /// axes, command index, absolute, start0, start1, start2, mid, end0, end1, end2, blend
 /// interval, buffer).
 pub type CUSTOM_BLENDING_START = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         std::os::raw::c_int,
         std::os::raw::c_int,
         std::os::raw::c_int,
@@ -95,7 +95,7 @@ pub type CUSTOM_BLENDING_START = Option<
 /// `CUSTOM_BLENDING`: one period of the blend (group, axes, command index, blend start,
 /// blend end, current position, distance, next offset out, buffer).
 pub type CUSTOM_BLENDING = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         std::os::raw::c_int,
         std::os::raw::c_int,
         std::os::raw::c_int,
@@ -109,7 +109,7 @@ pub type CUSTOM_BLENDING = Option<
 >;
 /// `CUSTOM_BLENDING_END`: the blend is over (group, command index, buffer).
 pub type CUSTOM_BLENDING_END = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         std::os::raw::c_int,
         std::os::raw::c_int,
         *mut std::os::raw::c_void,
@@ -118,7 +118,7 @@ pub type CUSTOM_BLENDING_END = Option<
 /// Reverse interpolation routine: `(group, command index, time index, buffer)` ->
 /// > 0 forward, < 0 backward, 0 pause (`MCC_SetReverseInterpRoutine`).
 pub type INTERP = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         nGroup: std::os::raw::c_int,
         nCommandIndex: std::os::raw::c_int,
         nTimeIndex: std::os::raw::c_int,
@@ -126,11 +126,11 @@ pub type INTERP = Option<
     ) -> std::os::raw::c_int,
 >;
 /// Initialises a kinematic group's extension buffer once (`MCC_SetKinematicTrans`).
-pub type INIT_EXTENSION = Option<unsafe extern "C" fn(pvExtension: *mut std::ffi::c_void)>;
+pub type INIT_EXTENSION = Option<unsafe extern "system" fn(pvExtension: *mut std::ffi::c_void)>;
 /// Forward kinematics: joints (`pdfFrom`) to the Cartesian position (`pdfTo`); `FALSE`
 /// when it has none. The vendor's C++ `DWORD&` posture is a `DWORD*` (the same ABI).
 pub type FWDKINEFUN = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         nGroup: std::os::raw::c_int,
         nSynAxisNum: std::os::raw::c_int,
         pdfFrom: *const f64,
@@ -142,7 +142,7 @@ pub type FWDKINEFUN = Option<
 /// Inverse kinematics: a Cartesian position (`pdfFrom`) to joints (`pdfTo`), given the
 /// previous joints (`pdfPrevResult`); `FALSE` when unreachable.
 pub type INVKINEFUN = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         nGroup: std::os::raw::c_int,
         nSynAxisNum: std::os::raw::c_int,
         pdfFrom: *const f64,
@@ -155,7 +155,7 @@ pub type INVKINEFUN = Option<
 /// Called when a kinematic group takes a command from its queue: the current and target
 /// Cartesian positions; the offset written to `pdfOffset` is added to the target.
 pub type PRE_PROCESS_MOTION_COMMAND = Option<
-    unsafe extern "C" fn(
+    unsafe extern "system" fn(
         nGroup: std::os::raw::c_int,
         nSynAxisNum: std::os::raw::c_int,
         pdfCurCPos: *const f64,

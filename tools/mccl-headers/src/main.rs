@@ -1,6 +1,8 @@
 //! Generates the C headers of libMCCLPCI_IMP from the Rust sources.
 //!
-//! cbindgen reads the crate (vendor types, constants, `#[no_mangle] extern "C"` functions);
+//! cbindgen reads the crate (vendor types, constants, `#[no_mangle] extern "C"` functions:
+//! `mcl_*` and `MCCL_Sim*`; the `MCC_*` entry points are `extern "system"`, which cbindgen
+//! skips, and the vendor table gives their prototypes);
 //! this program then adds what cbindgen cannot express and writes:
 //!
 //! * `include/MCCL.h`      typedefs, constants, structs and ISR callback types;
@@ -15,10 +17,11 @@
 //!   signature against the table.
 //!
 //! `MCCL_Fun.h` is written from the vendor table rather than from cbindgen's output because
-//! cbindgen does not expand macros, and families of entry points in `src/ffi` are declared by
-//! `macro_rules!` macros. The generated test covers those: a wrong parameter type, count or
-//! return type, or a table function the crate does not export, fails to compile. The
-//! functions cbindgen does see are still checked against the table here (return type,
+//! cbindgen neither expands macros (families of entry points in `src/ffi` are declared by
+//! `macro_rules!` macros) nor reads `extern "system"` functions. The generated test covers
+//! every one: a wrong parameter type, count, return type or calling convention, or a table
+//! function the crate does not export, fails to compile. An `extern "C"` `MCC_*` function,
+//! which cbindgen does see, is still checked against the table here (return type,
 //! parameter count, types and names), and every `#define` against the vendor constants of
 //! `src/vendor/consts.rs`. `--check` compares instead of writing and fails on drift.
 
@@ -281,8 +284,9 @@ fn mccl_h(raw: &Raw, vendor_consts: &HashSet<String>) -> Result<String, String> 
     }
     let body = in_type_order(&collapse_blank_lines(&body), &raw.type_order)?;
     let body = posture_by_reference(&body);
+    let body = windows_base_types(&body)?;
     Ok(format!(
-        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on other systems\n * than Windows the calling convention keywords mean nothing. */\n#if !defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
+        "{BANNER}/* MCCL.h: types, constants and structures of the IMP-series motion control command\n * library (MCCLPCI_IMP), reproduced by libMCCLPCI_IMP. */\n#ifndef MCCL_H_LIBMCCLPCI_IMP\n#define MCCL_H_LIBMCCLPCI_IMP\n\n#include <stdint.h>\n#if defined(_WIN32)\n#include <windows.h>\n#endif\n\n#ifndef MCC_CALLBACK\n#if defined(_WIN32)\n#define MCC_CALLBACK __stdcall\n#else\n#define MCC_CALLBACK\n#endif\n#endif\n\n#define MULTI_CARD_SUPPORT\n\n/* The manuals declare interrupt routines `void _stdcall f(ENCINT *)`: on Windows MSVC's\n * spelling of __stdcall (which GCC in strict ISO mode does not know), on other systems\n * than Windows a calling convention keyword that means nothing. */\n#if defined(_WIN32)\n#ifndef _stdcall\n#define _stdcall __stdcall\n#endif\n#else\n#ifndef _stdcall\n#define _stdcall\n#endif\n#ifndef __stdcall\n#define __stdcall\n#endif\n#endif\n\n{}\n#endif /* MCCL_H_LIBMCCLPCI_IMP */\n",
         body.trim()
     ))
 }
@@ -306,6 +310,29 @@ fn posture_by_reference(body: &str) -> String {
         }
     }
     out
+}
+
+/// The four base types as cbindgen declares them, in the order of cbindgen.toml.
+const BASE_TYPES: &str =
+    "typedef uint16_t WORD;\n\ntypedef uint8_t BYTE;\n\ntypedef uint32_t DWORD;\n\ntypedef int BOOL;";
+
+/// `body` with the base types taken from `<windows.h>` on Windows, as the vendor's header
+/// does: a program that includes `<windows.h>` as well (most Windows programs do) then
+/// sees one definition of each instead of a conflicting one (`DWORD` is `unsigned long`
+/// there, 32 bits like `uint32_t` but another type to a C compiler).
+fn windows_base_types(body: &str) -> Result<String, String> {
+    if !body.contains(BASE_TYPES) {
+        return Err(format!(
+            "MCCL.h: the base types are not declared as expected:\n{BASE_TYPES}"
+        ));
+    }
+    Ok(body.replacen(
+        BASE_TYPES,
+        &format!(
+            "/* On Windows the base types are those of <windows.h> (included above), as in the\n * vendor's header. */\n#if !defined(_WIN32)\n{BASE_TYPES}\n#endif"
+        ),
+        1,
+    ))
 }
 
 /// The name a type declaration block declares: `typedef ... NAME;`, `typedef struct {
@@ -563,7 +590,8 @@ fn rust_type(ty: &[String]) -> Result<String, String> {
 }
 
 /// The Rust function-pointer type a vendor prototype must have: `unsafe` when it takes a
-/// pointer (the caller vouches for it), `extern "C"`, no return type for `void`.
+/// pointer (the caller vouches for it), `extern "system"` (the vendor's `MCC_CALL`), no
+/// return type for `void`.
 fn rust_fn_type(v: &Proto) -> Result<String, String> {
     let params = v
         .params
@@ -580,7 +608,7 @@ fn rust_fn_type(v: &Proto) -> Result<String, String> {
         r => format!(" -> {}", rust_type(&tokens(r))?),
     };
     Ok(format!(
-        "{unsafety}extern \"C\" fn({}){ret}",
+        "{unsafety}extern \"system\" fn({}){ret}",
         params.join(", ")
     ))
 }
@@ -780,17 +808,20 @@ mod tests {
         let p = |s| rust_fn_type(&parse_proto(s).unwrap()).unwrap();
         assert_eq!(
             p("int MCC_SetPGain(WORD wGain0, WORD wCardIndex = 0)"),
-            "extern \"C\" fn(WORD, WORD) -> c_int"
+            "extern \"system\" fn(WORD, WORD) -> c_int"
         );
         assert_eq!(
             p("int MCC_GetPulsePos(long *plX, long long *plY, void *pv, char c)"),
-            "unsafe extern \"C\" fn(*mut c_long, *mut c_longlong, *mut c_void, c_char) -> c_int"
+            "unsafe extern \"system\" fn(*mut c_long, *mut c_longlong, *mut c_void, c_char) -> c_int"
         );
         assert_eq!(
             p("void MCC_GetVersion(char *strVersion)"),
-            "unsafe extern \"C\" fn(*mut c_char)"
+            "unsafe extern \"system\" fn(*mut c_char)"
         );
-        assert_eq!(p("double MCC_GetSysMaxSpeed()"), "extern \"C\" fn() -> f64");
+        assert_eq!(
+            p("double MCC_GetSysMaxSpeed()"),
+            "extern \"system\" fn() -> f64"
+        );
         assert!(rust_fn_type(&parse_proto("int f(unsigned short w)").unwrap()).is_err());
     }
 

@@ -83,9 +83,11 @@ pub fn csharp(h: &Header) -> Result<String, String> {
 // `MCCL.MCC_GetCurPos(ref x, ..., group)` compiles against it unchanged: the functions,
 // constants and delegates are members of the global static class MCCL; the structs live at
 // global level. C# 7.2 (mcs) and later.
-// * Library lookup: [DllImport(\"MCCLPCI_IMP.dll\")]. Mono/.NET on Linux find libMCCLPCI_IMP.so
-//   via LD_LIBRARY_PATH, the application directory, or the installed aliases
-//   libMCCLPCI_IMP.dll.so / MCCLPCI_IMP.dll.so.
+// * Library lookup: [DllImport(\"MCCLPCI_IMP.dll\")]. On Windows .NET loads MCCLPCI_IMP.dll
+//   from the application's folder (then the system's DLL path): the x64 DLL of `make windows`
+//   for a 64-bit process, the x86 one for a 32-bit process (x86 or AnyCPU with Prefer 32-bit).
+//   Mono/.NET on Linux find libMCCLPCI_IMP.so via LD_LIBRARY_PATH, the application directory,
+//   or the installed aliases libMCCLPCI_IMP.dll.so / MCCLPCI_IMP.dll.so.
 // * Callbacks: keep the delegate you pass to MCC_Set*Routine alive (a static field) for as long
 //   as the library may call it; a collected delegate crashes the process at the next call.
 //   Callbacks run on the library's engine thread; an exception escaping them is fatal.

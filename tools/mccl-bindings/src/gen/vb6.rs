@@ -88,7 +88,8 @@ pub fn vb6(h: &Header) -> Result<String, String> {
     }
     o.push_str(
         "'
-' VB6 declarations of the MCCLPCI_IMP library (32-bit Windows, stdcall).
+' VB6 declarations of the MCCLPCI_IMP library (32-bit Windows, stdcall): put the x86
+' MCCLPCI_IMP.dll of `make windows` beside the program's .exe (or on the DLL path).
 ' * Types: WORD = Integer, DWORD/int/BOOL/long = Long, BYTE/char = Byte, double = Double,
 '   float = Single, long long = Currency (raw 64 bits), char* = a pre-sized ByVal String
 '   (e.g. s = Space$(16)), struct pointers = ByRef UDT, callbacks = ByVal Long (AddressOf
