@@ -325,7 +325,7 @@ impl Shared {
     }
 
     /// Where group `g` publishes its snapshot, for a status call that reads only the part
-    /// it returns ([`SnapshotCell::load_status`], [`SnapshotCell::load_pos`], ...): a
+    /// it returns ([`SnapshotCell::load_status`], [`SnapshotCell::load_exact_pos`], ...): a
     /// call that programs repeat in tight loops should not pay for the whole snapshot.
     pub fn published(&self, g: u16) -> McclResult<&SnapshotCell> {
         if !self.has_group(g) {

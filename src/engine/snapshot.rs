@@ -78,7 +78,7 @@ pub fn round_pulses(x: f64) -> i64 {
 const PULSE_TOLERANCE: f64 = 1e-7;
 
 /// The pulse count of a position `x` pulses from zero, as the vendor's library counts:
-/// the whole pulses toward zero, a position within [`PULSE_TOLERANCE`] short of a whole
+/// the whole pulses toward zero, a position within 1e-7 pulse short of a whole
 /// pulse counting it (so that a position computed a rounding error short of a whole
 /// pulse is not a pulse short). A float-to-int conversion: this runs for every axis on
 /// every tick.

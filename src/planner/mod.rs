@@ -14,8 +14,8 @@
 //! * General motion: only X/Y/Z count for the path length; U..B follow the path
 //!   fraction. With no X/Y/Z travel the aux axis with the longest travel is the
 //!   path. See [`Path`].
-//! * Blending: the next general motion starts when the previous one starts to
-//!   decelerate and the displacements add. See [`blended_position`].
+//! * Blending: the next general motion starts in the previous one's first
+//!   decelerating period and the displacements add (the engine's execution runs it).
 
 #![warn(missing_docs)]
 

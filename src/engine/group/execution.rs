@@ -700,7 +700,7 @@ impl GroupState {
     }
 
     /// `MCC_JogPulse`: axis `a` moves `pulses` pulses in the next period (see
-    /// [`JUMP_PERIODS`]); `COMMAND_NOTFINISHED_ERR` unless the group stands still.
+    /// `JUMP_PERIODS`); `COMMAND_NOTFINISHED_ERR` unless the group stands still.
     pub fn jog_pulses(&mut self, a: usize, pulses: i32) -> crate::error::McclResult<()> {
         if self.busy() || self.homing != 0 {
             return Err(crate::error::McclError::NotFinished);
