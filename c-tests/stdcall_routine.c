@@ -60,6 +60,7 @@ int main(void)
     stAxis.dfHighLimit = 50000.0;
     stAxis.dfLowLimit = -50000.0;
     stAxis.wPulseMode = DDA_FMT_PD;
+    stAxis.wPulseWidth = 100; /* a pulse of no width is refused, as by the vendor's library */
     stAxis.wCommandMode = OCM_PULSE;
     stAxis.wOverTravelUpSensorMode = SL_UNUSED;
     stAxis.wOverTravelDownSensorMode = SL_UNUSED;

@@ -73,8 +73,9 @@ public static class InitFlowTests
         var home2 = new SYS_HOME_CONFIG();
         Check.Eq(MCCL.MCC_GetHomeConfig(ref home2, 1, CARD), MCCL.NO_ERR, "GetHomeConfig");
         Check.Eq(home2.nIndexCount, 2, "home nIndexCount"); Check.Eq(home2.dfOffset, -7.25, "home dfOffset (last field)");
-        home.wMode = 17;
-        Check.Eq(MCCL.MCC_SetHomeConfig(ref home, 1, CARD), MCCL.PARAMETER_ERR, "SetHomeConfig mode 17");
+        // Modes 0..19 are kept, as the vendor's library keeps them; 20 is refused.
+        home.wMode = 20;
+        Check.Eq(MCCL.MCC_SetHomeConfig(ref home, 1, CARD), MCCL.PARAMETER_ERR, "SetHomeConfig mode 20");
     }
 
     [MonoTest(202)]
