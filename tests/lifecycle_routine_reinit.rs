@@ -31,7 +31,10 @@ unsafe extern "system" fn routine(_: *mut TMRINT) {
             REINITS.fetch_add(1, Ordering::Relaxed);
         }
         let r = common::init(1);
-        assert!(r == RUN_TIME_ERR || r == COMMAND_NOTACCEPTED_ERR, "a routine's init: {r}");
+        assert!(
+            r == RUN_TIME_ERR || r == COMMAND_NOTACCEPTED_ERR,
+            "a routine's init: {r}"
+        );
     } else {
         let _ = MCC_GetConvFactor(0, 0);
     }
