@@ -16,6 +16,16 @@ pub(crate) enum Phase {
     Decelerating,
 }
 
+/// Where a track was one period ago.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Prev {
+    /// At this distance (set where the profile changes, or when the stretch had ended).
+    At(f64),
+    /// One period back along the running profile (computed when asked: a step that only
+    /// moves on does not compute it).
+    PeriodBefore,
+}
+
 /// A motion's progress along `len`: the profile of the stretch running now (the plan
 /// from rest, or a re-plan) and how far the stretches before it came.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -26,7 +36,7 @@ pub(crate) struct Track {
     /// Periods of `profile` done.
     k: u64,
     /// Distance one period ago (the last period's speed is what a re-plan starts from).
-    prev: f64,
+    prev: Prev,
     /// The whole length.
     len: f64,
     /// The feed speed it was planned with.
@@ -50,7 +60,7 @@ impl Track {
             profile,
             s0: 0.0,
             k: 0,
-            prev: 0.0,
+            prev: Prev::At(0.0),
             len: profile.len(),
             base_feed: feed,
             feed,
@@ -98,19 +108,33 @@ impl Track {
     #[inline]
     pub(crate) fn step(&mut self) -> bool {
         if self.k >= self.profile.periods() {
-            self.prev = self.dist();
+            self.prev = Prev::At(self.dist());
             return false;
         }
-        self.prev = self.dist();
+        self.prev = Prev::PeriodBefore;
         self.k += 1;
         true
+    }
+
+    /// The distance one period ago.
+    fn prev_dist(&self) -> f64 {
+        match self.prev {
+            Prev::At(d) => d,
+            // `dist()` one period ago: `k - 1` is inside the profile.
+            Prev::PeriodBefore => self.s0 + self.profile.distance(self.k - 1),
+        }
+    }
+
+    /// Keeps the distance one period ago as a number, before the profile changes.
+    fn fix_prev(&mut self) {
+        self.prev = Prev::At(self.prev_dist());
     }
 
     /// The average speed over the last period (distance over the period).
     pub(crate) fn last_speed(&self) -> f64 {
         let t = self.profile.period();
         if t > 0.0 {
-            (self.dist() - self.prev) / t
+            (self.dist() - self.prev_dist()) / t
         } else {
             0.0
         }
@@ -172,6 +196,7 @@ impl Track {
     }
 
     fn restart(&mut self, profile: TickProfile) {
+        self.fix_prev();
         self.s0 = self.dist();
         self.k = 0;
         self.profile = profile;
@@ -223,12 +248,14 @@ impl Track {
     /// Blending: the deceleration of the running stretch becomes an S ramp (the vendor
     /// blends with S ramps whatever the curve type).
     pub(crate) fn blend_out(&mut self) {
+        self.fix_prev();
         self.profile = self.profile.with_shapes(self.shapes.0, Shape::S);
     }
 
     /// Blending: the acceleration of a motion that starts blended in is an S ramp.
     pub(crate) fn blend_in(&mut self) {
         let dec = self.profile_shapes().1;
+        self.fix_prev();
         self.profile = self.profile.with_shapes(Shape::S, dec);
     }
 
