@@ -132,7 +132,7 @@ impl Shared {
         let groups = &mut *held.groups;
         for g in groups.iter_mut() {
             debug_assert!(g.quiet_ticks_ahead(dt, 1) == 1, "group {} cruises", g.index);
-            g.tick(dt);
+            g.cruise_period(dt);
             crate::fault::point("cruise tick");
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {

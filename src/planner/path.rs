@@ -530,6 +530,12 @@ impl Path {
         *self.common().0
     }
 
+    /// Start position (all axes), borrowed.
+    #[inline]
+    pub fn start_ref(&self) -> &Axes {
+        self.common().0
+    }
+
     /// End position (all axes), exact as commanded (not sampled).
     pub fn end(&self) -> Axes {
         *self.common().1

@@ -593,6 +593,34 @@ impl GroupState {
     /// for any other period.
     #[inline]
     fn tick_one_path(&mut self, dt: f64) -> bool {
+        self.one_path_period(dt, true)
+    }
+
+    /// A cruise period (see `engine/cruise.rs`): one the plan
+    /// ([`GroupState::quiet_ticks_ahead`]) found steady, in which the status cannot
+    /// change. An idle group's period then only keeps its feed speed at rest; a general
+    /// motion's is [`GroupState::tick_one_path`]'s without the status; anything else (a
+    /// PtP) takes the ordinary period.
+    pub fn cruise_period(&mut self, dt: f64) {
+        #[cfg(debug_assertions)]
+        let status = self.status;
+        self.lag_shown = false;
+        if self.running.is_empty() {
+            self.vel_hold_idle();
+        } else if !self.one_path_period(dt, false) {
+            self.tick(dt);
+        }
+        #[cfg(debug_assertions)]
+        {
+            self.update_status();
+            debug_assert_eq!(status, self.status, "group {} cruises", self.index);
+        }
+    }
+
+    /// The period of [`GroupState::tick_one_path`]; `status`: whether to update the
+    /// status (a cruise period knows it stays).
+    #[inline(always)]
+    fn one_path_period(&mut self, dt: f64, status: bool) -> bool {
         let (Some(r), 1) = (self.running.front(), self.running.len()) else {
             return false;
         };
@@ -616,7 +644,9 @@ impl GroupState {
         self.compute_pos();
         self.compute_vel(&before, dt, vel_mask, 0);
         self.newest_own_time = self.running.back().map_or(0.0, |r| r.periods as f64);
-        self.update_status();
+        if status {
+            self.update_status();
+        }
         true
     }
 
@@ -753,14 +783,18 @@ impl GroupState {
     /// The command position: the base plus what every running command moved.
     fn compute_pos(&mut self) {
         if let (1, Some(r)) = (self.running.len(), self.running.front()) {
-            let s = r.cmd.start();
-            let p = r.position();
+            let (s, p) = match (&r.progress, &r.cmd.plan) {
+                // A general motion (most periods): its path's start and point, asked
+                // directly.
+                (Progress::Path { track, sync: None }, Plan::Path(m)) => {
+                    (m.path.start_ref(), m.path.point_at(track.fraction()))
+                }
+                _ => (&r.cmd.start(), r.position()),
+            };
             for i in 0..AXES {
-                self.pos[i] = if self.base[i] == s[i] {
-                    p[i]
-                } else {
-                    self.base[i] + (p[i] - s[i])
-                };
+                // Both sides computed, one taken: a select the compiler pairs up.
+                let moved = self.base[i] + (p[i] - s[i]);
+                self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
             }
             return;
         }
@@ -782,6 +816,20 @@ impl GroupState {
     /// (`mask`); 0 for those an ending command stops (`zero`); the others keep theirs.
     /// The feed speed: the master axis's speed for a PtP, the path speed otherwise.
     fn compute_vel(&mut self, before: &Axes, dt: f64, mask: u32, zero: u32) {
+        if mask == u32::MAX && zero == 0 && dt > 0.0 {
+            // Every axis (a general motion's period): one straight pass, which the
+            // compiler turns into paired divisions.
+            for ((v, p), b) in self.vel.iter_mut().zip(&self.pos).zip(before) {
+                *v = (p - b) / dt;
+            }
+        } else {
+            self.compute_vel_masked(before, dt, mask, zero);
+        }
+        self.feed_now = self.feed_speed();
+    }
+
+    /// [`GroupState::compute_vel`]'s speeds for the axes of `mask` and `zero`.
+    fn compute_vel_masked(&mut self, before: &Axes, dt: f64, mask: u32, zero: u32) {
         for (i, ((v, p), b)) in self.vel.iter_mut().zip(&self.pos).zip(before).enumerate() {
             if zero & (1 << i) != 0 {
                 *v = 0.0;
@@ -789,7 +837,13 @@ impl GroupState {
                 *v = (p - b) / dt;
             }
         }
-        self.feed_now = match self.running.back() {
+    }
+
+    /// The feed speed from the speeds: the master axis's for a PtP, the path speed
+    /// otherwise.
+    #[inline]
+    fn feed_speed(&self) -> f64 {
+        match self.running.back() {
             // Stopped by an error: the last period's feed speed stays (`vel_hold_idle`).
             None if self.error != 0 => self.feed_now,
             None => 0.0,
@@ -806,7 +860,7 @@ impl GroupState {
                 }
                 _ => 0.0,
             },
-        };
+        }
     }
 
     /// Software over-travel (user manual §2.6.1): with the check on, an axis never goes
