@@ -599,7 +599,7 @@ impl GroupState {
     /// A cruise period (see `engine/cruise.rs`): one the plan
     /// ([`GroupState::quiet_ticks_ahead`]) found steady, in which the status cannot
     /// change. An idle group's period then only keeps its feed speed at rest; a general
-    /// motion's is [`GroupState::tick_one_path`]'s without the status; anything else (a
+    /// motion's is `GroupState::tick_one_path`'s without the status; anything else (a
     /// PtP) takes the ordinary period.
     pub fn cruise_period(&mut self, dt: f64) {
         #[cfg(debug_assertions)]
