@@ -329,8 +329,8 @@ fn realtime_p99(hostile: bool) -> (f64, usize) {
     });
     std::thread::sleep(std::time::Duration::from_secs(2));
     let mut st = MCCLPCI_IMP::ffi::sim::MCCL_CLOCK_STATS::default();
-    // SAFETY: a valid, writable struct.
     assert_eq!(
+        // SAFETY: a valid, writable struct.
         unsafe { MCCLPCI_IMP::ffi::sim::MCCL_SimGetClockStats(&mut st) },
         NO_ERR
     );

@@ -415,8 +415,8 @@ fn engine_chunk(
         wCardType: IMP_III_8_AXIS_PCI_CARD,
         ..Default::default()
     }; 1];
-    // SAFETY: one valid card description.
     assert_eq!(
+        // SAFETY: one valid card description.
         unsafe { MCC_InitSystem(i32::from(period_ms), one.as_mut_ptr(), 1) },
         NO_ERR
     );

@@ -90,8 +90,8 @@ fn start(groups: u16) {
         };
         usize::from(cards)
     ];
-    // SAFETY: `cards` valid card descriptions.
     assert_eq!(
+        // SAFETY: `cards` valid card descriptions.
         unsafe { MCC_InitSystem(1, cfg.as_mut_ptr(), cards) },
         NO_ERR
     );

@@ -6,23 +6,41 @@
 //! [`planner`] (pure trajectory math), [`config`] and [`vendor`] (the vendor's data),
 //! [`mc3b`] (the MC3B stepper controller: protocol, emulator, its `mcl_*` C library), and
 //! at the bottom [`platform`] (what differs between Linux and Windows).
-#![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
+// The crate is named after the vendor's library (`MCCLPCI_IMP`), which the naming lint
+// checks at the root; every module but `ffi` and `vendor` (where the vendor's names
+// live) has the lint back.
+#![allow(non_snake_case)]
 
+#[warn(non_snake_case)]
 pub mod card;
+#[warn(non_snake_case)]
 pub mod clock;
+#[warn(non_snake_case)]
 pub mod config;
+#[warn(non_snake_case)]
 pub mod engine;
+#[warn(non_snake_case)]
 pub(crate) mod error;
+#[warn(non_snake_case)]
 pub(crate) mod error_record;
+#[warn(non_snake_case)]
 pub(crate) mod fault;
 pub mod ffi;
+#[warn(non_snake_case)]
 pub(crate) mod interrupt;
+#[warn(non_snake_case)]
 pub(crate) mod machine;
+#[warn(non_snake_case)]
 pub mod mc3b;
 #[cfg(feature = "panel")]
+#[warn(non_snake_case)]
 pub mod panel;
+#[warn(non_snake_case)]
 pub mod planner;
+#[warn(non_snake_case)]
 pub mod platform;
+#[warn(non_snake_case)]
 pub(crate) mod sim;
+#[warn(non_snake_case)]
 pub mod system;
 pub mod vendor;

@@ -62,8 +62,8 @@ fn look(groups: &[u16]) -> Seen {
             assert_eq!(unsafe { MCC_GetCurPos(a, b, c, d, e, f, h, i, g) }, NO_ERR);
             let mut q = [0 as c_long; 8];
             let [a, b, c, d, e, f, h, i] = &mut q;
-            // SAFETY: eight valid pointers.
             assert_eq!(
+                // SAFETY: eight valid pointers.
                 unsafe { MCC_GetPulsePos(a, b, c, d, e, f, h, i, g) },
                 NO_ERR
             );
@@ -235,8 +235,8 @@ fn an_observer_looking_leaves_the_ticks_between_its_copies_cruising() {
     assert!(view.made, "the run's last tick copied a view");
     let mut q = [0 as c_long; 8];
     let [a, b, c, d, e, f, h, i] = &mut q;
-    // SAFETY: eight valid pointers.
     assert_eq!(
+        // SAFETY: eight valid pointers.
         unsafe { MCC_GetPulsePos(a, b, c, d, e, f, h, i, g) },
         NO_ERR
     );

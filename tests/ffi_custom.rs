@@ -194,6 +194,7 @@ fn interp_common(
     let (x, y) = p.curve.at(dist);
     // SAFETY: the library passes 8 values in `cur` and 8 writable ones in `next`.
     let (c0, c1) = unsafe { (*cur, *cur.add(1)) };
+    // SAFETY: as above, `next` holds 8 writable values.
     unsafe {
         *next = x;
         *next.add(1) = y;

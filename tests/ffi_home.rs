@@ -584,8 +584,8 @@ fn wiring_of_the_home_sensor() {
     assert_eq!(home_one(&nc, h).0, -1250);
     start(&nc, &[(0, cfg(3))], None);
     let mut st: WORD = 9;
-    // SAFETY: valid pointer.
     assert_eq!(
+        // SAFETY: valid pointer.
         unsafe { MCCLPCI_IMP::ffi::local_io::MCC_GetHomeSensorStatus(&mut st, 0, 0) },
         NO_ERR
     );

@@ -108,8 +108,8 @@ fn over_travel_never_passes_the_high_limit() {
     assert_eq!(MCC_SetOverTravelCheck(2, 0, 0, 0, 0, 0, 0, 0, 0), NO_ERR);
     let mut ot = [0; 8];
     let [a, b, c, d, e, f, g, h] = &mut ot;
-    // SAFETY: eight valid pointers.
     assert_eq!(
+        // SAFETY: eight valid pointers.
         unsafe { MCC_GetOverTravelCheck(a, b, c, d, e, f, g, h, 0) },
         NO_ERR
     );
@@ -441,8 +441,8 @@ fn led(ch: u16) -> WORD {
     // SAFETY: valid pointer.
     assert_eq!(unsafe { MCC_GetLedLightStatus(ch, &mut v, 0) }, NO_ERR);
     let mut sim = 9;
-    // SAFETY: valid pointer.
     assert_eq!(
+        // SAFETY: valid pointer.
         unsafe { MCCL_SimGetOutput(0, ch, MCCL_SIM_OUT_LED, &mut sim) },
         NO_ERR
     );
@@ -530,8 +530,8 @@ fn led_trigger_out_shows_its_value_for_the_trigger_period() {
     }
     // The servo-on outputs have no trigger-out: untouched.
     let mut v = 9;
-    // SAFETY: valid pointer.
     assert_eq!(
+        // SAFETY: valid pointer.
         unsafe { MCCL_SimGetOutput(0, 4, MCCL_SIM_OUT_SERVO, &mut v) },
         NO_ERR
     );

@@ -185,20 +185,24 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetADCConvType NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetADCConvType(null_mut(), 0, 0) }),
         ),
         (
             "GetADCConvType channel",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetADCConvType(w(), 8, 0) }),
         ),
         ("SetADCConvMode mode", Box::new(|| MCC_SetADCConvMode(2, 0))),
         ("SetADCConvMode card", Box::new(|| MCC_SetADCConvMode(0, 2))),
         (
             "GetADCInput NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetADCInput(null_mut(), 0, 0) }),
         ),
         (
             "GetADCInput card",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetADCInput(fl(), 0, 2) }),
         ),
         (
@@ -207,10 +211,12 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetADCWorkStatus NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetADCWorkStatus(null_mut(), 0) }),
         ),
         (
             "GetADCWorkStatus card",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetADCWorkStatus(w(), 2) }),
         ),
         (
@@ -256,10 +262,12 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetADCCompValue NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetADCCompValue(null_mut(), 0, 0) }),
         ),
         (
             "GetADCCompValue channel",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetADCCompValue(fl(), 8, 0) }),
         ),
         (
@@ -298,34 +306,42 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetRIOTransStatus NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetRIOTransStatus(null_mut(), 0, 0) }),
         ),
         (
             "GetRIOTransStatus set",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetRIOTransStatus(w(), 2, 0) }),
         ),
         (
             "GetRIOMasterStatus card",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetRIOMasterStatus(w(), 0, 2) }),
         ),
         (
             "GetRIOSlaveStatus NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetRIOSlaveStatus(null_mut(), 0, 0) }),
         ),
         (
             "GetRIOSlaveFail NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetRIOSlaveFail(null_mut(), 0, 0) }),
         ),
         (
             "GetRIOSlaveFail set",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetRIOSlaveFail(d(), 2, 0) }),
         ),
         (
             "GetRIOInputValue port",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetRIOInputValue(w(), 0, 4, 0) }),
         ),
         (
             "GetRIOInputValue NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetRIOInputValue(null_mut(), 0, 0, 0) }),
         ),
         (
@@ -342,10 +358,12 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetRIOOutputValue NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetRIOOutputValue(null_mut(), 0, 0, 0) }),
         ),
         (
             "GetRIOOutputValue port",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetRIOOutputValue(w(), 0, 4, 0) }),
         ),
         (
@@ -430,26 +448,32 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetARIOTransStatus NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetARIOTransStatus(null_mut(), 0, 0) }),
         ),
         (
             "GetARIOMasterStatus set",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetARIOMasterStatus(w(), 2, 0) }),
         ),
         (
             "GetARIOSlaveStatus card",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetARIOSlaveStatus(w(), 0, 2) }),
         ),
         (
             "GetARIOSlaveFail NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetARIOSlaveFail(null_mut(), 0, 0) }),
         ),
         (
             "GetARIOInputValue slave",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetARIOInputValue(w(), 0, 32, 0) }),
         ),
         (
             "GetARIOInputValue NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetARIOInputValue(null_mut(), 0, 0, 0) }),
         ),
         (
@@ -462,10 +486,12 @@ fn bad_calls() -> Vec<(&'static str, Call)> {
         ),
         (
             "GetARIOOutputValue NULL",
+            // SAFETY: NULL, which the entry point refuses.
             Box::new(|| unsafe { MCC_GetARIOOutputValue(null_mut(), 0, 0, 0) }),
         ),
         (
             "GetARIOOutputValue card",
+            // SAFETY: a pointer to the test's own WORD.
             Box::new(move || unsafe { MCC_GetARIOOutputValue(w(), 0, 0, 12) }),
         ),
         (
@@ -1154,8 +1180,8 @@ fn rio_trans_error_reports_after_the_tolerated_failed_transfers() {
 /// The inputs last latched from ARIO slave `slave` of `set` (its outputs looped back).
 fn ario_in(set: WORD, slave: WORD) -> WORD {
     let mut w: WORD = 0;
-    // SAFETY: valid pointer.
     assert_eq!(
+        // SAFETY: valid pointer.
         unsafe { MCC_GetARIOInputValue(&mut w, set, slave, 0) },
         NO_ERR
     );
@@ -1212,8 +1238,8 @@ fn ario_transfers_follow_the_update_rate_divider_and_node_delay() {
     assert_eq!(MCC_SetRIOOutputValue(0x55, RIO_SET1, RIO_PORT1, 0), NO_ERR);
     MCC_TimeDelay(1);
     let mut w: WORD = 0;
-    // SAFETY: valid pointer.
     assert_eq!(
+        // SAFETY: valid pointer.
         unsafe { MCC_GetRIOInputValue(&mut w, RIO_SET1, RIO_PORT1, 0) },
         NO_ERR
     );

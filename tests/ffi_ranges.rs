@@ -42,8 +42,8 @@ fn x() -> f64 {
 fn pulses_x() -> i64 {
     let mut p = [0 as c_longlong; 8];
     let [a, b, c, d, e, f, h, i] = &mut p;
-    // SAFETY: eight valid pointers.
     assert_eq!(
+        // SAFETY: eight valid pointers.
         unsafe { MCC_GetPulsePosEx(a, b, c, d, e, f, h, i, 0) },
         NO_ERR
     );
@@ -134,8 +134,8 @@ fn acc_and_dec_times_beyond_the_longest_time_are_refused() {
     let mut t = [0.0; 8];
     {
         let [a, b, c, d, e, f, h, i] = &mut t;
-        // SAFETY: eight valid pointers.
         assert_eq!(
+            // SAFETY: eight valid pointers.
             unsafe { MCC_GetPtPAccTime(a, b, c, d, e, f, h, i, 0) },
             NO_ERR
         );
@@ -461,8 +461,8 @@ fn configuration_values_outside_their_ranges_are_refused() {
     let mut tol = [0.0; 8];
     {
         let [a, b, c, d, e, f, h, i] = &mut tol;
-        // SAFETY: eight valid pointers.
         assert_eq!(
+            // SAFETY: eight valid pointers.
             unsafe { MCC_GetInPosToleranceEx(a, b, c, d, e, f, h, i, 0) },
             NO_ERR
         );

@@ -213,8 +213,8 @@ fn handshake_interrupts_fast() {
 
 fn adc_in(ch: u16) -> f32 {
     let mut v = f32::NAN;
-    // SAFETY: valid pointer.
     assert_eq!(
+        // SAFETY: valid pointer.
         unsafe { MCCLPCI_IMP::ffi::adc::MCC_GetADCInput(&mut v, ch, 0) },
         NO_ERR
     );

@@ -160,8 +160,8 @@ fn cur_pos(g: u16) -> [f64; 8] {
 fn pulses(g: u16) -> [i64; 8] {
     let mut p = [0 as std::os::raw::c_long; 8];
     let [a, b, c, d, e, f, h, i] = &mut p;
-    // SAFETY: eight valid pointers.
     assert_eq!(
+        // SAFETY: eight valid pointers.
         unsafe { MCC_GetPulsePos(a, b, c, d, e, f, h, i, g) },
         NO_ERR
     );

@@ -90,8 +90,8 @@ fn cur_pos() -> [f64; 8] {
 fn pulses() -> [i64; 8] {
     let mut p = [0 as std::os::raw::c_long; 8];
     let [a, b, c, d, e, f, h, i] = &mut p;
-    // SAFETY: eight valid pointers.
     assert_eq!(
+        // SAFETY: eight valid pointers.
         unsafe { MCC_GetPulsePos(a, b, c, d, e, f, h, i, 0) },
         NO_ERR
     );

@@ -31,8 +31,8 @@ fn setup() -> (MutexGuard<'static, ()>, Emu) {
 
 fn status(motor: c_int) -> c_int {
     let mut st = -1;
-    // SAFETY: valid pointer to a local.
     assert_eq!(
+        // SAFETY: valid pointer to a local.
         unsafe { mcl_get_motor_status(0, motor, &mut st) },
         MCL_NO_ERROR
     );
@@ -458,8 +458,8 @@ fn serial_port_error_when_the_emulator_is_gone() {
     std::thread::sleep(Duration::from_millis(50));
     let mut st = 0;
     let t0 = Instant::now();
-    // SAFETY: valid pointer to a local.
     assert_eq!(
+        // SAFETY: valid pointer to a local.
         unsafe { mcl_get_motor_status(0, 0, &mut st) },
         MCL_SERIAL_PORT_ERROR
     );

@@ -12,6 +12,8 @@
 //! (`macro_rules!` macros are not items: rustdoc lists their members).
 //! The C header takes its prototypes from the vendor table, and the generated test
 //! `tests/vendor_prototypes.rs` checks each Rust signature against it at compile time.
+// The vendor's names live here and only here: the exports and their parameters carry the vendor's names (`MCC_Line`, `dfX`, `wCardType`).
+#![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
 /// The panic boundary of an exported function: the block runs as a closure returning
 /// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic

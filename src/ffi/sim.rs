@@ -282,8 +282,8 @@ mod tests {
             }
         );
         assert_eq!(MCC_CloseSystem(), c::NO_ERR);
-        // SAFETY: a valid struct.
         assert_eq!(
+            // SAFETY: a valid struct.
             unsafe { MCCL_SimGetClockStats(&mut st) },
             c::INITIAL_MOTION_ERR
         );

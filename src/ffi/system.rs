@@ -205,12 +205,17 @@ pub unsafe extern "system" fn MCC_InitSystem(
     pstCardConfig: *mut SYS_CARD_CONFIG,
     wCardNo: WORD,
 ) -> c_int {
-    ffi_boundary! { init(
-        f64::from(nInterpolateTime),
-        pstCardConfig,
-        wCardNo,
-        InitKind::System,
-    ) }
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            init(
+                f64::from(nInterpolateTime),
+                pstCardConfig,
+                wCardNo,
+                InitKind::System,
+            )
+        }
+    }
 }
 
 /// `MCC_InitSystem` with a fractional interpolation period in ms (1.0..=50.0).
@@ -242,7 +247,7 @@ pub unsafe extern "system" fn MCC_InitSimulation(
     wCardNo: WORD,
 ) -> c_int {
     ffi_boundary! {
-    // SAFETY: forwarded under this function's contract.
+        // SAFETY: forwarded under this function's contract.
         unsafe {
             init(
                 f64::from(nInterpolateTime),
@@ -251,7 +256,7 @@ pub unsafe extern "system" fn MCC_InitSimulation(
                 InitKind::Simulation,
             )
         }
-        }
+    }
 }
 
 /// Stops the card at once and releases the engine thread; with no system running it

@@ -696,7 +696,8 @@ pub unsafe extern "C" fn mcl_chained_synchronous_move_motor(
         if !is_initialized() {
             return MCL_NOT_INITIALIZED_ERROR;
         }
-        let moves = match read_moves(number_of_moves, ptrs) {
+        // SAFETY: the pointers are the caller's, under this function's contract.
+        let moves = match unsafe { read_moves(number_of_moves, ptrs) } {
             Ok(m) => m,
             Err(code) => return code,
         };

@@ -1,6 +1,8 @@
 //! The vendor interface as data: typedefs, constants, struct layouts and callback types of
 //! `MCCL.h` (docs/vendor-interface.md; IMP values per docs/decisions.md). cbindgen reads these to
 //! generate `include/MCCL.h`.
+// The vendor's names live here and only here: the vendor's typedefs, constants and struct fields keep their names (`SYS_MAC_PARAM`, `dwPPR`, `GMS_RUNNING`).
+#![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
 pub mod callbacks;
 pub mod consts;
