@@ -1,4 +1,5 @@
-//! `cargo bench --bench engine`: prints the numbers of issue #3's performance goals.
+//! `cargo bench --bench engine`: prints the numbers of the engine's performance goals
+//! (docs/benchmarks.md).
 //!
 //! * `MCC_GetCurPos` latency (median, p99) while the engine runs 48 moving groups,
 //! * `MCC_Line` enqueue latency (median, p99),
@@ -6,9 +7,9 @@
 //!   than real time the fast clock runs them at a 1 ms period.
 //!
 //! * with the `panel` feature: the tick cost with the browser panel off, on without a
-//!   client, and with a client reading its event stream (issue #17: < 5 % more); and the
+//!   client, and with a client reading its event stream (goal: < 5 % more); and the
 //!   realtime tick lateness (p99) with the panel quiet against the panel under a stream
-//!   of bad requests and idle connections (issue #17: unchanged).
+//!   of bad requests and idle connections (goal: unchanged).
 //!
 //! Interrupt delivery and tick lateness under the realtime clock: `benches/realtime.rs`.
 //!
@@ -340,7 +341,7 @@ fn realtime_p99(hostile: bool) -> (f64, usize) {
     (st.dfP99Us, sent)
 }
 
-/// Issue #17: bad requests and idle connections do not make the engine late. Alternates
+/// Bad requests and idle connections do not make the engine late. Alternates
 /// 5 rounds of 2 s quiet and 2 s under attack (realtime clock, 1 ms, SCHED_OTHER) and
 /// prints the medians of the tick lateness p99 and their ratio.
 #[cfg(feature = "panel")]

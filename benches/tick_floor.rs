@@ -1,5 +1,5 @@
 //! `cargo bench --bench tick_floor`: the engine's cost per tick against the arithmetic a
-//! tick fundamentally needs (issue #18), measured in one run so the ratio holds on any
+//! tick fundamentally needs, measured in one run so the ratio holds on any
 //! machine.
 //!
 //! * **engine**: the fast clock running `groups` groups of [`AXES_PER_GROUP`] axes, all

@@ -1,4 +1,4 @@
-/* home_abort.c: MCC_AbortGoHome in the middle of phase 1 (issue #5), C99. Run with
+/* home_abort.c: MCC_AbortGoHome in the middle of phase 1, C99. Run with
  * MCCL_SIM=c-tests/sim/home_x.toml (X's home sensor on [-3, -2] UU).
  *
  * Mode 3, negative, 300 ms ramps, 10 UU/s: accelerating covers 1.5 UU in 300 ms, then

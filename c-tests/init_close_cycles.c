@@ -1,5 +1,4 @@
-/* init_close_cycles.c: MCC_InitSystem/MCC_CloseSystem N times in one process (issue #2,
- * acceptance 4). Asserts that no thread is left behind and memory stays flat, and prints
+/* init_close_cycles.c: MCC_InitSystem/MCC_CloseSystem N times in one process. Asserts that no thread is left behind and memory stays flat, and prints
  * the cycle times (median, p99, max). Usage: init_close_cycles [N=10000] [--no-rss] */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>

@@ -1,4 +1,4 @@
-/* limit_switch_sim.c: a limit switch worked through MCCL_Sim.h during a move (issue #4):
+/* limit_switch_sim.c: a limit switch worked through MCCL_Sim.h during a move:
  * the group stops, records 0xF701 (X), refuses to move until MCC_ClearError, then moves
  * back. C99. */
 #include <string.h>

@@ -1,4 +1,4 @@
-/* sim_config.c: the simulated machine read from MCCL_SIM (issue #4). With "bad" the
+/* sim_config.c: the simulated machine read from MCCL_SIM. With "bad" the
  * configuration is malformed and MCC_InitSystem must refuse to start; with "good" it
  * must honour the file: + limit switch of X at 3 UU, home sensor of Y over [-1, 1],
  * a 20 ms lag on Z (following error = speed x lag). */

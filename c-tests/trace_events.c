@@ -1,4 +1,4 @@
-/* trace_events.c: the events file beside MCCL_TRACE (issue 15). A 1 ms card runs a line
+/* trace_events.c: the events file beside MCCL_TRACE. A 1 ms card runs a line
  * that is held, continued and aborted, a bad arc records an error that is cleared, and
  * the emergency-stop input stops a second line. Each expected line is derived by hand
  * below. C99 + POSIX setenv (_putenv_s on Windows). */

@@ -1,7 +1,6 @@
 //! The documented ranges (docs/compatibility.md "Ranges", `config::range`) through the C
 //! entry points: a value whose consequence cannot be represented is `PARAMETER_ERR` and
-//! changes nothing; a value just inside the range is taken and behaves (issue 12,
-//! defect 3).
+//! changes nothing; a value just inside the range is taken and behaves.
 //!
 //! Ranges used below: times 0..=4,294,967,295 ms (2^32 − 1); speeds 1e-6..=1e9 UU/s
 //! (a feed speed: any size above 0 up to 1e9, as the vendor's library takes it);

@@ -3,7 +3,8 @@
 //! purpose) that garbles replies, sends overlong lines, answers late, answers for
 //! another controller or out of turn, loses replies, or closes the port mid-call.
 //!
-//! Regression tests of issue 12 (defects 5 and 7), then a seeded, replayable fuzz
+//! Regression tests (a chain stored while a motor ran, a reply for another controller),
+//! then a seeded, replayable fuzz
 //! test: `MC3B_FUZZ_SEED=<n>` replays a run (the seed is printed), and
 //! `MC3B_FUZZ_ITERATIONS=<n>` sets its length (default 500; a run also stops after
 //! 40 s of wall time, so a loaded host makes it shorter, never longer).

@@ -502,7 +502,7 @@ fn timeout_when_the_emulator_is_silent() {
 
 #[test]
 fn a_chain_refused_while_a_motor_runs_leaves_nothing_to_run_later() {
-    // Issue 12, defect 5: a chain sent while motor 1 ran stored its first moves and
+    // A chain sent while motor 1 ran stored its first moves and
     // then had its execute refused (E1); a later 5-step synchronous move of motor 2
     // ran the stored moves too and moved motor 0 by +15 steps.
     let (_g, mut emu) = setup();

@@ -1,5 +1,5 @@
 //! A program that asks for the largest queue in every group must get an error code or
-//! work, never be killed by the library (issue 12, defect 4).
+//! work, never be killed by the library.
 //!
 //! The work runs in a child process (this test binary run again with
 //! `MCCL_QUEUE_MEMORY_CHILD=1`) whose address space is limited with `setrlimit(RLIMIT_AS)`

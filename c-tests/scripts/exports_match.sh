@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The headers declare exactly the functions the library exports (issue #2): compares the
+# The headers declare exactly the functions the library exports: compares the
 # MCC_* prototypes of include/MCCL_Fun.h with `nm -D` of the built library, and checks that
 # the library exports nothing without one of our prefixes. Given a Windows DLL, reads its
 # export table (`objdump -p`) instead and also checks that every name is undecorated

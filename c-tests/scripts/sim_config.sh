@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # MCCL_SIM: a good file is honoured; a malformed one makes MCC_InitSystem fail with a
-# message naming the file, the line and the key (issue #4).
+# message naming the file, the line and the key.
 set -u
 prog=$1
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

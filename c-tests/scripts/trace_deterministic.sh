@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # MCCL_TRACE records every tick of every group; under the fast and stepped clocks the same
-# program writes the same trace byte for byte (issue #3). Runs a program twice per clock,
+# program writes the same trace byte for byte. Runs a program twice per clock,
 # compares the traces, and checks the trace's shape: header, 13 columns, time advancing by
 # one interpolation period, the final position of the program; and the same for the events
 # file beside it (path.events.csv), whose command events must match the trace's rows.

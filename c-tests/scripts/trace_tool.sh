@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# mccl-trace on a real trace (issue 15): the GeneralMotion program's trace under the fast
+# mccl-trace on a real trace: the GeneralMotion program's trace under the fast
 # clock is plotted (SVG, PNG) and reported (HTML) twice with identical bytes; the SVG
 # equals the committed picture docs/GeneralMotion.svg (drift check, like the headers);
 # diff agrees with itself and finds a 1e-6 UU change; bad input exits 2 with a message.

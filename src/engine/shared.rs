@@ -28,7 +28,7 @@ pub struct Shared {
     /// The running groups, behind one lock: the tick visits every group every period,
     /// and one lock for all costs the engine one atomic operation per tick instead of one
     /// per group (a locked instruction drains the store buffer: two per group were a
-    /// fifth of the tick at 48 groups, issue #18). A program thread holds it only to
+    /// fifth of the tick at 48 groups). A program thread holds it only to
     /// queue or change one group, as it held that group's lock before.
     pub(super) groups: Mutex<Vec<GroupState>>,
     /// Number of entries in `groups`, readable without its lock. Entries stay where

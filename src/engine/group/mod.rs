@@ -58,7 +58,7 @@ pub const TIME_EPS: f64 = 1e-9;
 ///
 /// `repr(C)` with the fields every tick reads first (status, flags, the running
 /// commands, the channels it commands, the rate, the positions), so a tick touches a few
-/// cache lines of each group instead of lines spread over its 1.8 KB (issue #18). Among
+/// cache lines of each group instead of lines spread over its 1.8 KB. Among
 /// them, the published key and the settings (the compose mask first), which a tick that
 /// publishes reads too. What only queuing and status calls read comes after.
 #[derive(Debug)]

@@ -464,7 +464,7 @@ fn a_device_thread_runs_jobs_and_stops_at_drop() {
 
 #[test]
 fn a_late_reply_is_not_a_dead_device() {
-    // Issue 12, defect 8: on a loaded host a reply came after the timeout; the job
+    // On a loaded host a reply came after the timeout; the job
     // failed with 0xF901 and the estimate missed the command the device had carried
     // out. The acknowledgement of the single Y comes 150 ms late against a 100 ms
     // timeout: the line is resynced, the late "0Y" is found before the "0P" answer,
@@ -532,7 +532,7 @@ fn a_late_reply_to_a_stop_keeps_the_estimate_with_the_device() {
 
 #[test]
 fn no_chain_is_uploaded_while_a_motor_runs() {
-    // Issue 12, defect 5, on the card backend: something keeps motor 1 busy (a stop
+    // On the card backend: something keeps motor 1 busy (a stop
     // that did not get through). A chain job must not store moves that a later
     // execute would run: every motor is asked first, the runner is stopped, the job
     // fails (0xF902), and the next job moves exactly its own steps.
