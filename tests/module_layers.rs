@@ -1,5 +1,5 @@
 //! The crate's top-level modules form layers, and every reference goes down: a module may
-//! use only modules of a lower layer (README, "Design"). A reference upwards would tie two
+//! use only modules of a lower layer (docs/architecture.md). A reference upwards would tie two
 //! layers into a cycle, which this test rejects with the file that makes it.
 //!
 //! It reads `src/` and collects every `crate::<module>` path outside comments and tests.

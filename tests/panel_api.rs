@@ -177,7 +177,7 @@ fn a_pressed_limit_switch_stops_the_group_with_its_record() {
     let _g = setup();
     let (addr, token) = panel();
     // HLP_BIDIR_GEN_ERR: a switch of a moving axis turning active stops its group and
-    // records 0xF701 + axis (README, "The checks that stop a group").
+    // records 0xF701 + axis (docs/simulated-machine.md, "The checks that stop a group").
     assert_eq!(MCC_EnableLimitSwitchCheck(HLP_BIDIR_GEN_ERR), NO_ERR);
     assert_eq!(line_x(10.0), 0);
     MCC_TimeDelay(100);
