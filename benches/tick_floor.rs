@@ -41,9 +41,9 @@ const ROUND_GROUP_TICKS: u32 = 96_000;
 const MAX_ROUND_TICKS: u32 = 20_000;
 /// Alternating rounds: each measures the engine, the floor and the engine publishing.
 const ROUNDS: u32 = 31;
-/// Line length per axis (UU) and feed (UU/s): X, Y and Z compose the path, 10000·√3 UU
-/// at 10 UU/s, about 1732 s (1,732,000 ticks; the rounds of 1 group run 1,242,400 and
-/// the profile mode 150,400), so the groups cruise through every measurement.
+/// Line length per axis (UU) and feed (UU/s): X and Y compose the path, 10000·√2 UU at
+/// 10 UU/s, about 1414 s (1,414,213 ticks; the rounds of 1 group run 1,242,400 and the
+/// profile mode 150,400), so the groups cruise through every measurement.
 const LEN: f64 = 10_000.0;
 const FEED: f64 = 10.0;
 /// Ticks of the profile mode (`MCCL_TICK_FLOOR_PROFILE`).
