@@ -1,7 +1,8 @@
 //! Every exported function of `src/ffi` (`extern "system"`, the vendor's calling
 //! convention, or `extern "C"`) enters the panic boundary: its body
 //! is exactly one `ffi_boundary! { ... }` (src/ffi/mod.rs), so no panic can cross the C
-//! boundary and every error maps to a vendor code the same way. A body that calls a
+//! boundary and every error maps to a vendor code the same way (the MC3B library's
+//! `mcl_*` functions to their §4 status, `ffi_boundary! { @mcl ... }`). A body that calls a
 //! helper which enters the boundary somewhere else is refused too: the boundary must be
 //! visible where the function is exported.
 //!
@@ -208,6 +209,10 @@ fn every_exported_body_is_one_ffi_boundary() {
         "found {} exported MCC_ functions in src/ffi",
         vendor.len()
     );
+    // The MC3B library's 19 `mcl_*` functions (MC3B User's Guide §4) go through the same
+    // boundary (`ffi_boundary! { @mcl ... }`, src/ffi/mcl.rs).
+    let mcl = names.iter().filter(|n| n.starts_with("mcl_")).count();
+    assert_eq!(mcl, 19, "found {mcl} exported mcl_ functions in src/ffi");
     assert!(total > 0);
     assert!(
         bad.is_empty(),

@@ -23,6 +23,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use serialport::{SerialPort, TTYPort};
+use MCCLPCI_IMP::ffi::mcl::*;
 use MCCLPCI_IMP::mc3b::emulator::Emulator;
 use MCCLPCI_IMP::mc3b::mcl::*;
 

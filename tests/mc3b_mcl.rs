@@ -11,6 +11,7 @@ use std::process::Command;
 use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
 
+use MCCLPCI_IMP::ffi::mcl::*;
 use MCCLPCI_IMP::mc3b::mcl::*;
 
 static LOCK: Mutex<()> = Mutex::new(());

@@ -27,6 +27,7 @@ use MCCLPCI_IMP::ffi::kinematics::*;
 use MCCLPCI_IMP::ffi::legacy_params::*;
 use MCCLPCI_IMP::ffi::limits::*;
 use MCCLPCI_IMP::ffi::local_io::*;
+use MCCLPCI_IMP::ffi::mcl::*;
 use MCCLPCI_IMP::ffi::motion::*;
 use MCCLPCI_IMP::ffi::position::*;
 use MCCLPCI_IMP::ffi::ptp::*;

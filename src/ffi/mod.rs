@@ -19,6 +19,9 @@
 /// `McclResult<R>` under [`guard`], which maps an error to the vendor code and a panic
 /// to `RUN_TIME_ERR`. Every exported function's body in this module is exactly one of these.
 macro_rules! ffi_boundary {
+    (@mcl $($body:tt)*) => {
+        $crate::ffi::guard_mcl(|| { $($body)* })
+    };
     ($($body:tt)*) => {
         $crate::ffi::guard(|| { $($body)* })
     };
@@ -165,6 +168,7 @@ pub mod kinematics;
 pub mod legacy_params;
 pub mod limits;
 pub mod local_io;
+pub mod mcl;
 pub mod motion;
 pub mod position;
 pub mod ptp;
@@ -229,6 +233,20 @@ pub fn guard<R: FfiReturn>(f: impl FnOnce() -> McclResult<R>) -> R {
                 });
             }
             R::from_error(McclError::RunTime)
+        }
+    }
+}
+
+/// [`guard`] for the MC3B library's entry points (`ffi_boundary! { @mcl ... }`), whose
+/// bodies return their §4 status: a panic is `MCL_SERIAL_PORT_ERROR`, the guide's
+/// low-level error, after [`crate::mc3b::mcl::after_panic`] has stopped the board's motors
+/// and released the port (what the interrupted call left half done is not trusted).
+pub fn guard_mcl(f: impl FnOnce() -> c_int) -> c_int {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(status) => status,
+        Err(_) => {
+            crate::mc3b::mcl::after_panic();
+            crate::mc3b::mcl::MCL_SERIAL_PORT_ERROR
         }
     }
 }

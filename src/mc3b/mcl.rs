@@ -1,9 +1,11 @@
-//! The MC3B motor control library of §4 of the User's Guide, exported with
-//! C linkage (`mcl_*`), talking to the board through [`super::client`].
+//! The MC3B motor control library of §4 of the User's Guide, talking to the board
+//! through [`super::client`]: the bodies of the `mcl_*` exports, which `src/ffi/mcl.rs`
+//! puts behind the library's one panic boundary.
 //!
-//! Every function returns one of the §4 status codes (`MCL_*` constants,
-//! 0..7) and never lets a panic cross the C boundary (a caught panic is
-//! reported as [`MCL_SERIAL_PORT_ERROR`], the guide's "low-level" error).
+//! Every function returns one of the §4 status codes (`MCL_*` constants, 0..7). A panic
+//! inside one (a defect) is reported as [`MCL_SERIAL_PORT_ERROR`], the guide's
+//! "low-level" error, after [`after_panic`] has stopped the board's motors and released
+//! the port.
 //!
 //! # COM port numbering
 //! `com_port` N (1 = COM1, §4.2) names the device given by the environment
@@ -143,9 +145,32 @@ fn status_of(e: &ClientError) -> c_int {
     }
 }
 
-/// Run `f`, turning a panic into [`MCL_SERIAL_PORT_ERROR`].
-fn guard(f: impl FnOnce() -> c_int) -> c_int {
-    catch_unwind(AssertUnwindSafe(f)).unwrap_or(MCL_SERIAL_PORT_ERROR)
+/// How long [`after_panic`] waits for the library's state: the panicking call let it go
+/// as it unwound, so only another thread's call can hold it, for at most its replies.
+const AFTER_PANIC_WAIT: Duration = Duration::from_secs(2);
+
+/// After a panic inside an `mcl_*` call (a defect): the call may have left its work half
+/// done (a chain half sent, the chained-move buffer's flag not set), and a later call
+/// trusting that state could run moves nobody asked for. So, best effort, every motor
+/// is told to stop, and the library returns to the uninitialized state, the port
+/// released: every later call returns NOT INITIALIZED until the program calls
+/// `mcl_initialize` again, which re-initializes the board (`0I`: motors off, the
+/// chained-move buffer empty). Never panics itself.
+pub fn after_panic() {
+    let taken = catch_unwind(AssertUnwindSafe(|| {
+        STATE
+            .try_lock_for(AFTER_PANIC_WAIT)
+            .and_then(|mut state| state.take())
+    }));
+    let Ok(Some(mut state)) = taken else {
+        return;
+    };
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        for motor in 0..3 {
+            // A board that does not answer cannot be helped from here.
+            let _ = state.client.command(&Command::Stop { id: 0, motor });
+        }
+    }));
 }
 
 type Check = Result<(), c_int>;
@@ -186,22 +211,21 @@ fn with_state(
     check: impl FnOnce() -> Check,
     f: impl FnOnce(&mut State, u8) -> Result<(), ClientError>,
 ) -> c_int {
-    guard(|| {
-        let mut guard = STATE.lock();
-        let Some(state) = guard.as_mut() else {
-            return MCL_NOT_INITIALIZED_ERROR;
-        };
-        if let Err(code) = range(controller_id, 0, state.controllers - 1).and_then(|_| check()) {
-            return code;
-        }
-        let Ok(id) = u8::try_from(controller_id) else {
-            return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
-        };
-        match f(state, id) {
-            Ok(()) => MCL_NO_ERROR,
-            Err(e) => status_of(&e),
-        }
-    })
+    let mut guard = STATE.lock();
+    let Some(state) = guard.as_mut() else {
+        return MCL_NOT_INITIALIZED_ERROR;
+    };
+    crate::fault::point("mcl call");
+    if let Err(code) = range(controller_id, 0, state.controllers - 1).and_then(|_| check()) {
+        return code;
+    }
+    let Ok(id) = u8::try_from(controller_id) else {
+        return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
+    };
+    match f(state, id) {
+        Ok(()) => MCL_NO_ERROR,
+        Err(e) => status_of(&e),
+    }
 }
 
 /// Send a command built from the wire ID, expecting an acknowledgement.
@@ -222,26 +246,24 @@ fn send(
 }
 
 /// Initialize the library over an already open transport (used by tests
-/// and by [`mcl_initialize`]). Sends `0I`; returns a §4 status.
+/// and by [`initialize`]). Sends `0I`; returns a §4 status.
 pub fn initialize_with(transport: Box<dyn Transport + Send>, timeout: Duration) -> c_int {
-    guard(|| {
-        let mut guard = STATE.lock();
-        if guard.is_some() {
-            return MCL_NO_ERROR;
+    let mut guard = STATE.lock();
+    if guard.is_some() {
+        return MCL_NO_ERROR;
+    }
+    let mut client = Client::new(transport, timeout);
+    match client.initialize(0) {
+        Ok(()) => {
+            *guard = Some(State {
+                client,
+                controllers: 1,
+                chain_dirty: false,
+            });
+            MCL_NO_ERROR
         }
-        let mut client = Client::new(transport, timeout);
-        match client.initialize(0) {
-            Ok(()) => {
-                *guard = Some(State {
-                    client,
-                    controllers: 1,
-                    chain_dirty: false,
-                });
-                MCL_NO_ERROR
-            }
-            Err(e) => status_of(&e),
-        }
-    })
+        Err(e) => status_of(&e),
+    }
 }
 
 /// Whether the library is initialized.
@@ -249,84 +271,67 @@ pub fn is_initialized() -> bool {
     STATE.lock().is_some()
 }
 
-/// §4.1: store the library version (major*100 + minor) in `*version`.
+/// The body of [`crate::ffi::mcl::mcl_get_library_version`] (its documentation says what it does):
+/// a §4 status.
 ///
 /// # Safety
 /// `version` must be null or valid for writing one `int`.
-#[no_mangle]
-pub unsafe extern "C" fn mcl_get_library_version(version: *mut c_int) -> c_int {
-    guard(|| {
-        if version.is_null() {
-            return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
-        }
-        // SAFETY: non-null, and the caller guarantees it is writable.
-        unsafe { version.write(MCL_LIBRARY_VERSION) };
-        MCL_NO_ERROR
-    })
+pub unsafe fn get_library_version(version: *mut c_int) -> c_int {
+    if version.is_null() {
+        return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
+    }
+    // SAFETY: non-null, and the caller guarantees it is writable.
+    unsafe { version.write(MCL_LIBRARY_VERSION) };
+    MCL_NO_ERROR
 }
 
-/// §4.2: open COM port `com_port` (see the module docs for the device-path
-/// rule), initialize the board and store the number of controllers (1) in
-/// `*number_of_controllers`. A second call without `mcl_deinitialize` only
-/// returns NO ERROR.
+/// The body of [`crate::ffi::mcl::mcl_initialize`] (its documentation says what it does):
+/// a §4 status.
 ///
 /// # Safety
 /// `number_of_controllers` must be null or valid for writing one `int`.
-#[no_mangle]
-pub unsafe extern "C" fn mcl_initialize(
-    com_port: c_int,
-    number_of_controllers: *mut c_int,
-) -> c_int {
-    guard(|| {
-        if number_of_controllers.is_null() {
-            return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
-        }
-        let write = |n: c_int| {
-            // SAFETY: non-null (checked above), writable per the contract.
-            unsafe { number_of_controllers.write(n) }
-        };
-        if let Some(s) = STATE.lock().as_ref() {
-            write(s.controllers);
-            return MCL_NO_ERROR;
-        }
-        let Some(path) = com_port_path(com_port) else {
-            return MCL_SERIAL_PORT_ERROR;
-        };
-        let timeout = reply_timeout();
-        let port = match open_port(&path, timeout) {
-            Ok(p) => p,
-            Err(_) => return MCL_SERIAL_PORT_ERROR,
-        };
-        let code = initialize_with(Box::new(port), timeout);
-        if code == MCL_NO_ERROR {
-            write(STATE.lock().as_ref().map_or(1, |s| s.controllers));
-        }
-        code
-    })
+pub unsafe fn initialize(com_port: c_int, number_of_controllers: *mut c_int) -> c_int {
+    if number_of_controllers.is_null() {
+        return MCL_PARAMETER_OUT_OF_RANGE_ERROR;
+    }
+    let write = |n: c_int| {
+        // SAFETY: non-null (checked above), writable per the contract.
+        unsafe { number_of_controllers.write(n) }
+    };
+    if let Some(s) = STATE.lock().as_ref() {
+        write(s.controllers);
+        return MCL_NO_ERROR;
+    }
+    let Some(path) = com_port_path(com_port) else {
+        return MCL_SERIAL_PORT_ERROR;
+    };
+    let timeout = reply_timeout();
+    let port = match open_port(&path, timeout) {
+        Ok(p) => p,
+        Err(_) => return MCL_SERIAL_PORT_ERROR,
+    };
+    let code = initialize_with(Box::new(port), timeout);
+    if code == MCL_NO_ERROR {
+        write(STATE.lock().as_ref().map_or(1, |s| s.controllers));
+    }
+    code
 }
 
-/// §4.3: re-initialize the board (all motors off), release the port and
-/// return to the uninitialized state.
-#[no_mangle]
-pub extern "C" fn mcl_deinitialize() -> c_int {
-    guard(|| {
-        let Some(mut state) = STATE.lock().take() else {
-            return MCL_NOT_INITIALIZED_ERROR;
-        };
-        match state.client.initialize(0) {
-            Ok(()) => MCL_NO_ERROR,
-            Err(e) => status_of(&e),
-        }
-    })
+/// The body of [`crate::ffi::mcl::mcl_deinitialize`] (its documentation says what it does):
+/// a §4 status.
+pub fn deinitialize() -> c_int {
+    let Some(mut state) = STATE.lock().take() else {
+        return MCL_NOT_INITIALIZED_ERROR;
+    };
+    match state.client.initialize(0) {
+        Ok(()) => MCL_NO_ERROR,
+        Err(e) => status_of(&e),
+    }
 }
 
-/// §4.4: acceleration 100..100000 steps/s² (allowed while free-running).
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_acceleration(
-    controller_id: c_int,
-    motor_id: c_int,
-    acceleration: c_int,
-) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_set_motor_acceleration`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_acceleration(controller_id: c_int, motor_id: c_int, acceleration: c_int) -> c_int {
     send(
         controller_id,
         || motor(motor_id).and(range(acceleration, 100, 100_000)),
@@ -340,13 +345,9 @@ pub extern "C" fn mcl_set_motor_acceleration(
     )
 }
 
-/// §4.5: deceleration 100..100000 steps/s² (allowed while free-running).
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_deceleration(
-    controller_id: c_int,
-    motor_id: c_int,
-    deceleration: c_int,
-) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_set_motor_deceleration`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_deceleration(controller_id: c_int, motor_id: c_int, deceleration: c_int) -> c_int {
     send(
         controller_id,
         || motor(motor_id).and(range(deceleration, 100, 100_000)),
@@ -360,10 +361,9 @@ pub extern "C" fn mcl_set_motor_deceleration(
     )
 }
 
-/// §4.6: maximum velocity 1..5000 steps/s; `direction_modifier` 0 or 1
-/// (the C++ default argument of the guide is 0; C callers pass it).
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_maximum_velocity(
+/// The body of [`crate::ffi::mcl::mcl_set_motor_maximum_velocity`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_maximum_velocity(
     controller_id: c_int,
     motor_id: c_int,
     maximum_velocity: c_int,
@@ -387,9 +387,9 @@ pub extern "C" fn mcl_set_motor_maximum_velocity(
     )
 }
 
-/// §4.7: half steps (`true`) or full steps (`false`).
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_half_steps_control(
+/// The body of [`crate::ffi::mcl::mcl_set_motor_half_steps_control`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_half_steps_control(
     controller_id: c_int,
     motor_id: c_int,
     half_steps: bool,
@@ -407,9 +407,9 @@ pub extern "C" fn mcl_set_motor_half_steps_control(
     )
 }
 
-/// §4.8: apply the holding current when idle (`true`) or not.
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_holding_current_control(
+/// The body of [`crate::ffi::mcl::mcl_set_motor_holding_current_control`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_holding_current_control(
     controller_id: c_int,
     motor_id: c_int,
     holding_current: bool,
@@ -442,10 +442,9 @@ pub fn limit_masks(bit: c_int, level: bool) -> Option<(u32, u32)> {
     }
 }
 
-/// §4.9: limit switch bit (0..5, or -1 for none) and active level (`true`
-/// = +5 V) for each direction, sent as the AND/XOR masks of §6.5.
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_limits(
+/// The body of [`crate::ffi::mcl::mcl_set_motor_limits`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_limits(
     controller_id: c_int,
     motor_id: c_int,
     direction_0_limit_bit: c_int,
@@ -478,12 +477,9 @@ pub extern "C" fn mcl_set_motor_limits(
     )
 }
 
-/// §4.10: limit switch debounce count 1..100 (1 kHz samples).
-#[no_mangle]
-pub extern "C" fn mcl_set_limit_switch_debounce(
-    controller_id: c_int,
-    debounce_count: c_int,
-) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_set_limit_switch_debounce`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_limit_switch_debounce(controller_id: c_int, debounce_count: c_int) -> c_int {
     send(
         controller_id,
         || range(debounce_count, 1, 100),
@@ -496,9 +492,9 @@ pub extern "C" fn mcl_set_limit_switch_debounce(
     )
 }
 
-/// §4.11: holding and running current limits, 0..2000 mA each.
-#[no_mangle]
-pub extern "C" fn mcl_set_motor_current_limits(
+/// The body of [`crate::ffi::mcl::mcl_set_motor_current_limits`] (its documentation says what it does):
+/// a §4 status.
+pub fn set_motor_current_limits(
     controller_id: c_int,
     motor_id: c_int,
     holding_current_limit: c_int,
@@ -522,9 +518,9 @@ pub extern "C" fn mcl_set_motor_current_limits(
     )
 }
 
-/// §4.12: free-run the motor in `direction` (0/1).
-#[no_mangle]
-pub extern "C" fn mcl_run_motor(controller_id: c_int, motor_id: c_int, direction: c_int) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_run_motor`] (its documentation says what it does):
+/// a §4 status.
+pub fn run_motor(controller_id: c_int, motor_id: c_int, direction: c_int) -> c_int {
     send(
         controller_id,
         || motor(motor_id).and(dir(direction)),
@@ -538,14 +534,9 @@ pub extern "C" fn mcl_run_motor(controller_id: c_int, motor_id: c_int, direction
     )
 }
 
-/// §4.13: move `steps` (>= 0) steps in `direction` (0/1).
-#[no_mangle]
-pub extern "C" fn mcl_move_motor(
-    controller_id: c_int,
-    motor_id: c_int,
-    direction: c_int,
-    steps: c_int,
-) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_move_motor`] (its documentation says what it does):
+/// a §4 status.
+pub fn move_motor(controller_id: c_int, motor_id: c_int, direction: c_int, steps: c_int) -> c_int {
     send(
         controller_id,
         || {
@@ -564,9 +555,9 @@ pub extern "C" fn mcl_move_motor(
     )
 }
 
-/// §4.14: home the motor toward `direction` (0/1).
-#[no_mangle]
-pub extern "C" fn mcl_home_motor(controller_id: c_int, motor_id: c_int, direction: c_int) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_home_motor`] (its documentation says what it does):
+/// a §4 status.
+pub fn home_motor(controller_id: c_int, motor_id: c_int, direction: c_int) -> c_int {
     send(
         controller_id,
         || motor(motor_id).and(dir(direction)),
@@ -580,9 +571,9 @@ pub extern "C" fn mcl_home_motor(controller_id: c_int, motor_id: c_int, directio
     )
 }
 
-/// §4.15: stop the motor at once.
-#[no_mangle]
-pub extern "C" fn mcl_stop_motor(controller_id: c_int, motor_id: c_int) -> c_int {
+/// The body of [`crate::ffi::mcl::mcl_stop_motor`] (its documentation says what it does):
+/// a §4 status.
+pub fn stop_motor(controller_id: c_int, motor_id: c_int) -> c_int {
     send(
         controller_id,
         || motor(motor_id),
@@ -612,11 +603,10 @@ fn sync_cmd(id: u8, s: [c_int; 3], d: [c_int; 3], execute: bool) -> Result<Comma
     })
 }
 
-/// §4.16: synchronous linear move of all three motors (steps >= 0,
-/// directions 0/1); `execute` false stores it in the chained-move buffer.
-#[no_mangle]
+/// The body of [`crate::ffi::mcl::mcl_synchronous_move_motor`] (its documentation says what it does):
+/// a §4 status.
 #[allow(clippy::too_many_arguments)]
-pub extern "C" fn mcl_synchronous_move_motor(
+pub fn synchronous_move_motor(
     controller_id: c_int,
     motor_0_steps: c_int,
     motor_0_direction: c_int,
@@ -667,14 +657,13 @@ fn with_clean_buffer(
     r
 }
 
-/// §4.17: chained synchronous move of `number_of_moves` (1..100) moves given
-/// as six arrays of that length.
+/// The body of [`crate::ffi::mcl::mcl_chained_synchronous_move_motor`] (its documentation says what it does):
+/// a §4 status.
 ///
 /// # Safety
 /// Each pointer must be null or valid for reading `number_of_moves` ints.
-#[no_mangle]
 #[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn mcl_chained_synchronous_move_motor(
+pub unsafe fn chained_synchronous_move_motor(
     controller_id: c_int,
     number_of_moves: c_int,
     motor_0_steps: *const c_int,
@@ -692,57 +681,55 @@ pub unsafe extern "C" fn mcl_chained_synchronous_move_motor(
         motor_2_steps,
         motor_2_direction,
     ];
-    guard(|| {
-        if !is_initialized() {
-            return MCL_NOT_INITIALIZED_ERROR;
-        }
-        // SAFETY: the pointers are the caller's, under this function's contract.
-        let moves = match unsafe { read_moves(number_of_moves, ptrs) } {
-            Ok(m) => m,
-            Err(code) => return code,
-        };
-        let mut build_err = None;
-        let code = with_state(
-            controller_id,
-            || Ok(()),
-            |state, id| {
-                let cmds: Result<Vec<Command>, c_int> = moves
-                    .iter()
-                    .enumerate()
-                    .map(|(k, (s, d))| sync_cmd(id, *s, *d, k + 1 == moves.len()))
-                    .collect();
-                let cmds = match cmds {
-                    Ok(c) => c,
-                    Err(c) => {
-                        build_err = Some(c);
-                        return Ok(());
+    if !is_initialized() {
+        return MCL_NOT_INITIALIZED_ERROR;
+    }
+    // SAFETY: the pointers are the caller's, under this function's contract.
+    let moves = match unsafe { read_moves(number_of_moves, ptrs) } {
+        Ok(m) => m,
+        Err(code) => return code,
+    };
+    let mut build_err = None;
+    let code = with_state(
+        controller_id,
+        || Ok(()),
+        |state, id| {
+            let cmds: Result<Vec<Command>, c_int> = moves
+                .iter()
+                .enumerate()
+                .map(|(k, (s, d))| sync_cmd(id, *s, *d, k + 1 == moves.len()))
+                .collect();
+            let cmds = match cmds {
+                Ok(c) => c,
+                Err(c) => {
+                    build_err = Some(c);
+                    return Ok(());
+                }
+            };
+            // §4.16: all three motors idle, or nothing is stored.
+            for m in 0..3 {
+                let idle = state.client.query_status(id, m).map(|st| !st.running);
+                match idle {
+                    Ok(true) => {}
+                    Ok(false) => {
+                        state.chain_dirty = true;
+                        return Err(ClientError::Device(ErrorCode::MotorRunning));
                     }
-                };
-                // §4.16: all three motors idle, or nothing is stored.
-                for m in 0..3 {
-                    let idle = state.client.query_status(id, m).map(|st| !st.running);
-                    match idle {
-                        Ok(true) => {}
-                        Ok(false) => {
-                            state.chain_dirty = true;
-                            return Err(ClientError::Device(ErrorCode::MotorRunning));
-                        }
-                        Err(e) => {
-                            state.chain_dirty = true;
-                            return Err(e);
-                        }
+                    Err(e) => {
+                        state.chain_dirty = true;
+                        return Err(e);
                     }
                 }
-                with_clean_buffer(state, id, |client| {
-                    for cmd in &cmds {
-                        client.command(cmd)?;
-                    }
-                    Ok(())
-                })
-            },
-        );
-        build_err.unwrap_or(code)
-    })
+            }
+            with_clean_buffer(state, id, |client| {
+                for cmd in &cmds {
+                    client.command(cmd)?;
+                }
+                Ok(())
+            })
+        },
+    );
+    build_err.unwrap_or(code)
 }
 
 type Move3 = ([c_int; 3], [c_int; 3]);
@@ -774,13 +761,12 @@ unsafe fn read_moves(number_of_moves: c_int, ptrs: [*const c_int; 6]) -> Result<
     Ok(moves)
 }
 
-/// §4.18: motor status bits in `*motor_status`: bit 0 running, bit 1 at the
-/// direction 0 limit, bit 2 at the direction 1 limit.
+/// The body of [`crate::ffi::mcl::mcl_get_motor_status`] (its documentation says what it does):
+/// a §4 status.
 ///
 /// # Safety
 /// `motor_status` must be null or valid for writing one `int`.
-#[no_mangle]
-pub unsafe extern "C" fn mcl_get_motor_status(
+pub unsafe fn get_motor_status(
     controller_id: c_int,
     motor_id: c_int,
     motor_status: *mut c_int,
@@ -800,12 +786,12 @@ pub unsafe extern "C" fn mcl_get_motor_status(
     })
 }
 
-/// §4.19: debounced limit switch bits (bits 0..5) in `*limits`.
+/// The body of [`crate::ffi::mcl::mcl_get_limit_switches`] (its documentation says what it does):
+/// a §4 status.
 ///
 /// # Safety
 /// `limits` must be null or valid for writing one `int`.
-#[no_mangle]
-pub unsafe extern "C" fn mcl_get_limit_switches(controller_id: c_int, limits: *mut c_int) -> c_int {
+pub unsafe fn get_limit_switches(controller_id: c_int, limits: *mut c_int) -> c_int {
     let check = || {
         if limits.is_null() {
             return Err(MCL_PARAMETER_OUT_OF_RANGE_ERROR);
@@ -823,7 +809,6 @@ pub unsafe extern "C" fn mcl_get_limit_switches(controller_id: c_int, limits: *m
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mc3b::client::EmulatorLink;
 
     #[test]
     fn limit_masks_follow_section_6_5() {
@@ -837,15 +822,6 @@ mod tests {
     }
 
     #[test]
-    fn a_panic_becomes_a_status_code() {
-        let hook = std::panic::take_hook();
-        std::panic::set_hook(Box::new(|_| {}));
-        let code = guard(|| panic!("must not cross the C boundary"));
-        std::panic::set_hook(hook);
-        assert_eq!(code, MCL_SERIAL_PORT_ERROR);
-    }
-
-    #[test]
     fn com_port_rule() {
         assert_eq!(com_port_path(0), None);
         // Use a port number nobody sets.
@@ -853,33 +829,5 @@ mod tests {
             com_port_path(77),
             Some(crate::platform::com_port_device(77))
         );
-    }
-
-    #[test]
-    fn library_over_an_in_process_emulator() {
-        // The only unit test touching the global state (the integration
-        // tests run in another process).
-        assert_eq!(mcl_stop_motor(0, 0), MCL_NOT_INITIALIZED_ERROR);
-        let link: Box<dyn Transport + Send> = Box::new(EmulatorLink::new());
-        assert_eq!(
-            initialize_with(link, Duration::from_millis(50)),
-            MCL_NO_ERROR
-        );
-        assert_eq!(
-            mcl_set_motor_acceleration(0, 0, 99),
-            MCL_PARAMETER_OUT_OF_RANGE_ERROR
-        );
-        assert_eq!(
-            mcl_set_motor_acceleration(1, 0, 100),
-            MCL_PARAMETER_OUT_OF_RANGE_ERROR
-        );
-        assert_eq!(mcl_move_motor(0, 0, 0, 1000), MCL_NO_ERROR);
-        assert_eq!(mcl_move_motor(0, 0, 0, 1000), MCL_MOTOR_RUNNING_ERROR);
-        let mut st = -1;
-        // SAFETY: valid pointer to a local.
-        assert_eq!(unsafe { mcl_get_motor_status(0, 0, &mut st) }, MCL_NO_ERROR);
-        assert_eq!(st, 1);
-        assert_eq!(mcl_deinitialize(), MCL_NO_ERROR);
-        assert_eq!(mcl_deinitialize(), MCL_NOT_INITIALIZED_ERROR);
     }
 }
