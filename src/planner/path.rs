@@ -530,6 +530,16 @@ impl Path {
         *self.common().0
     }
 
+    /// The chord of a stretch `ds` long over `ds` (1 but on an arc).
+    pub fn chord_ratio(&self, ds: f64) -> f64 {
+        match self {
+            Path::Arc(a) if a.radius > 0.0 && ds > 0.0 => {
+                2.0 * a.radius * (ds / (2.0 * a.radius)).sin() / ds
+            }
+            _ => 1.0,
+        }
+    }
+
     /// Start position (all axes), borrowed.
     #[inline]
     pub fn start_ref(&self) -> &Axes {

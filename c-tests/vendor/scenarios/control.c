@@ -53,6 +53,25 @@ CTRL_CASE(override_ex_ramped, 'T', 150, CD(MCC_OverrideSpeedEx, 60, 0, 0), 151,
 CTRL_CASE(override_twice, 'T', 120, CD(MCC_OverrideSpeed, 200, 0), 160,
           CD(MCC_OverrideSpeed, 30, 0))
 
+/* A hold in the middle of an arc (a half circle of radius 1, 10 UU/s, 'T'), with equal
+ * ramps and with a shorter deceleration; and the same shorter deceleration on a line. On
+ * an arc the vendor's library stops from the last period's speed along the chord. */
+#define ARC_HOLD_CASE(name, dec, move)                                                     \
+    static void name(int t)                                                                \
+    {                                                                                      \
+        if (t == 0) {                                                                      \
+            vd_profile('T', 100, dec, 10);                                                 \
+            move;                                                                          \
+        }                                                                                  \
+        if (t == 150)                                                                      \
+            CI(MCC_HoldMotion, 0, 0);                                                      \
+        if (t == 400)                                                                      \
+            CI(MCC_ContiMotion, 0);                                                        \
+    }
+ARC_HOLD_CASE(arc_hold_cruise_t, 100, CI(MCC_ArcXY, 1, 1, 2, 0, 0))
+ARC_HOLD_CASE(arc_hold_dec40_t, 40, CI(MCC_ArcXY, 1, 1, 2, 0, 0))
+ARC_HOLD_CASE(line_hold_dec40_t, 40, LINE(0, 2, 0, 0))
+
 /* Hold with queued commands, continue; abort with queued commands. */
 static void hold_queue(int t)
 {
@@ -413,6 +432,9 @@ static void fix_speed(int t)
 
 const Scenario vd_control[] = {
     SCEN(hold_acc_t, std3, 300, 4000),
+    SCEN(arc_hold_cruise_t, std3, 400, 4000),
+    SCEN(arc_hold_dec40_t, std3, 400, 4000),
+    SCEN(line_hold_dec40_t, std3, 400, 4000),
     SCEN(hold_cruise_t, std3, 400, 4000),
     SCEN(hold_dec_t, std3, 400, 4000),
     SCEN(hold_acc_s, std3, 300, 4000),

@@ -183,8 +183,22 @@ impl Running {
 
     /// Every track decelerates to a stop over `dec_s` ([`Track::stop`]).
     pub(super) fn stop_tracks(&mut self, dec_s: f64) {
+        let chord = self.chord_ratio();
         for t in self.tracks_mut() {
-            t.stop(dec_s);
+            t.stop(dec_s, chord);
+        }
+    }
+
+    /// The last period's chord over its length along the path: on an arc the vendor's
+    /// library stops (a hold, a timed abort) from the speed along the chord (the distance
+    /// between the last two positions over the period), a little less than the speed
+    /// along the arc (measured: `arc_hold_cruise`, `mix_3`); 1 on anything else.
+    fn chord_ratio(&self) -> f64 {
+        match (&self.progress, &self.cmd.plan) {
+            (Progress::Path { track, sync: None }, Plan::Path(m)) => {
+                m.path.chord_ratio(track.last_speed() * m.profile.period())
+            }
+            _ => 1.0,
         }
     }
 

@@ -202,12 +202,21 @@ impl Track {
         self.profile = profile;
     }
 
-    /// A hold or a timed abort: stops from the last period's speed with the deceleration
-    /// `dec_s` gives at the full feed ([`TickProfile::stop`]).
-    pub(crate) fn stop(&mut self, dec_s: f64) {
-        let v0 = self.last_speed();
+    /// A hold or a timed abort: stops from the last period's speed (times `chord`, the
+    /// last period's chord over its length: 1 but on an arc) with the deceleration `dec_s`
+    /// gives at the full feed ([`TickProfile::stop`]).
+    pub(crate) fn stop(&mut self, dec_s: f64, chord: f64) {
+        let v0 = self.last_speed() * chord;
         let t = self.profile.period();
-        let stop = TickProfile::stop(v0, self.feed, dec_s, self.shapes.1, t);
+        // The full feed the deceleration is measured against: the speed the running
+        // stretch cruises at (the feed rounded to whole periods), as the vendor's library
+        // stops (measured: `mix_1`, a hold while accelerating; `arc_hold_cruise_t`).
+        let full = if self.profile.speed() > 0.0 {
+            self.profile.speed()
+        } else {
+            self.feed
+        };
+        let stop = TickProfile::stop(v0, full, dec_s, self.shapes.1, t);
         self.restart(stop);
     }
 
@@ -286,7 +295,7 @@ mod tests {
         }
         assert!((t.dist() - 1.0).abs() < 1e-12);
         assert_eq!(t.phase(), Phase::Cruising);
-        t.stop(0.1);
+        t.stop(0.1, 1.0);
         assert_eq!(t.periods_left(), 101);
         while t.step() {}
         assert!((t.dist() - 1.5).abs() < 1e-12);
