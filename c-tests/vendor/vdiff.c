@@ -9,7 +9,7 @@
 #include <string.h>
 
 static const Scenario *const tables[] = {vd_lines, vd_arcs, vd_ptp, vd_control, vd_state, vd_extra,
-                                        vd_oracle_items};
+                                        vd_oracle_items, vd_mixes};
 
 static const Scenario *cur;
 static volatile int tick = -1; /* -1 while setting up, then the period being recorded */

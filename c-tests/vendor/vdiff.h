@@ -50,7 +50,7 @@ typedef struct {
 
 /* The scenario tables of the scenario files, ended by an entry with name NULL. */
 extern const Scenario vd_lines[], vd_arcs[], vd_ptp[], vd_control[], vd_state[], vd_extra[],
-    vd_oracle_items[];
+    vd_oracle_items[], vd_mixes[];
 
 void *vd_need(const char *name);
 int vd_ret_i(const char *label, int v);

@@ -1,0 +1,144 @@
+/* Mixed programs drawn from a fixed seed each: a profile (T or S, ramp times, feed), then
+ * lines of one to three axes, 3-point arcs in XY, point-to-point moves and delays in
+ * random order, with an override change and a hold/continue at random periods. What no
+ * hand-written scenario combines, each the same program on both libraries (the seed is
+ * part of the scenario, the generator a 32-bit xorshift, so the calls and their
+ * arguments are the same bytes everywhere).
+ *
+ * Kept out of the draw: arcs under blending and blends whose ramps differ in time (the
+ * known departures `arc_blend` and `blend_times`), timed aborts of a PtP (`ptp_abortex`),
+ * and NaN or geometry-less curves (deliberate departures). */
+#include "common.h"
+#include <math.h>
+
+STD_SETUP(std3, 10000, 1, 3)
+
+typedef struct {
+    unsigned s;
+} Rng;
+
+static unsigned rng_next(Rng *r)
+{
+    unsigned x = r->s;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    r->s = x;
+    return x;
+}
+
+/* An integer in lo..hi. */
+static int rng_int(Rng *r, int lo, int hi)
+{
+    return lo + (int)(rng_next(r) % (unsigned)(hi - lo + 1));
+}
+
+/* A coordinate in -1..1 UU, in whole thousandths. */
+static double rng_coord(Rng *r)
+{
+    return rng_int(r, -1000, 1000) / 1000.0;
+}
+
+/* The events of a mix at periods after its commands are queued. */
+typedef struct {
+    int override_at;
+    double override_pct;
+    int hold_at;
+    int conti_at;
+} MixEvents;
+
+static MixEvents mix_events[9];
+
+/* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
+static void mix_queue(unsigned seed, MixEvents *ev)
+{
+    Rng r = {seed * 2654435761u + 1u};
+    const char type = rng_int(&r, 0, 1) ? 'S' : 'T';
+    const int blend = rng_int(&r, 0, 2) == 0;
+    const double acc = rng_int(&r, 2, 20) * 10.0;
+    /* Under blending the deceleration takes as long as the next acceleration. */
+    const double dec = blend ? acc : rng_int(&r, 2, 20) * 10.0;
+    const double feed = rng_int(&r, 5, 20);
+    vd_profile(type, acc, dec, feed);
+    CI(MCC_SetAbsolute, 0);
+    if (blend)
+        CI(MCC_EnableBlend, 0);
+    double x = 0, y = 0, z = 0;
+    const int n = rng_int(&r, 3, 7);
+    for (int i = 0; i < n; i++) {
+        int kind = rng_int(&r, 0, 9);
+        if (blend && kind >= 5 && kind <= 7)
+            kind = 0; /* no arcs under blending */
+        if (kind <= 4) {
+            /* A line moving one, two or three axes. */
+            const int axes = rng_int(&r, 1, 7);
+            if (axes & 1)
+                x = rng_coord(&r);
+            if (axes & 2)
+                y = rng_coord(&r);
+            if (axes & 4)
+                z = rng_coord(&r);
+            LINE(0, x, y, z);
+        } else if (kind <= 7) {
+            /* A 3-point arc in XY: a circle of radius 0.1..0.8 UU through the queue's
+             * end, from its angle there through a sweep of ±(30..270)°. */
+            const double radius = rng_int(&r, 100, 800) / 1000.0;
+            const double a0 = rng_int(&r, 0, 359) * M_PI / 180.0;
+            const double sweep = rng_int(&r, 30, 270) * (rng_int(&r, 0, 1) ? 1 : -1) * M_PI / 180.0;
+            const double cx = x - radius * cos(a0), cy = y - radius * sin(a0);
+            const double rx = cx + radius * cos(a0 + sweep / 2), ry = cy + radius * sin(a0 + sweep / 2);
+            const double ex = cx + radius * cos(a0 + sweep), ey = cy + radius * sin(a0 + sweep);
+            /* The reference and end points rounded to micro-units, as the lines' are. */
+            const double rxr = round(rx * 1e6) / 1e6, ryr = round(ry * 1e6) / 1e6;
+            const double exr = round(ex * 1e6) / 1e6, eyr = round(ey * 1e6) / 1e6;
+            CI(MCC_ArcXY, rxr, ryr, exr, eyr, 0);
+            x = exr;
+            y = eyr;
+        } else if (kind == 8) {
+            x = rng_coord(&r);
+            y = rng_coord(&r);
+            PTP(0, x, y, z);
+        } else {
+            CI(MCC_DelayMotion, (DWORD)rng_int(&r, 1, 200), 0);
+        }
+    }
+    ev->override_at = rng_int(&r, 0, 1) ? rng_int(&r, 20, 900) : -1;
+    ev->override_pct = rng_int(&r, 3, 15) * 10.0;
+    ev->hold_at = rng_int(&r, 0, 1) ? rng_int(&r, 20, 900) : -1;
+    /* Without a hold the continue still comes (a continue with nothing held). */
+    ev->conti_at = ev->hold_at + rng_int(&r, 10, 300);
+}
+
+static void mix_script(int k, unsigned seed, int t)
+{
+    MixEvents *ev = &mix_events[k];
+    if (t == 0)
+        mix_queue(seed, ev);
+    if (t == ev->override_at)
+        CD(MCC_OverrideSpeed, ev->override_pct, 0);
+    if (t == ev->hold_at)
+        CI(MCC_HoldMotion, 0, 0);
+    if (t == ev->conti_at)
+        CI(MCC_ContiMotion, 0);
+}
+
+#define MIX(k, seed)                                                                       \
+    static void mix_##k(int t) { mix_script(k, seed, t); }
+MIX(1, 1)
+MIX(2, 2)
+MIX(3, 3)
+MIX(4, 4)
+MIX(5, 5)
+MIX(6, 6)
+MIX(7, 7)
+MIX(8, 8)
+
+/* The script's last event is before period 1200; a mix runs at most 60 s. */
+const Scenario vd_mixes[] = {
+    SCEN(mix_1, std3, 1200, 60000),  SCEN(mix_2, std3, 1200, 60000),
+    SCEN(mix_3, std3, 1200, 60000),  SCEN(mix_4, std3, 1200, 60000),
+    SCEN(mix_5, std3, 1200, 60000),  SCEN(mix_6, std3, 1200, 60000),
+    SCEN(mix_7, std3, 1200, 60000),  SCEN(mix_8, std3, 1200, 60000),
+    SCEN_END,
+};
+
