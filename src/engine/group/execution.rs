@@ -190,9 +190,10 @@ impl Running {
     }
 
     /// The last period's chord over its length along the path: on an arc the vendor's
-    /// library stops (a hold, a timed abort) from the speed along the chord (the distance
-    /// between the last two positions over the period), a little less than the speed
-    /// along the arc (measured: `arc_hold_cruise`, `mix_3`); 1 on anything else.
+    /// library stops (a hold, a timed abort) and re-plans (an override, a new feed) from
+    /// the speed along the chord (the distance between the last two positions over the
+    /// period), a little less than the speed along the arc (measured: `arc_hold_cruise_t`,
+    /// `mix_3`, `mix_6`); 1 on anything else.
     fn chord_ratio(&self) -> f64 {
         match (&self.progress, &self.cmd.plan) {
             (Progress::Path { track, sync: None }, Plan::Path(m)) => {
@@ -215,24 +216,27 @@ impl Running {
         }
     }
 
-    /// Every track re-plans its rest at its feed times `ratio` ([`Track::retarget`]); a
-    /// custom motion only when it follows the override.
+    /// Every track re-plans its rest at its feed times `ratio` ([`Track::retarget`]), also
+    /// in its final deceleration (the vendor's library does: `mix_6`); a custom motion
+    /// only when it follows the override.
     pub(super) fn retarget_tracks(&mut self, ratio: f64) {
         if matches!(&self.cmd.plan, Plan::Custom(m) if !m.follows_override()) {
             return;
         }
+        let chord = self.chord_ratio();
         for t in self.tracks_mut() {
-            if !t.arrived() && !t.in_final_decel() {
-                t.retarget(ratio);
+            if !t.arrived() {
+                t.retarget(ratio, chord);
             }
         }
     }
 
     /// A new feed for a general motion, at `ratio`.
     pub(super) fn set_feed(&mut self, feed: f64, ratio: f64) {
+        let chord = self.chord_ratio();
         if let Progress::Path { track, sync: None } = &mut self.progress {
             if !track.arrived() {
-                track.set_base_feed(feed, ratio);
+                track.set_base_feed(feed, ratio, chord);
             }
         }
     }

@@ -236,12 +236,12 @@ impl Track {
         self.restart(p);
     }
 
-    /// An override: what is left, from the last period's speed, at the planned feed
-    /// times `ratio`.
-    pub(crate) fn retarget(&mut self, ratio: f64) {
+    /// An override: what is left, from the last period's speed (times `chord`, see
+    /// [`Track::stop`]), at the planned feed times `ratio`.
+    pub(crate) fn retarget(&mut self, ratio: f64, chord: f64) {
         let feed = self.base_feed * ratio;
         let left = (self.len - self.dist()).max(0.0);
-        let v0 = self.last_speed();
+        let v0 = self.last_speed() * chord;
         let t = self.profile.period();
         self.feed = feed;
         let p = TickProfile::plan(left, v0, feed, self.ramps.0, self.ramps.1, self.shapes, t);
@@ -249,9 +249,9 @@ impl Track {
     }
 
     /// A new feed (`MCC_ChangeFeedSpeed`), at `ratio`: re-plans what is left.
-    pub(crate) fn set_base_feed(&mut self, feed: f64, ratio: f64) {
+    pub(crate) fn set_base_feed(&mut self, feed: f64, ratio: f64, chord: f64) {
         self.base_feed = feed;
-        self.retarget(ratio);
+        self.retarget(ratio, chord);
     }
 
     /// Blending: the deceleration of the running stretch becomes an S ramp (the vendor
@@ -316,7 +316,7 @@ mod tests {
         for _ in 0..30 {
             t.step();
         }
-        t.retarget(0.4);
+        t.retarget(0.4, 1.0);
         assert_eq!(t.periods_left(), 552);
         assert_eq!(t.phase(), Phase::Accelerating);
         t.step();
