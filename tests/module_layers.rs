@@ -5,7 +5,11 @@
 //! It reads `src/` and collects every `crate::<module>` path outside comments and tests.
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+#[path = "support/rust_files.rs"]
+mod support;
+
+use std::path::Path;
+use support::rust_files;
 
 /// The layers, bottom up. A module may use the modules listed before it.
 const LAYERS: &[&str] = &[
@@ -32,17 +36,6 @@ const LAYERS: &[&str] = &[
 
 fn rank(m: &str) -> Option<usize> {
     LAYERS.iter().position(|&l| l == m)
-}
-
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for e in std::fs::read_dir(dir).expect("read src/") {
-        let p = e.expect("dir entry").path();
-        if p.is_dir() {
-            rust_files(&p, out);
-        } else if p.extension().is_some_and(|x| x == "rs") {
-            out.push(p);
-        }
-    }
 }
 
 /// The text of a source file without comments and without its test module.
@@ -73,8 +66,7 @@ fn uses(code: &str) -> Vec<String> {
 #[test]
 fn every_module_uses_only_lower_layers() {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut files = Vec::new();
-    rust_files(&src, &mut files);
+    let files = rust_files(&src);
     let mut upward: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut unknown = Vec::new();
     for f in &files {
