@@ -6,7 +6,7 @@
 //! clocks of 10 ns, so it lasts `bits × divider × 10 ns`; an update rate `r` (Hz) makes
 //! it last at least `1 / r`, rounded to whole ns.
 
-use super::rio::SYSTEM_CLOCK_NS;
+use super::SYSTEM_CLOCK_NS;
 use crate::error::{McclError, McclResult};
 
 /// The divider and update rate of one converter or bus, and the time since its last

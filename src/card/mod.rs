@@ -14,6 +14,10 @@ pub mod handshake;
 pub mod rio;
 pub mod timer;
 
+/// One system clock of the card, ns (user manual §2.13: the timer counts it; the serial
+/// converters and buses move one bit per divider's worth of them).
+pub const SYSTEM_CLOCK_NS: u64 = 10;
+
 use crate::config::AXES;
 use crate::interrupt::{Interrupt, Pending};
 use adc::{Adc, AdcSource};

@@ -32,6 +32,7 @@
 //! transfer clears the report. A failed master is reported at once.
 
 use super::cadence::Cadence;
+use super::SYSTEM_CLOCK_NS;
 use crate::error::{McclError, McclResult};
 use crate::interrupt::{Interrupt, Pending};
 use crate::vendor::consts as c;
@@ -44,8 +45,6 @@ pub const RIO_PORTS: usize = 4;
 pub const ARIO_SLAVES: usize = 32;
 /// RIO digital inputs with a trigger.
 pub const DIS: usize = 8;
-/// The card's system clock period, ns (user manual §2.13: the timer counts it).
-pub const SYSTEM_CLOCK_NS: u64 = 10;
 /// Bits one ARIO slave exchanges per cycle: 16 outputs and 16 inputs.
 pub const ARIO_BITS_PER_SLAVE: u64 = 32;
 /// ARIO clock divider before any `MCC_SetARIOClockDivider`: 10 (a 10 Mbit/s bus).

@@ -8,8 +8,7 @@
 
 use crate::error::{McclError, McclResult};
 
-/// One system clock of the card, ns.
-pub const SYSTEM_CLOCK_NS: u64 = 10;
+use super::SYSTEM_CLOCK_NS;
 
 /// The timer's period before `MCC_SetTimer`: 100 system clocks = 1 µs, so that the
 /// watchdog (which counts timer periods) counts microseconds as the examples manual's
