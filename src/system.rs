@@ -322,7 +322,7 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     let kinematics = crate::engine::kinematics::registered();
     if !kinematics.is_empty() {
         turn.unlock();
-        crate::engine::kinematics::apply_registrations(engine.shared(), &kinematics)?;
+        engine.shared().apply_kinematics(&kinematics)?;
         crate::engine::kinematics::clear_registered();
     }
     let sys = turn.sys();

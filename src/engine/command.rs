@@ -66,7 +66,7 @@ pub enum Plan {
     /// Queued output change (`MCC_Queue*OutputValue`), made when the queue reaches it.
     Output(Output),
     /// Custom motion: the program's callbacks give the path (`group/custom.rs`).
-    Custom(super::group::custom::CustomMove),
+    Custom(super::custom_move::CustomMove),
     /// A command the vendor's library accepts and fails when it starts (an arc or circle
     /// with no geometry): it records this error record and stops the group.
     Fault(i32),

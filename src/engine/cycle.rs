@@ -9,7 +9,6 @@
 //! Like the interrupt routines they may call any `MCC_*` function; after one closed the
 //! system (the clock stopped) no further routine of that tick runs.
 
-use super::shared::Shared;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 /// The per-period routines of a running system.
@@ -48,38 +47,16 @@ impl CycleRoutines {
     pub fn any(&self) -> bool {
         self.cycle.load(Ordering::Acquire) != 0 || self.reverse.load(Ordering::Acquire)
     }
-}
 
-impl Shared {
-    /// Whether any routine (interrupt, cycle or INTERP) may run after a tick.
-    pub fn routines_any(&self) -> bool {
-        self.isr.any() || self.cycle.any()
+    /// Whether any group has had an INTERP routine.
+    pub(in crate::engine) fn reverse_armed(&self) -> bool {
+        self.reverse.load(Ordering::Acquire)
     }
 
-    /// Calls the routines of the module documentation. Call with no lock held.
-    pub(super) fn call_cycle_routines(&self) {
-        if self.cycle.reverse.load(Ordering::Acquire) {
-            for n in 0..self.group_count() {
-                if self.clock.stopped() {
-                    return;
-                }
-                let due = self.nth_group(n).and_then(|mut g| g.take_reverse_call());
-                if let Some((f, group, cmd, time)) = due {
-                    // SAFETY: `f` was stored from a non-null `INTERP`, a C function with
-                    // this signature; the buffer argument is NULL (the registration has
-                    // none); C routines cannot unwind into Rust.
-                    let r = unsafe {
-                        let f = std::mem::transmute::<usize, RawInterp>(f);
-                        f(group, cmd, time, std::ptr::null_mut())
-                    };
-                    if let Some(mut g) = self.nth_group(n) {
-                        g.set_reverse_decision(r);
-                    }
-                }
-            }
-        }
-        let f = self.cycle.cycle.load(Ordering::Acquire);
-        if f != 0 && !self.clock.stopped() {
+    /// Calls the cycle routine, if one is registered. Call with no lock held.
+    pub(in crate::engine) fn call_cycle(&self) {
+        let f = self.cycle.load(Ordering::Acquire);
+        if f != 0 {
             // SAFETY: `f` was stored from a non-null `CYCLE_INTERRUPT_ISR`, a C function
             // taking nothing and returning nothing; C routines cannot unwind into Rust.
             unsafe {
@@ -87,5 +64,24 @@ impl Shared {
                 f();
             }
         }
+    }
+}
+
+/// Calls the INTERP routine at address `f` for command `cmd` of `group` at `time`, with
+/// no buffer (the registration has none); returns its decision.
+///
+/// # Safety
+/// `f` must have been stored from a non-null `INTERP`, a C function with that signature.
+pub(in crate::engine) unsafe fn call_interp(
+    f: usize,
+    group: std::os::raw::c_int,
+    cmd: std::os::raw::c_int,
+    time: std::os::raw::c_int,
+) -> std::os::raw::c_int {
+    // SAFETY: `f` is an `INTERP` (this function's contract); the buffer argument is NULL,
+    // which the registration allows; C routines cannot unwind into Rust.
+    unsafe {
+        let f = std::mem::transmute::<usize, RawInterp>(f);
+        f(group, cmd, time, std::ptr::null_mut())
     }
 }

@@ -31,7 +31,6 @@
 //! Positions here are in the channel's user units in the frame of its command counter
 //! (pulses / pulses-per-UU), so the pulses sent are `round(x × factor)`.
 
-pub mod control;
 mod program;
 
 use program::RECOVER;

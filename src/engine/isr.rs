@@ -26,7 +26,6 @@
 //! from the engine thread only stops the clock; no further callback of that tick runs).
 //! A routine unregistered by another thread while a tick delivers may run once more.
 
-use super::Shared;
 pub use crate::interrupt::{Interrupt, Kind, Pending, KINDS, ORDER};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -170,78 +169,6 @@ impl IsrTable {
 /// Error record of a card reset by its watchdog, set on every group of that card
 /// (no vendor code exists; 0xF103 is unused by the vendor's table, see docs/decisions.md).
 pub const ERR_WATCHDOG_RESET: i32 = crate::error_record::ErrorRecord::WatchdogReset.code();
-
-impl Shared {
-    /// Raises an interrupt cause on `card`; it is delivered at the end of the current
-    /// tick (or of the next one when raised between ticks). Unknown cards are ignored.
-    pub fn raise(&self, card: usize, i: Interrupt) {
-        if let Some(p) = self.periph.get(card) {
-            p.lock().pending.raise(i);
-        }
-    }
-
-    /// Runs every card's peripherals for one tick of `dt_ns` and takes the causes raised
-    /// since the last delivery into `out` (cleared first). A watchdog that expired resets
-    /// its card here (its groups abort and record [`ERR_WATCHDOG_RESET`], servo-on and
-    /// position-ready go off). Returns whether every card was idle (nothing ran, no group
-    /// was touched).
-    #[inline]
-    pub fn tick_peripherals(
-        &self,
-        dt_ns: u64,
-        out: &mut Collected,
-        groups: &mut [super::group::GroupState],
-    ) -> bool {
-        out.clear();
-        let mut idle = true;
-        for (card, p) in self.periph.iter().enumerate() {
-            if p.count_idle_tick() {
-                // Runs when the card is next locked (see `PeriphCell`).
-                continue;
-            }
-            idle = false;
-            self.tick_busy_card(card, p, dt_ns, out, groups);
-        }
-        idle
-    }
-
-    /// [`Shared::tick_peripherals`] of a card that is not idle: its tick under its lock.
-    #[inline(never)]
-    fn tick_busy_card(
-        &self,
-        card: usize,
-        p: &crate::card::PeriphCell,
-        dt_ns: u64,
-        out: &mut Collected,
-        groups: &mut [super::group::GroupState],
-    ) {
-        let (reset, pending) = {
-            let mut p = p.lock();
-            let reset = p.tick(dt_ns);
-            let pending = (!p.pending.is_empty()).then(|| std::mem::take(&mut p.pending));
-            (reset, pending)
-        };
-        if reset {
-            self.reset_card(card, groups);
-        }
-        if let Some(pending) = pending {
-            out.push(card, pending);
-        }
-    }
-
-    /// The card-level part of a watchdog reset (the peripherals reset themselves).
-    fn reset_card(&self, card: usize, groups: &mut [super::group::GroupState]) {
-        self.servo_on[card].store(0, Ordering::Release);
-        self.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
-        for g in groups.iter_mut() {
-            if g.def.card.0 == card {
-                g.abort_within_period();
-                g.set_error(ERR_WATCHDOG_RESET);
-            }
-            self.publish(g);
-        }
-    }
-}
 
 #[cfg(test)]
 mod tests {

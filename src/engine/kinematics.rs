@@ -30,7 +30,6 @@
 //! kinematics stops the group with error record 0xF106: the joints stay where they were
 //! (no jump) and the Cartesian position goes back to the last point they reached.
 
-use super::shared::Shared;
 use crate::config::{AXES, GROUPS};
 use crate::error::{McclError, McclResult};
 use crate::planner::Axes;
@@ -38,7 +37,6 @@ use crate::vendor::{BOOL, DWORD, FWDKINEFUN, INIT_EXTENSION, INVKINEFUN};
 use parking_lot::Mutex;
 use std::ffi::c_void;
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
 use std::sync::Arc;
 
 /// The largest extension buffer `MCC_SetKinematicTrans` allocates (bytes): 16 MiB, far
@@ -220,58 +218,4 @@ pub fn registered() -> Vec<(usize, Registration)> {
 /// kinematics unless the program registers them again, as its groups are made again).
 pub fn clear_registered() {
     *REGISTERED.lock() = [None; GROUPS];
-}
-
-/// Applies `regs` to the groups of a system being started (before any other thread can
-/// reach it; call with no lock held: the program's initialisers and forward kinematics
-/// run here, marked as callbacks so that they cannot start or close a system). A
-/// registration for a group that does not run is passed over. Each extension is
-/// allocated zeroed and initialised once; the group keeps its joints (its channels'
-/// positions) and its Cartesian position is the forward kinematics of them. A group on
-/// an MC3B, or a forward kinematics failing there, is `COMMAND_NOTACCEPTED_ERR`.
-pub fn apply_registrations(shared: &Shared, regs: &[(usize, Registration)]) -> McclResult<()> {
-    for &(g, r) in regs {
-        let Ok(index) = u16::try_from(g) else {
-            continue;
-        };
-        let joints = match shared.group(index) {
-            Ok(grp) => grp.current_joints(),
-            Err(_) => continue,
-        };
-        let ext = Arc::new(Extension::new(r.ext_size)?);
-        super::custom::as_callback(g, || init_extension(r.init, &ext));
-        let fns = KinFns {
-            fwd: r.fwd,
-            inv: r.inv,
-            ext,
-        };
-        let mut posture: DWORD = 0;
-        let cart = super::custom::as_callback(g, || fns.forward(g, &joints, &mut posture))
-            .ok_or(McclError::NotAccepted)?;
-        let mut grp = shared.group(index)?;
-        grp.set_kinematics(fns, joints, cart, posture)?;
-        shared.kinematics_on.store(true, Ordering::Release);
-        shared.publish(&mut grp);
-    }
-    Ok(())
-}
-
-impl Shared {
-    /// The kinematics stage after a tick (see the module's documentation): runs on the
-    /// engine thread with no lock held, and holds a group's lock only to read what the
-    /// callbacks need and to store what they returned.
-    pub(super) fn kinematics_stage(&self) {
-        if !self.kinematics_on.load(Ordering::Acquire) {
-            return;
-        }
-        for n in 0..self.group_count() {
-            let job = self.nth_group(n).and_then(|mut g| g.kinematics_job());
-            let Some(job) = job else { continue };
-            let done = job.call();
-            if let Some(mut g) = self.nth_group(n) {
-                g.kinematics_done(done);
-                self.publish(&mut g);
-            }
-        }
-    }
 }

@@ -22,11 +22,13 @@
 pub mod command;
 mod cruise;
 pub mod custom;
+pub mod custom_move;
 pub mod cycle;
 pub mod group;
 pub mod homing;
 pub mod isr;
 pub mod kinematics;
+pub mod note;
 mod poll;
 mod running;
 pub mod safety;
@@ -35,6 +37,7 @@ pub mod snapshot;
 pub mod thread;
 mod tick;
 pub mod trace;
+mod track;
 pub mod view;
 
 pub use poll::SPIN_POLLS;

@@ -46,7 +46,15 @@ impl Engine {
         machine: Machine,
         trace: Option<trace::Trace>,
     ) -> std::io::Result<Engine> {
-        let shared = Arc::new(Shared::new(mode, period, groups, mac, machine, trace));
+        let shared = Arc::new(Shared::new(
+            mode,
+            period,
+            groups,
+            mac,
+            machine,
+            trace,
+            super::cruise::enabled_by_env(),
+        ));
         shared.for_each_group(|_| {});
         let s2 = shared.clone();
         // The thread says when it is ready to tick (its real-time settings made, the

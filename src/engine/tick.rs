@@ -3,7 +3,7 @@
 //! safety checks, the snapshots and the trace; and the recovery from a panicking tick.
 
 use super::group::GroupState;
-use super::homing::control::apply_homing;
+use super::shared::apply_homing;
 use super::shared::Shared;
 use super::{command, isr, snapshot};
 use crate::config::AXES;
@@ -11,7 +11,6 @@ use crate::machine::deferred::{DeferredSteps, Recording};
 use crate::machine::{Channel, Machine};
 use parking_lot::MutexGuard;
 use std::sync::atomic::Ordering;
-use std::time::Duration;
 
 /// Under a virtual clock, a long run of ticks publishes snapshots this often (and at its
 /// last tick): the program is waiting meanwhile, so only other threads could look.
@@ -403,11 +402,6 @@ pub(super) fn release(held: &mut Option<Held<'_>>) {
     if let Some(h) = held.take() {
         h.release();
     }
-}
-
-/// The length of a tick in ns, as the peripherals count it.
-pub(super) fn tick_ns(period: Duration) -> u64 {
-    u64::try_from(period.as_nanos()).unwrap_or(u64::MAX)
 }
 
 #[cfg(test)]

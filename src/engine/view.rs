@@ -12,8 +12,7 @@
 //! brings the channels' deferred steps up to date, so the ticks between copies stay as
 //! cheap as without an observer (deferred steps, cruise ticks).
 
-use crate::config::{AXES, GROUPS};
-use crate::machine::Machine;
+use crate::config::AXES;
 use parking_lot::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
@@ -111,6 +110,16 @@ impl ViewCell {
         self.wanted() && crate::clock::coarse_monotonic_ns() >= self.next_ns.load(Ordering::Relaxed)
     }
 
+    /// Stores `v` as the last copy, unless the observer is reading the last one: then
+    /// this copy is skipped and the next tick makes one.
+    pub(in crate::engine) fn offer(&self, v: View) {
+        if let Some(mut cell) = self.view.try_lock() {
+            *cell = v;
+        } else {
+            self.next_ns.store(0, Ordering::Relaxed);
+        }
+    }
+
     /// The last copy (waits only while the engine is writing one, a few µs).
     pub fn get(&self) -> View {
         self.view.lock().clone()
@@ -132,83 +141,5 @@ impl ViewCell {
         } else {
             false
         }
-    }
-}
-
-impl super::Shared {
-    /// At the end of a tick whose start found a copy [due](ViewCell::due) (machine
-    /// locked by the caller, every channel up to date): copies the view.
-    pub(super) fn publish_view(&self, machine: &Machine, running: &[super::group::GroupState]) {
-        let cards = (0..self.cards)
-            .map(|cd| self.card_view(machine, cd))
-            .collect();
-        let mut groups = vec![None; GROUPS];
-        for st in running {
-            if let Some(g) = groups.get_mut(st.index) {
-                *g = Some(GroupView {
-                    override_pct: st.override_pct,
-                    inpos: st.inpos_status(),
-                });
-            }
-        }
-        let v = View {
-            ticks: self.clock.ticks() + 1,
-            made: true,
-            home_status: super::homing::home_status_read(self.home_status.load(Ordering::Acquire)),
-            cards,
-            groups,
-        };
-        // The observer is copying the last one: skip this copy, the next tick makes one.
-        if let Some(mut cell) = self.view.view.try_lock() {
-            *cell = v;
-        } else {
-            self.view.next_ns.store(0, Ordering::Relaxed);
-        }
-    }
-
-    fn card_view(&self, machine: &Machine, cd: usize) -> CardView {
-        let mut v = CardView {
-            emergency: machine.emergency.get(cd).copied().unwrap_or(false),
-            ..Default::default()
-        };
-        for (ch, cv) in v.channels.iter_mut().enumerate() {
-            if let Some(c) = machine.channel(cd, ch) {
-                let l = c.levels();
-                cv.inputs = [l.home, l.plus, l.minus];
-                cv.raw = [
-                    c.raw_level(crate::machine::Sensor::Home),
-                    c.raw_level(crate::machine::Sensor::LimitPlus),
-                    c.raw_level(crate::machine::Sensor::LimitMinus),
-                ];
-                cv.encoder = c.encoder();
-                cv.motor = c.position();
-                cv.pulses = c.output_pulses();
-            }
-            cv.led = machine.led_lit(cd, ch);
-        }
-        if let Some(p) = self.periph.get(cd) {
-            let p = p.lock();
-            let inputs = p.adc_inputs();
-            for (ch, cv) in v.channels.iter_mut().enumerate() {
-                cv.dac = p.dac.output(ch);
-                cv.adc = [inputs[ch], p.adc.input(ch)];
-            }
-            v.adc_running = p.adc.converting();
-            v.timer = (p.timer.enabled(), p.timer.period());
-            v.watchdog = (
-                p.watchdog.enabled(),
-                p.watchdog.compare(),
-                p.watchdog.count(),
-                p.watchdog.resets,
-            );
-            for s in 0..2 {
-                for port in 0..4u16 {
-                    let set = &p.rio.rio[s];
-                    v.rio_in[s][usize::from(port)] = set.input(port).unwrap_or(0);
-                    v.rio_out[s][usize::from(port)] = set.output(port).unwrap_or(0);
-                }
-            }
-        }
-        v
     }
 }

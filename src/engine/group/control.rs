@@ -5,7 +5,7 @@
 use super::execution::Stage;
 use super::GroupState;
 use crate::config::AXES;
-use crate::engine::trace::Note;
+use crate::engine::note::Note;
 use crate::error::{McclError, McclResult};
 
 /// What the group is doing besides running commands.

@@ -9,14 +9,15 @@
 //! total distance; FALSE from a custom motion's callback stops the group with error
 //! record 0xF107. A hold, a continue and an override act on the track as on any motion's.
 
-use super::track::Track;
 use super::GroupState;
 use crate::config::{range, AXES};
 use crate::engine::command::{Command, Ctx, Plan};
 use crate::engine::custom::{
     CustomSpec, Interp, CTYPE_CUSTOM, ERR_CUSTOM_FALSE, ERR_CUSTOM_MOTION,
 };
-use crate::planner::{ramp_periods, Axes, Shape, TickProfile};
+use crate::engine::custom_move::{CustomMove, Step};
+use crate::engine::track::Track;
+use crate::planner::{ramp_periods, Axes, TickProfile};
 use std::os::raw::c_int;
 use std::sync::Arc;
 
@@ -25,71 +26,6 @@ use std::sync::Arc;
 /// at the feed; few enough that a period's fraction of them keeps its digits (the
 /// profile counts whole periods).
 const INFINITE_PERIODS: f64 = 1e15;
-
-/// A queued or running custom command.
-#[derive(Debug, Clone)]
-pub struct CustomMove {
-    /// The callbacks and their settings.
-    pub spec: Arc<CustomSpec>,
-    /// Where the command started (the queue's end when queued, the group's position
-    /// once started).
-    pub start: Axes,
-    /// Acceleration shape captured when queued.
-    pub acc: Shape,
-    /// Deceleration shape captured when queued.
-    pub dec: Shape,
-    run: Run,
-}
-
-/// Progress of a custom command.
-#[derive(Debug, Clone, Default)]
-struct Run {
-    started: bool,
-    /// The profile along the total distance, once `start` returned it.
-    track: Option<Track>,
-    /// The total distance `start` returned.
-    tot: f64,
-    /// Distance of the offset stored.
-    dist: f64,
-    /// Offset from the start for the coming tick.
-    offset: Axes,
-    /// Velocity per unit of own time.
-    vel: Axes,
-    ended: bool,
-    /// Ex with blending on: `BlendingStart` returned TRUE; the blend lasts `interval`.
-    blending: bool,
-    blend_done: bool,
-    interval: f64,
-}
-
-impl CustomMove {
-    /// Whether the stage ended it.
-    pub fn ended(&self) -> bool {
-        self.run.ended
-    }
-
-    /// Its track, once its total distance is known.
-    pub(super) fn track_mut(&mut self) -> Option<&mut Track> {
-        self.run.track.as_mut()
-    }
-
-    /// Whether an override changes its speed (`bOverrideMotion`).
-    pub fn follows_override(&self) -> bool {
-        self.spec.override_motion
-    }
-
-    /// Position and velocity per own time: the start plus the offset stored.
-    pub fn sample(&self) -> (Axes, Axes) {
-        (
-            std::array::from_fn(|i| self.start[i] + self.run.offset[i]),
-            self.run.vel,
-        )
-    }
-
-    fn infinite(&self) -> bool {
-        matches!(self.spec.interp, Interp::Infinite(_))
-    }
-}
 
 /// A custom command queued at the end of `ctx`'s queue.
 pub fn command(ctx: &Ctx<'_>, spec: Arc<CustomSpec>) -> Command {
@@ -101,13 +37,7 @@ pub fn command(ctx: &Ctx<'_>, spec: Arc<CustomSpec>) -> Command {
         target: ctx.from,
         acc_ms: s.acc_ms,
         dec_ms: s.dec_ms,
-        plan: Plan::Custom(CustomMove {
-            spec,
-            start: ctx.from,
-            acc: s.acc,
-            dec: s.dec,
-            run: Run::default(),
-        }),
+        plan: Plan::Custom(CustomMove::new(spec, ctx.from, s.acc, s.dec)),
         posture: None,
     }
 }
@@ -127,15 +57,6 @@ fn translate(cmd: &mut Command, d: &Axes) {
     for (t, d) in cmd.target.iter_mut().zip(d) {
         *t += d;
     }
-}
-
-/// One period's step the stage computed: applied if the command still runs.
-#[derive(Debug, Clone, Copy)]
-pub struct Step {
-    dist: f64,
-    last: bool,
-    /// The offset stored now (what the callback's output starts as).
-    pub offset_now: Axes,
 }
 
 /// The callback the stage calls next for a group.
@@ -202,7 +123,7 @@ pub struct CustomSide {
 impl GroupState {
     fn custom_running(&mut self, id: Option<u64>) -> Option<(c_int, &mut CustomMove)> {
         self.running.iter_mut().find_map(|r| match &mut r.cmd.plan {
-            Plan::Custom(m) if id.is_none_or(|id| m.spec.id == id) && !m.run.ended => {
+            Plan::Custom(m) if id.is_none_or(|id| m.spec.id == id) && !m.ended() => {
                 Some((r.cmd.index, m))
             }
             _ => None,
@@ -240,9 +161,7 @@ impl GroupState {
         let Some((index, m)) = self.custom_running(None) else {
             return batch;
         };
-        if !m.run.started {
-            m.run.started = true;
-            m.start = pos;
+        if m.start_at(pos) {
             let spec = m.spec.clone();
             for r in self.running.iter_mut() {
                 if matches!(&r.cmd.plan, Plan::Custom(c) if c.spec.id == spec.id) {
@@ -267,7 +186,7 @@ impl GroupState {
     pub(crate) fn custom_begin(&mut self, id: u64, tot: f64, dt: f64) -> Option<Call> {
         let (feed, acc_ms, dec_ms) = {
             let r = self.running.iter().find(
-                |r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id && !m.run.ended),
+                |r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id && !m.ended()),
             )?;
             (r.cmd.info_feed, r.cmd.acc_ms, r.cmd.dec_ms)
         };
@@ -296,10 +215,9 @@ impl GroupState {
         let profile = TickProfile::plan(len, 0.0, feed, ramps.0, ramps.1, shapes, dt);
         // Both ramp shapes cover half the peak speed times their time.
         let interval = 0.5 * profile.speed() * f64::from(ramps.0) * dt;
-        m.run.tot = tot;
-        m.run.track = Some(Track::new(profile, feed, ramps, shapes));
+        m.plan(tot, Track::new(profile, feed, ramps, shapes));
         if m.spec.blending.is_some() && blend_on {
-            m.run.interval = interval;
+            m.blend_over(interval);
             return Some(Call::BlendStart {
                 spec: m.spec.clone(),
                 index,
@@ -313,7 +231,7 @@ impl GroupState {
     /// `BlendingStart` of command `id` returned `accepted`: the next call.
     pub(crate) fn custom_blending(&mut self, id: u64, accepted: bool, dt: f64) -> Option<Call> {
         let (_, m) = self.custom_running(Some(id))?;
-        m.run.blending = accepted;
+        m.set_blending(accepted);
         self.custom_step(dt)
     }
 
@@ -321,28 +239,16 @@ impl GroupState {
     fn custom_step(&mut self, _dt: f64) -> Option<Call> {
         let cur = self.pos;
         let (index, m) = self.custom_running(None)?;
-        let mut next = *m.run.track.as_ref()?;
-        next.step();
-        let last = !m.infinite() && next.arrived();
-        let dist = if last {
-            m.run.tot
-        } else {
-            next.dist().max(m.run.dist)
-        };
-        let blend = m.run.blending && !m.run.blend_done;
+        let step = m.next_step()?;
         Some(Call::Interp {
             spec: m.spec.clone(),
             index,
             start: m.start,
             cur,
-            dist,
-            tot: m.run.tot,
-            blend,
-            step: Step {
-                dist,
-                last,
-                offset_now: m.run.offset,
-            },
+            dist: step.dist(),
+            tot: m.total(),
+            blend: m.blend_pending(),
+            step,
         })
     }
 
@@ -364,8 +270,7 @@ impl GroupState {
         if !ok && matches!(m.spec.interp, Interp::Custom(_)) {
             // As the vendor's library: FALSE is a failure, not an end. The group stops
             // where the last good offset put it, with error record 0xF107.
-            let blend_end = m.run.blending && !m.run.blend_done;
-            m.run.blend_done |= blend_end;
+            let blend_end = m.end_blend();
             self.stop_for(Some(ERR_CUSTOM_FALSE));
             return blend_end;
         }
@@ -381,21 +286,9 @@ impl GroupState {
             self.stop_for(Some(ERR_CUSTOM_MOTION));
             return false;
         }
-        m.run.vel = [0.0; AXES];
-        m.run.offset = next;
-        if let Some(t) = m.run.track.as_mut() {
-            t.step();
-        }
-        m.run.dist = step.dist;
-        let ended = !ok || abort || step.last;
-        let blending = m.run.blending && !m.run.blend_done;
-        let blend_end = blending && (ended || step.dist >= m.run.interval);
-        if blend_end {
-            m.run.blend_done = true;
-        }
+        let ended = !ok || abort || step.is_last();
+        let blend_end = m.advance(next, step, ended);
         if ended {
-            m.run.ended = true;
-            m.run.vel = [0.0; AXES];
             let target: Axes = std::array::from_fn(|i| m.start[i] + next[i]);
             for r in self.running.iter_mut() {
                 if matches!(&r.cmd.plan, Plan::Custom(c) if c.spec.id == id) {

@@ -4,7 +4,7 @@
 use super::GroupState;
 use super::TIME_EPS;
 use crate::config::AXES;
-use crate::engine::trace::Note;
+use crate::engine::note::Note;
 use crate::planner::Axes;
 use crate::vendor::consts as c;
 

@@ -366,7 +366,7 @@ impl GroupState {
                         replanned_end = Some(m.end());
                         *p = m;
                     }
-                    Err(_) => self.set_error(crate::engine::safety::ERR_INTERNAL),
+                    Err(_) => self.set_error(crate::error_record::ErrorRecord::Internal.code()),
                 }
             }
         }

@@ -18,6 +18,7 @@
 //! (the running custom motion's side of its callbacks' stage).
 
 use super::command::{AxisMech, Command, Ctx, Output, Settings};
+use super::track;
 use crate::config::{GroupDef, AXES};
 use crate::error::{McclError, McclResult};
 use crate::planner::Axes;
@@ -35,7 +36,6 @@ pub mod kinematics;
 mod post;
 mod queue;
 mod status;
-mod track;
 
 pub(crate) use commanded::Commanded;
 use control::Mode;
@@ -115,7 +115,7 @@ pub struct GroupState {
     /// Output changes the queue reached this tick (the engine makes them).
     outputs: Vec<Output>,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
-    pub trace_notes: Option<Vec<super::trace::Note>>,
+    pub trace_notes: Option<Vec<super::note::Note>>,
     /// Periods the status still reads `GMS_RUNNING` with nothing running (the vendor's
     /// library shows one after the last command).
     lag: u8,
@@ -345,7 +345,7 @@ impl GroupState {
 
     /// Records an event for the trace (nothing but this check when not tracing).
     #[inline]
-    fn note(&mut self, n: super::trace::Note) {
+    fn note(&mut self, n: super::note::Note) {
         if let Some(v) = self.trace_notes.as_mut() {
             v.push(n);
         }
@@ -356,7 +356,7 @@ impl GroupState {
     pub(crate) fn note_stopped(&mut self) {
         if let Some(v) = self.trace_notes.as_mut() {
             for r in &self.running {
-                v.push(super::trace::Note::End {
+                v.push(super::note::Note::End {
                     index: r.cmd.index,
                     ctype: r.cmd.ctype,
                     stopped: true,
@@ -373,7 +373,7 @@ impl GroupState {
     /// Records an error: the group stops executing commands until `MCC_ClearError`.
     pub fn set_error(&mut self, code: i32) {
         if self.error == 0 {
-            self.note(super::trace::Note::ErrorSet(code));
+            self.note(super::note::Note::ErrorSet(code));
             self.error = code;
             self.info_touched();
         }
@@ -382,7 +382,7 @@ impl GroupState {
     /// `MCC_ClearError`.
     pub fn clear_error(&mut self) {
         if self.error != 0 {
-            self.note(super::trace::Note::ErrorCleared(self.error));
+            self.note(super::note::Note::ErrorCleared(self.error));
             self.info_touched();
         }
         self.error = 0;

@@ -2,10 +2,10 @@
 //! which groups it takes over, the MC3B's own homing, aborting and cancelling it, its
 //! tick with the machine locked, and what a tick of it does to the groups.
 
+use super::Shared;
 use crate::config::AXES;
 use crate::engine::group::GroupState;
 use crate::engine::homing;
-use crate::engine::shared::Shared;
 use crate::error::{McclError, McclResult};
 use crate::machine::Machine;
 use std::sync::atomic::Ordering;

@@ -2,12 +2,21 @@
 //! groups behind their one lock, the published snapshots and statuses, the simulated
 //! machine, the card's outputs and peripherals, the routines and the go home in progress.
 //! The tick ([`super::tick`]), the virtual-time polls ([`super::poll`]) and the go-home
-//! control ([`super::homing::control`]) are methods of it in their own files.
+//! control ([`super::crate::engine::homing::control`]) are methods of it in their own files.
+
+mod checks;
+mod custom_stage;
+mod home;
+mod interrupts;
+mod kinematics_stage;
+mod observer;
+mod routines;
+
+pub(super) use home::apply_homing;
 
 use super::group::{Commanded, GroupState};
 use super::snapshot::{GroupSnapshot, SnapshotCell};
-use super::tick::tick_ns;
-use super::{axes_of, homing, isr, safety, trace};
+use super::{axes_of, trace};
 use crate::clock::{Clock, ClockMode};
 use crate::config::{GroupDef, MacTable, AXES, CARDS, GROUPS};
 use crate::error::{McclError, McclResult};
@@ -77,13 +86,13 @@ pub struct Shared {
     /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
     pub periph: Vec<crate::card::PeriphCell>,
     /// The interrupt routines registered per card (`isr`).
-    pub isr: isr::IsrTable,
+    pub isr: crate::engine::isr::IsrTable,
     /// The per-period routines (`cycle`).
     pub cycle: super::cycle::CycleRoutines,
     /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
-    pub(super) homing: Mutex<Option<homing::Homing>>,
-    /// `MCC_GetGoHomeStatus`: [`homing::HOME_BUSY`], [`homing::HOME_DONE`] or
-    /// [`homing::HOME_NONE`].
+    pub(super) homing: Mutex<Option<crate::engine::homing::Homing>>,
+    /// `MCC_GetGoHomeStatus`: [`crate::engine::homing::HOME_BUSY`], [`crate::engine::homing::HOME_DONE`] or
+    /// [`crate::engine::homing::HOME_NONE`].
     pub(super) home_status: AtomicI32,
     /// The tick count and count of go-home status reads at it (see [`Shared::poll`]).
     pub(super) home_poll: AtomicU64,
@@ -112,8 +121,9 @@ pub const DEFAULT_PULSE_STOCK: u32 = 1;
 
 impl Shared {
     /// The shared state of an engine about to start: `groups` (slot, definition) with
-    /// the mechanism facts of `mac`, the machine, and the trace (whose group headers are
-    /// written here). Every group is published once by the caller.
+    /// the mechanism facts of `mac`, the machine, the trace (whose group headers are
+    /// written here) and whether quiet ticks may be cruise ticks. Every group is published
+    /// once by the caller.
     pub(super) fn new(
         mode: ClockMode,
         period: Duration,
@@ -121,6 +131,7 @@ impl Shared {
         mac: &MacTable,
         machine: Machine,
         trace: Option<trace::Trace>,
+        cruise: bool,
     ) -> Shared {
         let cards = machine.cards.len();
         let slots: [AtomicI32; GROUPS] = std::array::from_fn(|_| AtomicI32::new(-1));
@@ -173,17 +184,17 @@ impl Shared {
             periph: (0..cards)
                 .map(|_| crate::card::PeriphCell::new(tick_ns(period)))
                 .collect(),
-            isr: isr::IsrTable::new(cards),
+            isr: crate::engine::isr::IsrTable::new(cards),
             cycle: Default::default(),
             homing: Mutex::new(None),
             // The vendor's library reads 1 (done) right after init.
-            home_status: AtomicI32::new(homing::HOME_DONE),
+            home_status: AtomicI32::new(crate::engine::homing::HOME_DONE),
             home_poll: AtomicU64::new(u64::MAX),
             home_watch: AtomicI32::new(i32::MIN),
             mc3b_cards: AtomicU32::new(0),
             mc3b_home_card: AtomicI32::new(-1),
             tracing: trace.is_some(),
-            cruise_enabled: super::cruise::enabled_by_env(),
+            cruise_enabled: cruise,
             cruise_ticks: AtomicU64::new(0),
             trace: Mutex::new(trace),
             view: super::view::ViewCell::default(),
@@ -431,10 +442,10 @@ impl Shared {
         });
     }
 
-    /// Stops every group where it stands with the error record [`safety::ERR_INTERNAL`]
+    /// Stops every group where it stands with the error record [`crate::engine::safety::ERR_INTERNAL`]
     /// (the state after a caught panic that may have touched any group).
     pub fn stop_all_for_internal_error(&self) {
-        self.for_each_group(|g| g.stop_for(Some(safety::ERR_INTERNAL)));
+        self.for_each_group(|g| g.stop_for(Some(crate::engine::safety::ERR_INTERNAL)));
     }
 }
 
@@ -448,6 +459,11 @@ fn publish_info(cell: &SnapshotCell, g: &mut GroupState) {
     {
         g.published_info = Some(info);
     }
+}
+
+/// The length of a tick in ns, as the peripherals count it.
+fn tick_ns(period: Duration) -> u64 {
+    u64::try_from(period.as_nanos()).unwrap_or(u64::MAX)
 }
 
 /// [`GroupState::commanded`] for `groups`: per group, the axes that are the last (in group
