@@ -7,10 +7,10 @@
 //! some ticks ahead, to cruise in the middle of one command or to stand idle
 //! ([`GroupState::quiet_ticks_ahead`]), and the machine has nothing to do that such a
 //! tick would need (no card armed, no safety check, no homing, no trace), those ticks
-//! are cruise ticks: each group's tick, its channels commanded, the channels' steps
-//! deferred, the status or the motion part published, the peripherals: what
-//! [`Shared::tick`] does on that tick, in the same order, and nothing it would find
-//! nothing to do for. What the other threads may change at any time (a lock wanted, a
+//! are cruise ticks: [`Shared::tick`] with the steps it would find nothing to do for left
+//! out (each group's period, its channels commanded, the channels' steps deferred, the
+//! status or the motion part published, the peripherals): one definition of a tick, one
+//! plan of which steps run. What the other threads may change at any time (a lock wanted, a
 //! routine registered, a limit check, a view asked for, the end of the run) is asked
 //! before every tick, as the full tick asks it.
 //!
@@ -23,10 +23,8 @@
 //! `MCCL_CRUISE=0` turns cruise ticks off (every tick full), to compare.
 
 use super::homing::HOME_BUSY;
-use super::isr;
 use super::shared::Shared;
-use super::tick::{defer_idle_card, Held, PUBLISH_EVERY};
-use crate::machine::deferred::{DeferredSteps, Recording};
+use super::tick::{Held, PUBLISH_EVERY};
 use std::sync::atomic::Ordering;
 
 /// The most ticks one plan covers: the plan costs a few operations a group a tick at this
@@ -112,56 +110,6 @@ impl Shared {
             }
         }
         ahead
-    }
-
-    /// A cruise tick (see the module): what [`Shared::tick`] does on a tick with the
-    /// locks carried over, no homing, no safety check, no trace, every card idle and
-    /// deferring, every group cruising or idle, and no view copied. Returns whether it
-    /// published everything.
-    pub(super) fn cruise_tick(&self, held: &mut Held<'_>, interrupts: &mut isr::Collected) -> bool {
-        let dt = self.clock.period_s();
-        let n = self.clock.ticks();
-        let full = self.publishes_everything(n);
-        let dry = self.dry_run.load(Ordering::Relaxed);
-        held.cruise = held.cruise.saturating_sub(1);
-        // One writer: a load and a store, no read-modify-write.
-        let ran = self.cruise_ticks.load(Ordering::Relaxed);
-        self.cruise_ticks
-            .store(ran.wrapping_add(1), Ordering::Relaxed);
-        let machine = &mut *held.machine;
-        let groups = &mut *held.groups;
-        for g in groups.iter_mut() {
-            debug_assert!(g.quiet_ticks_ahead(dt, 1) == 1, "group {} cruises", g.index);
-            g.cruise_period(dt);
-            crate::fault::point("cruise tick");
-            // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
-            if !dry {
-                g.command_channels(&mut machine.cards);
-            }
-            // The plan holds the info unchanged (the published key holds).
-            if full {
-                self.publish_motion(g);
-            } else {
-                self.store_status(g);
-            }
-        }
-        let recorded = machine.recording();
-        let mut recording = Recording::default();
-        let cards = machine.cards.iter_mut().zip(machine.triggers.iter_mut());
-        for (card, (chans, triggers)) in cards.enumerate() {
-            let (stepped, now) = defer_idle_card(chans, recorded.card(card), dt, n);
-            recording.set_card(card, now);
-            if stepped {
-                triggers.tick_idle(chans);
-            }
-        }
-        machine.set_deferred(Some(DeferredSteps { dt, last: n }), recording);
-        // Peripherals after the groups (lock order: groups, then a card's peripherals). A
-        // card that ran (a timer, a watchdog) may have reset groups: plan again.
-        if !self.tick_peripherals(self.tick_len_ns, interrupts, groups) {
-            held.cruise = 0;
-        }
-        full
     }
 
     /// How many ticks of this engine were cruise ticks (for tests and benchmarks).

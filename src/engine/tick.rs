@@ -17,21 +17,24 @@ use std::sync::atomic::Ordering;
 pub const PUBLISH_EVERY: u64 = 16;
 
 impl Shared {
-    /// [`Shared::tick`] (or with `cruise`, when the locks are held, a
-    /// [cruise tick](Shared::cruise_tick)), and after a panic inside it (a defect of the
-    /// library) a defined state instead of a dead engine thread: every group stops where
-    /// it stands, drops its queue and records [`safety::ERR_INTERNAL`]; the clock goes on.
-    /// The locks the tick held were released while unwinding (parking_lot locks do not
-    /// poison).
+    /// [`Shared::tick`] (with `cruise`, when the locks are held, planned as a cruise tick),
+    /// and after a panic inside it (a defect of the library) a defined state instead of
+    /// a dead engine thread: every group stops where it stands, drops its queue and
+    /// records [`safety::ERR_INTERNAL`]; the clock goes on. The locks the tick held were
+    /// released while unwinding (parking_lot locks do not poison).
     pub(super) fn tick_or_recover<'a>(
         &'a self,
         held: &mut Option<Held<'a>>,
         interrupts: &mut isr::Collected,
         cruise: bool,
     ) -> bool {
-        let tick = || match held.as_mut() {
-            Some(h) if cruise => self.cruise_tick(h, interrupts),
-            _ => self.tick(held, interrupts),
+        let cruise = cruise && held.is_some();
+        let tick = || {
+            if cruise {
+                self.tick::<CRUISE>(held, interrupts)
+            } else {
+                self.tick::<FULL>(held, interrupts)
+            }
         };
         match std::panic::catch_unwind(std::panic::AssertUnwindSafe(tick)) {
             Ok(published) => published,
@@ -48,7 +51,8 @@ impl Shared {
         }
     }
 
-    /// One tick of the whole card.
+    /// One tick of the whole card: every step of it ([`FULL`]) or those of a cruise tick
+    /// ([`CRUISE`]).
     ///
     /// Snapshots are published every tick under the realtime clock and while
     /// `live_snapshots` is set (callbacks registered). Under a virtual clock the program
@@ -57,7 +61,19 @@ impl Shared {
     /// tick. Returns whether it published everything; the interrupts to deliver are
     /// left in `interrupts`. The machine's and the groups' locks are `held`'s (taken
     /// here when it is empty); they stay there when the tick ends.
-    fn tick<'a>(&'a self, held: &mut Option<Held<'a>>, interrupts: &mut isr::Collected) -> bool {
+    ///
+    /// A cruise tick (`cruise.rs`; the locks held) runs the same steps in the same order
+    /// and leaves out those its plan ([`Shared::cruise_next`]) made sure have nothing to
+    /// do: the go home, a group's stages besides its period, the channels'
+    /// compensation, the group's outputs, the safety checks, the trace, the view; every
+    /// card defers its channels' steps. The plan is a constant of each instance, so
+    /// the steps it leaves out are not in that instance's code at all.
+    fn tick<'a, const PLAN: bool>(
+        &'a self,
+        held: &mut Option<Held<'a>>,
+        interrupts: &mut isr::Collected,
+    ) -> bool {
+        let cruise = PLAN == CRUISE;
         let dt = self.clock.period_s();
         let n = self.clock.ticks();
         // The virtual time the trace and the triggers see, made only where they look.
@@ -73,38 +89,67 @@ impl Shared {
         // The locks were kept from the last tick: no other thread looked in between.
         let carried = held.is_some();
         let held = held.get_or_insert_with(|| Held::lock(self));
-        // What this tick changes, no cruise plan made before it covers.
-        held.cruise = 0;
+        if cruise {
+            held.cruise = held.cruise.saturating_sub(1);
+            // One writer: a load and a store, no read-modify-write.
+            let ran = self.cruise_ticks.load(Ordering::Relaxed);
+            self.cruise_ticks
+                .store(ran.wrapping_add(1), Ordering::Relaxed);
+        } else {
+            // What this tick changes, no cruise plan made before it covers.
+            held.cruise = 0;
+        }
         let machine = &mut *held.machine;
         let dry = self.dry_run.load(Ordering::Relaxed);
-        let homed = self.tick_homing(machine, dt);
+        let homed = if cruise {
+            None
+        } else {
+            self.tick_homing(machine, dt)
+        };
         let groups = &mut *held.groups;
         // Whether a group has safety checks of its own, once every group has ticked.
         let mut group_checks = false;
         for g in groups.iter_mut() {
-            g.tick(dt);
-            g.kinematics_apply();
-            crate::fault::point("group tick");
-            if let Some(h) = &homed {
-                apply_homing(g, h);
-            }
-            if let Some(status) = g.take_home_result() {
-                // A go home on an MC3B ended.
-                self.home_status.store(status, Ordering::Release);
-                self.mc3b_home_card.store(-1, Ordering::Release);
-                g.end_homing();
-            }
-            if g.has_outputs() {
-                let outputs = g.take_outputs();
-                self.make_outputs(g.def.card.0, &outputs);
+            if cruise {
+                // A period along one command or standing idle: no stage, no output, no
+                // homing result (`GroupState::quiet_ticks_ahead`).
+                debug_assert!(g.quiet_ticks_ahead(dt, 1) == 1, "group {} cruises", g.index);
+                g.cruise_period(dt);
+                crate::fault::point("cruise tick");
+            } else {
+                g.tick(dt);
+                g.kinematics_apply();
+                crate::fault::point("group tick");
+                if let Some(h) = &homed {
+                    apply_homing(g, h);
+                }
+                if let Some(status) = g.take_home_result() {
+                    // A go home on an MC3B ended.
+                    self.home_status.store(status, Ordering::Release);
+                    self.mc3b_home_card.store(-1, Ordering::Release);
+                    g.end_homing();
+                }
+                if g.has_outputs() {
+                    let outputs = g.take_outputs();
+                    self.make_outputs(g.def.card.0, &outputs);
+                }
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
                 g.command_channels(&mut machine.cards);
-                if machine.compensating() || g.comp_pulses() != [0; AXES] {
+                if !cruise && (machine.compensating() || g.comp_pulses() != [0; AXES]) {
                     g.read_compensation(&mut machine.cards);
                     self.store_compensation(g);
                 }
+            }
+            if cruise {
+                // The plan holds the info unchanged (the published key holds).
+                if full {
+                    self.publish_motion(g);
+                } else {
+                    self.store_status(g);
+                }
+                continue;
             }
             self.publish_or_status(g, full);
             if let Some(t) = trace.as_deref_mut() {
@@ -124,7 +169,7 @@ impl Shared {
         }
         // Whether a safety check reads the channels this tick (and `Shared::safety` has
         // anything to do).
-        let checks = self.safety_reads_channels(machine, group_checks);
+        let checks = !cruise && self.safety_reads_channels(machine, group_checks);
         // Ideal channels defer their steps (`machine::deferred`) on a tick whose locks
         // were kept from the last one, with no view copied for an observer, no homing and
         // no safety check that reads them, on a card whose triggers are not armed. Any
@@ -132,7 +177,7 @@ impl Shared {
         // Whether this tick copies a view for an observer: decided once, here, so that a
         // view asked for in the middle of the tick waits for the next one instead of
         // reading channels this tick left deferred. The ticks between copies defer.
-        let view = full && self.view.due(self.clock.last_of_run());
+        let view = !cruise && full && self.view.due(self.clock.last_of_run());
         let defer = carried && !view && homed.is_none() && !checks;
         if !defer {
             machine.catch_up();
@@ -148,9 +193,11 @@ impl Shared {
             .zip(m.triggers.iter_mut())
             .zip(&m.settings);
         for (card, ((chans, triggers), settings)) in cards.enumerate() {
-            let idle = held
-                .idle_cards
-                .idle(card, || !triggers.armed(&settings.error_threshold));
+            // A cruise plan found every card idle.
+            let idle = cruise
+                || held
+                    .idle_cards
+                    .idle(card, || !triggers.armed(&settings.error_threshold));
             // Whether a channel of the card stepped (its index pulses to note).
             let stepped = if defer && idle {
                 let (stepped, now) = defer_idle_card(chans, recorded.card(card), dt, n);
@@ -200,8 +247,11 @@ impl Shared {
             self.publish_view(machine, groups);
         }
         drop(trace_guard);
-        // Peripherals after the groups (lock order: groups, then a card's peripherals).
-        self.tick_peripherals(self.tick_len_ns, interrupts, groups);
+        // Peripherals after the groups (lock order: groups, then a card's peripherals). A
+        // card that ran (a timer, a watchdog) may have reset groups: a cruise plan ends.
+        if !self.tick_peripherals(self.tick_len_ns, interrupts, groups) {
+            held.cruise = 0;
+        }
         full
     }
 
@@ -328,6 +378,11 @@ pub(super) fn defer_idle_card(
     }
     (stepped, now)
 }
+
+/// The plan of a tick ([`Shared::tick`]) that runs every step.
+const FULL: bool = false;
+/// The plan of a cruise tick: the steps a quiet tick can need (`cruise.rs`).
+const CRUISE: bool = true;
 
 /// The machine's and the groups' locks as the engine thread holds them through a tick
 /// and, while [`Shared::quiet_between_ticks`], from one virtual tick to the next.
