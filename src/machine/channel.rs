@@ -86,7 +86,7 @@ pub struct Channel {
     /// The index interval of the last position looked up (`index_interval`), or
     /// [`IndexCell::NONE`].
     pub(super) cell: IndexCell,
-    /// Steps recorded and not yet made ([`deferred`]).
+    /// Steps recorded and not yet made ([`deferred`](super::deferred)).
     pub(super) deferred: Deferred,
     pub(super) levels: SensorLevels,
     pub(super) prev_levels: SensorLevels,

@@ -7,7 +7,7 @@ use super::Channel;
 impl Channel {
     /// Debug builds: a reader of what the steps make finds no step deferred (the engine
     /// brings channels up to date before anything but its own tick can read them,
-    /// [`deferred`]).
+    /// [`deferred`](super::deferred)).
     #[inline(always)]
     pub(super) fn assert_up_to_date(&self) {
         debug_assert!(!self.deferring(), "a channel read with its steps deferred");
