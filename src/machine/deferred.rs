@@ -24,8 +24,9 @@
 //! step that passed it (a latch reads it in that step, on a card whose triggers are
 //! armed, which does not defer).
 
+use super::index_pulses::CELL_LIMIT;
 use super::triggers::CardTriggers;
-use super::{Channel, Machine, SensorLevels, CELL_LIMIT};
+use super::{Channel, Machine, SensorLevels};
 use crate::config::{AXES, CARDS};
 
 /// What a channel stepping deferred keeps of the steps it did not make.

@@ -2,7 +2,7 @@
 //! does it: hold and continue, abort at once or over a deceleration, override, fixed
 //! speed, feed changes. Each acts on the running commands' tracks ([`super::track`]).
 
-use super::execution::Stage;
+use super::running::Stage;
 use super::GroupState;
 use crate::config::AXES;
 use crate::engine::note::Note;

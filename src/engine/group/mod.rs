@@ -11,8 +11,10 @@
 //! becomes its exact planned end: nothing accumulates over millions of moves.
 //!
 //! Files, one concept each: `queue.rs` (queuing, indices, single block), `execution.rs`
-//! (the running commands tick by tick), `track.rs` (a motion's progress and its re-plans),
-//! `control.rs` (hold, continue, abort, override, feed), `inpos.rs` (the in-position check), `status.rs` (motion
+//! (the running commands tick by tick), `running.rs` (one command being executed),
+//! `position_and_speed.rs` (the position and speeds a period shows, over-travel),
+//! `track.rs` (a motion's progress and its re-plans), `control.rs` (hold, continue,
+//! abort, override, feed), `inpos.rs` (the in-position check), `status.rs` (motion
 //! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
 //! `external.rs` (the door to an executor outside the card, e.g. the MC3B), `custom.rs`
 //! (the running custom motion's side of its callbacks' stage).
@@ -33,18 +35,20 @@ pub mod external;
 mod homing;
 mod inpos;
 pub mod kinematics;
+mod position_and_speed;
 mod post;
 mod queue;
+mod running;
 mod status;
 
 pub(crate) use commanded::Commanded;
 use control::Mode;
-use execution::Running;
 use external::ExternalExecutor;
 use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
 pub use post::{MAX_FILTER_PERIODS, MOVING_AVERAGE_TAPS, REVERSE_HISTORY};
 use queue::CommandIndex;
+use running::Running;
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
 pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();

@@ -1,7 +1,8 @@
 //! What the group shows: its motion status, the published motion and info parts, the
 //! pulses of its axes.
 
-use super::execution::{Progress, Running, Stage, HOLD_SHOWN_AFTER};
+use super::execution::HOLD_SHOWN_AFTER;
+use super::running::{Progress, Running, Stage};
 use super::track::Phase;
 use super::GroupState;
 use super::Mode;

@@ -4,10 +4,10 @@
 //! kinematic group, and the two aux axes) move linearly with the path fraction, as on
 //! every other arc.
 
-use super::{
-    check_all_finite, check_finite, cross3, dot3, norm3, positive_finite, scale3, sub3, with_aux,
-    ArcSeg, Axes, Path, PlanError, MIN_RADIUS, XYZ,
-};
+use super::aux_axes::with_aux;
+use super::vec3::{cross3, dot3, norm3, positive_finite, scale3, sub3};
+use super::{ArcSeg, Path, MIN_RADIUS, XYZ};
+use crate::planner::{check_all_finite, check_finite, Axes, PlanError};
 use std::f64::consts::TAU;
 
 impl Path {

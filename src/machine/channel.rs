@@ -1,0 +1,270 @@
+//! One channel of the card and the motor, encoder and sensors behind it: what the
+//! simulation configuration says about it, its state, and its counters (command, output,
+//! motor position, following error). The rest of its behaviour is in the sibling files:
+//! encoder, sensors, index pulses, plant, compensation, stepping.
+
+use super::compensation::{self, Compensation};
+use super::deferred::Deferred;
+use super::index_pulses::IndexCell;
+use super::{SensorLevels, DEFAULT_PULSE_LIMIT};
+use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+
+/// What the simulation configuration says about one channel.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ChannelSpec {
+    /// Home sensor active region `[from, to]` (UU).
+    pub home: Option<(f64, f64)>,
+    /// + limit switch active at position >= this (UU).
+    pub limit_plus: Option<f64>,
+    /// − limit switch active at position <= this (UU).
+    pub limit_minus: Option<f64>,
+    /// Encoder counts (x4) between index pulses; `None`: one per motor turn (dwPPR).
+    pub index_spacing: Option<u32>,
+    /// Counts (x4) from 0 to the first index pulse.
+    pub index_phase: u32,
+    /// First-order lag time constant of the plant (s); `None`: ideal.
+    pub lag_s: Option<f64>,
+    /// The home sensor is a normally-closed contact: its input is low while hit.
+    pub home_nc: bool,
+}
+
+impl ChannelSpec {
+    /// The channel as the simulation configuration describes it.
+    pub fn from_sim(c: &crate::sim::config::ChannelSim) -> ChannelSpec {
+        ChannelSpec {
+            home: c.home,
+            limit_plus: c.limit_plus,
+            limit_minus: c.limit_minus,
+            index_spacing: c.index_spacing,
+            index_phase: c.index_phase,
+            lag_s: match c.plant {
+                crate::sim::config::Plant::Ideal => None,
+                crate::sim::config::Plant::Lag { tau_s } => Some(tau_s),
+            },
+            home_nc: c.home_nc,
+        }
+    }
+}
+
+/// One channel of the card and the motor, encoder and sensors behind it.
+///
+/// `repr(C)` with the fields every step reads and writes first, together, and the
+/// settings only setters and status calls read after them.
+#[derive(Debug, Clone)]
+#[repr(C)]
+pub struct Channel {
+    /// Pulses the program commanded (before compensation).
+    pub(super) cmd: i64,
+    /// The command for the coming step: what [`Channel::command`] set during this tick
+    /// (the group or homing driving the channel), else `cmd` (every step and counter
+    /// restart sets both), so that a channel nobody commands holds.
+    pub(super) next: i64,
+    /// The last step changed nothing, and another with the same command would change
+    /// nothing either ([`Channel::step_commanded`] skips it). Cleared by whatever changes
+    /// what a step reads: the counter's frame (`restart_counter`), the sensors
+    /// (`update_sensors`, which placing, forcing and new parameters go through), the
+    /// index grid (`set_grid`), the compensation and the plant.
+    pub(super) resting: bool,
+    /// The period of the step that found the channel resting.
+    pub(super) resting_dt: f64,
+    /// An ideal motor (no plant lag) with no compensation and no sensor that follows it:
+    /// a step is [`Channel::step_ideal`]. Kept by [`Channel::refresh_ideal`] wherever
+    /// the compensation, the plant or the sensors change.
+    pub(super) ideal: bool,
+    /// Pulses output (command + compensation).
+    pub(super) out: i64,
+    pub(super) prev_out: i64,
+    pub(super) prev_delta: i64,
+    /// Motor position in pulses from where the command counter was last zeroed.
+    pub(super) actual: f64,
+    /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
+    pub(super) base: f64,
+    /// Index pulses passed in the last step.
+    pub index_events: u32,
+    /// Motor positions (pulses, machine frame) at the start and end of the last step.
+    pub(super) last_move: (f64, f64),
+    /// The index interval of the last position looked up (`index_interval`), or
+    /// [`IndexCell::NONE`].
+    pub(super) cell: IndexCell,
+    /// Steps recorded and not yet made ([`deferred`](super::deferred)).
+    pub(super) deferred: Deferred,
+    pub(super) levels: SensorLevels,
+    pub(super) prev_levels: SensorLevels,
+    /// Levels at the end of the last step: a level forced between steps shows as an edge.
+    pub(super) step_levels: SensorLevels,
+    pub(super) forced: [Option<bool>; 3],
+    /// The index grid (spacing, phase) in x4 counts, from `spec` and `mac.dwPPR`, kept
+    /// with the fields every step reads ([`Channel::refresh_grid`]).
+    pub(super) grid: (i64, i64),
+    /// Whether a sensor is placed or forced: only then do the levels follow the motor
+    /// ([`Channel::refresh_sensors`]).
+    pub(super) sensors: bool,
+    /// Compensation tables in effect.
+    pub(super) comp: Compensation,
+    /// Simulation configuration.
+    pub(super) spec: ChannelSpec,
+    pub(super) mac: SYS_MAC_PARAM,
+    pub(super) enc: SYS_ENCODER_CONFIG,
+    /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
+    pub input_rate: Option<u16>,
+    /// `MCC_SetENCGearRate`.
+    pub gear_rate: f64,
+    /// Encoder count = raw count + `enc_offset`.
+    pub(super) enc_offset: i64,
+    /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
+    /// the fields every step uses).
+    pub(super) comp_param: Box<SYS_COMP_PARAM>,
+    /// Physical sensor levels (before the program's wiring setting).
+    pub(super) raw: [bool; 3],
+    /// The last index pulse passed, as a raw count.
+    pub last_index_count: Option<i64>,
+    /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
+    pub latched: [bool; 2],
+    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
+    pub max_speed: i32,
+    /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
+    pub max_acc: i32,
+}
+
+impl Channel {
+    /// A channel at position 0.
+    pub fn new(spec: ChannelSpec, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) -> Channel {
+        let mut ch = Channel {
+            spec,
+            mac,
+            enc,
+            input_rate: None,
+            gear_rate: 1.0,
+            cmd: 0,
+            next: 0,
+            resting: false,
+            resting_dt: 0.0,
+            ideal: false,
+            out: 0,
+            prev_out: 0,
+            prev_delta: 0,
+            actual: 0.0,
+            base: 0.0,
+            enc_offset: 0,
+            comp: Compensation::default(),
+            comp_param: Box::new(compensation::off()),
+            forced: [None; 3],
+            grid: (1, 0),
+            sensors: false,
+            raw: [false; 3],
+            index_events: 0,
+            last_index_count: None,
+            last_move: (0.0, 0.0),
+            cell: IndexCell::NONE,
+            deferred: Deferred::NONE,
+            latched: [false; 2],
+            max_speed: DEFAULT_PULSE_LIMIT,
+            max_acc: DEFAULT_PULSE_LIMIT,
+            levels: SensorLevels::default(),
+            prev_levels: SensorLevels::default(),
+            step_levels: SensorLevels::default(),
+        };
+        ch.refresh_grid();
+        ch.refresh_sensors();
+        ch.update_sensors();
+        ch.prev_levels = ch.levels;
+        ch.step_levels = ch.levels;
+        ch
+    }
+
+    /// Pulses per UU (signed: negative when wPosToEncoderDir reverses the output).
+    pub fn factor(&self) -> f64 {
+        let f = crate::config::conv_factor(&self.mac);
+        if self.mac.wPosToEncoderDir != 0 {
+            -f
+        } else {
+            f
+        }
+    }
+
+    /// The motor's position in UU of the axis (machine coordinates).
+    pub fn position(&self) -> f64 {
+        self.assert_up_to_date();
+        let f = self.factor();
+        if f == 0.0 {
+            0.0
+        } else {
+            (self.actual + self.base) / f
+        }
+    }
+
+    /// `MCC_ResetMotion`/`MCC_UpdateParam`: the command counter restarts from 0 where the
+    /// motor stands; the motor, its encoder count and the sensors do not move.
+    pub fn rezero(&mut self) {
+        let count = self.encoder();
+        self.restart_counter(self.actual, count);
+    }
+
+    /// The command counter restarts from 0 `shift` pulses up the motor's frame (the
+    /// motor, its sensors and its machine position do not move); the encoder then reads
+    /// `count` and compensation starts again from its home point.
+    pub(super) fn restart_counter(&mut self, shift: f64, count: i64) {
+        self.resting = false;
+        self.base += shift;
+        self.actual -= shift;
+        self.cmd = 0;
+        self.next = 0;
+        self.out = 0;
+        self.prev_out = 0;
+        self.prev_delta = 0;
+        self.comp = Compensation::new(&self.comp_param);
+        self.refresh_ideal();
+        self.set_encoder(count);
+        self.update_sensors();
+    }
+
+    /// Go home's end (user manual §2.8): the commanded position becomes the working home,
+    /// pulse 0 of the command counter, and the encoder reads 0 there. The motor does not
+    /// move (a lagging one keeps its following error); compensation restarts from its
+    /// home point (`wHome_No`).
+    pub fn home_here(&mut self) {
+        self.restart_counter(self.out as f64, 0);
+    }
+
+    /// The motor's position in pulses.
+    pub fn actual_pulses(&self) -> f64 {
+        self.assert_up_to_date();
+        self.actual
+    }
+
+    /// Pulses output so far (command + compensation).
+    pub fn output_pulses(&self) -> i64 {
+        self.out
+    }
+
+    /// Pulses commanded (without compensation).
+    pub fn command_pulses(&self) -> i64 {
+        self.assert_up_to_date();
+        self.cmd
+    }
+
+    /// Following error in pulses: output − motor (what `MCC_GetErrorCount` reports).
+    pub fn error_count(&self) -> i64 {
+        self.assert_up_to_date();
+        (self.out as f64 - self.actual).round() as i64
+    }
+
+    /// Pulses output in the last tick, and the change from the tick before (per-period
+    /// pulse speed and acceleration).
+    pub fn pulse_rate(&self) -> (i64, i64) {
+        self.assert_up_to_date();
+        let d = self.out - self.prev_out;
+        (d, d - self.prev_delta)
+    }
+
+    /// New mechanism and encoder parameters (`MCC_UpdateParam`).
+    pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
+        let count = self.encoder();
+        self.mac = mac;
+        self.enc = enc;
+        self.refresh_grid();
+        self.input_rate = None;
+        self.set_encoder(count);
+        self.update_sensors();
+    }
+}

@@ -1,0 +1,30 @@
+//! A channel's plant (an ideal motor or a first-order lag) and whether the channel is
+//! ideal, which decides how it steps.
+
+use super::Channel;
+
+impl Channel {
+    /// Recomputes [`Channel::ideal`] after the compensation, the plant or the sensors
+    /// changed.
+    pub(super) fn refresh_ideal(&mut self) {
+        self.ideal = self.ideal_now();
+    }
+
+    /// What [`Channel::ideal`] should be.
+    pub(super) fn ideal_now(&self) -> bool {
+        !self.comp.active() && !self.lags() && !self.sensors
+    }
+
+    /// Whether the plant is a first-order lag (a positive time constant).
+    fn lags(&self) -> bool {
+        matches!(self.spec.lag_s, Some(tau) if tau > 0.0)
+    }
+
+    /// The plant: a first-order lag of `lag_s` seconds, or ideal (`None`) — what a
+    /// `[plant]` table of the simulation configuration sets.
+    pub fn set_plant_lag(&mut self, lag_s: Option<f64>) {
+        self.resting = false;
+        self.spec.lag_s = lag_s;
+        self.refresh_ideal();
+    }
+}
