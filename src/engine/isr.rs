@@ -7,13 +7,13 @@
 //! Anything that detects an interrupt condition raises it there:
 //!
 //! - the card's own peripherals (timer, ADC, remote I/O) during
-//!   [`Shared::tick_peripherals`];
+//!   [`Shared::tick_peripherals`](crate::engine::Shared::tick_peripherals);
 //! - the program, between ticks (a single ADC conversion started by `MCC_StartADCConv`);
 //! - any other part of the engine (limit and home inputs, encoder index and compare,
-//!   closed-loop errors) through [`Shared::raise`]`(card, `[`Interrupt`]`)` — callable
+//!   closed-loop errors) through [`Shared::raise`](crate::engine::Shared::raise)`(card, `[`Interrupt`]`)` — callable
 //!   from anywhere, also with a group lock held (lock order: group, then peripherals).
 //!
-//! At the end of each tick [`Shared::tick_peripherals`] takes every card's pending causes
+//! At the end of each tick [`Shared::tick_peripherals`](crate::engine::Shared::tick_peripherals) takes every card's pending causes
 //! and the engine thread calls [`IsrTable::deliver`] after it released every lock: for
 //! each card in index order, the LIO, ENC, PCL, ADC, TMR, RIO and HSK routines, in that
 //! order, each once, with a struct holding every cause of its kind raised since the last
@@ -102,7 +102,7 @@ impl IsrTable {
     }
 
     /// Registers the routine at address `f` (0 unregisters) for `kind` on `card` (a card
-    /// checked with [`Shared::card`]).
+    /// checked with [`Shared::card`](crate::engine::Shared::card)).
     pub fn set(&self, card: usize, kind: Kind, f: usize) {
         let old = self.slots[card][kind as usize].swap(f, Ordering::AcqRel);
         // Each change between empty and registered moves the count (registrations from

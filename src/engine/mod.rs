@@ -11,13 +11,15 @@
 //! holds either while user code runs, so a callback may call any MCC_* function. Order:
 //! `system::SYSTEM`, the machine, then the groups.
 //!
-//! Files, one concept each: `shared.rs` ([`Shared`], what the engine thread and the
-//! program's threads share), `running.rs` ([`Engine`]: the thread's start, loop, stop and
-//! join), `tick.rs` (one tick of the card), `poll.rs` (polls that let virtual time run),
-//! `safety.rs` (checks against the machine), `snapshot.rs`, `trace.rs`, `isr.rs`
-//! (routines), `command.rs` (planning a command), `custom.rs` (custom motion's callback
-//! stage), `homing.rs` and `homing/` (go home of
-//! one card), `group/` (one group), `thread.rs` (real-time settings of the thread).
+//! Files, one concept each, their uses a DAG: `command.rs` (planning a command),
+//! `track.rs` (a running motion's profile), `custom.rs` and `custom_move.rs` (custom
+//! motion), `note.rs` (events noted for the trace), `group/` (one group), the types
+//! [`Shared`] holds (`isr.rs`, `cycle.rs`, `homing.rs` and `homing/`, `view.rs`,
+//! `snapshot.rs`, `trace.rs`, `safety.rs`, `kinematics.rs`), `shared/` ([`Shared`] and its
+//! methods, one concern a file), `tick.rs` (one tick of the card, the one definition of
+//! its steps), `cruise.rs` (the plan of cruise ticks), `poll.rs` (polls that let virtual
+//! time run), `running.rs` ([`Engine`]: the thread's start, loop, stop and join),
+//! `thread.rs` (real-time settings of the thread).
 
 pub mod command;
 mod cruise;

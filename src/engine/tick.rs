@@ -206,7 +206,7 @@ impl Shared {
                 stepped
             } else {
                 if let Some(d) = pending {
-                    crate::machine::deferred::catch_up_card(chans, triggers, d);
+                    crate::machine::catch_up::catch_up_card(chans, triggers, d);
                 }
                 for chan in chans.iter_mut() {
                     chan.step_commanded(dt);

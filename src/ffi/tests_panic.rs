@@ -114,7 +114,7 @@ fn a_panic_in_the_engine_tick_stops_every_group_and_the_clock_goes_on() {
 #[test]
 fn a_panic_in_a_cruise_tick_stops_every_group_and_the_clock_goes_on() {
     // As above, in a tick of a quiet run that only moves the group along (a cruise tick,
-    // `engine/cruise.rs`, the only place the point is passed): the run of 50 ticks
+    // `Shared::tick`'s cruise instance, the only place the point is passed): the run of 50 ticks
     // cruises from its second tick on.
     let _g = fresh();
     let (before, stopped_at) = stops_after_a_fault_at("cruise tick", 50);

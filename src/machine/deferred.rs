@@ -24,10 +24,8 @@
 //! step that passed it (a latch reads it in that step, on a card whose triggers are
 //! armed, which does not defer).
 
-use super::index_pulses::CELL_LIMIT;
-use super::triggers::CardTriggers;
-use super::{Channel, Machine, SensorLevels};
-use crate::config::{AXES, CARDS};
+use super::SensorLevels;
+use crate::config::CARDS;
 
 /// What a channel stepping deferred keeps of the steps it did not make.
 ///
@@ -41,22 +39,22 @@ use crate::config::{AXES, CARDS};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Deferred {
     /// Whether steps are deferred (the channel is not up to date).
-    active: bool,
+    pub(super) active: bool,
     /// The number of the run's first step.
-    first: u64,
+    pub(super) first: u64,
     /// The outputs of the latest steps, step `n`'s at `n % 4`.
-    outputs: [i64; 4],
+    pub(super) outputs: [i64; 4],
     /// Outputs that lie in the index interval of `start`, as [`OutputWindow`] checks
     /// them: the outputs of other intervals, and near its ends, are outside.
-    window: OutputWindow,
+    pub(super) window: OutputWindow,
     /// Whether an output of the run lies in another index interval than `start` (the
     /// run passed an index pulse).
-    passed: bool,
+    pub(super) passed: bool,
     /// The motor's position before the first deferred step.
-    start: f64,
+    pub(super) start: f64,
     /// The levels at the end of the last step made (the previous levels after one
     /// deferred step).
-    step_levels: SensorLevels,
+    pub(super) step_levels: SensorLevels,
 }
 
 impl Deferred {
@@ -76,158 +74,6 @@ impl Deferred {
     };
 }
 
-impl Channel {
-    /// [`Channel::step_commanded`] of a channel on a card that defers, at the engine's
-    /// tick `n`: an ideal channel records the step, any other steps. Returns whether it
-    /// stepped (only then can it have passed an index pulse this tick: a channel
-    /// deferring or at rest has none).
-    #[inline]
-    pub fn step_or_defer(&mut self, dt: f64, n: u64) -> bool {
-        // (The steps of a run are consecutive: `Machine::set_deferred` asserts it.)
-        if self.ideal {
-            self.defer_step(dt, n);
-            false
-        } else {
-            self.step_commanded(dt);
-            true
-        }
-    }
-
-    /// Records a step of `dt` to the command set this tick instead of making it (a channel
-    /// at rest held at its command records nothing, as it would not step). Nothing of
-    /// the channel moves on: its output, command and motor follow the recorded steps
-    /// when it is brought up to date.
-    #[inline]
-    fn defer_step(&mut self, dt: f64, n: u64) {
-        if !self.deferred.active {
-            if self.resting && self.next == self.cmd && dt == self.resting_dt {
-                return;
-            }
-            self.begin_deferring(n);
-        }
-        self.record(n);
-    }
-
-    /// Before the first deferred step, `n`: what the steps before it left (the two
-    /// outputs before it, in the slots of the two steps before it). The index pulses of
-    /// the last step made were counted by the tick that made it. Out of line: inlined,
-    /// its slots were worked out ahead of every tick's recording loop.
-    #[inline(never)]
-    fn begin_deferring(&mut self, n: u64) {
-        let mut outputs = [0; 4];
-        outputs[slot(n.wrapping_sub(1))] = self.out;
-        outputs[slot(n.wrapping_sub(2))] = self.prev_out;
-        let window = self.start_window(self.actual);
-        self.deferred = Deferred {
-            active: true,
-            first: n,
-            outputs,
-            window,
-            passed: false,
-            start: self.actual,
-            step_levels: self.step_levels,
-        };
-        self.index_events = 0;
-        self.resting = false;
-    }
-
-    /// [`Channel::step_or_defer`] of a channel known to record its steps (an ideal
-    /// channel with steps deferred since it was last brought up to date, see
-    /// [`Recording`]): the step recorded without asking.
-    #[inline]
-    pub fn record_step(&mut self, n: u64) {
-        debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
-        self.record(n);
-    }
-
-    /// Records this tick's command as deferred step `n`.
-    #[inline]
-    fn record(&mut self, n: u64) {
-        let cmd = self.next;
-        let d = &mut self.deferred;
-        d.outputs[slot(n)] = cmd;
-        if !d.window.holds(cmd) {
-            self.look_outside_window(cmd);
-        }
-    }
-
-    /// The outputs that lie, with the channel's frame (`base`), in the index interval of
-    /// motor position `start`, two pulses short of its ends (so that the rounding of
-    /// `output + base` cannot carry an output of the window out of the interval); none
-    /// when the interval's bounds are not exact or too far out to subtract exactly.
-    fn start_window(&mut self, start: f64) -> OutputWindow {
-        self.index_interval(start + self.base);
-        let (lo, hi) = (self.cell.lo - self.base, self.cell.hi - self.base);
-        let limit = CELL_LIMIT as f64;
-        // (The cell of no interval has its bounds the wrong way round.)
-        if !(lo > -limit && hi < limit && lo < hi) {
-            return OutputWindow::NONE;
-        }
-        // Whole numbers below 2^52 in magnitude: exact as i64.
-        let first = lo.ceil() as i64 + 2;
-        let last = hi.floor() as i64 - 2;
-        OutputWindow::new(first, last)
-    }
-
-    /// A recorded output outside the window: whether it lies in another index interval
-    /// than the run's start, looked up. Once one does, the run has passed an index pulse
-    /// and no later output need be looked at (the window then holds every output but
-    /// `i64::MAX`, which is looked at again and changes nothing). Out of line: a motor
-    /// turn of steps records between two calls.
-    #[inline(never)]
-    fn look_outside_window(&mut self, out: i64) {
-        if self.deferred.passed {
-            return;
-        }
-        let start = self.index_interval(self.deferred.start + self.base);
-        if self.index_interval(out as f64 + self.base) != start {
-            self.deferred.passed = true;
-            self.deferred.window = OutputWindow::ALL;
-        }
-    }
-
-    /// Whether steps are deferred.
-    pub fn deferring(&self) -> bool {
-        self.deferred.active
-    }
-
-    /// Brings a channel with deferred steps up to date (`steps`: their period and the
-    /// number of the last): every field as the steps would have left it (but the last
-    /// index count of a pulse passed before the last step, see the module). Returns
-    /// whether the deferred steps passed an index pulse.
-    pub fn catch_up(&mut self, steps: DeferredSteps) -> bool {
-        let DeferredSteps { dt, last } = steps;
-        let d = self.deferred;
-        if !d.active {
-            return false;
-        }
-        self.deferred.active = false;
-        // The last output and the two before it.
-        self.out = d.outputs[slot(last)];
-        let history = (
-            d.outputs[slot(last.wrapping_sub(1))],
-            d.outputs[slot(last.wrapping_sub(2))],
-        );
-        let passed = d.passed;
-        // The last step, from the state the one before it left (`begin_step`); the
-        // output is the last step's already.
-        let from = if last == d.first {
-            self.prev_levels = d.step_levels;
-            d.start
-        } else {
-            self.prev_levels = self.levels;
-            history.0 as f64
-        };
-        self.prev_out = history.0;
-        self.prev_delta = history.0 - history.1;
-        self.cmd = self.out;
-        self.actual = self.out as f64;
-        self.count_index(from + self.base, self.actual + self.base);
-        self.end_step(dt, true);
-        passed
-    }
-}
-
 /// The steps channels defer while the engine keeps the machine's lock: their period and
 /// the number (the engine's tick) of the latest.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -240,22 +86,22 @@ pub struct DeferredSteps {
 
 /// Outputs `first..=last` as one check: `output - first`, as u64, below `len`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct OutputWindow {
-    first: i64,
+pub(super) struct OutputWindow {
+    pub(super) first: i64,
     len: u64,
 }
 
 impl OutputWindow {
     /// Holds no output.
-    const NONE: OutputWindow = OutputWindow { first: 0, len: 0 };
+    pub(super) const NONE: OutputWindow = OutputWindow { first: 0, len: 0 };
     /// Holds every output but `i64::MAX`.
-    const ALL: OutputWindow = OutputWindow {
+    pub(super) const ALL: OutputWindow = OutputWindow {
         first: i64::MIN,
         len: u64::MAX,
     };
 
     /// `first..=last` (none when `last < first`).
-    fn new(first: i64, last: i64) -> OutputWindow {
+    pub(super) fn new(first: i64, last: i64) -> OutputWindow {
         if last < first {
             return OutputWindow::NONE;
         }
@@ -267,14 +113,14 @@ impl OutputWindow {
 
     /// Whether `out` is in the window.
     #[inline]
-    fn holds(&self, out: i64) -> bool {
+    pub(super) fn holds(&self, out: i64) -> bool {
         (out.wrapping_sub(self.first) as u64) < self.len
     }
 }
 
 /// The slot of deferred step `n` in [`Deferred::outputs`].
 #[inline]
-fn slot(n: u64) -> usize {
+pub(super) fn slot(n: u64) -> usize {
     (n % 4) as usize
 }
 
@@ -306,73 +152,12 @@ impl Recording {
     }
 }
 
-/// [`Machine::catch_up`] of one card's channels.
-pub fn catch_up_card(
-    chans: &mut [Channel; AXES],
-    triggers: &mut CardTriggers,
-    steps: DeferredSteps,
-) {
-    for (ch, chan) in chans.iter_mut().enumerate() {
-        if chan.catch_up(steps) {
-            triggers.index_status[ch] = true;
-        }
-    }
-}
-
-impl Machine {
-    /// Notes whether channels of the machine defer `steps` after this tick (`None`:
-    /// every channel is up to date), and which of them [record](Recording).
-    pub fn set_deferred(&mut self, steps: Option<DeferredSteps>, recording: Recording) {
-        // The slots hold the last three outputs only for consecutive steps.
-        if let (Some(before), Some(now)) = (self.deferred, steps) {
-            debug_assert_eq!(
-                before.last.wrapping_add(1),
-                now.last,
-                "steps not consecutive"
-            );
-        }
-        self.deferred = steps;
-        self.recording = if steps.is_some() {
-            recording
-        } else {
-            Recording::default()
-        };
-    }
-
-    /// Brings every channel with deferred steps up to date; the index status of a channel
-    /// whose deferred steps passed an index pulse latches. Nothing to do (one check) when
-    /// no channel defers.
-    #[inline]
-    pub fn catch_up(&mut self) {
-        if let Some(steps) = self.deferred.take() {
-            self.recording = Recording::default();
-            self.catch_up_all(steps);
-        }
-    }
-
-    #[inline(never)]
-    fn catch_up_all(&mut self, steps: DeferredSteps) {
-        for (chans, triggers) in self.cards.iter_mut().zip(self.triggers.iter_mut()) {
-            catch_up_card(chans, triggers, steps);
-        }
-    }
-
-    /// The steps deferred, when some channel defers.
-    pub fn deferred(&self) -> Option<DeferredSteps> {
-        self.deferred
-    }
-
-    /// The channels that recorded a deferred step at the last tick ([`Recording`]).
-    pub fn recording(&self) -> Recording {
-        self.recording
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::config::AXES;
     use crate::config::{default_encoder_config, default_mac_param};
-    use crate::machine::ChannelSpec;
+    use crate::machine::{Channel, ChannelSpec, Machine};
     use crate::vendor::SYS_MAC_PARAM;
 
     /// Deferred steps of 1 ms, the last numbered `last`.

@@ -7,16 +7,14 @@
 
 mod card_outputs;
 mod card_settings;
+pub mod catch_up;
 mod channel;
 mod channel_compensation;
 pub mod compensation;
 pub mod deferred;
-mod encoder;
 mod index_pulses;
-mod plant;
 mod pulse_limits;
 mod sensors;
-mod stepping;
 #[cfg(test)]
 mod tests;
 pub mod triggers;

@@ -21,7 +21,6 @@
 
 mod axis1d;
 pub mod compose;
-mod cone;
 mod path;
 mod path_move;
 mod profile;
@@ -30,7 +29,7 @@ mod ramp;
 mod ticks;
 
 pub use axis1d::Axis1D;
-pub use cone::ConeSeg;
+pub use path::ConeSeg;
 pub use path::{ArcSeg, LineSeg, Path, Plane};
 pub use path_move::PathMove;
 pub use profile::Profile;

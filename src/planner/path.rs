@@ -1,11 +1,11 @@
 //! Geometry of general-motion segments (line, arc, circle, helix), each
 //! parameterised by the path length the feed speed applies to.
 
-use super::cone::ConeSeg;
 use super::{Axes, NUM_AXES};
 
 mod arc;
 mod aux_axes;
+mod cone;
 mod helix;
 mod line;
 mod plane;
@@ -15,6 +15,7 @@ mod v6;
 mod vec3;
 
 pub use arc::{ArcSeg, MIN_RADIUS};
+pub use cone::ConeSeg;
 pub use line::LineSeg;
 pub use plane::Plane;
 

@@ -2,7 +2,7 @@
 //! custom command's state, what the stage calls next, and storing what it returned.
 //!
 //! A custom command does not advance in the tick (`execution.rs` leaves it to its stage):
-//! the stage moves its track (`track.rs`, the library's profile along the
+//! the stage moves its track (`engine/track.rs`, the library's profile along the
 //! total distance) one period ahead when it asks the callback for the next position. It
 //! ends (the tick after retires it at the offset the callback gave last) when an infinite
 //! motion's callback returns FALSE or sets `*AbortThisCommand`, or the track reaches the

@@ -3,7 +3,7 @@
 //!
 //! Execution model: the vendor's library, measured with its own DLL (`execution.rs`).
 //! Commands run on the grid of periods; each motion follows a profile of whole periods
-//! ([`crate::planner::TickProfile`]) along its track (`track.rs`: a path, or one axis's
+//! ([`crate::planner::TickProfile`]) along its track (`engine/track.rs`: a path, or one axis's
 //! travel), and hold, continue, override and timed aborts re-plan what is left of it
 //! from the speed of the last period (`control.rs`). The command position is the base
 //! plus what every running command moved; with blending on two general motions run at
@@ -13,7 +13,7 @@
 //! Files, one concept each: `queue.rs` (queuing, indices, single block), `execution.rs`
 //! (the running commands tick by tick), `running.rs` (one command being executed),
 //! `position_and_speed.rs` (the position and speeds a period shows, over-travel),
-//! `track.rs` (a motion's progress and its re-plans), `control.rs` (hold, continue,
+//! `control.rs` (hold, continue,
 //! abort, override, feed), `inpos.rs` (the in-position check), `status.rs` (motion
 //! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
 //! `external.rs` (the door to an executor outside the card, e.g. the MC3B), `custom.rs`

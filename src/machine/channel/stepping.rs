@@ -2,14 +2,14 @@
 //! motor, its encoder and sensors (the ideal fast step or the general one), and skipping
 //! the steps of a channel at rest.
 
-use super::Channel;
+use crate::machine::Channel;
 
 impl Channel {
     /// Debug builds: a reader of what the steps make finds no step deferred (the engine
     /// brings channels up to date before anything but its own tick can read them,
-    /// [`deferred`](super::deferred)).
+    /// [`deferred`](crate::machine::deferred)).
     #[inline(always)]
-    pub(super) fn assert_up_to_date(&self) {
+    pub(in crate::machine) fn assert_up_to_date(&self) {
         debug_assert!(!self.deferring(), "a channel read with its steps deferred");
     }
 
@@ -52,7 +52,7 @@ impl Channel {
     /// the motor. Most channels of a running machine are such, and this is every tick's
     /// cost for each of them.
     #[inline]
-    pub(super) fn step_ideal(&mut self, cmd: i64, dt: f64) {
+    pub(in crate::machine) fn step_ideal(&mut self, cmd: i64, dt: f64) {
         self.begin_step(cmd);
         self.out = cmd;
         let before = self.actual;
@@ -63,7 +63,7 @@ impl Channel {
 
     /// [`Channel::step`] of any channel: compensation, a lagging plant, sensors.
     #[inline(never)]
-    pub(super) fn step_general(&mut self, cmd: i64, dt: f64) {
+    pub(in crate::machine) fn step_general(&mut self, cmd: i64, dt: f64) {
         self.begin_step(cmd);
         self.out = if self.comp.active() {
             cmd + self.comp.offset(cmd)
@@ -87,7 +87,7 @@ impl Channel {
     /// The start of every step: the output's history moves on one period (pulse speed
     /// and acceleration) and `cmd` becomes the command.
     #[inline(always)]
-    pub(super) fn begin_step(&mut self, cmd: i64) {
+    pub(in crate::machine) fn begin_step(&mut self, cmd: i64) {
         self.prev_levels = self.step_levels;
         self.prev_delta = self.out - self.prev_out;
         self.prev_out = self.out;
@@ -105,7 +105,7 @@ impl Channel {
     /// ends on a fixed point of its floating-point iteration, which need not be the
     /// command), so no index pulse and the same sensor levels.
     #[inline(always)]
-    pub(super) fn end_step(&mut self, dt: f64, comp_still: bool) {
+    pub(in crate::machine) fn end_step(&mut self, dt: f64, comp_still: bool) {
         self.step_levels = self.levels;
         self.resting = comp_still
             && self.out == self.prev_out

@@ -1,17 +1,17 @@
 //! A channel's plant (an ideal motor or a first-order lag) and whether the channel is
 //! ideal, which decides how it steps.
 
-use super::Channel;
+use crate::machine::Channel;
 
 impl Channel {
     /// Recomputes [`Channel::ideal`] after the compensation, the plant or the sensors
     /// changed.
-    pub(super) fn refresh_ideal(&mut self) {
+    pub(in crate::machine) fn refresh_ideal(&mut self) {
         self.ideal = self.ideal_now();
     }
 
     /// What [`Channel::ideal`] should be.
-    pub(super) fn ideal_now(&self) -> bool {
+    pub(in crate::machine) fn ideal_now(&self) -> bool {
         !self.comp.active() && !self.lags() && !self.sensors
     }
 

@@ -19,8 +19,8 @@
 //! a bisection bracket, to about 1e-15 of `Φ`. So `point(s)` moves at exactly the speed
 //! the profile gives `s`.
 
-use super::path::{Plane, MIN_RADIUS};
-use super::{check_all_finite, check_finite, Axes, PlanError, NUM_AXES};
+use super::{Plane, MIN_RADIUS};
+use crate::planner::{check_all_finite, check_finite, Axes, PlanError, NUM_AXES};
 use std::f64::consts::TAU;
 
 /// A conical helix segment in X/Y/Z; U..B do not move.

@@ -1,8 +1,8 @@
 //! A channel's encoder: the count that follows the motor, its input rate, gear rate and
 //! direction, and setting the count.
 
-use super::Channel;
 use crate::config::encoder_multiplier;
+use crate::machine::Channel;
 use crate::vendor::consts as c;
 
 impl Channel {

@@ -1,7 +1,15 @@
 //! One channel of the card and the motor, encoder and sensors behind it: what the
 //! simulation configuration says about it, its state, and its counters (command, output,
-//! motor position, following error). The rest of its behaviour is in the sibling files:
+//! motor position, following error). The rest of its behaviour is in the files below:
 //! encoder, sensors, index pulses, plant, compensation, stepping.
+
+mod compensating;
+mod deferring;
+mod encoder;
+mod index;
+mod plant;
+mod sensing;
+mod stepping;
 
 use super::compensation::{self, Compensation};
 use super::deferred::Deferred;
@@ -58,7 +66,7 @@ pub struct Channel {
     /// The command for the coming step: what [`Channel::command`] set during this tick
     /// (the group or homing driving the channel), else `cmd` (every step and counter
     /// restart sets both), so that a channel nobody commands holds.
-    pub(super) next: i64,
+    next: i64,
     /// The last step changed nothing, and another with the same command would change
     /// nothing either ([`Channel::step_commanded`] skips it). Cleared by whatever changes
     /// what a step reads: the counter's frame (`restart_counter`), the sensors
@@ -66,7 +74,7 @@ pub struct Channel {
     /// index grid (`set_grid`), the compensation and the plant.
     pub(super) resting: bool,
     /// The period of the step that found the channel resting.
-    pub(super) resting_dt: f64,
+    resting_dt: f64,
     /// An ideal motor (no plant lag) with no compensation and no sensor that follows it:
     /// a step is [`Channel::step_ideal`]. Kept by [`Channel::refresh_ideal`] wherever
     /// the compensation, the plant or the sensors change.
@@ -78,44 +86,44 @@ pub struct Channel {
     /// Motor position in pulses from where the command counter was last zeroed.
     pub(super) actual: f64,
     /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
-    pub(super) base: f64,
+    base: f64,
     /// Index pulses passed in the last step.
     pub index_events: u32,
     /// Motor positions (pulses, machine frame) at the start and end of the last step.
     pub(super) last_move: (f64, f64),
     /// The index interval of the last position looked up (`index_interval`), or
     /// [`IndexCell::NONE`].
-    pub(super) cell: IndexCell,
+    cell: IndexCell,
     /// Steps recorded and not yet made ([`deferred`](super::deferred)).
     pub(super) deferred: Deferred,
     pub(super) levels: SensorLevels,
     pub(super) prev_levels: SensorLevels,
     /// Levels at the end of the last step: a level forced between steps shows as an edge.
-    pub(super) step_levels: SensorLevels,
-    pub(super) forced: [Option<bool>; 3],
+    step_levels: SensorLevels,
+    forced: [Option<bool>; 3],
     /// The index grid (spacing, phase) in x4 counts, from `spec` and `mac.dwPPR`, kept
     /// with the fields every step reads ([`Channel::refresh_grid`]).
-    pub(super) grid: (i64, i64),
+    grid: (i64, i64),
     /// Whether a sensor is placed or forced: only then do the levels follow the motor
     /// ([`Channel::refresh_sensors`]).
-    pub(super) sensors: bool,
+    sensors: bool,
     /// Compensation tables in effect.
     pub(super) comp: Compensation,
     /// Simulation configuration.
-    pub(super) spec: ChannelSpec,
-    pub(super) mac: SYS_MAC_PARAM,
-    pub(super) enc: SYS_ENCODER_CONFIG,
+    spec: ChannelSpec,
+    mac: SYS_MAC_PARAM,
+    enc: SYS_ENCODER_CONFIG,
     /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
     pub input_rate: Option<u16>,
     /// `MCC_SetENCGearRate`.
     pub gear_rate: f64,
     /// Encoder count = raw count + `enc_offset`.
-    pub(super) enc_offset: i64,
+    enc_offset: i64,
     /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
     /// the fields every step uses).
-    pub(super) comp_param: Box<SYS_COMP_PARAM>,
+    comp_param: Box<SYS_COMP_PARAM>,
     /// Physical sensor levels (before the program's wiring setting).
-    pub(super) raw: [bool; 3],
+    raw: [bool; 3],
     /// The last index pulse passed, as a raw count.
     pub last_index_count: Option<i64>,
     /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
