@@ -1,5 +1,5 @@
 //! The MC3B motor control library of §4 of the User's Guide, talking to the board
-//! through [`super::client`]: the bodies of the `mcl_*` exports, which `src/ffi/mcl.rs`
+//! through [`::mc3b::client`]: the bodies of the `mcl_*` exports, which `src/ffi/mcl.rs`
 //! puts behind the library's one panic boundary.
 //!
 //! Every function returns one of the §4 status codes (`MCL_*` constants, 0..7). A panic
@@ -10,7 +10,7 @@
 //! # COM port numbering
 //! `com_port` N (1 = COM1, §4.2) names the device given by the environment
 //! variable `MCL_COM<N>` when it is set (e.g. `MCL_COM1=/dev/pts/7`), and
-//! otherwise the system's name for it ([`crate::platform::com_port_device`]):
+//! otherwise the system's name for it ([`::mc3b::serial::com_port_device`]):
 //! `/dev/ttyS<N-1>` on Linux (COM1 = `/dev/ttyS0`, the usual numbering),
 //! `COM<N>` on Windows. `com_port` < 1 is a SERIAL PORT ERROR (no such port). The port
 //! is opened at 19200 baud, 8N1, no flow control.
@@ -25,7 +25,7 @@
 //!   included, returns NOT INITIALIZED before it.
 //! * `controller_id` must be below the number of controllers found (always
 //!   1 for the MC3B: no daisy chaining, §4.2), else PARAMETER OUT-OF-RANGE.
-//! * No reply within the timeout (counted as [`super::client`] says: only time
+//! * No reply within the timeout (counted as [`::mc3b::client`] says: only time
 //!   in which the reply could have been read) is a TIMEOUT ERROR: the board did
 //!   not answer (§4: "a problem with the connection").
 //! * A reply that cannot be read (garbage, a line longer than any reply), one
@@ -42,7 +42,7 @@
 //!   (A pulled cable on a real RS-232 port gives no such error, only
 //!   silence: TIMEOUT.)
 //! * After a failure that may have left a reply outstanding, the next call
-//!   first brings the line back in step (`<id>P`, see [`super::client`]); if
+//!   first brings the line back in step (`<id>P`, see [`::mc3b::client`]); if
 //!   the board does not answer that, the call fails with that status before
 //!   its own command is sent.
 //! * Chained-move buffer (§6.12: stored moves run at the next execute). A
@@ -80,8 +80,9 @@ use std::time::Duration;
 use once_cell::sync::Lazy;
 use parking_lot::Mutex;
 
-use super::client::{open_port, Client, ClientError, Transport};
-use super::codec::{Command, ErrorCode};
+use ::mc3b::client::{Client, ClientError, Transport};
+use ::mc3b::codec::{Command, ErrorCode};
+use ::mc3b::serial::open_port;
 
 /// Status: the call completed.
 pub const MCL_NO_ERROR: c_int = 0;
@@ -123,12 +124,12 @@ pub fn com_port_path(com_port: c_int) -> Option<String> {
     }
     match std::env::var(format!("MCL_COM{com_port}")) {
         Ok(p) if !p.is_empty() => Some(p),
-        _ => Some(crate::platform::com_port_device(com_port.unsigned_abs())),
+        _ => Some(::mc3b::serial::com_port_device(com_port.unsigned_abs())),
     }
 }
 
 fn reply_timeout() -> Duration {
-    super::client::timeout_from_env()
+    ::mc3b::client::timeout_from_env()
 }
 
 fn status_of(e: &ClientError) -> c_int {
@@ -825,9 +826,6 @@ mod tests {
     fn com_port_rule() {
         assert_eq!(com_port_path(0), None);
         // Use a port number nobody sets.
-        assert_eq!(
-            com_port_path(77),
-            Some(crate::platform::com_port_device(77))
-        );
+        assert_eq!(com_port_path(77), Some(::mc3b::serial::com_port_device(77)));
     }
 }

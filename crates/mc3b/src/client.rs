@@ -1,15 +1,13 @@
 //! Command/response client for the MC3B over any byte transport.
 //!
 //! The real transport is an RS-232 port at 19200 baud, 8 data bits, no
-//! parity, one stop bit, no flow control (§3.2), opened with [`open_port`].
-//! On a pseudo-terminal the modem-control ioctls (DTR/RTS/CTS...) fail with
-//! `ENOTTY`; the client never needs them, so it neither sets nor reads them
-//! and such failures cannot occur on its path.
+//! parity, one stop bit, no flow control (§3.2), opened with
+//! [`open_port`](crate::serial::open_port); in tests, an [`EmulatorLink`].
 //!
 //! Decisions:
 //! * The reply to a command is the first complete frame after it. A frame that
 //!   cannot be decoded (garbage, a line longer than any reply, reported as soon
-//!   as it passes [`MAX_LINE`](super::codec::MAX_LINE) bytes), a frame from
+//!   as it passes [`MAX_LINE`](crate::codec::MAX_LINE) bytes), a frame from
 //!   another controller ID, or a frame that does not answer the command fails
 //!   the command at once ([`ClientError::Garbled`], [`ClientError::Unexpected`]):
 //!   the line is corrupt, and waiting for the timeout would only delay saying so.
@@ -32,17 +30,12 @@
 use std::collections::VecDeque;
 use std::fmt;
 use std::io;
+use std::sync::LazyLock;
 use std::time::{Duration, Instant};
 
-use serialport::{ClearBuffer, DataBits, FlowControl, Parity, SerialPort, StopBits};
+use crate::codec::{encode, Command, ErrorCode, ProtocolError, Response, ResponseParser};
+use crate::emulator::Emulator;
 
-use crate::platform::SerialLine;
-
-use super::codec::{encode, Command, ErrorCode, ProtocolError, Response, ResponseParser};
-use super::emulator::Emulator;
-
-/// Baud rate of the MC3B (fixed, §2.2).
-pub const BAUD_RATE: u32 = 19_200;
 /// Default time to wait for a reply.
 pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(500);
 /// Longest single read while waiting for a reply; see the module docs.
@@ -78,55 +71,8 @@ pub trait Transport {
 
 /// Time since the first call in this process (a monotonic clock).
 pub fn monotonic() -> Duration {
-    static EPOCH: once_cell::sync::Lazy<Instant> = once_cell::sync::Lazy::new(Instant::now);
+    static EPOCH: LazyLock<Instant> = LazyLock::new(Instant::now);
     EPOCH.elapsed()
-}
-
-fn serial_send(port: &mut dyn SerialPort, data: &[u8]) -> io::Result<()> {
-    port.write_all(data)?;
-    port.flush()
-}
-
-fn serial_recv(port: &mut dyn SerialPort, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
-    port.set_timeout(timeout.max(Duration::from_millis(1)))
-        .map_err(io::Error::from)?;
-    match port.read(buf) {
-        Ok(0) => {
-            // EOF on a tty: the other side hung up.
-            Err(io::Error::new(
-                io::ErrorKind::BrokenPipe,
-                "serial line hung up",
-            ))
-        }
-        Ok(n) => Ok(n),
-        Err(e) if e.kind() == io::ErrorKind::TimedOut => Ok(0),
-        Err(e) if e.kind() == io::ErrorKind::Interrupted => Ok(0),
-        Err(e) => Err(e),
-    }
-}
-
-impl Transport for SerialLine {
-    fn send(&mut self, data: &[u8]) -> io::Result<()> {
-        serial_send(self, data)
-    }
-    fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
-        serial_recv(self, buf, timeout)
-    }
-    fn discard_input(&mut self) -> io::Result<()> {
-        self.clear(ClearBuffer::Input).map_err(io::Error::from)
-    }
-}
-
-impl Transport for Box<dyn SerialPort> {
-    fn send(&mut self, data: &[u8]) -> io::Result<()> {
-        serial_send(self.as_mut(), data)
-    }
-    fn recv(&mut self, buf: &mut [u8], timeout: Duration) -> io::Result<usize> {
-        serial_recv(self.as_mut(), buf, timeout)
-    }
-    fn discard_input(&mut self) -> io::Result<()> {
-        self.clear(ClearBuffer::Input).map_err(io::Error::from)
-    }
 }
 
 impl Transport for Box<dyn Transport + Send> {
@@ -160,20 +106,6 @@ pub fn timeout_from_env() -> Duration {
         .filter(|&ms| ms > 0)
         .map(Duration::from_millis)
         .unwrap_or(DEFAULT_TIMEOUT)
-}
-
-/// Open a serial device (`/dev/ttyS0`, `COM1`, ...) at 19200 8N1 without flow control.
-pub fn open_port(path: &str, timeout: Duration) -> Result<SerialLine, serialport::Error> {
-    let builder = serialport::new(path, BAUD_RATE)
-        .data_bits(DataBits::Eight)
-        .parity(Parity::None)
-        .stop_bits(StopBits::One)
-        .flow_control(FlowControl::None)
-        .timeout(timeout);
-    let port = SerialLine::open(&builder)?;
-    // Best effort: a pty may refuse some tty requests.
-    let _ = port.clear(ClearBuffer::All);
-    Ok(port)
 }
 
 /// An in-process transport wired straight to an [`Emulator`]. Waiting for a

@@ -56,7 +56,7 @@
 use std::collections::VecDeque;
 use std::time::Duration;
 
-use super::codec::{
+use crate::codec::{
     encode_response, Command, CommandCode, CommandParser, ErrorCode, Response, MOTORS,
 };
 

@@ -24,10 +24,11 @@ use std::collections::VecDeque;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use mc3b::client::{Client, ClientError, MotorStatus, Transport};
+use mc3b::codec::Command;
+use mc3b::emulator::{Emulator, PRODUCT_ID};
+use mc3b::serial::open_port;
 use serde::Serialize;
-use MCCLPCI_IMP::mc3b::client::{open_port, Client, ClientError, MotorStatus, Transport};
-use MCCLPCI_IMP::mc3b::codec::Command;
-use MCCLPCI_IMP::mc3b::emulator::{Emulator, PRODUCT_ID};
 
 use crate::checks::{FieldError, Op, MOTORS};
 use crate::circle::CirclePlan;

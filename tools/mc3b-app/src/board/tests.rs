@@ -5,9 +5,9 @@ use super::*;
 use std::io;
 use std::sync::atomic::{AtomicU8, Ordering};
 
+use mc3b::client::EmulatorLink;
+use mc3b::codec::CommandCode;
 use parking_lot::Mutex;
-use MCCLPCI_IMP::mc3b::client::EmulatorLink;
-use MCCLPCI_IMP::mc3b::codec::CommandCode;
 
 use crate::circle;
 use crate::params::Limit;
