@@ -9,6 +9,7 @@ use mc3b::client::EmulatorLink;
 use mc3b::codec::CommandCode;
 use parking_lot::Mutex;
 
+use crate::checks::Op;
 use crate::circle;
 use crate::params::Limit;
 
