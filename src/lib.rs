@@ -4,8 +4,10 @@
 //! Layers, outermost first: [`ffi`] (the C entry points), [`system`] (the one
 //! process-wide system), [`engine`] and [`clock`] (the virtual card's tick thread),
 //! [`planner`] (pure trajectory math), [`config`] and [`vendor`] (the vendor's data),
-//! [`mc3b`] (the MC3B stepper controller: protocol, emulator, the bodies of its `mcl_*` C
-//! library), and at the bottom [`platform`] (what differs between Linux and Windows).
+//! [`mc3b`] (the MC3B stepper controller as the library uses it: the bodies of its `mcl_*`
+//! C library and the backend behind a card; the board's protocol, client and emulator
+//! are the workspace crate `mc3b`), and at the bottom [`platform`] (what differs between
+//! Linux and Windows).
 // The crate is named after the vendor's library (`MCCLPCI_IMP`), which the naming lint
 // checks at the root; every module but `ffi` and `vendor` (where the vendor's names
 // live) has the lint back.

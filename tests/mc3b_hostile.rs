@@ -22,9 +22,9 @@ use std::sync::{Arc, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use mc3b::emulator::Emulator;
 use serialport::{SerialPort, TTYPort};
 use MCCLPCI_IMP::ffi::mcl::*;
-use MCCLPCI_IMP::mc3b::emulator::Emulator;
 use MCCLPCI_IMP::mc3b::mcl::*;
 
 static LOCK: Mutex<()> = Mutex::new(());

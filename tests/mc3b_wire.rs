@@ -6,9 +6,10 @@ use common::emu::Emu;
 use std::process::Command as Proc;
 use std::time::Duration;
 
+use mc3b::client::{Client, ClientError, Transport};
+use mc3b::codec::{Command, CommandCode, ErrorCode, Response};
+use mc3b::serial::open_port;
 use serialport::TTYPort;
-use MCCLPCI_IMP::mc3b::client::{open_port, Client, ClientError, Transport};
-use MCCLPCI_IMP::mc3b::codec::{Command, CommandCode, ErrorCode, Response};
 
 fn connect(emu: &Emu) -> Client<TTYPort> {
     let port = open_port(&emu.path, Duration::from_millis(300)).expect("open pty");
@@ -121,7 +122,7 @@ fn device_errors_over_the_pty() {
     let err = |c: &mut Client<TTYPort>, raw: &[u8]| -> Response {
         c.transport().send(raw).expect("send");
         let mut buf = [0u8; 64];
-        let mut parser = MCCLPCI_IMP::mc3b::codec::ResponseParser::new();
+        let mut parser = mc3b::codec::ResponseParser::new();
         for _ in 0..50 {
             let n = c
                 .transport()

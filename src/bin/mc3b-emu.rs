@@ -5,10 +5,10 @@ use std::io::{self, BufRead, Read, Write};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
+use mc3b::codec::CommandCode;
+use mc3b::emulator::Emulator;
+use mc3b::serial::pseudo_terminal_pair;
 use serialport::SerialPort;
-use MCCLPCI_IMP::mc3b::codec::CommandCode;
-use MCCLPCI_IMP::mc3b::emulator::Emulator;
-use MCCLPCI_IMP::platform::pseudo_terminal_pair;
 
 /// Usage and control-channel documentation.
 const HELP: &str = "\

@@ -1,11 +1,9 @@
 #![warn(missing_docs)]
-//! RW Automation MC3B 3-channel stepper motor controller support.
+//! RW Automation MC3B 3-channel stepper motor controller support: the library's side.
+//! The board itself — its wire protocol, the client over a serial port, the emulator —
+//! is the workspace crate `mc3b` (`crates/mc3b`); this module is what the C library
+//! builds on it.
 //!
-//! * [`codec`]: typed commands and responses of the ASCII serial command
-//!   set (User's Guide §6), encoder, streaming parsers.
-//! * [`emulator`]: a deterministic device model (injectable 1 kHz clock).
-//! * [`client`]: command/response client over a byte transport (a serial
-//!   port at 19200 8N1, or an in-process emulator).
 //! * [`backend`]: the MC3B as the hardware behind a card of the virtual card
 //!   (`mc3b_port` in `MCCL_SIM`): unit conversions, jobs, the worker thread.
 //! * [`mcl`]: the MC3B's C library of §4 (`mcl_*`, exported with C linkage).
@@ -17,7 +15,4 @@
 //! says so and exits.
 
 pub mod backend;
-pub mod client;
-pub mod codec;
-pub mod emulator;
 pub mod mcl;

@@ -14,8 +14,6 @@
 //! | [`lock_memory`] (`MCCL_RT_LOCK=1`) | `mlockall` | refused: no equivalent |
 //! | [`request_slice`] (`MCCL_RT_SLICE_US`) | `sched_setattr`'s runtime | refused: no per-thread slice |
 //! | [`lower_thread_priority`] | nice 10 | `THREAD_PRIORITY_BELOW_NORMAL` |
-//! | [`SerialLine`], [`com_port_device`] | `TTYPort`; COM N is `/dev/ttyS<N-1>` | `COMPort`; COM N is `COMN` |
-//! | [`pseudo_terminal_pair`] (the MC3B emulator) | `openpty` | refused: Windows has none |
 //!
 //! A refusal is an `Err` whose message says what the system lacks; the callers turn it
 //! into their own message (the engine's real-time settings print one line and run on).
@@ -94,18 +92,4 @@ pub fn request_slice(us: u64) -> io::Result<()> {
 /// background thread such as the browser panel's).
 pub fn lower_thread_priority() -> io::Result<()> {
     os::lower_thread_priority()
-}
-
-/// A serial port of this system (`serialport::TTYPort` or `serialport::COMPort`).
-pub type SerialLine = os::SerialLine;
-
-/// The device name of COM port `n` (1 = COM1) when nothing else names it.
-pub fn com_port_device(n: u32) -> String {
-    os::com_port_device(n)
-}
-
-/// A connected pseudo-terminal pair `(master, slave)`: a serial line whose other end is
-/// this program (the MC3B emulator's). `Err` on a system without pseudo-terminals.
-pub fn pseudo_terminal_pair() -> io::Result<(SerialLine, SerialLine)> {
-    os::pseudo_terminal_pair()
 }

@@ -213,17 +213,6 @@ pub(super) fn lower_thread_priority() -> io::Result<()> {
     }
 }
 
-pub(super) type SerialLine = serialport::TTYPort;
-
-/// COM1 = `/dev/ttyS0`, the usual Linux name of the first serial port.
-pub(super) fn com_port_device(n: u32) -> String {
-    format!("/dev/ttyS{}", n.saturating_sub(1))
-}
-
-pub(super) fn pseudo_terminal_pair() -> io::Result<(SerialLine, SerialLine)> {
-    SerialLine::pair().map_err(io::Error::from)
-}
-
 #[cfg(all(test, any(target_os = "linux", target_os = "android")))]
 mod tests {
     use super::*;
@@ -267,11 +256,5 @@ mod tests {
         if let (Some(slice), true) = (slice, kernel_has_custom_slices()) {
             assert_eq!(slice, 100_000);
         }
-    }
-
-    #[test]
-    fn com_ports_are_the_serial_devices() {
-        assert_eq!(com_port_device(1), "/dev/ttyS0");
-        assert_eq!(com_port_device(77), "/dev/ttyS76");
     }
 }

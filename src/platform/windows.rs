@@ -168,21 +168,6 @@ pub(super) fn lower_thread_priority() -> io::Result<()> {
     set_thread_priority(THREAD_PRIORITY_BELOW_NORMAL)
 }
 
-pub(super) type SerialLine = serialport::COMPort;
-
-/// `COMn`; serialport opens it as `\\.\COMn`, which also reaches COM10 and above.
-pub(super) fn com_port_device(n: u32) -> String {
-    format!("COM{n}")
-}
-
-pub(super) fn pseudo_terminal_pair() -> io::Result<(SerialLine, SerialLine)> {
-    Err(io::Error::new(
-        io::ErrorKind::Unsupported,
-        "Windows has no pseudo-terminals, which the MC3B emulator needs: run it on Linux \
-         (on Windows the library talks to a real MC3B on COM<N>, or the port MCL_COM<N> names)",
-    ))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -199,17 +184,10 @@ mod tests {
     }
 
     #[test]
-    fn com_ports_are_named_comn() {
-        assert_eq!(com_port_device(1), "COM1");
-        assert_eq!(com_port_device(12), "COM12");
-    }
-
-    #[test]
     fn what_windows_lacks_is_refused_with_a_reason() {
         let e = lock_memory().unwrap_err();
         assert_eq!(e.kind(), io::ErrorKind::Unsupported);
         assert!(e.to_string().contains("mlockall"), "{e}");
-        assert!(pseudo_terminal_pair().is_err());
         assert!(request_slice(100).is_err());
     }
 }

@@ -5,9 +5,9 @@
 
 use super::super::tests::fresh;
 use super::*;
-use crate::mc3b::client::{EmulatorLink, Transport};
-use crate::mc3b::codec::CommandCode;
 use crate::mc3b::mcl::*;
+use ::mc3b::client::{EmulatorLink, Transport};
+use ::mc3b::codec::CommandCode;
 use std::io;
 use std::sync::{Arc, Mutex};
 use std::time::Duration;

@@ -3,8 +3,8 @@
 //! chords an arc becomes.
 
 use super::MOTORS;
-use crate::mc3b::codec::{ACCEL_RANGE, VELOCITY_RANGE};
 use crate::planner::{Axes, Path};
+use ::mc3b::codec::{ACCEL_RANGE, VELOCITY_RANGE};
 
 /// Most chords one arc is cut into (the tolerance is met below this).
 pub const MAX_CHORDS: usize = 1_000_000;

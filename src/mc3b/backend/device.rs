@@ -9,7 +9,8 @@ use super::limits::{motor_limits, LimitMasks};
 use super::link::Link;
 use super::worker::connect_with;
 use super::MOTORS;
-use crate::mc3b::client::{open_port, Transport};
+use ::mc3b::client::Transport;
+use ::mc3b::serial::open_port;
 
 /// An MC3B behind a card: the worker on its own thread. Dropping it stops a running job
 /// (`S`) and ends the thread; the port closes with it.
@@ -86,7 +87,7 @@ impl Drop for Device {
 /// Reply timeout of the backend: `MCL_TIMEOUT_MS` (a positive integer of ms, as for the
 /// `mcl_*` library) or 500 ms.
 pub fn reply_timeout() -> Duration {
-    crate::mc3b::client::timeout_from_env()
+    ::mc3b::client::timeout_from_env()
 }
 
 /// Opens the MC3B of every card of `sim` (among the first `cards`) that names an

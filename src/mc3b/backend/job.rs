@@ -2,7 +2,7 @@
 
 use super::convert::Speeds;
 use super::{ERR_MC3B_DEVICE, ERR_MC3B_LINK, MOTORS};
-use crate::mc3b::client::ClientError;
+use ::mc3b::client::ClientError;
 
 /// What a group hands to the device.
 #[derive(Debug, Clone, PartialEq)]

@@ -18,7 +18,7 @@
 //! counts the steps of every move the device acknowledged and then reported idle for:
 //! those are *confirmed*. A move stopped before its end (`S`) made an unknown number of
 //! steps: the worker then takes the position from a model of the device (an
-//! [`Emulator`](super::emulator::Emulator) fed the same acknowledged commands at the
+//! [`Emulator`](::mc3b::emulator::Emulator) fed the same acknowledged commands at the
 //! same times) — an estimate.
 //!
 //! Files: `convert.rs` (units, speeds, chords), `job.rs` (jobs, faults, reports),
@@ -29,7 +29,7 @@
 
 use std::time::Duration;
 
-use super::emulator::CHAIN_CAPACITY;
+use ::mc3b::emulator::CHAIN_CAPACITY;
 
 mod convert;
 mod device;

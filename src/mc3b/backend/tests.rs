@@ -2,8 +2,8 @@
 //! emulator's clock only moves when the worker waits, so every test is deterministic).
 
 use super::*;
-use crate::mc3b::client::{EmulatorLink, Transport};
-use crate::mc3b::codec::Command;
+use ::mc3b::client::{EmulatorLink, Transport};
+use ::mc3b::codec::Command;
 use std::collections::VecDeque;
 use std::io;
 use std::sync::Arc;

@@ -10,9 +10,9 @@ use super::job::{Fault, Job, Outcome, Report};
 use super::limits::LimitMasks;
 use super::link::Link;
 use super::{MOTORS, POLL_INTERVAL};
-use crate::mc3b::client::{Client, ClientError, MotorStatus, Transport};
-use crate::mc3b::codec::{Command, ErrorCode};
-use crate::mc3b::emulator::{Emulator, PRODUCT_ID};
+use ::mc3b::client::{Client, ClientError, MotorStatus, Transport};
+use ::mc3b::codec::{Command, ErrorCode};
+use ::mc3b::emulator::{Emulator, PRODUCT_ID};
 
 /// The device side: owns the client, runs jobs one at a time, keeps the step count and
 /// the model used for estimates.

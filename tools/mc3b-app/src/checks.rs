@@ -5,8 +5,8 @@
 //! A request that fails a check is answered with the field and the reason, and sends
 //! nothing.
 
+use mc3b::codec::{ACCEL_RANGE, CURRENT_RANGE, DEBOUNCE_RANGE, VELOCITY_RANGE};
 use serde::Deserialize;
-use MCCLPCI_IMP::mc3b::codec::{ACCEL_RANGE, CURRENT_RANGE, DEBOUNCE_RANGE, VELOCITY_RANGE};
 
 use crate::circle::{self, CirclePlan, CHORDS_RANGE, RADIUS_RANGE};
 use crate::params::{Limit, MotorParams};

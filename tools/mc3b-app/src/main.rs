@@ -6,11 +6,11 @@ use std::net::SocketAddr;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
+use mc3b::client::timeout_from_env;
 use mc3b_app::board::{serial_opener, Board};
 use mc3b_app::checks::Op;
 use mc3b_app::server::Http;
 use mc3b_app::shared::Shared;
-use MCCLPCI_IMP::mc3b::client::timeout_from_env;
 
 const HELP: &str = "\
 mc3b-app: the MC3B stepper controller's control application, as a page in the browser

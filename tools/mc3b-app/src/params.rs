@@ -6,8 +6,8 @@
 //! application's record: the §6.1 defaults after its `0I`, then every value the board
 //! acknowledged since.
 
+use mc3b::codec::Command;
 use serde::{Deserialize, Serialize};
-use MCCLPCI_IMP::mc3b::codec::Command;
 
 /// Controller ID of the MC3B (no daisy chaining, §4.2).
 pub const ID: u8 = 0;
@@ -204,7 +204,7 @@ impl Default for MotorParams {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use MCCLPCI_IMP::mc3b::codec::encode;
+    use mc3b::codec::encode;
 
     #[test]
     fn limit_masks_follow_the_guides_example() {

@@ -327,7 +327,8 @@ struct Block {
     cols: Vec<Columns>,
 }
 
-/// Largest distance, px, of a trace point from the drawn path (plus [`MERGE_PX`]).
+/// Largest distance, px, of a trace point from the drawn path (plus `MERGE_PX`, below
+/// which points merge).
 pub const PATH_TOL_PX: f64 = 0.75;
 /// Points closer than this to the last one kept for the check are not kept for it.
 const MERGE_PX: f64 = 0.2;

@@ -5,10 +5,11 @@ use super::*;
 use std::io;
 use std::sync::atomic::{AtomicU8, Ordering};
 
+use mc3b::client::EmulatorLink;
+use mc3b::codec::CommandCode;
 use parking_lot::Mutex;
-use MCCLPCI_IMP::mc3b::client::EmulatorLink;
-use MCCLPCI_IMP::mc3b::codec::CommandCode;
 
+use crate::checks::Op;
 use crate::circle;
 use crate::params::Limit;
 
