@@ -6,10 +6,9 @@
 //! helper which enters the boundary somewhere else is refused too: the boundary must be
 //! visible where the function is exported.
 //!
-//! A family of entry points declared by a `macro_rules!` macro (`pub extern "system" fn
-//! $name` in its expansion) is checked in the macro, once for all its members, and its members
-//! are counted from the macro's invocations, so the scan accounts for every vendor
-//! function: written out or made by a macro, 345 `MCC_*` names (docs/functions.md).
+//! Every exported function is written out in src/ffi (tests/exports_findable.rs), so the
+//! scan sees each one and accounts for every vendor function: 345 `MCC_*` names
+//! (docs/functions.md).
 
 use std::path::Path;
 
@@ -65,13 +64,13 @@ fn find_extern_fn(s: &str) -> Option<(usize, usize)> {
 }
 
 /// The next `extern "..." fn` at or after byte `from` of `src`: the byte after its
-/// `fn `, and its name (`$name` in a family macro's expansion).
+/// `fn `, and its name.
 fn next_extern_fn(src: &str, from: usize) -> Option<(usize, String)> {
     let (at, len) = find_extern_fn(&src[from..])?;
     let start = from + at + len;
     let name = src[start..]
         .chars()
-        .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '$')
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
         .collect();
     Some((start, name))
 }
@@ -109,61 +108,14 @@ fn offenders(src: &str) -> (usize, Vec<String>) {
     (found, bad)
 }
 
-/// The family macros of a file: those whose expansion exports a function
-/// (`extern "system" fn $name`).
-fn family_macros(src: &str) -> Vec<String> {
-    let b = src.as_bytes();
-    let mut out = Vec::new();
-    let mut from = 0;
-    while let Some(k) = src[from..].find("macro_rules! ") {
-        let start = from + k + "macro_rules! ".len();
-        let name: String = src[start..]
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_')
-            .collect();
-        let open = start + src[start..].find('{').expect("a macro body");
-        let end = matching(b, open).expect("a closed macro body");
-        if EXTERN_FNS
-            .iter()
-            .any(|k| src[open..end].contains(&format!("{k}$")))
-        {
-            out.push(name);
-        }
-        from = end;
-    }
-    out
-}
-
-/// The names of the functions a file exports: those written out (`extern "system" fn
-/// MCC_X`)
-/// and the members of the family macros `families` invoked in it, the `MCC_*`/`MCCL_*`
-/// names in each invocation (comments left out).
-fn exported_names(src: &str, families: &[String]) -> Vec<String> {
-    let b = src.as_bytes();
+/// The names of the functions a file exports (`extern "system" fn MCC_X`, `extern "C" fn
+/// mcl_x`).
+fn exported_names(src: &str) -> Vec<String> {
     let mut names = Vec::new();
     let mut from = 0;
     while let Some((start, name)) = next_extern_fn(src, from) {
-        if !name.starts_with('$') {
-            names.push(name);
-        }
+        names.push(name);
         from = start;
-    }
-    for family in families {
-        let call = format!("{family}! {{");
-        let mut at = 0;
-        while let Some(k) = src[at..].find(&call) {
-            let open = at + k + call.len() - 1;
-            let close = matching(b, open).expect("a closed macro invocation");
-            for line in src[open + 1..close].lines() {
-                let code = line.split("//").next().unwrap_or("");
-                names.extend(
-                    code.split(|c: char| !(c.is_alphanumeric() || c == '_'))
-                        .filter(|w| w.starts_with("MCC_") || w.starts_with("MCCL_"))
-                        .map(str::to_string),
-                );
-            }
-            at = close;
-        }
     }
     names
 }
@@ -183,13 +135,11 @@ fn every_exported_body_is_one_ffi_boundary() {
         let src = std::fs::read_to_string(&path).expect("a readable source file");
         sources.push((file.to_string(), src));
     }
-    // A family macro of mod.rs serves every file.
-    let families: Vec<String> = sources.iter().flat_map(|(_, s)| family_macros(s)).collect();
     let mut names = Vec::new();
     for (file, src) in &sources {
         let (n, b) = offenders(src);
         total += n;
-        names.extend(exported_names(src, &families));
+        names.extend(exported_names(src));
         bad.extend(b.into_iter().map(|f| format!("{file}: {f}")));
     }
     // Every vendor function (344 and MCC_SetLIORoutineEx, docs/functions.md) once; a
@@ -232,30 +182,4 @@ fn the_scan_refuses_a_body_outside_the_boundary() {
     assert_eq!(offenders(ok), (1, vec![]));
     assert_eq!(offenders(helper), (1, vec!["B".to_string()]));
     assert_eq!(offenders(after), (1, vec!["C".to_string()]));
-}
-
-#[test]
-fn the_scan_checks_and_counts_family_macros() {
-    let family = "macro_rules! fam {
-        ($($(#[$doc:meta])* $name:ident => $v:expr;)*) => {$(
-            $(#[$doc])*
-            #[no_mangle]
-            pub extern \"system\" fn $name(w: u16) -> c_int { ffi_boundary! { f(w, $v) } }
-        )*};
-    }
-    fam! {
-        /// Sets A (see [`MCC_Other`]).
-        MCC_SetA => 1;
-        MCC_SetB => 2;
-    }
-    pub extern \"C\" fn MCC_C() -> c_int { ffi_boundary! { g() } }";
-    assert_eq!(offenders(family), (2, vec![]));
-    let families = family_macros(family);
-    assert_eq!(families, ["fam"]);
-    assert_eq!(
-        exported_names(family, &families),
-        ["MCC_C", "MCC_SetA", "MCC_SetB"]
-    );
-    let bad = family.replace("{ ffi_boundary! { f(w, $v) } }", "{ f(w, $v) }");
-    assert_eq!(offenders(&bad), (2, vec!["$name".to_string()]));
 }

@@ -3,8 +3,8 @@
 //!
 //! Every function of the vendor table, bound to the Rust function-pointer type its C
 //! prototype spells: this file compiles only if each entry point exists with exactly that
-//! parameter list and return type, however it is declared (written out in `src/ffi` or made
-//! by one of its family macros). The C header `MCCL_Fun.h` is written from the same table.
+//! parameter list and return type. The C header `MCCL_Fun.h` is written from the same
+//! table.
 
 // Every module of src/ffi is searched; some export no vendor function (the simulation
 // extension).

@@ -37,44 +37,69 @@ unsafe fn ch_read<T>(
     unsafe { write_out(p, || with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))) }
 }
 
-/// Declares the settings of one ADC channel, each set and read by a pair: `$set(value,
-/// wChannel, wCardIndex)` calls `Adc::$setter(channel, value)`, `$get(pointer, wChannel,
-/// wCardIndex)` writes `Adc::$getter(channel)`.
-macro_rules! adc_channel_settings {
-    ($(
-        $(#[$set_doc:meta])* $set:ident($v:ident: $t:ty) => $setter:ident,
-        $(#[$get_doc:meta])* $get:ident($p:ident) => $getter:ident;
-    )*) => {$(
-        $(#[$set_doc])*
-        #[no_mangle]
-        pub extern "system" fn $set($v: $t, wChannel: WORD, wCardIndex: WORD) -> c_int {
-            ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.$setter(ch, $v)) }
-        }
-
-        pointer_fns! {
-            $(#[$get_doc])*
-            $get($p: $t; wChannel, wCardIndex)
-                = ch_read($p, wChannel, wCardIndex, |a, ch| a.$getter(ch));
-        }
-    )*};
+/// Sets a channel's conversion type: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` (−5..5 V) or
+/// `ADC_TYPE_UNI_DIFF`/`_UNI_SING` (0..10 V). Default `ADC_TYPE_BIP_DIFF`.
+#[no_mangle]
+pub extern "system" fn MCC_SetADCConvType(
+    wConvType: WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_conv_type(ch, wConvType)) }
 }
 
-adc_channel_settings! {
-    /// Sets a channel's conversion type: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` (−5..5 V) or
-    /// `ADC_TYPE_UNI_DIFF`/`_UNI_SING` (0..10 V). Default `ADC_TYPE_BIP_DIFF`.
-    MCC_SetADCConvType(wConvType: WORD) => set_conv_type,
-    /// Reads a channel's conversion type.
-    MCC_GetADCConvType(pwConvType) => conv_type;
-    /// Sets a channel's compare value (finite, −10..10 V).
-    MCC_SetADCCompValue(fValue: f32) => set_comp_value,
-    /// Reads a channel's compare value.
-    MCC_GetADCCompValue(pfValue) => comp_value;
+/// Reads a channel's conversion type.
+///
+/// # Safety
+/// `pwConvType` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetADCConvType(
+    pwConvType: *mut WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pwConvType, wChannel, wCardIndex, |a, ch| a.conv_type(ch)) }
+    }
 }
 
-pointer_fns! {
-    /// Reads the last converted voltage of a channel (0 before its first conversion).
-    MCC_GetADCInput(pfInput: f32; wChannel, wCardIndex)
-        = ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch));
+/// Sets a channel's compare value (finite, −10..10 V).
+#[no_mangle]
+pub extern "system" fn MCC_SetADCCompValue(fValue: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_value(ch, fValue)) }
+}
+
+/// Reads a channel's compare value.
+///
+/// # Safety
+/// `pfValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `f32`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetADCCompValue(
+    pfValue: *mut f32,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pfValue, wChannel, wCardIndex, |a, ch| a.comp_value(ch)) }
+    }
+}
+
+/// Reads the last converted voltage of a channel (0 before its first conversion).
+///
+/// # Safety
+/// `pfInput` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `f32`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetADCInput(
+    pfInput: *mut f32,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { ch_read(pfInput, wChannel, wCardIndex, |a, ch| a.input(ch)) }
+    }
 }
 
 /// Writes 1 while conversion runs (free mode started), 0 otherwise (a single conversion
@@ -95,52 +120,101 @@ pub unsafe extern "system" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardInd
     }
 }
 
-value_fns! {
-    /// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
-    /// free-running conversion).
-    MCC_SetADCConvMode(wConvMode: WORD; wCardIndex)
-        = card_do(wCardIndex, |p| p.adc.set_mode(wConvMode));
-    /// Chooses the channel `ADC_MODE_SINGLE` converts.
-    MCC_SetADCSingleChannel(wChannel, wCardIndex)
-        = ch_op(wChannel, wCardIndex, |a, ch| a.set_single_channel(ch));
-    /// Chooses the tagged channel (one at a time).
-    MCC_SetADCTagChannel(wChannel, wCardIndex)
-        = ch_op(wChannel, wCardIndex, |a, ch| a.set_tag_channel(ch));
-    /// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
-    /// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
-    MCC_SetADCCompMask(wMask: WORD; wCardIndex)
-        = card_do(wCardIndex, |p| p.adc.set_comp_mask(wMask));
-    /// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
-    /// `ADC_COMP_LEVEL` (2). Default `ADC_COMP_RISE`.
-    MCC_SetADCCompType(wCompType: WORD; wChannel, wCardIndex)
-        = ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_type(ch, wCompType));
-    /// Starts conversion: free mode converts every enabled channel once per tick from the
-    /// next tick on; single mode converts the single channel now (its interrupts follow the
-    /// next tick).
-    MCC_StartADCConv(wCardIndex) = card_do(wCardIndex, |p| p.start_adc());
-    /// Stops free-running conversion (the last values stay readable).
-    MCC_StopADCConv(wCardIndex) = card_do(wCardIndex, |p| p.adc.stop());
+/// Sets the conversion mode: `ADC_MODE_FREE` (default) or `ADC_MODE_SINGLE` (which stops
+/// free-running conversion).
+#[no_mangle]
+pub extern "system" fn MCC_SetADCConvMode(wConvMode: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_mode(wConvMode)) }
 }
 
-on_off! {
-    /// Every completed conversion calls the ADC routine with `CONV` set.
-    MCC_EnableADCConvTrigger,
-    /// Completed conversions no longer call the ADC routine.
-    MCC_DisableADCConvTrigger(wCardIndex: WORD)
-        = |on| card_do(wCardIndex, |p| p.adc.set_conv_trigger(on));
-    /// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
-    MCC_EnableADCTagTrigger,
-    /// Conversions of the tagged channel no longer call the ADC routine.
-    MCC_DisableADCTagTrigger(wCardIndex: WORD)
-        = |on| card_do(wCardIndex, |p| p.adc.set_tag_trigger(on));
-    /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
-    MCC_EnableADCCompTrigger,
-    /// The channel's comparator no longer calls the ADC routine.
-    MCC_DisableADCCompTrigger(wChannel: WORD, wCardIndex: WORD)
-        = |on| ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, on));
-    /// Lets a channel convert in free mode.
-    MCC_EnableADCConvChannel,
-    /// Stops a channel converting in free mode.
-    MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD)
-        = |on| ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, on));
+/// Chooses the channel `ADC_MODE_SINGLE` converts.
+#[no_mangle]
+pub extern "system" fn MCC_SetADCSingleChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_single_channel(ch)) }
+}
+
+/// Chooses the tagged channel (one at a time).
+#[no_mangle]
+pub extern "system" fn MCC_SetADCTagChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_tag_channel(ch)) }
+}
+
+/// Ignores the 0..3 lowest bits of the 12-bit codes in every comparator
+/// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
+#[no_mangle]
+pub extern "system" fn MCC_SetADCCompMask(wMask: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_comp_mask(wMask)) }
+}
+
+/// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
+/// `ADC_COMP_LEVEL` (2). Default `ADC_COMP_RISE`.
+#[no_mangle]
+pub extern "system" fn MCC_SetADCCompType(
+    wCompType: WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_type(ch, wCompType)) }
+}
+
+/// Starts conversion: free mode converts every enabled channel once per tick from the
+/// next tick on; single mode converts the single channel now (its interrupts follow the
+/// next tick).
+#[no_mangle]
+pub extern "system" fn MCC_StartADCConv(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.start_adc()) }
+}
+
+/// Stops free-running conversion (the last values stay readable).
+#[no_mangle]
+pub extern "system" fn MCC_StopADCConv(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.stop()) }
+}
+
+/// Every completed conversion calls the ADC routine with `CONV` set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableADCConvTrigger(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_conv_trigger(true)) }
+}
+
+/// Completed conversions no longer call the ADC routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableADCConvTrigger(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_conv_trigger(false)) }
+}
+
+/// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableADCTagTrigger(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_tag_trigger(true)) }
+}
+
+/// Conversions of the tagged channel no longer call the ADC routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableADCTagTrigger(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_tag_trigger(false)) }
+}
+
+/// A comparator crossing of the channel calls the ADC routine with `COMPn` set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, true)) }
+}
+
+/// The channel's comparator no longer calls the ADC routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableADCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_comp_trigger(ch, false)) }
+}
+
+/// Lets a channel convert in free mode.
+#[no_mangle]
+pub extern "system" fn MCC_EnableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, true)) }
+}
+
+/// Stops a channel converting in free mode.
+#[no_mangle]
+pub extern "system" fn MCC_DisableADCConvChannel(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { ch_op(wChannel, wCardIndex, |a, ch| a.set_channel(ch, false)) }
 }

@@ -8,19 +8,66 @@
 use super::finite;
 use super::motion::{queue_spiral, SpiralTo};
 use crate::error::McclResult;
-use crate::planner::Path;
-use crate::vendor::WORD;
+use crate::planner::{Path, Plane};
+use crate::vendor::{BYTE, WORD};
 use std::os::raw::c_int;
 
-// Declared with the obsolete helices of the same planes (`plane_spirals!`); their Rust
-// path stays here.
-pub use super::motion::{MCC_ConeXY_Z, MCC_ConeYZ_X, MCC_ConeZX_Y};
-
-/// Queues the conical helix `s` whose radius changes by `rate` per turn; the entry points
-/// are declared with the obsolete helices (`plane_spirals!`, src/ffi/motion.rs).
-pub(super) fn cone(s: SpiralTo, rate: f64, g: WORD) -> McclResult<c_int> {
+/// Queues the conical helix `s` whose radius changes by `rate` per turn.
+fn cone(s: SpiralTo, rate: f64, g: WORD) -> McclResult<c_int> {
     let rate = finite(rate)?;
     queue_spiral(s, g, |from, c, to, pitch, ccw| {
         Path::cone(s.at.plane, from, c, to, pitch, rate, ccw)
     })
+}
+
+/// Conical helix about (dfCX, dfCY) in direction byCirDir until Z reaches dfPos, Z
+/// moving dfPitch per turn and the radius changing by CenterRate per turn.
+#[no_mangle]
+pub extern "system" fn MCC_ConeXY_Z(
+    dfCX: f64,
+    dfCY: f64,
+    dfPos: f64,
+    dfPitch: f64,
+    CenterRate: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = SpiralTo::new(Plane::XY, [dfCX, dfCY], dfPos, dfPitch, byCirDir);
+        cone(s, CenterRate, wGroupIndex)
+    }
+}
+
+/// Conical helix about (dfCY, dfCZ) until X reaches dfPos (see [`MCC_ConeXY_Z`]).
+#[no_mangle]
+pub extern "system" fn MCC_ConeYZ_X(
+    dfCY: f64,
+    dfCZ: f64,
+    dfPos: f64,
+    dfPitch: f64,
+    CenterRate: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = SpiralTo::new(Plane::YZ, [dfCY, dfCZ], dfPos, dfPitch, byCirDir);
+        cone(s, CenterRate, wGroupIndex)
+    }
+}
+
+/// Conical helix about (dfCZ, dfCX) until Y reaches dfPos (see [`MCC_ConeXY_Z`]).
+#[no_mangle]
+pub extern "system" fn MCC_ConeZX_Y(
+    dfCZ: f64,
+    dfCX: f64,
+    dfPos: f64,
+    dfPitch: f64,
+    CenterRate: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = SpiralTo::new(Plane::ZX, [dfCZ, dfCX], dfPos, dfPitch, byCirDir);
+        cone(s, CenterRate, wGroupIndex)
+    }
 }

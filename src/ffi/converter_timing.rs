@@ -33,50 +33,57 @@ fn on_cadence(
     Ok(c::NO_ERR)
 }
 
-/// Declares the clock divider and update rate setters of a converter of the card:
-/// `$divider(wDivider, wCardIndex)` and `$rate(dfUpdateRate, wCardIndex)` set the cadence
-/// of `Peripherals::$conv` (`INITIAL_MOTION_ERR` before init whatever the arguments).
-macro_rules! converter_timing {
-    ($(
-        $(#[$divider_doc:meta])* $divider:ident,
-        $(#[$rate_doc:meta])* $rate:ident => $conv:ident;
-    )*) => {$(
-        $(#[$divider_doc])*
-        #[no_mangle]
-        pub extern "system" fn $divider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-            ffi_boundary! {
-                initialised()?;
-                on_cadence(wCardIndex, |p| &mut p.$conv.cadence, |t| t.set_divider(wDivider))
-            }
-        }
-
-        $(#[$rate_doc])*
-        #[no_mangle]
-        pub extern "system" fn $rate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-            ffi_boundary! {
-                initialised()?;
-                let r = rate(dfUpdateRate)?;
-                on_cadence(wCardIndex, |p| &mut p.$conv.cadence, |t| t.set_update_rate(r))
-            }
-        }
-    )*};
+/// Sets the clock divider of the cadence `pick` chooses on card `wCardIndex`
+/// (`INITIAL_MOTION_ERR` before init whatever the arguments).
+fn set_divider(
+    wDivider: WORD,
+    wCardIndex: WORD,
+    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
+) -> McclResult<c_int> {
+    initialised()?;
+    on_cadence(wCardIndex, pick, |t| t.set_divider(wDivider))
 }
 
-converter_timing! {
-    /// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
-    /// update (16 bits) lasts `16 × wDivider × 10 ns`, and its output changes at most once
-    /// per update.
-    MCC_SetDACClockDivider,
-    /// At most `dfUpdateRate` updates per second (Hz, > 0) on each D/A channel: a value
-    /// written sooner than `1 / rate` after the channel's last change waits for it.
-    MCC_SetDACUpdateRate => dac;
-    /// A/D clock: one conversion clock every `wDivider` system clocks (1..65535, default
-    /// 50); a free-running scan lasts `16 × enabled channels × wDivider × 10 ns`. The scan
-    /// count restarts at the call.
-    MCC_SetADCClockDivider,
-    /// At most `dfUpdateRate` free-running scans per second (Hz, > 0). The scan count
-    /// restarts at the call.
-    MCC_SetADCUpdateRate => adc;
+/// Sets the update rate of the cadence `pick` chooses on card `wCardIndex`
+/// (`INITIAL_MOTION_ERR` before init whatever the arguments, then the rate is checked).
+fn set_update_rate(
+    dfUpdateRate: f64,
+    wCardIndex: WORD,
+    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
+) -> McclResult<c_int> {
+    initialised()?;
+    let r = rate(dfUpdateRate)?;
+    on_cadence(wCardIndex, pick, |t| t.set_update_rate(r))
+}
+
+/// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
+/// update (16 bits) lasts `16 × wDivider × 10 ns`, and its output changes at most once
+/// per update.
+#[no_mangle]
+pub extern "system" fn MCC_SetDACClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_divider(wDivider, wCardIndex, |p| &mut p.dac.cadence) }
+}
+
+/// At most `dfUpdateRate` updates per second (Hz, > 0) on each D/A channel: a value
+/// written sooner than `1 / rate` after the channel's last change waits for it.
+#[no_mangle]
+pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_update_rate(dfUpdateRate, wCardIndex, |p| &mut p.dac.cadence) }
+}
+
+/// A/D clock: one conversion clock every `wDivider` system clocks (1..65535, default
+/// 50); a free-running scan lasts `16 × enabled channels × wDivider × 10 ns`. The scan
+/// count restarts at the call.
+#[no_mangle]
+pub extern "system" fn MCC_SetADCClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_divider(wDivider, wCardIndex, |p| &mut p.adc.cadence) }
+}
+
+/// At most `dfUpdateRate` free-running scans per second (Hz, > 0). The scan count
+/// restarts at the call.
+#[no_mangle]
+pub extern "system" fn MCC_SetADCUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_update_rate(dfUpdateRate, wCardIndex, |p| &mut p.adc.cadence) }
 }
 
 /// Serial clock of a RIO set: one bit every `wDivider` system clocks (1..65535, default

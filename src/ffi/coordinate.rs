@@ -1,7 +1,7 @@
 //! Coordinate management (user manual §2.6.1, §2.6.5; vendor header "Coordinate
 //! Management").
 
-use super::{axis_mask, index, read_published, with_group};
+use super::{axis_mask, index, read_published, with_group, write_outs};
 use crate::error::{McclError, McclResult};
 use crate::system;
 use crate::vendor::consts as c;
@@ -44,24 +44,101 @@ fn pulse_pos(g: WORD) -> McclResult<[i64; 8]> {
     Ok(published.load_pulses(&shared.compensation(g)))
 }
 
-per_axis_getters! {
-    /// Current position as the machine counts it: the pulse count in UU (whole pulses, as
-    /// the vendor's library reports), which `MCC_DefineOrigin` does not move. Under the
-    /// fast and stepped clocks a read repeated at the same virtual time while the group
-    /// moves runs one tick, so a program that waits by reading positions makes progress.
-    MCC_GetCurPos(f64; wGroupIndex)
-        = cur_pos(wGroupIndex);
-    /// Current position in the program's coordinates, the frame commands' targets are in
-    /// (`MCC_DefineOrigin` makes an axis's 0 here), whole pulses in UU.
-    MCC_GetCurRefPos(f64; wGroupIndex)
-        = read_published(wGroupIndex, |p| p.load_program_pos());
-    /// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
-    /// sign reversed when wPosToEncoderDir is nonzero.
-    MCC_GetPulsePos(c_long; wGroupIndex)
-        = pulse_pos(wGroupIndex).map(|p| p.map(|v| v as c_long));
-    /// [`MCC_GetPulsePos`] with 64-bit results on every platform.
-    MCC_GetPulsePosEx(c_longlong; wGroupIndex)
-        = pulse_pos(wGroupIndex);
+/// Current position as the machine counts it: the pulse count in UU (whole pulses, as
+/// the vendor's library reports), which `MCC_DefineOrigin` does not move. Under the
+/// fast and stepped clocks a read repeated at the same virtual time while the group
+/// moves runs one tick, so a program that waits by reading positions makes progress.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetCurPos(
+    p0: *mut f64,
+    p1: *mut f64,
+    p2: *mut f64,
+    p3: *mut f64,
+    p4: *mut f64,
+    p5: *mut f64,
+    p6: *mut f64,
+    p7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || cur_pos(wGroupIndex)) }
+    }
+}
+
+/// Current position in the program's coordinates, the frame commands' targets are in
+/// (`MCC_DefineOrigin` makes an axis's 0 here), whole pulses in UU.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetCurRefPos(
+    p0: *mut f64,
+    p1: *mut f64,
+    p2: *mut f64,
+    p3: *mut f64,
+    p4: *mut f64,
+    p5: *mut f64,
+    p6: *mut f64,
+    p7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || read_published(wGroupIndex, |p| p.load_program_pos())) }
+    }
+}
+
+/// Pulse position per axis: round(reference position x dwPPR x dfGearRatio / dfPitch),
+/// sign reversed when wPosToEncoderDir is nonzero.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPulsePos(
+    p0: *mut c_long,
+    p1: *mut c_long,
+    p2: *mut c_long,
+    p3: *mut c_long,
+    p4: *mut c_long,
+    p5: *mut c_long,
+    p6: *mut c_long,
+    p7: *mut c_long,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || pulse_pos(wGroupIndex).map(|p| p.map(|v| v as c_long))) }
+    }
+}
+
+/// [`MCC_GetPulsePos`] with 64-bit results on every platform.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPulsePosEx(
+    p0: *mut c_longlong,
+    p1: *mut c_longlong,
+    p2: *mut c_longlong,
+    p3: *mut c_longlong,
+    p4: *mut c_longlong,
+    p5: *mut c_longlong,
+    p6: *mut c_longlong,
+    p7: *mut c_longlong,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || pulse_pos(wGroupIndex)) }
+    }
 }
 
 /// The current position of one axis becomes 0 (only while the group is stopped,

@@ -28,32 +28,63 @@ fn on_channel<D: Done>(
     Ok(c::NO_ERR)
 }
 
-value_fns! {
-    /// Outputs `fVoltage` (−10..10 V) on a DAC channel.
-    MCC_SetDACOutput(fVoltage: f32; wChannel, wCardIndex)
-        = on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage));
-    /// Presets the voltage (−10..10 V) a channel outputs when its trigger source fires.
-    MCC_SetDACTriggerOutput(fVoltage: f32; wChannel, wCardIndex)
-        = on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_output(ch, fVoltage));
-    /// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
-    /// channel n of the same card); other bits are `PARAMETER_ERR`.
-    MCC_SetDACTriggerSource(dwSource: DWORD; wChannel, wCardIndex)
-        = on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_source(ch, dwSource));
+/// Outputs `fVoltage` (−10..10 V) on a DAC channel.
+#[no_mangle]
+pub extern "system" fn MCC_SetDACOutput(fVoltage: f32, wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_output(ch, fVoltage)) }
 }
 
-on_off! {
-    /// Turns a channel's trigger mode on.
-    MCC_EnableDACTriggerMode,
-    /// Turns a channel's trigger mode off.
-    MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD)
-        = |on| on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, on));
+/// Presets the voltage (−10..10 V) a channel outputs when its trigger source fires.
+#[no_mangle]
+pub extern "system" fn MCC_SetDACTriggerOutput(
+    fVoltage: f32,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        on_channel(wChannel, wCardIndex, |d, ch| {
+            d.set_trigger_output(ch, fVoltage)
+        })
+    }
 }
 
-value_fns! {
-    /// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
-    /// from `MCC_InitSystem` on.
-    MCC_StartDACConv(wCardIndex) = card_do(wCardIndex, |p| p.dac.set_running(true));
-    /// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
-    /// kept).
-    MCC_StopDACConv(wCardIndex) = card_do(wCardIndex, |p| p.dac.set_running(false));
+/// Sets a channel's trigger sources: a mask of `DAC_TRIG_ENC0..7` (encoder compare of
+/// channel n of the same card); other bits are `PARAMETER_ERR`.
+#[no_mangle]
+pub extern "system" fn MCC_SetDACTriggerSource(
+    dwSource: DWORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        on_channel(wChannel, wCardIndex, |d, ch| {
+            d.set_trigger_source(ch, dwSource)
+        })
+    }
+}
+
+/// Turns a channel's trigger mode on.
+#[no_mangle]
+pub extern "system" fn MCC_EnableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, true)) }
+}
+
+/// Turns a channel's trigger mode off.
+#[no_mangle]
+pub extern "system" fn MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { on_channel(wChannel, wCardIndex, |d, ch| d.set_trigger_mode(ch, false)) }
+}
+
+/// (Re)starts D/A conversion: the set voltages appear on the outputs. Conversion runs
+/// from `MCC_InitSystem` on.
+#[no_mangle]
+pub extern "system" fn MCC_StartDACConv(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_running(true)) }
+}
+
+/// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
+/// kept).
+#[no_mangle]
+pub extern "system" fn MCC_StopDACConv(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_running(false)) }
 }

@@ -12,17 +12,46 @@ use crate::vendor::DWORD;
 use crate::vendor::WORD;
 use std::os::raw::{c_int, c_long, c_longlong};
 
-pointer_fns! {
-    /// The encoder count of a channel.
-    MCC_GetENCValue(plValue: c_long; wChannel, wCardIndex) = write_out(plValue, || {
-        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
-            Ok(ch.encoder() as c_long)
-        })
-    });
-    /// The encoder count of a channel, 64-bit.
-    MCC_GetENCValueEx(pllValue: c_longlong; wChannel, wCardIndex) = write_out(pllValue, || {
-        with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
-    });
+/// The encoder count of a channel.
+///
+/// # Safety
+/// `plValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `c_long`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetENCValue(
+    plValue: *mut c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(plValue, || {
+                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| {
+                    Ok(ch.encoder() as c_long)
+                })
+            })
+        }
+    }
+}
+
+/// The encoder count of a channel, 64-bit.
+///
+/// # Safety
+/// `pllValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `c_longlong`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetENCValueEx(
+    pllValue: *mut c_longlong,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pllValue, || {
+                with_machine_channel(Channel(wChannel), Card(wCardIndex), |ch| Ok(ch.encoder()))
+            })
+        }
+    }
 }
 
 /// Sets the encoder count of a channel to `lValue` (|lValue| <= 1e18; the motor does not
@@ -171,36 +200,107 @@ pub extern "system" fn MCC_SetENCLatchSource(
     }
 }
 
-pointer_fns! {
-    /// The latched count of a channel (0 until something was latched).
-    MCC_GetENCLatchValue(plLatchValue: c_long; wChannel, wCardIndex) = write_out(plLatchValue, || {
-        channel_triggers(wChannel, wCardIndex, |t, ch| t.latch_value(ch) as c_long)
-    });
-    /// 1 when an index pulse of the channel passed since the last read (the read clears it).
-    MCC_GetENCIndexStatus(pwStatus: WORD; wChannel, wCardIndex) = write_out(pwStatus, || {
-        channel_triggers(wChannel, wCardIndex, |t, ch| WORD::from(t.take_index_status(ch)))
-    });
-    /// The armed compare value of a channel (0 when the stock is empty).
-    MCC_GetENCCompValue(lValue: c_long; wChannel, wCardIndex) = write_out(lValue, || {
-        channel_triggers(wChannel, wCardIndex, |t, ch| t.armed_compare(ch) as c_long)
-    });
-    /// How many compare values of the channel are waiting (the armed one included).
-    MCC_GetENCCompStockCount(wCount: WORD; wChannel, wCardIndex) = write_out(wCount, || {
-        channel_triggers(wChannel, wCardIndex, |t, ch| word_count(t.stock_count(ch)))
-    });
+/// The latched count of a channel (0 until something was latched).
+///
+/// # Safety
+/// `plLatchValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `c_long`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetENCLatchValue(
+    plLatchValue: *mut c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(plLatchValue, || {
+                channel_triggers(wChannel, wCardIndex, |t, ch| t.latch_value(ch) as c_long)
+            })
+        }
+    }
 }
 
-on_off! {
-    /// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
-    /// passes.
-    MCC_EnableENCIndexTrigger,
-    /// Index pulses no longer call the encoder routine.
-    MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) = |on| {
-        set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
-            t.index_enabled[ch] = on;
-            Ok(())
-        })
-    };
+/// 1 when an index pulse of the channel passed since the last read (the read clears it).
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetENCIndexStatus(
+    pwStatus: *mut WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                channel_triggers(wChannel, wCardIndex, |t, ch| {
+                    WORD::from(t.take_index_status(ch))
+                })
+            })
+        }
+    }
+}
+
+/// The armed compare value of a channel (0 when the stock is empty).
+///
+/// # Safety
+/// `lValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `c_long`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetENCCompValue(
+    lValue: *mut c_long,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(lValue, || {
+                channel_triggers(wChannel, wCardIndex, |t, ch| t.armed_compare(ch) as c_long)
+            })
+        }
+    }
+}
+
+/// How many compare values of the channel are waiting (the armed one included).
+///
+/// # Safety
+/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetENCCompStockCount(
+    wCount: *mut WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(wCount, || {
+                channel_triggers(wChannel, wCardIndex, |t, ch| word_count(t.stock_count(ch)))
+            })
+        }
+    }
+}
+
+/// Index pulses of the channel call the encoder routine (`on`) or not.
+fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
+        t.index_enabled[ch] = on;
+        Ok(())
+    })
+}
+
+/// The encoder routine is called (`ENCINT.INDEXn`) when an index pulse of the channel
+/// passes.
+#[no_mangle]
+pub extern "system" fn MCC_EnableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { index_trigger(wChannel, wCardIndex, true) }
+}
+
+/// Index pulses no longer call the encoder routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableENCIndexTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { index_trigger(wChannel, wCardIndex, false) }
 }
 
 /// Adds a compare value to the channel's stock: when the count reaches it the encoder
@@ -236,16 +336,24 @@ pub extern "system" fn MCC_SetENCCompValueTab(
     }
 }
 
-on_off! {
-    /// The channel's compare stock is active: values fire as the count reaches them.
-    MCC_EnableENCCompTrigger,
-    /// The channel's compare stock stops firing (the values stay).
-    MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) = |on| {
-        set_channel_triggers(wChannel, wCardIndex, |t, ch, chans| {
-            t.set_compare_trigger(ch, on, chans);
-            Ok(())
-        })
-    };
+/// The channel's compare stock fires (`on`) or not.
+fn compare_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
+    set_channel_triggers(wChannel, wCardIndex, |t, ch, chans| {
+        t.set_compare_trigger(ch, on, chans);
+        Ok(())
+    })
+}
+
+/// The channel's compare stock is active: values fire as the count reaches them.
+#[no_mangle]
+pub extern "system" fn MCC_EnableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { compare_trigger(wChannel, wCardIndex, true) }
+}
+
+/// The channel's compare stock stops firing (the values stay).
+#[no_mangle]
+pub extern "system" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { compare_trigger(wChannel, wCardIndex, false) }
 }
 
 /// Removes every compare value of the channel.

@@ -34,13 +34,27 @@ fn home(orders: [c_int; 8], wCardIndex: WORD) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-per_axis_setters! {
-    /// Homes the channels of card `wCardIndex` (user manual §2.8.2): `nOrder0..7` is the
-    /// order of channel 0..7, 0..7 (lower orders first, equal orders together) or 255 to
-    /// leave the channel out. Returns at once; `MCC_GetGoHomeStatus` says when it is done.
-    /// One card at a time: `COMMAND_NOTFINISHED_ERR` while a homing runs, or while a group
-    /// driving one of the channels has motion to do.
-    MCC_Home(c_int; wCardIndex) = |v| home(v, wCardIndex);
+/// Homes the channels of card `wCardIndex` (user manual §2.8.2): `nOrder0..7` is the
+/// order of channel 0..7, 0..7 (lower orders first, equal orders together) or 255 to
+/// leave the channel out. Returns at once; `MCC_GetGoHomeStatus` says when it is done.
+/// One card at a time: `COMMAND_NOTFINISHED_ERR` while a homing runs, or while a group
+/// driving one of the channels has motion to do.
+#[no_mangle]
+pub extern "system" fn MCC_Home(
+    v0: c_int,
+    v1: c_int,
+    v2: c_int,
+    v3: c_int,
+    v4: c_int,
+    v5: c_int,
+    v6: c_int,
+    v7: c_int,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        home(v, wCardIndex)
+    }
 }
 
 /// 1 when the last `MCC_Home` has completed, 0 while it runs (user manual §2.8.2), and

@@ -178,43 +178,87 @@ pub extern "system" fn MCC_Line_V6(
     }
 }
 
-/// Declares the V6 curves through two points:
-/// `$name(x0, y0, z0, x1, y1, z1, rx, ry, rz, posture, wGroupIndex, dwAxisMask)` builds
-/// `$path(from, p1, p2, orientation)` from the current point by way of (x0, y0, z0) and
-/// (x1, y1, z1), the orientation going linearly to (rx, ry, rz) (components outside
-/// `dwAxisMask` stay).
-macro_rules! two_point_curves_v6 {
-    ($($(#[$doc:meta])* $name:ident => $path:path, $kind:expr;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            x0: f64, y0: f64, z0: f64,
-            x1: f64, y1: f64, z1: f64,
-            rx: f64, ry: f64, rz: f64,
-            posture: DWORD, wGroupIndex: WORD, dwAxisMask: DWORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let (p1, p2) = (finite3([x0, y0, z0])?, finite3([x1, y1, z1])?);
-                let r = finite3([rx, ry, rz])?;
-                let m = super::axis_mask(dwAxisMask)?;
-                queue_v6_curve(wGroupIndex, posture, $kind, |ctx| {
-                    let (p1, p2) = (point3(ctx, p1), point3(ctx, p2));
-                    let aux = orientation(ctx, r, Some(m));
-                    check_curve(ctx, &[p1, p2], &aux)?;
-                    $path(&ctx.from, p1, p2, Some(aux))
-                })
-            }
-        }
-    )*};
+/// The V6 curves through two points.
+#[derive(Clone, Copy)]
+enum TwoPoint {
+    /// `MCC_Arc_V6`: from the current point by way of the first point to the second.
+    Arc,
+    /// `MCC_Circle_V6`: a full circle from the current point through both points back to it.
+    Circle,
 }
 
-two_point_curves_v6! {
-    /// 3-D arc from the current point through (x0, y0, z0) to (x1, y1, z1), the orientation
-    /// going linearly to (rx, ry, rz) (components outside `dwAxisMask` stay).
-    MCC_Arc_V6 => Path::arc_3pt_xyz, Curve::ThreePoint;
-    /// Full circle from the current point through (x0, y0, z0) and (x1, y1, z1) back to
-    /// it; the orientation goes linearly to (rx, ry, rz) over the turn.
-    MCC_Circle_V6 => Path::circle_3pt_xyz, Curve::Arc;
+/// Queues the V6 curve `curve` from the current point by way of the points `pts[0]` and
+/// `pts[1]`, the orientation going linearly to `pts[2]` (RX, RY, RZ; components outside
+/// `dwAxisMask` stay).
+fn two_point_v6(
+    curve: TwoPoint,
+    pts: [[f64; 3]; 3],
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> McclResult<c_int> {
+    let kind = match curve {
+        TwoPoint::Arc => Curve::ThreePoint,
+        TwoPoint::Circle => Curve::Arc,
+    };
+    let (p1, p2) = (finite3(pts[0])?, finite3(pts[1])?);
+    let r = finite3(pts[2])?;
+    let m = super::axis_mask(dwAxisMask)?;
+    queue_v6_curve(wGroupIndex, posture, kind, |ctx| {
+        let (p1, p2) = (point3(ctx, p1), point3(ctx, p2));
+        let aux = orientation(ctx, r, Some(m));
+        check_curve(ctx, &[p1, p2], &aux)?;
+        match curve {
+            TwoPoint::Arc => Path::arc_3pt_xyz(&ctx.from, p1, p2, Some(aux)),
+            TwoPoint::Circle => Path::circle_3pt_xyz(&ctx.from, p1, p2, Some(aux)),
+        }
+    })
+}
+
+/// 3-D arc from the current point through (x0, y0, z0) to (x1, y1, z1), the orientation
+/// going linearly to (rx, ry, rz) (components outside `dwAxisMask` stay).
+#[no_mangle]
+pub extern "system" fn MCC_Arc_V6(
+    x0: f64,
+    y0: f64,
+    z0: f64,
+    x1: f64,
+    y1: f64,
+    z1: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let pts = [[x0, y0, z0], [x1, y1, z1], [rx, ry, rz]];
+        two_point_v6(TwoPoint::Arc, pts, posture, wGroupIndex, dwAxisMask)
+    }
+}
+
+/// Full circle from the current point through (x0, y0, z0) and (x1, y1, z1) back to
+/// it; the orientation goes linearly to (rx, ry, rz) over the turn.
+#[no_mangle]
+pub extern "system" fn MCC_Circle_V6(
+    x0: f64,
+    y0: f64,
+    z0: f64,
+    x1: f64,
+    y1: f64,
+    z1: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    posture: DWORD,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let pts = [[x0, y0, z0], [x1, y1, z1], [rx, ry, rz]];
+        two_point_v6(TwoPoint::Circle, pts, posture, wGroupIndex, dwAxisMask)
+    }
 }
 
 /// Arc of `theta` degrees (> 0 counter-clockwise seen from the tip of the normal) about
@@ -273,34 +317,59 @@ fn circle_plane(
     })
 }
 
-/// Declares the V6 full circles of one plane: `$name(c0, c1, rx, ry, rz, byCirDir,
-/// posture, wGroupIndex)` circles about `(c0, c1)` of `Plane::$plane`, the orientation
-/// going linearly to (rx, ry, rz) over the turn.
-macro_rules! plane_circles_v6 {
-    ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            $c0: f64, $c1: f64,
-            rx: f64, ry: f64, rz: f64,
-            byCirDir: BYTE, posture: DWORD, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let center = [$c0, $c1];
-                circle_plane(Plane::$plane, center, [rx, ry, rz], byCirDir, posture, wGroupIndex)
-            }
-        }
-    )*};
+/// Full circle about (cx, cy) in the XY plane (`CIR_CW`/`CIR_CCW` seen from +Z); the
+/// orientation goes linearly to (rx, ry, rz) over the turn.
+#[no_mangle]
+pub extern "system" fn MCC_CircleXY_V6(
+    cx: f64,
+    cy: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    byCirDir: BYTE,
+    posture: DWORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let (center, r) = ([cx, cy], [rx, ry, rz]);
+        circle_plane(Plane::XY, center, r, byCirDir, posture, wGroupIndex)
+    }
 }
 
-plane_circles_v6! {
-    /// Full circle about (cx, cy) in the XY plane (`CIR_CW`/`CIR_CCW` seen from +Z); the
-    /// orientation goes linearly to (rx, ry, rz) over the turn.
-    MCC_CircleXY_V6(cx, cy) => XY;
-    /// [`MCC_CircleXY_V6`] in the YZ plane about (cy, cz), seen from +X.
-    MCC_CircleYZ_V6(cy, cz) => YZ;
-    /// [`MCC_CircleXY_V6`] in the ZX plane about (cz, cx), seen from +Y.
-    MCC_CircleZX_V6(cz, cx) => ZX;
+/// [`MCC_CircleXY_V6`] in the YZ plane about (cy, cz), seen from +X.
+#[no_mangle]
+pub extern "system" fn MCC_CircleYZ_V6(
+    cy: f64,
+    cz: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    byCirDir: BYTE,
+    posture: DWORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let (center, r) = ([cy, cz], [rx, ry, rz]);
+        circle_plane(Plane::YZ, center, r, byCirDir, posture, wGroupIndex)
+    }
+}
+
+/// [`MCC_CircleXY_V6`] in the ZX plane about (cz, cx), seen from +Y.
+#[no_mangle]
+pub extern "system" fn MCC_CircleZX_V6(
+    cz: f64,
+    cx: f64,
+    rx: f64,
+    ry: f64,
+    rz: f64,
+    byCirDir: BYTE,
+    posture: DWORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let (center, r) = ([cz, cx], [rx, ry, rz]);
+        circle_plane(Plane::ZX, center, r, byCirDir, posture, wGroupIndex)
+    }
 }
 
 /// What a joint move reads under the group's lock before the kinematics run.

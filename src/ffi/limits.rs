@@ -2,7 +2,9 @@
 //! examples manual §19; vendor header "Software Over Travel Check & Hardware Limit Switch
 //! Check").
 
-use super::{index, update_group, with_group, with_machine_channel, write_out, Card, Channel};
+use super::{
+    index, update_group, with_group, with_machine_channel, write_out, write_outs, Card, Channel,
+};
 use crate::engine::safety::limit_check_mode;
 use crate::error::McclResult;
 use crate::system;
@@ -39,16 +41,51 @@ fn set_over_travel_check(v: [c_int; 8], g: WORD) -> McclResult<c_int> {
     })
 }
 
-per_axis_setters! {
-    /// Software over-travel check per axis (nonzero on, 0 off): an axis never goes past its
-    /// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
-    MCC_SetOverTravelCheck(c_int; wGroupIndex) = |v| set_over_travel_check(v, wGroupIndex);
+/// Software over-travel check per axis (nonzero on, 0 off): an axis never goes past its
+/// dfHighLimit/dfLowLimit; trying stops the group with error 0xF301 + axis.
+#[no_mangle]
+pub extern "system" fn MCC_SetOverTravelCheck(
+    v0: c_int,
+    v1: c_int,
+    v2: c_int,
+    v3: c_int,
+    v4: c_int,
+    v5: c_int,
+    v6: c_int,
+    v7: c_int,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_over_travel_check(v, wGroupIndex)
+    }
 }
 
-per_axis_getters! {
-    /// Reads the over-travel check per axis (1 on, 0 off).
-    MCC_GetOverTravelCheck(c_int; wGroupIndex)
-        = with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)));
+/// Reads the over-travel check per axis (1 on, 0 off).
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetOverTravelCheck(
+    p0: *mut c_int,
+    p1: *mut c_int,
+    p2: *mut c_int,
+    p3: *mut c_int,
+    p4: *mut c_int,
+    p5: *mut c_int,
+    p6: *mut c_int,
+    p7: *mut c_int,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))
+            })
+        }
+    }
 }
 
 /// A limit switch side from C: 0 (+) or 1 (−).
@@ -74,13 +111,46 @@ fn limit_switch(
     Ok(WORD::from(v))
 }
 
-pointer_fns! {
-    /// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
-    MCC_GetLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
-        = write_out(pwStatus, || limit_switch(wUpDown, wChannel, wCardIndex, false));
-    /// Whether the limit switch has been active since the latch was last cleared.
-    MCC_GetLatchedLimitSwitchStatus(pwStatus: WORD; wUpDown, wChannel, wCardIndex)
-        = write_out(pwStatus, || limit_switch(wUpDown, wChannel, wCardIndex, true));
+/// The limit switch (`wUpDown` 0: +, 1: −) as the wiring setting reads it: 1 active.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetLimitSwitchStatus(
+    pwStatus: *mut WORD,
+    wUpDown: WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                limit_switch(wUpDown, wChannel, wCardIndex, false)
+            })
+        }
+    }
+}
+
+/// Whether the limit switch has been active since the latch was last cleared.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetLatchedLimitSwitchStatus(
+    pwStatus: *mut WORD,
+    wUpDown: WORD,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                limit_switch(wUpDown, wChannel, wCardIndex, true)
+            })
+        }
+    }
 }
 
 /// Clears the latched limit switch status (it latches again while the switch is active).

@@ -29,11 +29,16 @@ fn servo(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-on_off! {
-    /// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
-    MCC_SetServoOn,
-    /// Turns the servo-on output of one channel off.
-    MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) = |on| servo(wChannel, wCardIndex, on);
+/// Turns the servo-on output of one channel on (at once, not queued: user manual §2.3).
+#[no_mangle]
+pub extern "system" fn MCC_SetServoOn(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { servo(wChannel, wCardIndex, true) }
+}
+
+/// Turns the servo-on output of one channel off.
+#[no_mangle]
+pub extern "system" fn MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { servo(wChannel, wCardIndex, false) }
 }
 
 fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
@@ -43,18 +48,35 @@ fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-on_off! {
-    /// Turns the card's position-ready output on.
-    MCC_EnablePosReady,
-    /// Turns the card's position-ready output off.
-    MCC_DisablePosReady(wCardIndex: WORD) = |on| pos_ready(wCardIndex, on);
+/// Turns the card's position-ready output on.
+#[no_mangle]
+pub extern "system" fn MCC_EnablePosReady(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { pos_ready(wCardIndex, true) }
 }
 
-pointer_fns! {
-    /// The emergency-stop input of the card: 1 pressed, 0 released.
-    MCC_GetEmgcStopStatus(pwStatus: WORD; wCardIndex) = write_out(pwStatus, || {
-        with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
-    });
+/// Turns the card's position-ready output off.
+#[no_mangle]
+pub extern "system" fn MCC_DisablePosReady(wCardIndex: WORD) -> c_int {
+    ffi_boundary! { pos_ready(wCardIndex, false) }
+}
+
+/// The emergency-stop input of the card: 1 pressed, 0 released.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetEmgcStopStatus(
+    pwStatus: *mut WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pwStatus, || {
+                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
+            })
+        }
+    }
 }
 
 fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
@@ -65,11 +87,16 @@ fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     })
 }
 
-on_off! {
-    /// Turns a channel's LED output on.
-    MCC_SetLedLightOn,
-    /// Turns a channel's LED output off.
-    MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) = |on| led(Channel, wCardIndex, on);
+/// Turns a channel's LED output on.
+#[no_mangle]
+pub extern "system" fn MCC_SetLedLightOn(Channel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { led(Channel, wCardIndex, true) }
+}
+
+/// Turns a channel's LED output off.
+#[no_mangle]
+pub extern "system" fn MCC_SetLedLightOff(Channel: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { led(Channel, wCardIndex, false) }
 }
 
 /// A channel's LED output: 1 on, 0 off (while an LED trigger-out holds it: its trigger
@@ -102,13 +129,22 @@ pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResul
     })
 }
 
-value_fns! {
-    /// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
-    MCC_SetLimitFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Limit, Value, wCardIndex);
-    /// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
-    MCC_SetHomeFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Home, Value, wCardIndex);
-    /// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
-    MCC_SetGpioFilterClk(Value: WORD; wCardIndex) = filter(FilterClock::Gpio, Value, wCardIndex);
+/// Filter clock of the limit switch inputs (kept: the simulated inputs do not bounce).
+#[no_mangle]
+pub extern "system" fn MCC_SetLimitFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { filter(FilterClock::Limit, Value, wCardIndex) }
+}
+
+/// Filter clock of the home sensor inputs (kept: the simulated inputs do not bounce).
+#[no_mangle]
+pub extern "system" fn MCC_SetHomeFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { filter(FilterClock::Home, Value, wCardIndex) }
+}
+
+/// Filter clock of the general-purpose inputs (kept: the simulated inputs do not bounce).
+#[no_mangle]
+pub extern "system" fn MCC_SetGpioFilterClk(Value: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { filter(FilterClock::Gpio, Value, wCardIndex) }
 }
 
 /// The home sensor of a channel as its go-home wiring (`wSensorMode`) reads it: 1 active.
@@ -174,12 +210,16 @@ fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     })
 }
 
-on_off! {
-    /// The local-input routine is called (`LIOINT`) on the point's trigger.
-    MCC_EnableLIOTrigger,
-    /// The point no longer calls the local-input routine.
-    MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD)
-        = |on| lio_trigger(wPoint, wCardIndex, on);
+/// The local-input routine is called (`LIOINT`) on the point's trigger.
+#[no_mangle]
+pub extern "system" fn MCC_EnableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { lio_trigger(wPoint, wCardIndex, true) }
+}
+
+/// The point no longer calls the local-input routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableLIOTrigger(wPoint: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { lio_trigger(wPoint, wCardIndex, false) }
 }
 
 /// Compare sources from C: bit n is the compare of channel n (0..7).
@@ -196,48 +236,106 @@ fn trig_out_ready(kind: TrigOutKind) -> McclResult<()> {
     }
 }
 
-/// Declares the trigger-out settings of the local output points and the LEDs:
-/// `$name($w, wPoint, wCardIndex)` sets `TrigOutSetting::$setting($parse($w))` of point
-/// `wPoint` (0..7) of `TrigOutKind::$kind`.
-macro_rules! trig_out_settings {
-    ($(
-        $(#[$doc:meta])* $name:ident($w:ident) => $kind:ident, $setting:ident($parse:ident);
-    )*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($w: WORD, wPoint: WORD, wCardIndex: WORD) -> c_int {
-            ffi_boundary! {
-                trig_out_ready(TrigOutKind::$kind)?;
-                let s = TrigOutSetting::$setting($parse($w)?);
-                let p = out_point(wPoint)?;
-                with_card_triggers(Card(wCardIndex), |t| {
-                    t.set_trig_out(TrigOutKind::$kind, p, s);
-                    Ok(c::NO_ERR)
-                })
-            }
-        }
-    )*};
+/// Sets `setting` (as checked from C's value) of trigger-out point `wPoint` (0..7) of
+/// `kind` on card `wCardIndex`; checked in this order: [`trig_out_ready`], the setting,
+/// the point, the card.
+fn set_trig_out(
+    kind: TrigOutKind,
+    setting: McclResult<TrigOutSetting>,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> McclResult<c_int> {
+    trig_out_ready(kind)?;
+    let s = setting?;
+    let p = out_point(wPoint)?;
+    with_card_triggers(Card(wCardIndex), |t| {
+        t.set_trig_out(kind, p, s);
+        Ok(c::NO_ERR)
+    })
 }
 
-trig_out_settings! {
-    /// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
-    /// (1) or off (0): when a compare of its source fires, the output takes its trigger
-    /// value for the trigger period, then returns.
-    MCC_SetLIOTrigOutEnable(wEnable) => Local, Enabled(flag);
-    /// The value a triggered output takes (1: servo off, 0: servo on, as the examples
-    /// manual's §26 uses it).
-    MCC_SetLIOTrigOutValue(wValue) => Local, Value(flag);
-    /// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
-    MCC_SetLIOTrigOutSource(wSource) => Local, Source(sources);
-    /// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
-    /// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
-    /// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
-    /// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
-    MCC_SetLedTrigOutEnable(wEnable) => Led, Enabled(flag);
-    /// The value a triggered LED shows: 1 lit, 0 dark.
-    MCC_SetLedTrigOutValue(wOutput) => Led, Value(flag);
-    /// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
-    MCC_SetLedTrigOutSource(wSource) => Led, Source(sources);
+/// Trigger-out of a local output point (0..7: the servo-on output of that channel) on
+/// (1) or off (0): when a compare of its source fires, the output takes its trigger
+/// value for the trigger period, then returns.
+#[no_mangle]
+pub extern "system" fn MCC_SetLIOTrigOutEnable(
+    wEnable: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = flag(wEnable).map(TrigOutSetting::Enabled);
+        set_trig_out(TrigOutKind::Local, s, wPoint, wCardIndex)
+    }
+}
+
+/// The value a triggered output takes (1: servo off, 0: servo on, as the examples
+/// manual's §26 uses it).
+#[no_mangle]
+pub extern "system" fn MCC_SetLIOTrigOutValue(
+    wValue: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = flag(wValue).map(TrigOutSetting::Value);
+        set_trig_out(TrigOutKind::Local, s, wPoint, wCardIndex)
+    }
+}
+
+/// The compares (`LIO_SOURCE_COMP0..7` / `IO_TRIG_ENC0..7` bits) that trigger a point.
+#[no_mangle]
+pub extern "system" fn MCC_SetLIOTrigOutSource(
+    wSource: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = sources(wSource).map(TrigOutSetting::Source);
+        set_trig_out(TrigOutKind::Local, s, wPoint, wCardIndex)
+    }
+}
+
+/// LED trigger-out of LED `wPoint` (0..7, the LED `MCC_SetLedLightOn` of that channel
+/// lights) on (1) or off (0): when a compare of its source fires, the LED shows its
+/// trigger value for the trigger period (`MCC_SetLIOTrigOutPeriod`, shared with the
+/// local outputs), then what `MCC_SetLedLightOn`/`Off` set.
+#[no_mangle]
+pub extern "system" fn MCC_SetLedTrigOutEnable(
+    wEnable: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = flag(wEnable).map(TrigOutSetting::Enabled);
+        set_trig_out(TrigOutKind::Led, s, wPoint, wCardIndex)
+    }
+}
+
+/// The value a triggered LED shows: 1 lit, 0 dark.
+#[no_mangle]
+pub extern "system" fn MCC_SetLedTrigOutValue(
+    wOutput: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = flag(wOutput).map(TrigOutSetting::Value);
+        set_trig_out(TrigOutKind::Led, s, wPoint, wCardIndex)
+    }
+}
+
+/// The compares (`LED_TRIG_ENC0..7` bits: compare of channel 0..7) that trigger an LED.
+#[no_mangle]
+pub extern "system" fn MCC_SetLedTrigOutSource(
+    wSource: WORD,
+    wPoint: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = sources(wSource).map(TrigOutSetting::Source);
+        set_trig_out(TrigOutKind::Led, s, wPoint, wCardIndex)
+    }
 }
 
 /// Trigger values of several points at once: bit n of the mask selects point n.
@@ -267,11 +365,25 @@ pub extern "system" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD
     }
 }
 
-pointer_fns! {
-    /// Compare values waiting on the channels that trigger local outputs.
-    MCC_GetLIOCompStockCount(wCount: WORD; wCardIndex) = write_out(wCount, || {
-        with_card_triggers(Card(wCardIndex), |t| Ok(word_count(t.lio_comp_stock_count())))
-    });
+/// Compare values waiting on the channels that trigger local outputs.
+///
+/// # Safety
+/// `wCount` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetLIOCompStockCount(
+    wCount: *mut WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(wCount, || {
+                with_card_triggers(Card(wCardIndex), |t| {
+                    Ok(word_count(t.lio_comp_stock_count()))
+                })
+            })
+        }
+    }
 }
 
 /// Removes the compare values of the channels that trigger local outputs.

@@ -1,17 +1,22 @@
 //! The C entry points: argument checks, pointer checks, panic boundary, and Rust errors
-//! to vendor return codes. One file per chapter of the manual; every entry point is a
-//! plain `#[no_mangle] pub extern "system" fn` (the vendor's `MCC_CALL`: stdcall on
-//! 32-bit Windows, the C convention everywhere else; the `MCCL_Sim*` extension is
-//! `extern "C"`, as its header declares no convention) whose body is one `ffi_boundary! { ... }`
-//! (see [`guard`]) that checks the arguments, calls the core and maps the result; the
-//! `ffi_boundary` integration test rejects an exported body that does not enter it.
+//! to vendor return codes. One file per chapter of the manual; every entry point is
+//! written out as a plain `#[no_mangle] pub extern "system" fn` (the vendor's `MCC_CALL`:
+//! stdcall on 32-bit Windows, the C convention everywhere else; the `MCCL_Sim*` extension
+//! and the MC3B library's `mcl_*` are `extern "C"`, as their headers declare no
+//! convention) with its doc comment, so that searching for `fn MCC_Line` finds it. Its
+//! body is one `ffi_boundary! { ... }` (see [`guard`]) that checks the arguments, calls
+//! the core and maps the result; the `ffi_boundary` integration test rejects an exported
+//! body that does not enter it, and the `exports_findable` test a function the headers
+//! declare that is not written out exactly once.
 //!
-//! A family of entry points with one signature and one body shape (one per axis, plane,
-//! channel kind, on/off pair, ...) is declared once by a `macro_rules!` macro next to it
-//! whose expansion is that literal function; the families several files share are below
-//! (`macro_rules!` macros are not items: rustdoc lists their members).
-//! The C header takes its prototypes from the vendor table, and the generated test
-//! `tests/vendor_prototypes.rs` checks each Rust signature against it at compile time.
+//! Entry points of one shape (one per axis, plane, channel kind, on/off pair, RIO and
+//! ARIO, ...) share their logic through ordinary helper functions next to them, so each
+//! body stays a line or a few: a call with the arguments C passed. The functions that take
+//! one value or one pointer per axis name them `v0..v7` and `p0..p7` rather than by the
+//! vendor's names (`wGain0`, `nPulse0`, ...): a Rust parameter name is not part of the C
+//! interface, and the C header takes every prototype, names included, from the vendor
+//! table; the generated test `tests/vendor_prototypes.rs` checks each Rust signature
+//! against that table at compile time.
 // The vendor's names live here and only here: the exports and their parameters carry the vendor's names (`MCC_Line`, `dfX`, `wCardType`).
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
@@ -25,131 +30,6 @@ macro_rules! ffi_boundary {
     ($($body:tt)*) => {
         $crate::ffi::guard(|| { $($body)* })
     };
-}
-
-/// Declares pairs of entry points that turn one thing on and off: `$on(params)` and
-/// `$off(params)` (the same parameters) return `$body` with `$flag` true and false.
-macro_rules! on_off {
-    ($(
-        $(#[$on_doc:meta])* $on:ident,
-        $(#[$off_doc:meta])* $off:ident($($p:ident: $t:ty),*) = |$flag:ident| $body:expr;
-    )*) => {$(
-        on_off!(@one $(#[$on_doc])* $on($($p: $t),*) $flag = true => $body);
-        on_off!(@one $(#[$off_doc])* $off($($p: $t),*) $flag = false => $body);
-    )*};
-    (@one
-        $(#[$doc:meta])* $name:ident($($p:ident: $t:ty),*) $flag:ident = $v:literal => $body:expr
-    ) => {
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($($p: $t),*) -> ::std::os::raw::c_int {
-            ffi_boundary! {
-                let $flag = $v;
-                $body
-            }
-        }
-    };
-}
-
-/// Declares entry points that take a value `$v` of type `$t` (or none) followed by `WORD`
-/// indices `$a...` and return `$body` (a `McclResult<c_int>`): the setters of one card,
-/// channel, set or group. A member is `name(value: T; indices...) = body;` or
-/// `name(indices...) = body;`.
-macro_rules! value_fns {
-    (@fn $(#[$doc:meta])* $name:ident($($v:ident: $t:ty)?) ($($a:ident),+) $body:expr) => {
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            $($v: $t,)?
-            $($a: $crate::vendor::WORD),+
-        ) -> ::std::os::raw::c_int {
-            ffi_boundary! { $body }
-        }
-    };
-    () => {};
-    ($(#[$doc:meta])* $name:ident($v:ident: $t:ty; $($a:ident),+) = $body:expr; $($rest:tt)*) => {
-        value_fns!(@fn $(#[$doc])* $name($v: $t) ($($a),+) $body);
-        value_fns!($($rest)*);
-    };
-    ($(#[$doc:meta])* $name:ident($($a:ident),+) = $body:expr; $($rest:tt)*) => {
-        value_fns!(@fn $(#[$doc])* $name() ($($a),+) $body);
-        value_fns!($($rest)*);
-    };
-}
-
-/// Declares entry points whose first parameter is a pointer `$p` to a `$t` (read or
-/// written as each member's doc says) followed by `WORD` indices `$a...`: the body is
-/// `$body`, run in the panic boundary as an unsafe block under the function's contract
-/// (the member's helper checks the pointer, NULL refused with `PARAMETER_ERR`).
-macro_rules! pointer_fns {
-    ($($(#[$doc:meta])* $name:ident($p:ident: $t:ty; $($a:ident),+) = $body:expr;)*) => {$(
-        $(#[$doc])*
-        ///
-        /// # Safety
-        #[doc = concat!(
-            "`", stringify!($p), "` must be NULL (refused with `PARAMETER_ERR`) or point to a",
-            " valid `", stringify!($t), "`."
-        )]
-        #[no_mangle]
-        pub unsafe extern "system" fn $name(
-            $p: *mut $t,
-            $($a: $crate::vendor::WORD),+
-        ) -> ::std::os::raw::c_int {
-            ffi_boundary! {
-                // SAFETY: forwarded under this function's contract.
-                unsafe { $body }
-            }
-        }
-    )*};
-}
-
-/// Declares entry points that take one value per axis or channel:
-/// `$name(v0, ..., v7: $t, $ix)` gathers the values into the array `$v` and returns
-/// `$body` (a `McclResult<c_int>`, with `$v` and the group or card index `$ix` in scope).
-///
-/// The eight parameters are named `v0..v7` here, not by the vendor's names (`wGain0`,
-/// `nPulse0`, ...): a Rust parameter name is not part of the C interface, and the C
-/// header takes every prototype, names included, from the vendor table.
-macro_rules! per_axis_setters {
-    ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = |$v:ident| $body:expr;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            v0: $t, v1: $t, v2: $t, v3: $t, v4: $t, v5: $t, v6: $t, v7: $t,
-            $ix: $crate::vendor::WORD,
-        ) -> ::std::os::raw::c_int {
-            ffi_boundary! {
-                let $v = [v0, v1, v2, v3, v4, v5, v6, v7];
-                $body
-            }
-        }
-    )*};
-}
-
-/// Declares entry points that write one value per axis or channel:
-/// `$name(p0, ..., p7: *mut $t, $ix)` checks every pointer (one NULL is refused with
-/// `PARAMETER_ERR` and nothing is written), then writes what `$get` returns (a
-/// `McclResult<[$t; 8]>`, with the group or card index `$ix` in scope). The pointers are
-/// named `p0..p7` (see `per_axis_setters!`).
-macro_rules! per_axis_getters {
-    ($($(#[$doc:meta])* $name:ident($t:ty; $ix:ident) = $get:expr;)*) => {$(
-        $(#[$doc])*
-        ///
-        /// # Safety
-        /// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
-        #[no_mangle]
-        pub unsafe extern "system" fn $name(
-            p0: *mut $t, p1: *mut $t, p2: *mut $t, p3: *mut $t,
-            p4: *mut $t, p5: *mut $t, p6: *mut $t, p7: *mut $t,
-            $ix: $crate::vendor::WORD,
-        ) -> ::std::os::raw::c_int {
-            ffi_boundary! {
-                let p = [p0, p1, p2, p3, p4, p5, p6, p7];
-                // SAFETY: forwarded under this function's contract.
-                unsafe { $crate::ffi::write_outs(p, || $get) }
-            }
-        }
-    )*};
 }
 
 pub mod adc;

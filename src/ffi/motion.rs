@@ -3,6 +3,7 @@
 
 use super::{
     axis_mask, finite, finite8, queue, queue_curve, read_published, shape, shape_code, with_group,
+    write_outs,
 };
 use crate::engine::command::Curve;
 use crate::error::{McclError, McclResult};
@@ -31,58 +32,6 @@ pub(super) fn feed_speed(v: f64) -> McclResult<f64> {
     Ok(system::config(|c| c.feed_speed(v)))
 }
 
-/// Declares setters of a group's motion settings: `$name(value, wGroupIndex) -> int`
-/// checks the value with `$check` (an error leaves the group unchanged) and stores the
-/// result in `settings.$field`.
-macro_rules! settings_setters {
-    ($($(#[$doc:meta])* $name:ident($arg:ident: $ty:ty) = $check:expr => $field:ident;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($arg: $ty, wGroupIndex: WORD) -> c_int {
-            ffi_boundary! {
-                let v = $check($arg)?;
-                super::update_group(wGroupIndex, |g| g.settings.$field = v)
-            }
-        }
-    )*};
-}
-
-/// Declares setters of a group's speeds that return the value now in effect:
-/// `$name(value, wGroupIndex) -> double` checks the value with `$check` and stores it in
-/// `settings.$field`.
-macro_rules! speed_setters {
-    ($($(#[$doc:meta])* $name:ident($arg:ident) = $check:expr => $field:ident;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($arg: f64, wGroupIndex: WORD) -> f64 {
-            ffi_boundary! {
-                let v = $check($arg)?;
-                with_group(wGroupIndex, |g| {
-                    g.settings.$field = v;
-                    Ok(v)
-                })
-            }
-        }
-    )*};
-}
-
-/// Declares getters of a group's motion settings: `$name(wGroupIndex) -> $ret` returns
-/// `$get` evaluated with `$s` bound to the group's settings.
-macro_rules! settings_getters {
-    ($($(#[$doc:meta])* $name:ident -> $ret:ty = |$s:ident| $get:expr;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(wGroupIndex: WORD) -> $ret {
-            ffi_boundary! {
-                with_group(wGroupIndex, |g| {
-                    let $s = &g.settings;
-                    Ok($get)
-                })
-            }
-        }
-    )*};
-}
-
 /// The ratio of point-to-point speed: a percentage in (0, 100].
 fn ptp_ratio(r: f64) -> McclResult<f64> {
     if r > 0.0 && r <= 100.0 {
@@ -98,42 +47,105 @@ fn ramp_ms(t: f64) -> McclResult<f64> {
     Ok(crate::planner::whole_ms(time_ms(t)?))
 }
 
-settings_setters! {
-    /// Acceleration shape of general motion: 'T' (trapezoid) or 'S' (S-curve).
-    MCC_SetAccType(cAccType: c_char) = shape => acc;
-    /// Deceleration shape of general motion: 'T' or 'S'.
-    MCC_SetDecType(cDecType: c_char) = shape => dec;
-    /// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
-    /// Kept in whole ms, rounded up.
-    MCC_SetAccTime(dfAccTime: f64) = ramp_ms => acc_ms;
-    /// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300), kept
-    /// in whole ms, rounded up.
-    MCC_SetDecTime(dfDecTime: f64) = ramp_ms => dec_ms;
+/// Acceleration shape of general motion: 'T' (trapezoid) or 'S' (S-curve).
+#[no_mangle]
+pub extern "system" fn MCC_SetAccType(cAccType: c_char, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! {
+        let v = shape(cAccType)?;
+        super::update_group(wGroupIndex, |g| g.settings.acc = v)
+    }
 }
 
-speed_setters! {
-    /// Feed speed of following general motion, UU/s (> 0; a negative one counts by its
-    /// size). A speed above `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed
-    /// speed now in effect.
-    MCC_SetFeedSpeed(dfFeedSpeed) = feed_speed => feed;
-    /// Point-to-point speed ratio, percent of each axis's maximum safe speed
-    /// (0 < r <= 100). Returns the ratio now in effect.
-    MCC_SetPtPSpeed(dfRatio) = ptp_ratio => ptp_ratio;
+/// Deceleration shape of general motion: 'T' or 'S'.
+#[no_mangle]
+pub extern "system" fn MCC_SetDecType(cDecType: c_char, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! {
+        let v = shape(cDecType)?;
+        super::update_group(wGroupIndex, |g| g.settings.dec = v)
+    }
 }
 
-settings_getters! {
-    /// The acceleration shape: 0 'T', 1 'S' (as the vendor's library answers).
-    MCC_GetAccType -> c_int = |s| shape_code(s.acc);
-    /// The deceleration shape: 0 'T', 1 'S'.
-    MCC_GetDecType -> c_int = |s| shape_code(s.dec);
-    /// The acceleration time, ms.
-    MCC_GetAccTime -> f64 = |s| s.acc_ms;
-    /// The deceleration time, ms.
-    MCC_GetDecTime -> f64 = |s| s.dec_ms;
-    /// The feed speed of following general motion, UU/s.
-    MCC_GetFeedSpeed -> f64 = |s| s.feed;
-    /// The point-to-point speed ratio, percent.
-    MCC_GetPtPSpeed -> f64 = |s| s.ptp_ratio;
+/// Time to accelerate from 0 to the feed speed, ms (0..=2^32 − 1; default 300).
+/// Kept in whole ms, rounded up.
+#[no_mangle]
+pub extern "system" fn MCC_SetAccTime(dfAccTime: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! {
+        let v = ramp_ms(dfAccTime)?;
+        super::update_group(wGroupIndex, |g| g.settings.acc_ms = v)
+    }
+}
+
+/// Time to decelerate from the feed speed to 0, ms (0..=2^32 − 1; default 300), kept
+/// in whole ms, rounded up.
+#[no_mangle]
+pub extern "system" fn MCC_SetDecTime(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! {
+        let v = ramp_ms(dfDecTime)?;
+        super::update_group(wGroupIndex, |g| g.settings.dec_ms = v)
+    }
+}
+
+/// Feed speed of following general motion, UU/s (> 0; a negative one counts by its
+/// size). A speed above `MCC_SetSysMaxSpeed` becomes that maximum. Returns the feed
+/// speed now in effect.
+#[no_mangle]
+pub extern "system" fn MCC_SetFeedSpeed(dfFeedSpeed: f64, wGroupIndex: WORD) -> f64 {
+    ffi_boundary! {
+        let v = feed_speed(dfFeedSpeed)?;
+        with_group(wGroupIndex, |g| {
+            g.settings.feed = v;
+            Ok(v)
+        })
+    }
+}
+
+/// Point-to-point speed ratio, percent of each axis's maximum safe speed
+/// (0 < r <= 100). Returns the ratio now in effect.
+#[no_mangle]
+pub extern "system" fn MCC_SetPtPSpeed(dfRatio: f64, wGroupIndex: WORD) -> f64 {
+    ffi_boundary! {
+        let v = ptp_ratio(dfRatio)?;
+        with_group(wGroupIndex, |g| {
+            g.settings.ptp_ratio = v;
+            Ok(v)
+        })
+    }
+}
+
+/// The acceleration shape: 0 'T', 1 'S' (as the vendor's library answers).
+#[no_mangle]
+pub extern "system" fn MCC_GetAccType(wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(shape_code(g.settings.acc))) }
+}
+
+/// The deceleration shape: 0 'T', 1 'S'.
+#[no_mangle]
+pub extern "system" fn MCC_GetDecType(wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(shape_code(g.settings.dec))) }
+}
+
+/// The acceleration time, ms.
+#[no_mangle]
+pub extern "system" fn MCC_GetAccTime(wGroupIndex: WORD) -> f64 {
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.acc_ms)) }
+}
+
+/// The deceleration time, ms.
+#[no_mangle]
+pub extern "system" fn MCC_GetDecTime(wGroupIndex: WORD) -> f64 {
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.dec_ms)) }
+}
+
+/// The feed speed of following general motion, UU/s.
+#[no_mangle]
+pub extern "system" fn MCC_GetFeedSpeed(wGroupIndex: WORD) -> f64 {
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.feed)) }
+}
+
+/// The point-to-point speed ratio, percent.
+#[no_mangle]
+pub extern "system" fn MCC_GetPtPSpeed(wGroupIndex: WORD) -> f64 {
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.ptp_ratio)) }
 }
 
 /// The current tangential speed (UU/s): X/Y/Z path speed, or the fastest aux axis.
@@ -142,10 +154,27 @@ pub extern "system" fn MCC_GetCurFeedSpeed(wGroupIndex: WORD) -> f64 {
     ffi_boundary! { read_published(wGroupIndex, |p| p.load_motion().path_speed()) }
 }
 
-per_axis_getters! {
-    /// The current speed of every axis, UU/s (signed).
-    MCC_GetSpeed(f64; wGroupIndex)
-        = read_published(wGroupIndex, |p| p.load_motion().vel);
+/// The current speed of every axis, UU/s (signed).
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetSpeed(
+    p0: *mut f64,
+    p1: *mut f64,
+    p2: *mut f64,
+    p3: *mut f64,
+    p4: *mut f64,
+    p5: *mut f64,
+    p6: *mut f64,
+    p7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || read_published(wGroupIndex, |p| p.load_motion().vel)) }
+    }
 }
 
 fn ptp(args: [f64; 8], g: WORD, m: DWORD, sync: bool) -> McclResult<c_int> {
@@ -172,91 +201,163 @@ fn line(args: [f64; 8], g: WORD, m: DWORD) -> McclResult<c_int> {
     queue(g, |ctx| ctx.line(ctx.resolve(&args, m)))
 }
 
-/// Declares the motions of up to eight axes: `$name(dfX0..dfX7, wGroupIndex, dwAxisMask)`
-/// calls `$f(positions, group, mask, $extra...)`, which checks and queues the command and
-/// returns its index.
-macro_rules! axes_motions {
-    ($($(#[$doc:meta])* $name:ident => $f:ident($($extra:expr),*);)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            dfX0: f64, dfX1: f64, dfX2: f64, dfX3: f64,
-            dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
-            wGroupIndex: WORD, dwAxisMask: DWORD,
-        ) -> c_int {
-            ffi_boundary! {
-                $f(
-                    [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7],
-                    wGroupIndex,
-                    dwAxisMask,
-                    $($extra),*
-                )
-            }
-        }
-    )*};
+/// Point-to-point motion: every axis in the mask runs its own profile at the PtP ratio;
+/// axes start together and need not arrive together. Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_PtP(
+    dfX0: f64,
+    dfX1: f64,
+    dfX2: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let args = [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7];
+        ptp(args, wGroupIndex, dwAxisMask, false)
+    }
 }
 
-/// Declares the motions of one axis (the obsolete one-axis forms):
-/// `$name($arg, wGroupIndex)` calls `$f` with `$arg` at index `$axis`, the axis's mask bit
-/// `$mask` and `$extra...`.
-macro_rules! axis_motions {
-    ($(
-        $(#[$doc:meta])*
-        $name:ident($arg:ident) => $f:ident($axis:expr, $mask:ident $(, $extra:expr)*);
-    )*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($arg: f64, wGroupIndex: WORD) -> c_int {
-            ffi_boundary! { $f(one($axis, $arg), wGroupIndex, c::$mask $(, $extra)*) }
-        }
-    )*};
+/// Synchronised point-to-point motion: all axes start and end together, paced by the
+/// slowest. Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_SyncPtP(
+    dfX0: f64,
+    dfX1: f64,
+    dfX2: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let args = [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7];
+        ptp(args, wGroupIndex, dwAxisMask, true)
+    }
 }
 
-axes_motions! {
-    /// Point-to-point motion: every axis in the mask runs its own profile at the PtP ratio;
-    /// axes start together and need not arrive together. Returns the command index.
-    MCC_PtP => ptp(false);
-    /// Synchronised point-to-point motion: all axes start and end together, paced by the
-    /// slowest. Returns the command index.
-    MCC_SyncPtP => ptp(true);
-    /// Linear motion of the axes in the mask at the feed speed (only X/Y/Z count for the
-    /// path speed; U..B start and end with them). Returns the command index.
-    MCC_Line => line();
+/// Linear motion of the axes in the mask at the feed speed (only X/Y/Z count for the
+/// path speed; U..B start and end with them). Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_Line(
+    dfX0: f64,
+    dfX1: f64,
+    dfX2: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+    dwAxisMask: DWORD,
+) -> c_int {
+    ffi_boundary! {
+        let args = [dfX0, dfX1, dfX2, dfX3, dfX4, dfX5, dfX6, dfX7];
+        line(args, wGroupIndex, dwAxisMask)
+    }
 }
 
-axis_motions! {
-    /// Point-to-point motion of X alone.
-    MCC_PtPX(dfX) => ptp(0, IMP_AXIS_X, false);
-    /// Point-to-point motion of Y alone.
-    MCC_PtPY(dfY) => ptp(1, IMP_AXIS_Y, false);
-    /// Point-to-point motion of Z alone.
-    MCC_PtPZ(dfZ) => ptp(2, IMP_AXIS_Z, false);
-    /// Point-to-point motion of U alone.
-    MCC_PtPU(dfU) => ptp(3, IMP_AXIS_U, false);
-    /// Point-to-point motion of V alone.
-    MCC_PtPV(dfV) => ptp(4, IMP_AXIS_V, false);
-    /// Point-to-point motion of W alone.
-    MCC_PtPW(dfW) => ptp(5, IMP_AXIS_W, false);
-    /// Point-to-point motion of A alone.
-    MCC_PtPA(dfA) => ptp(6, IMP_AXIS_A, false);
-    /// Point-to-point motion of B alone.
-    MCC_PtPB(dfB) => ptp(7, IMP_AXIS_B, false);
-    /// Linear motion of X alone (obsolete form).
-    MCC_LineX(dfX) => line(0, IMP_AXIS_X);
-    /// Linear motion of Y alone (obsolete form).
-    MCC_LineY(dfY) => line(1, IMP_AXIS_Y);
-    /// Linear motion of Z alone (obsolete form).
-    MCC_LineZ(dfZ) => line(2, IMP_AXIS_Z);
-    /// Linear motion of U alone (obsolete form).
-    MCC_LineU(dfU) => line(3, IMP_AXIS_U);
-    /// Linear motion of V alone (obsolete form).
-    MCC_LineV(dfV) => line(4, IMP_AXIS_V);
-    /// Linear motion of W alone (obsolete form).
-    MCC_LineW(dfW) => line(5, IMP_AXIS_W);
-    /// Linear motion of A alone (obsolete form).
-    MCC_LineA(dfA) => line(6, IMP_AXIS_A);
-    /// Linear motion of B alone (obsolete form).
-    MCC_LineB(dfB) => line(7, IMP_AXIS_B);
+/// Point-to-point motion of X alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPX(dfX: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(0, dfX), wGroupIndex, c::IMP_AXIS_X, false) }
+}
+
+/// Point-to-point motion of Y alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPY(dfY: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y, false) }
+}
+
+/// Point-to-point motion of Z alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPZ(dfZ: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z, false) }
+}
+
+/// Point-to-point motion of U alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPU(dfU: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(3, dfU), wGroupIndex, c::IMP_AXIS_U, false) }
+}
+
+/// Point-to-point motion of V alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPV(dfV: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(4, dfV), wGroupIndex, c::IMP_AXIS_V, false) }
+}
+
+/// Point-to-point motion of W alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPW(dfW: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(5, dfW), wGroupIndex, c::IMP_AXIS_W, false) }
+}
+
+/// Point-to-point motion of A alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPA(dfA: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(6, dfA), wGroupIndex, c::IMP_AXIS_A, false) }
+}
+
+/// Point-to-point motion of B alone.
+#[no_mangle]
+pub extern "system" fn MCC_PtPB(dfB: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { ptp(one(7, dfB), wGroupIndex, c::IMP_AXIS_B, false) }
+}
+
+/// Linear motion of X alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineX(dfX: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(0, dfX), wGroupIndex, c::IMP_AXIS_X) }
+}
+
+/// Linear motion of Y alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineY(dfY: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(1, dfY), wGroupIndex, c::IMP_AXIS_Y) }
+}
+
+/// Linear motion of Z alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineZ(dfZ: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(2, dfZ), wGroupIndex, c::IMP_AXIS_Z) }
+}
+
+/// Linear motion of U alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineU(dfU: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(3, dfU), wGroupIndex, c::IMP_AXIS_U) }
+}
+
+/// Linear motion of V alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineV(dfV: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(4, dfV), wGroupIndex, c::IMP_AXIS_V) }
+}
+
+/// Linear motion of W alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineW(dfW: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(5, dfW), wGroupIndex, c::IMP_AXIS_W) }
+}
+
+/// Linear motion of A alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineA(dfA: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(6, dfA), wGroupIndex, c::IMP_AXIS_A) }
+}
+
+/// Linear motion of B alone (obsolete form).
+#[no_mangle]
+pub extern "system" fn MCC_LineB(dfB: f64, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { line(one(7, dfB), wGroupIndex, c::IMP_AXIS_B) }
 }
 
 /// Checks plane points (on `plane`'s two axes) and aux ends (U..B) against the position
@@ -292,6 +393,13 @@ pub(super) struct About {
     pub plane: Plane,
     pub c: [f64; 2],
     pub aux: Option<[f64; 5]>,
+}
+
+impl About {
+    /// About the center `c` of `plane`, with the U..B ends `aux` (`None`: U..B stay).
+    pub(super) fn new(plane: Plane, c: [f64; 2], aux: Option<[f64; 5]>) -> Self {
+        About { plane, c, aux }
+    }
 }
 
 /// Queues the curve `build` makes about `at` (`helix`: reported as a helix): the center
@@ -342,45 +450,100 @@ fn arc(
     )
 }
 
-/// Declares the three-point arcs of one plane, each with its `_Aux` form:
-/// `$name(r0, r1, e0, e1, wGroupIndex)` runs from the current point through `(r0, r1)` to
-/// `(e0, e1)` on `Plane::$plane`; `$aux` takes U..B ends (`dfX3..dfX7`) too, which move
-/// linearly along.
-macro_rules! plane_arcs {
-    ($(
-        $(#[$doc:meta])*
-        $name:ident, $aux:ident($r0:ident, $r1:ident, $e0:ident, $e1:ident) => $plane:ident;
-    )*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            $r0: f64, $r1: f64, $e0: f64, $e1: f64, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! { arc(Plane::$plane, [$r0, $r1], [$e0, $e1], None, wGroupIndex) }
-        }
-
-        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
-        #[no_mangle]
-        pub extern "system" fn $aux(
-            $r0: f64, $r1: f64, $e0: f64, $e1: f64,
-            dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
-            wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
-                arc(Plane::$plane, [$r0, $r1], [$e0, $e1], aux, wGroupIndex)
-            }
-        }
-    )*};
+/// Arc in the XY plane from the current point through (dfRX0, dfRX1) to (dfX0, dfX1).
+#[no_mangle]
+pub extern "system" fn MCC_ArcXY(
+    dfRX0: f64,
+    dfRX1: f64,
+    dfX0: f64,
+    dfX1: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc(Plane::XY, [dfRX0, dfRX1], [dfX0, dfX1], None, wGroupIndex) }
 }
 
-plane_arcs! {
-    /// Arc in the XY plane from the current point through (dfRX0, dfRX1) to (dfX0, dfX1).
-    MCC_ArcXY, MCC_ArcXY_Aux(dfRX0, dfRX1, dfX0, dfX1) => XY;
-    /// Arc in the YZ plane through (dfRX1, dfRX2) to (dfX1, dfX2).
-    MCC_ArcYZ, MCC_ArcYZ_Aux(dfRX1, dfRX2, dfX1, dfX2) => YZ;
-    /// Arc in the ZX plane through (dfRX2, dfRX0) to (dfX2, dfX0).
-    MCC_ArcZX, MCC_ArcZX_Aux(dfRX2, dfRX0, dfX2, dfX0) => ZX;
+/// [`MCC_ArcXY`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_ArcXY_Aux(
+    dfRX0: f64,
+    dfRX1: f64,
+    dfX0: f64,
+    dfX1: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+        arc(Plane::XY, [dfRX0, dfRX1], [dfX0, dfX1], aux, wGroupIndex)
+    }
+}
+
+/// Arc in the YZ plane through (dfRX1, dfRX2) to (dfX1, dfX2).
+#[no_mangle]
+pub extern "system" fn MCC_ArcYZ(
+    dfRX1: f64,
+    dfRX2: f64,
+    dfX1: f64,
+    dfX2: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc(Plane::YZ, [dfRX1, dfRX2], [dfX1, dfX2], None, wGroupIndex) }
+}
+
+/// [`MCC_ArcYZ`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_ArcYZ_Aux(
+    dfRX1: f64,
+    dfRX2: f64,
+    dfX1: f64,
+    dfX2: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+        arc(Plane::YZ, [dfRX1, dfRX2], [dfX1, dfX2], aux, wGroupIndex)
+    }
+}
+
+/// Arc in the ZX plane through (dfRX2, dfRX0) to (dfX2, dfX0).
+#[no_mangle]
+pub extern "system" fn MCC_ArcZX(
+    dfRX2: f64,
+    dfRX0: f64,
+    dfX2: f64,
+    dfX0: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc(Plane::ZX, [dfRX2, dfRX0], [dfX2, dfX0], None, wGroupIndex) }
+}
+
+/// [`MCC_ArcZX`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_ArcZX_Aux(
+    dfRX2: f64,
+    dfRX0: f64,
+    dfX2: f64,
+    dfX0: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+        arc(Plane::ZX, [dfRX2, dfRX0], [dfX2, dfX0], aux, wGroupIndex)
+    }
 }
 
 fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResult<c_int> {
@@ -403,37 +566,40 @@ fn arc_xyz(r: [f64; 3], e: [f64; 3], aux: Option<[f64; 5]>, g: WORD) -> McclResu
     )
 }
 
-/// Declares the 3-D arc `$name(dfRX0..2, dfX0..2, wGroupIndex)` from the current point
-/// through (dfRX0..2) to (dfX0..2), and its `_Aux` form `$aux`, which takes U..B ends
-/// (`dfX3..dfX7`) too.
-macro_rules! arcs_xyz {
-    ($(#[$doc:meta])* $name:ident, $aux:ident) => {
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
-        }
-
-        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
-        #[no_mangle]
-        pub extern "system" fn $aux(
-            dfRX0: f64, dfRX1: f64, dfRX2: f64, dfX0: f64, dfX1: f64, dfX2: f64,
-            dfX3: f64, dfX4: f64, dfX5: f64, dfX6: f64, dfX7: f64,
-            wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
-                arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], aux, wGroupIndex)
-            }
-        }
-    };
+/// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
+#[no_mangle]
+pub extern "system" fn MCC_ArcXYZ(
+    dfRX0: f64,
+    dfRX1: f64,
+    dfRX2: f64,
+    dfX0: f64,
+    dfX1: f64,
+    dfX2: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], None, wGroupIndex) }
 }
 
-arcs_xyz! {
-    /// 3-D arc from the current point through (dfRX0..2) to (dfX0..2).
-    MCC_ArcXYZ, MCC_ArcXYZ_Aux
+/// [`MCC_ArcXYZ`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_ArcXYZ_Aux(
+    dfRX0: f64,
+    dfRX1: f64,
+    dfRX2: f64,
+    dfX0: f64,
+    dfX1: f64,
+    dfX2: f64,
+    dfX3: f64,
+    dfX4: f64,
+    dfX5: f64,
+    dfX6: f64,
+    dfX7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfX3, dfX4, dfX5, dfX6, dfX7]);
+        arc_xyz([dfRX0, dfRX1, dfRX2], [dfX0, dfX1, dfX2], aux, wGroupIndex)
+    }
 }
 
 fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_int> {
@@ -448,26 +614,38 @@ fn arc_theta(plane: Plane, cxy: [f64; 2], theta: f64, g: WORD) -> McclResult<c_i
     })
 }
 
-/// Declares the arcs by an angle of one plane: `$name(c0, c1, dfTheta, wGroupIndex)` turns
-/// around the center `(c0, c1)` of `Plane::$plane` by dfTheta degrees.
-macro_rules! plane_arcs_theta {
-    ($($(#[$doc:meta])* $name:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($c0: f64, $c1: f64, dfTheta: f64, wGroupIndex: WORD) -> c_int {
-            ffi_boundary! { arc_theta(Plane::$plane, [$c0, $c1], dfTheta, wGroupIndex) }
-        }
-    )*};
+/// Arc around the center (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise seen
+/// from +Z).
+#[no_mangle]
+pub extern "system" fn MCC_ArcThetaXY(
+    dfCX: f64,
+    dfCY: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc_theta(Plane::XY, [dfCX, dfCY], dfTheta, wGroupIndex) }
 }
 
-plane_arcs_theta! {
-    /// Arc around the center (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise seen
-    /// from +Z).
-    MCC_ArcThetaXY(dfCX, dfCY) => XY;
-    /// Arc around (dfCY, dfCZ) by dfTheta degrees (> 0 counter-clockwise seen from +X).
-    MCC_ArcThetaYZ(dfCY, dfCZ) => YZ;
-    /// Arc around (dfCZ, dfCX) by dfTheta degrees (> 0 counter-clockwise seen from +Y).
-    MCC_ArcThetaZX(dfCZ, dfCX) => ZX;
+/// Arc around (dfCY, dfCZ) by dfTheta degrees (> 0 counter-clockwise seen from +X).
+#[no_mangle]
+pub extern "system" fn MCC_ArcThetaYZ(
+    dfCY: f64,
+    dfCZ: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc_theta(Plane::YZ, [dfCY, dfCZ], dfTheta, wGroupIndex) }
+}
+
+/// Arc around (dfCZ, dfCX) by dfTheta degrees (> 0 counter-clockwise seen from +Y).
+#[no_mangle]
+pub extern "system" fn MCC_ArcThetaZX(
+    dfCZ: f64,
+    dfCX: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { arc_theta(Plane::ZX, [dfCZ, dfCX], dfTheta, wGroupIndex) }
 }
 
 fn circle(at: About, dir: BYTE, g: WORD) -> McclResult<c_int> {
@@ -477,43 +655,106 @@ fn circle(at: About, dir: BYTE, g: WORD) -> McclResult<c_int> {
     })
 }
 
-/// Declares the full circles of one plane, each with its `_Aux` form:
-/// `$name(c0, c1, byCirDir, wGroupIndex)` circles around `(c0, c1)` of `Plane::$plane`,
-/// `CIR_CW` or `CIR_CCW`; `$aux` takes U..B ends (`dfU..dfB`) too, which move linearly
-/// along.
-macro_rules! plane_circles {
-    ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name($c0: f64, $c1: f64, byCirDir: BYTE, wGroupIndex: WORD) -> c_int {
-            ffi_boundary! {
-                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
-                circle(at, byCirDir, wGroupIndex)
-            }
-        }
-
-        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
-        #[no_mangle]
-        pub extern "system" fn $aux(
-            $c0: f64, $c1: f64,
-            dfU: f64, dfV: f64, dfW: f64, dfA: f64, dfB: f64,
-            byCirDir: BYTE, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let aux = Some([dfU, dfV, dfW, dfA, dfB]);
-                circle(About { plane: Plane::$plane, c: [$c0, $c1], aux }, byCirDir, wGroupIndex)
-            }
-        }
-    )*};
+/// Full circle around (dfCX, dfCY) in the XY plane, `CIR_CW` or `CIR_CCW` seen from +Z.
+#[no_mangle]
+pub extern "system" fn MCC_CircleXY(
+    dfCX: f64,
+    dfCY: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let at = About::new(Plane::XY, [dfCX, dfCY], None);
+        circle(at, byCirDir, wGroupIndex)
+    }
 }
 
-plane_circles! {
-    /// Full circle around (dfCX, dfCY) in the XY plane, `CIR_CW` or `CIR_CCW` seen from +Z.
-    MCC_CircleXY, MCC_CircleXY_Aux(dfCX, dfCY) => XY;
-    /// Full circle around (dfCY, dfCZ) in the YZ plane, seen from +X.
-    MCC_CircleYZ, MCC_CircleYZ_Aux(dfCY, dfCZ) => YZ;
-    /// Full circle around (dfCZ, dfCX) in the ZX plane, seen from +Y.
-    MCC_CircleZX, MCC_CircleZX_Aux(dfCZ, dfCX) => ZX;
+/// [`MCC_CircleXY`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_CircleXY_Aux(
+    dfCX: f64,
+    dfCY: f64,
+    dfU: f64,
+    dfV: f64,
+    dfW: f64,
+    dfA: f64,
+    dfB: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+        let at = About::new(Plane::XY, [dfCX, dfCY], aux);
+        circle(at, byCirDir, wGroupIndex)
+    }
+}
+
+/// Full circle around (dfCY, dfCZ) in the YZ plane, seen from +X.
+#[no_mangle]
+pub extern "system" fn MCC_CircleYZ(
+    dfCY: f64,
+    dfCZ: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let at = About::new(Plane::YZ, [dfCY, dfCZ], None);
+        circle(at, byCirDir, wGroupIndex)
+    }
+}
+
+/// [`MCC_CircleYZ`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_CircleYZ_Aux(
+    dfCY: f64,
+    dfCZ: f64,
+    dfU: f64,
+    dfV: f64,
+    dfW: f64,
+    dfA: f64,
+    dfB: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+        let at = About::new(Plane::YZ, [dfCY, dfCZ], aux);
+        circle(at, byCirDir, wGroupIndex)
+    }
+}
+
+/// Full circle around (dfCZ, dfCX) in the ZX plane, seen from +Y.
+#[no_mangle]
+pub extern "system" fn MCC_CircleZX(
+    dfCZ: f64,
+    dfCX: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let at = About::new(Plane::ZX, [dfCZ, dfCX], None);
+        circle(at, byCirDir, wGroupIndex)
+    }
+}
+
+/// [`MCC_CircleZX`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_CircleZX_Aux(
+    dfCZ: f64,
+    dfCX: f64,
+    dfU: f64,
+    dfV: f64,
+    dfW: f64,
+    dfA: f64,
+    dfB: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+        let at = About::new(Plane::ZX, [dfCZ, dfCX], aux);
+        circle(at, byCirDir, wGroupIndex)
+    }
 }
 
 fn helical(at: About, pitch: f64, theta: f64, g: WORD) -> McclResult<c_int> {
@@ -523,47 +764,113 @@ fn helical(at: About, pitch: f64, theta: f64, g: WORD) -> McclResult<c_int> {
     })
 }
 
-/// Declares the helices of one plane, each with its `_Aux` form:
-/// `$name(c0, c1, dfPitch, dfTheta, wGroupIndex)` turns around `(c0, c1)` of
-/// `Plane::$plane` by dfTheta degrees while the third axis moves dfPitch per full turn;
-/// `$aux` takes U..B ends (`dfU..dfB`) too, which move linearly along.
-macro_rules! plane_helicals {
-    ($($(#[$doc:meta])* $name:ident, $aux:ident($c0:ident, $c1:ident) => $plane:ident;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            $c0: f64, $c1: f64, dfPitch: f64, dfTheta: f64, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
-                helical(at, dfPitch, dfTheta, wGroupIndex)
-            }
-        }
-
-        #[doc = concat!("[`", stringify!($name), "`] with U..B moving linearly to the given ends.")]
-        #[no_mangle]
-        pub extern "system" fn $aux(
-            $c0: f64, $c1: f64, dfPitch: f64,
-            dfU: f64, dfV: f64, dfW: f64, dfA: f64, dfB: f64,
-            dfTheta: f64, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let aux = Some([dfU, dfV, dfW, dfA, dfB]);
-                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux };
-                helical(at, dfPitch, dfTheta, wGroupIndex)
-            }
-        }
-    )*};
+/// Helix around (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise); Z moves
+/// dfPitch per full turn (pitch x theta / 360 in all).
+#[no_mangle]
+pub extern "system" fn MCC_HelicalXY_Z(
+    dfCX: f64,
+    dfCY: f64,
+    dfPitch: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let at = About::new(Plane::XY, [dfCX, dfCY], None);
+        helical(at, dfPitch, dfTheta, wGroupIndex)
+    }
 }
 
-plane_helicals! {
-    /// Helix around (dfCX, dfCY) by dfTheta degrees (> 0 counter-clockwise); Z moves
-    /// dfPitch per full turn (pitch x theta / 360 in all).
-    MCC_HelicalXY_Z, MCC_HelicalXY_Z_Aux(dfCX, dfCY) => XY;
-    /// Helix around (dfCY, dfCZ); X moves dfPitch per turn.
-    MCC_HelicalYZ_X, MCC_HelicalYZ_X_Aux(dfCY, dfCZ) => YZ;
-    /// Helix around (dfCZ, dfCX); Y moves dfPitch per turn.
-    MCC_HelicalZX_Y, MCC_HelicalZX_Y_Aux(dfCZ, dfCX) => ZX;
+/// [`MCC_HelicalXY_Z`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_HelicalXY_Z_Aux(
+    dfCX: f64,
+    dfCY: f64,
+    dfPitch: f64,
+    dfU: f64,
+    dfV: f64,
+    dfW: f64,
+    dfA: f64,
+    dfB: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+        let at = About::new(Plane::XY, [dfCX, dfCY], aux);
+        helical(at, dfPitch, dfTheta, wGroupIndex)
+    }
+}
+
+/// Helix around (dfCY, dfCZ); X moves dfPitch per turn.
+#[no_mangle]
+pub extern "system" fn MCC_HelicalYZ_X(
+    dfCY: f64,
+    dfCZ: f64,
+    dfPitch: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let at = About::new(Plane::YZ, [dfCY, dfCZ], None);
+        helical(at, dfPitch, dfTheta, wGroupIndex)
+    }
+}
+
+/// [`MCC_HelicalYZ_X`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_HelicalYZ_X_Aux(
+    dfCY: f64,
+    dfCZ: f64,
+    dfPitch: f64,
+    dfU: f64,
+    dfV: f64,
+    dfW: f64,
+    dfA: f64,
+    dfB: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+        let at = About::new(Plane::YZ, [dfCY, dfCZ], aux);
+        helical(at, dfPitch, dfTheta, wGroupIndex)
+    }
+}
+
+/// Helix around (dfCZ, dfCX); Y moves dfPitch per turn.
+#[no_mangle]
+pub extern "system" fn MCC_HelicalZX_Y(
+    dfCZ: f64,
+    dfCX: f64,
+    dfPitch: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let at = About::new(Plane::ZX, [dfCZ, dfCX], None);
+        helical(at, dfPitch, dfTheta, wGroupIndex)
+    }
+}
+
+/// [`MCC_HelicalZX_Y`] with U..B moving linearly to the given ends.
+#[no_mangle]
+pub extern "system" fn MCC_HelicalZX_Y_Aux(
+    dfCZ: f64,
+    dfCX: f64,
+    dfPitch: f64,
+    dfU: f64,
+    dfV: f64,
+    dfW: f64,
+    dfA: f64,
+    dfB: f64,
+    dfTheta: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let aux = Some([dfU, dfV, dfW, dfA, dfB]);
+        let at = About::new(Plane::ZX, [dfCZ, dfCX], aux);
+        helical(at, dfPitch, dfTheta, wGroupIndex)
+    }
 }
 
 /// A spiral about `at` until the plane's third axis reaches `pos`, `pitch` per turn in
@@ -574,6 +881,20 @@ pub(super) struct SpiralTo {
     pub pos: f64,
     pub pitch: f64,
     pub dir: BYTE,
+}
+
+impl SpiralTo {
+    /// About the center `c` of `plane` (U..B stay) until its third axis reaches `pos`,
+    /// `pitch` per turn in direction `dir`.
+    pub(super) fn new(plane: Plane, c: [f64; 2], pos: f64, pitch: f64, dir: BYTE) -> Self {
+        let at = About::new(plane, c, None);
+        SpiralTo {
+            at,
+            pos,
+            pitch,
+            dir,
+        }
+    }
 }
 
 /// Queues the spiral `build(from, center, end of the third axis, pitch, counter-clockwise)`
@@ -599,55 +920,51 @@ fn helica(s: SpiralTo, g: WORD) -> McclResult<c_int> {
     })
 }
 
-/// Declares the spirals of one plane that run until its third axis reaches dfPos: the
-/// obsolete helix `$helica(c0, c1, dfPos, dfPitch, byCirDir, wGroupIndex)`, turning around
-/// `(c0, c1)` of `Plane::$plane` and moving dfPitch per turn, and the conical helix
-/// `$cone(c0, c1, dfPos, dfPitch, CenterRate, byCirDir, wGroupIndex)`, whose radius also
-/// changes by CenterRate per turn (src/ffi/cone.rs).
-macro_rules! plane_spirals {
-    ($(
-        $(#[$doc:meta])* $helica:ident,
-        $(#[$cone_doc:meta])* $cone:ident($c0:ident, $c1:ident) => $plane:ident;
-    )*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $helica(
-            $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, byCirDir: BYTE, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
-                helica(SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir }, wGroupIndex)
-            }
-        }
-
-        $(#[$cone_doc])*
-        #[no_mangle]
-        pub extern "system" fn $cone(
-            $c0: f64, $c1: f64, dfPos: f64, dfPitch: f64, CenterRate: f64,
-            byCirDir: BYTE, wGroupIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! {
-                let at = About { plane: Plane::$plane, c: [$c0, $c1], aux: None };
-                let spiral = SpiralTo { at, pos: dfPos, pitch: dfPitch, dir: byCirDir };
-                super::cone::cone(spiral, CenterRate, wGroupIndex)
-            }
-        }
-    )*};
+/// Obsolete helix: around (dfCX, dfCY) in direction byCirDir until Z reaches dfPos,
+/// rising dfPitch per turn.
+#[no_mangle]
+pub extern "system" fn MCC_HelicaXY_Z(
+    dfCX: f64,
+    dfCY: f64,
+    dfPos: f64,
+    dfPitch: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = SpiralTo::new(Plane::XY, [dfCX, dfCY], dfPos, dfPitch, byCirDir);
+        helica(s, wGroupIndex)
+    }
 }
 
-plane_spirals! {
-    /// Obsolete helix: around (dfCX, dfCY) in direction byCirDir until Z reaches dfPos,
-    /// rising dfPitch per turn.
-    MCC_HelicaXY_Z,
-    /// Conical helix about (dfCX, dfCY) in direction byCirDir until Z reaches dfPos, Z
-    /// moving dfPitch per turn and the radius changing by CenterRate per turn.
-    MCC_ConeXY_Z(dfCX, dfCY) => XY;
-    /// Obsolete helix around (dfCY, dfCZ) until X reaches dfPos.
-    MCC_HelicaYZ_X,
-    /// Conical helix about (dfCY, dfCZ) until X reaches dfPos (see [`MCC_ConeXY_Z`]).
-    MCC_ConeYZ_X(dfCY, dfCZ) => YZ;
-    /// Obsolete helix around (dfCZ, dfCX) until Y reaches dfPos.
-    MCC_HelicaZX_Y,
-    /// Conical helix about (dfCZ, dfCX) until Y reaches dfPos (see [`MCC_ConeXY_Z`]).
-    MCC_ConeZX_Y(dfCZ, dfCX) => ZX;
+/// Obsolete helix around (dfCY, dfCZ) until X reaches dfPos.
+#[no_mangle]
+pub extern "system" fn MCC_HelicaYZ_X(
+    dfCY: f64,
+    dfCZ: f64,
+    dfPos: f64,
+    dfPitch: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = SpiralTo::new(Plane::YZ, [dfCY, dfCZ], dfPos, dfPitch, byCirDir);
+        helica(s, wGroupIndex)
+    }
+}
+
+/// Obsolete helix around (dfCZ, dfCX) until Y reaches dfPos.
+#[no_mangle]
+pub extern "system" fn MCC_HelicaZX_Y(
+    dfCZ: f64,
+    dfCX: f64,
+    dfPos: f64,
+    dfPitch: f64,
+    byCirDir: BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let s = SpiralTo::new(Plane::ZX, [dfCZ, dfCX], dfPos, dfPitch, byCirDir);
+        helica(s, wGroupIndex)
+    }
 }

@@ -4,7 +4,7 @@
 
 use super::{
     axis, axis_mask, channel, finite, set_channel_config, update_group, with_group, with_machine,
-    write_out, Card,
+    write_out, write_outs, Card,
 };
 use crate::config::Config;
 use crate::error::{McclError, McclResult};
@@ -26,34 +26,172 @@ fn gains(k: Gain, wCardIndex: WORD) -> McclResult<[WORD; 8]> {
     with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains(k)))
 }
 
-per_axis_setters! {
-    /// Proportional gain per channel (0..255).
-    MCC_SetPGain(WORD; wCardIndex)
-        = |v| set_gains(Gain::P, v, wCardIndex);
-    /// Integral gain per channel (0..255).
-    MCC_SetIGain(WORD; wCardIndex)
-        = |v| set_gains(Gain::I, v, wCardIndex);
-    /// Derivative gain per channel (0..255).
-    MCC_SetDGain(WORD; wCardIndex)
-        = |v| set_gains(Gain::D, v, wCardIndex);
-    /// Feed-forward gain per channel (0..255).
-    MCC_SetFGain(WORD; wCardIndex)
-        = |v| set_gains(Gain::FeedForward, v, wCardIndex);
+/// Proportional gain per channel (0..255).
+#[no_mangle]
+pub extern "system" fn MCC_SetPGain(
+    v0: WORD,
+    v1: WORD,
+    v2: WORD,
+    v3: WORD,
+    v4: WORD,
+    v5: WORD,
+    v6: WORD,
+    v7: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_gains(Gain::P, v, wCardIndex)
+    }
 }
 
-per_axis_getters! {
-    /// Reads the proportional gains.
-    MCC_GetPGain(WORD; wCardIndex)
-        = gains(Gain::P, wCardIndex);
-    /// Reads the integral gains.
-    MCC_GetIGain(WORD; wCardIndex)
-        = gains(Gain::I, wCardIndex);
-    /// Reads the derivative gains.
-    MCC_GetDGain(WORD; wCardIndex)
-        = gains(Gain::D, wCardIndex);
-    /// Reads the feed-forward gains.
-    MCC_GetFGain(WORD; wCardIndex)
-        = gains(Gain::FeedForward, wCardIndex);
+/// Integral gain per channel (0..255).
+#[no_mangle]
+pub extern "system" fn MCC_SetIGain(
+    v0: WORD,
+    v1: WORD,
+    v2: WORD,
+    v3: WORD,
+    v4: WORD,
+    v5: WORD,
+    v6: WORD,
+    v7: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_gains(Gain::I, v, wCardIndex)
+    }
+}
+
+/// Derivative gain per channel (0..255).
+#[no_mangle]
+pub extern "system" fn MCC_SetDGain(
+    v0: WORD,
+    v1: WORD,
+    v2: WORD,
+    v3: WORD,
+    v4: WORD,
+    v5: WORD,
+    v6: WORD,
+    v7: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_gains(Gain::D, v, wCardIndex)
+    }
+}
+
+/// Feed-forward gain per channel (0..255).
+#[no_mangle]
+pub extern "system" fn MCC_SetFGain(
+    v0: WORD,
+    v1: WORD,
+    v2: WORD,
+    v3: WORD,
+    v4: WORD,
+    v5: WORD,
+    v6: WORD,
+    v7: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_gains(Gain::FeedForward, v, wCardIndex)
+    }
+}
+
+/// Reads the proportional gains.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPGain(
+    p0: *mut WORD,
+    p1: *mut WORD,
+    p2: *mut WORD,
+    p3: *mut WORD,
+    p4: *mut WORD,
+    p5: *mut WORD,
+    p6: *mut WORD,
+    p7: *mut WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || gains(Gain::P, wCardIndex)) }
+    }
+}
+
+/// Reads the integral gains.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetIGain(
+    p0: *mut WORD,
+    p1: *mut WORD,
+    p2: *mut WORD,
+    p3: *mut WORD,
+    p4: *mut WORD,
+    p5: *mut WORD,
+    p6: *mut WORD,
+    p7: *mut WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || gains(Gain::I, wCardIndex)) }
+    }
+}
+
+/// Reads the derivative gains.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetDGain(
+    p0: *mut WORD,
+    p1: *mut WORD,
+    p2: *mut WORD,
+    p3: *mut WORD,
+    p4: *mut WORD,
+    p5: *mut WORD,
+    p6: *mut WORD,
+    p7: *mut WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || gains(Gain::D, wCardIndex)) }
+    }
+}
+
+/// Reads the feed-forward gains.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetFGain(
+    p0: *mut WORD,
+    p1: *mut WORD,
+    p2: *mut WORD,
+    p3: *mut WORD,
+    p4: *mut WORD,
+    p5: *mut WORD,
+    p6: *mut WORD,
+    p7: *mut WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || gains(Gain::FeedForward, wCardIndex)) }
+    }
 }
 
 fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
@@ -89,9 +227,27 @@ fn error_counts(wCardIndex: WORD) -> McclResult<[c_int; 8]> {
     })
 }
 
-per_axis_getters! {
-    /// The closed-loop error counter per channel: pulses output minus the motor's position.
-    MCC_GetErrorCount(c_int; wCardIndex) = error_counts(wCardIndex);
+/// The closed-loop error counter per channel: pulses output minus the motor's position.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetErrorCount(
+    p0: *mut c_int,
+    p1: *mut c_int,
+    p2: *mut c_int,
+    p3: *mut c_int,
+    p4: *mut c_int,
+    p5: *mut c_int,
+    p6: *mut c_int,
+    p7: *mut c_int,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || error_counts(wCardIndex)) }
+    }
 }
 
 /// Thresholds of the closed-loop error counter of one channel (kept for the PCL
@@ -138,22 +294,90 @@ fn pulse_limits(k: PulseLimit, wCardIndex: WORD) -> McclResult<[c_int; 8]> {
     Ok(v)
 }
 
-per_axis_setters! {
-    /// Most pulses per interpolation period per channel (1..2^31 − 1, default 1,000,000).
-    /// More stops the group with error 0xF203.
-    MCC_SetMaxPulseSpeed(c_int; wCardIndex)
-        = |v| set_pulse_limits(PulseLimit::Speed, v, wCardIndex);
-    /// Most change of pulses per period from one period to the next (1..2^31 − 1,
-    /// default 1,000,000). More stops the group with error 0xF204.
-    MCC_SetMaxPulseAcc(c_int; wCardIndex) = |v| set_pulse_limits(PulseLimit::Acc, v, wCardIndex);
+/// Most pulses per interpolation period per channel (1..2^31 − 1, default 1,000,000).
+/// More stops the group with error 0xF203.
+#[no_mangle]
+pub extern "system" fn MCC_SetMaxPulseSpeed(
+    v0: c_int,
+    v1: c_int,
+    v2: c_int,
+    v3: c_int,
+    v4: c_int,
+    v5: c_int,
+    v6: c_int,
+    v7: c_int,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_pulse_limits(PulseLimit::Speed, v, wCardIndex)
+    }
 }
 
-per_axis_getters! {
-    /// Reads the pulse speed limits.
-    MCC_GetMaxPulseSpeed(c_int; wCardIndex)
-        = pulse_limits(PulseLimit::Speed, wCardIndex);
-    /// Reads the pulse acceleration limits.
-    MCC_GetMaxPulseAcc(c_int; wCardIndex) = pulse_limits(PulseLimit::Acc, wCardIndex);
+/// Most change of pulses per period from one period to the next (1..2^31 − 1,
+/// default 1,000,000). More stops the group with error 0xF204.
+#[no_mangle]
+pub extern "system" fn MCC_SetMaxPulseAcc(
+    v0: c_int,
+    v1: c_int,
+    v2: c_int,
+    v3: c_int,
+    v4: c_int,
+    v5: c_int,
+    v6: c_int,
+    v7: c_int,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_pulse_limits(PulseLimit::Acc, v, wCardIndex)
+    }
+}
+
+/// Reads the pulse speed limits.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetMaxPulseSpeed(
+    p0: *mut c_int,
+    p1: *mut c_int,
+    p2: *mut c_int,
+    p3: *mut c_int,
+    p4: *mut c_int,
+    p5: *mut c_int,
+    p6: *mut c_int,
+    p7: *mut c_int,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || pulse_limits(PulseLimit::Speed, wCardIndex)) }
+    }
+}
+
+/// Reads the pulse acceleration limits.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetMaxPulseAcc(
+    p0: *mut c_int,
+    p1: *mut c_int,
+    p2: *mut c_int,
+    p3: *mut c_int,
+    p4: *mut c_int,
+    p5: *mut c_int,
+    p6: *mut c_int,
+    p7: *mut c_int,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || pulse_limits(PulseLimit::Acc, wCardIndex)) }
+    }
 }
 
 /// Tracking error check on for the axes in the mask: a following error above the
@@ -210,11 +434,21 @@ pub unsafe extern "system" fn MCC_GetTrackErrorLimit(
     }
 }
 
-pointer_fns! {
-    /// Compensation tables of one channel (§2.7.5); they take effect at
-    /// `MCC_UpdateCompParam`. `dwInterval` 0 turns compensation off; `wHome_No` <= 255.
-    MCC_SetCompParam(pstCompParam: SYS_COMP_PARAM; wChannel, wCardIndex)
-        = set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param);
+/// Compensation tables of one channel (§2.7.5); they take effect at
+/// `MCC_UpdateCompParam`. `dwInterval` 0 turns compensation off; `wHome_No` <= 255.
+///
+/// # Safety
+/// `pstCompParam` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `SYS_COMP_PARAM`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_SetCompParam(
+    pstCompParam: *mut SYS_COMP_PARAM,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { set_channel_config(pstCompParam, wChannel, wCardIndex, Config::set_comp_param) }
+    }
 }
 
 /// Applies the compensation tables set with `MCC_SetCompParam`.
@@ -262,13 +496,17 @@ fn inpos_marker(wGroupIndex: WORD, dwAxisMask: DWORD, on: bool) -> McclResult<c_
     })
 }
 
-on_off! {
-    /// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
-    /// the command index.
-    MCC_EnableInPos,
-    /// Queues "in-position check off" for the axes in the mask. Returns the command index.
-    MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD)
-        = |on| inpos_marker(wGroupIndex, dwAxisMask, on);
+/// Queues "in-position check on" for the axes in the mask (user manual §2.3 G). Returns
+/// the command index.
+#[no_mangle]
+pub extern "system" fn MCC_EnableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
+    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, true) }
+}
+
+/// Queues "in-position check off" for the axes in the mask. Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_DisableInPos(wGroupIndex: WORD, dwAxisMask: DWORD) -> c_int {
+    ffi_boundary! { inpos_marker(wGroupIndex, dwAxisMask, false) }
 }
 
 /// Sets the in-position tolerances of group `g`, UU, as the vendor's library takes them:
@@ -282,19 +520,71 @@ fn set_tolerances(v: [f64; 8], g: WORD) -> McclResult<c_int> {
     Ok(c::NO_ERR)
 }
 
-per_axis_setters! {
-    /// In-position tolerance per axis, UU, kept as whole pulses: the magnitude of the
-    /// value truncated to a 32-bit pulse count (the vendor's library takes any value).
-    MCC_SetInPosToleranceEx(f64; wGroupIndex) = |v| set_tolerances(v, wGroupIndex);
+/// In-position tolerance per axis, UU, kept as whole pulses: the magnitude of the
+/// value truncated to a 32-bit pulse count (the vendor's library takes any value).
+#[no_mangle]
+pub extern "system" fn MCC_SetInPosToleranceEx(
+    v0: f64,
+    v1: f64,
+    v2: f64,
+    v3: f64,
+    v4: f64,
+    v5: f64,
+    v6: f64,
+    v7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_tolerances(v, wGroupIndex)
+    }
 }
 
-per_axis_getters! {
-    /// Reads the in-position tolerances, UU.
-    MCC_GetInPosToleranceEx(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.inpos.tolerance));
-    /// In-position status per axis: 0xFF once in position (held until the next command),
-    /// 0 otherwise.
-    MCC_GetInPosStatus(crate::vendor::BYTE; wGroupIndex)
-        = with_group(wGroupIndex, |g| Ok(g.inpos_status()));
+/// Reads the in-position tolerances, UU.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetInPosToleranceEx(
+    p0: *mut f64,
+    p1: *mut f64,
+    p2: *mut f64,
+    p3: *mut f64,
+    p4: *mut f64,
+    p5: *mut f64,
+    p6: *mut f64,
+    p7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))) }
+    }
+}
+
+/// In-position status per axis: 0xFF once in position (held until the next command),
+/// 0 otherwise.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetInPosStatus(
+    p0: *mut crate::vendor::BYTE,
+    p1: *mut crate::vendor::BYTE,
+    p2: *mut crate::vendor::BYTE,
+    p3: *mut crate::vendor::BYTE,
+    p4: *mut crate::vendor::BYTE,
+    p5: *mut crate::vendor::BYTE,
+    p6: *mut crate::vendor::BYTE,
+    p7: *mut crate::vendor::BYTE,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.inpos_status()))) }
+    }
 }
 
 /// Obsolete name of [`MCC_SetInPosMaxCheckTime`].
@@ -313,13 +603,49 @@ pub extern "system" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
     }
 }
 
-per_axis_setters! {
-    /// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
-    /// pulses per UU).
-    MCC_SetInPosTolerance(WORD; wGroupIndex) = |v| update_group(wGroupIndex, |g| g.set_inpos_tolerances_pulses(v));
+/// Obsolete: in-position tolerance per axis in pulses (converted to UU with each axis's
+/// pulses per UU).
+#[no_mangle]
+pub extern "system" fn MCC_SetInPosTolerance(
+    v0: WORD,
+    v1: WORD,
+    v2: WORD,
+    v3: WORD,
+    v4: WORD,
+    v5: WORD,
+    v6: WORD,
+    v7: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        update_group(wGroupIndex, |g| g.set_inpos_tolerances_pulses(v))
+    }
 }
 
-per_axis_getters! {
-    /// Obsolete: reads the in-position tolerances in pulses.
-    MCC_GetInPosTolerance(WORD; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.inpos_tolerances_pulses()));
+/// Obsolete: reads the in-position tolerances in pulses.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetInPosTolerance(
+    p0: *mut WORD,
+    p1: *mut WORD,
+    p2: *mut WORD,
+    p3: *mut WORD,
+    p4: *mut WORD,
+    p5: *mut WORD,
+    p6: *mut WORD,
+    p7: *mut WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.inpos_tolerances_pulses()))
+            })
+        }
+    }
 }

@@ -1,7 +1,7 @@
 //! Point-to-point acc/dec settings per axis (user manual §2.6.2 II; vendor header
 //! "Point-to-Point Motion").
 
-use super::{shape, shape_code, with_group};
+use super::{shape, shape_code, with_group, write_outs};
 
 /// A shape as a `char` output: 0 'T', 1 'S'.
 fn shape_byte(s: crate::planner::Shape) -> c_char {
@@ -38,28 +38,178 @@ fn set_ptp<T>(
     super::update_group(g, |grp| *field(&mut grp.settings) = v)
 }
 
-per_axis_setters! {
-    /// PtP acceleration shape per axis ('T' or 'S').
-    MCC_SetPtPAccType(c_char; wGroupIndex)
-        = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_acc);
-    /// PtP deceleration shape per axis ('T' or 'S').
-    MCC_SetPtPDecType(c_char; wGroupIndex)
-        = |v| set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_dec);
-    /// PtP acceleration time per axis, ms (0..=2^32 − 1).
-    MCC_SetPtPAccTime(f64; wGroupIndex) = |v| set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_acc_ms);
-    /// PtP deceleration time per axis, ms (0..=2^32 − 1).
-    MCC_SetPtPDecTime(f64; wGroupIndex) = |v| set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_dec_ms);
+/// PtP acceleration shape per axis ('T' or 'S').
+#[no_mangle]
+pub extern "system" fn MCC_SetPtPAccType(
+    v0: c_char,
+    v1: c_char,
+    v2: c_char,
+    v3: c_char,
+    v4: c_char,
+    v5: c_char,
+    v6: c_char,
+    v7: c_char,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_acc)
+    }
 }
 
-per_axis_getters! {
-    /// Reads the PtP acceleration shapes: 0 'T', 1 'S' (as the vendor's library answers).
-    MCC_GetPtPAccType(c_char; wGroupIndex)
-        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_byte)));
-    /// Reads the PtP deceleration shapes: 0 'T', 1 'S'.
-    MCC_GetPtPDecType(c_char; wGroupIndex)
-        = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_byte)));
-    /// Reads the PtP acceleration times, ms.
-    MCC_GetPtPAccTime(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms));
-    /// Reads the PtP deceleration times, ms.
-    MCC_GetPtPDecTime(f64; wGroupIndex) = with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms));
+/// PtP deceleration shape per axis ('T' or 'S').
+#[no_mangle]
+pub extern "system" fn MCC_SetPtPDecType(
+    v0: c_char,
+    v1: c_char,
+    v2: c_char,
+    v3: c_char,
+    v4: c_char,
+    v5: c_char,
+    v6: c_char,
+    v7: c_char,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_ptp(wGroupIndex, shapes(v), |s| &mut s.ptp_dec)
+    }
+}
+
+/// PtP acceleration time per axis, ms (0..=2^32 − 1).
+#[no_mangle]
+pub extern "system" fn MCC_SetPtPAccTime(
+    v0: f64,
+    v1: f64,
+    v2: f64,
+    v3: f64,
+    v4: f64,
+    v5: f64,
+    v6: f64,
+    v7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_acc_ms)
+    }
+}
+
+/// PtP deceleration time per axis, ms (0..=2^32 − 1).
+#[no_mangle]
+pub extern "system" fn MCC_SetPtPDecTime(
+    v0: f64,
+    v1: f64,
+    v2: f64,
+    v3: f64,
+    v4: f64,
+    v5: f64,
+    v6: f64,
+    v7: f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let v = [v0, v1, v2, v3, v4, v5, v6, v7];
+        set_ptp(wGroupIndex, times(v), |s| &mut s.ptp_dec_ms)
+    }
+}
+
+/// Reads the PtP acceleration shapes: 0 'T', 1 'S' (as the vendor's library answers).
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPtPAccType(
+    p0: *mut c_char,
+    p1: *mut c_char,
+    p2: *mut c_char,
+    p3: *mut c_char,
+    p4: *mut c_char,
+    p5: *mut c_char,
+    p6: *mut c_char,
+    p7: *mut c_char,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_byte)))
+            })
+        }
+    }
+}
+
+/// Reads the PtP deceleration shapes: 0 'T', 1 'S'.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPtPDecType(
+    p0: *mut c_char,
+    p1: *mut c_char,
+    p2: *mut c_char,
+    p3: *mut c_char,
+    p4: *mut c_char,
+    p5: *mut c_char,
+    p6: *mut c_char,
+    p7: *mut c_char,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_outs(p, || {
+                with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_byte)))
+            })
+        }
+    }
+}
+
+/// Reads the PtP acceleration times, ms.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPtPAccTime(
+    p0: *mut f64,
+    p1: *mut f64,
+    p2: *mut f64,
+    p3: *mut f64,
+    p4: *mut f64,
+    p5: *mut f64,
+    p6: *mut f64,
+    p7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms))) }
+    }
+}
+
+/// Reads the PtP deceleration times, ms.
+///
+/// # Safety
+/// Every pointer must be NULL (refused with `PARAMETER_ERR`) or writable.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetPtPDecTime(
+    p0: *mut f64,
+    p1: *mut f64,
+    p2: *mut f64,
+    p3: *mut f64,
+    p4: *mut f64,
+    p5: *mut f64,
+    p6: *mut f64,
+    p7: *mut f64,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        let p = [p0, p1, p2, p3, p4, p5, p6, p7];
+        // SAFETY: forwarded under this function's contract.
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms))) }
+    }
 }

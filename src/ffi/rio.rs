@@ -60,159 +60,433 @@ unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<
     unsafe { write_out(p, get) }
 }
 
+/// Writes what `get` reads from set `wSet` of the sets `pick` chooses (see [`on_set`]) to
+/// `p` (checked first).
+///
+/// # Safety
+/// `p` must be NULL or point to a writable T.
+unsafe fn read_set<const N: usize, T>(
+    p: *mut T,
+    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    wSet: WORD,
+    wCardIndex: WORD,
+    get: impl FnOnce(&mut Set<N>) -> McclResult<T>,
+) -> McclResult<c_int> {
+    // SAFETY: forwarded under this function's contract.
+    unsafe { read(p, || on_set(pick, wSet, wCardIndex, get)) }
+}
+
+/// Writes a status of set `wSet` (see [`read_set`]).
+///
+/// # Safety
+/// `p` must be NULL or point to a writable T.
+unsafe fn read_status<const N: usize, T>(
+    p: *mut T,
+    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    wSet: WORD,
+    wCardIndex: WORD,
+    status: fn(&Set<N>) -> T,
+) -> McclResult<c_int> {
+    // SAFETY: forwarded under this function's contract.
+    unsafe { read_set(p, pick, wSet, wCardIndex, |s| Ok(status(s))) }
+}
+
+/// Turns data transfer with slave `wSlave` of set `wSet` on or off (see [`set_do`]).
+fn slave_control<const N: usize>(
+    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    wSet: WORD,
+    wSlave: WORD,
+    wCardIndex: WORD,
+    on: bool,
+) -> McclResult<c_int> {
+    set_do(pick, wSet, wCardIndex, |s| s.set_slave_control(wSlave, on))
+}
+
 // ---- RIO ----
 
-on_off! {
-    /// Starts data transfer of a RIO set.
-    MCC_EnableRIOSetControl,
-    /// Stops data transfer of a RIO set.
-    MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD)
-        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.control = on);
+/// Starts data transfer of a RIO set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.control = true) }
 }
 
-/// Declares the entry points RIO and ARIO share, for one kind of master: `$sets` picks
-/// its sets ([`rio_sets`], [`ario_sets`]). The members are, in this order: slave control
-/// on and off, transfer, master and slave status, failed slaves, a port's (RIO) or
-/// slave's (ARIO) inputs, and setting and reading its outputs.
-macro_rules! remote_io {
-    (
-        $sets:ident;
-        $(#[$on_doc:meta])* $slave_on:ident,
-        $(#[$off_doc:meta])* $slave_off:ident,
-        $(#[$trans_doc:meta])* $trans:ident,
-        $(#[$master_doc:meta])* $master:ident,
-        $(#[$slaves_doc:meta])* $slaves:ident,
-        $(#[$fail_doc:meta])* $fail:ident,
-        $(#[$input_doc:meta])* $input:ident,
-        $(#[$set_output_doc:meta])* $set_output:ident,
-        $(#[$output_doc:meta])* $output:ident;
-    ) => {
-        on_off! {
-            $(#[$on_doc])* $slave_on,
-            $(#[$off_doc])* $slave_off(wSet: WORD, wSlave: WORD, wCardIndex: WORD)
-                = |on| set_do($sets, wSet, wCardIndex, |s| s.set_slave_control(wSlave, on));
-        }
-
-        pointer_fns! {
-            $(#[$trans_doc])* $trans(pwStatus: WORD; wSet, wCardIndex)
-                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.trans_status())));
-            $(#[$master_doc])* $master(pwStatus: WORD; wSet, wCardIndex)
-                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.master_status())));
-            $(#[$slaves_doc])* $slaves(pwStatus: WORD; wSet, wCardIndex)
-                = read(pwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.slave_status())));
-            $(#[$fail_doc])* $fail(pdwStatus: DWORD; wSet, wCardIndex)
-                = read(pdwStatus, || on_set($sets, wSet, wCardIndex, |s| Ok(s.slave_fail())));
-            $(#[$input_doc])* $input(pwValue: WORD; wSet, wPort, wCardIndex)
-                = read(pwValue, || on_set($sets, wSet, wCardIndex, |s| s.input(wPort)));
-            $(#[$output_doc])* $output(pwValue: WORD; wSet, wPort, wCardIndex)
-                = read(pwValue, || on_set($sets, wSet, wCardIndex, |s| s.output(wPort)));
-        }
-
-        $(#[$set_output_doc])*
-        #[no_mangle]
-        pub extern "system" fn $set_output(
-            wValue: WORD, wSet: WORD, wPort: WORD, wCardIndex: WORD,
-        ) -> c_int {
-            ffi_boundary! { set_do($sets, wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
-        }
-    };
+/// Stops data transfer of a RIO set.
+#[no_mangle]
+pub extern "system" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.control = false) }
 }
 
-remote_io! {
-    rio_sets;
-    /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
-    MCC_EnableRIOSlaveControl,
-    /// Stops data transfer with one slave of a RIO set.
-    MCC_DisableRIOSlaveControl,
-    /// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
-    MCC_GetRIOTransStatus,
-    /// Master status of a RIO set: 1 normal, 0 error.
-    MCC_GetRIOMasterStatus,
-    /// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
-    MCC_GetRIOSlaveStatus,
-    /// Failed transmitting slaves of a RIO set, bit n = slave n.
-    MCC_GetRIOSlaveFail,
-    /// The 16 inputs of a RIO port (bit n = input n), as last transferred.
-    MCC_GetRIOInputValue,
-    /// Sets the 16 outputs of a RIO port (sent at the next transfer).
-    MCC_SetRIOOutputValue,
-    /// The 16 outputs set for a RIO port.
-    MCC_GetRIOOutputValue;
+/// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableRIOSlaveControl(
+    wSet: WORD,
+    wSlave: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { slave_control(rio_sets, wSet, wSlave, wCardIndex, true) }
 }
 
-value_fns! {
-    /// Consecutive failed transfers a slave of the RIO set may have before the set reports
-    /// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
-    /// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
-    MCC_SetRIOTransError(wTime: WORD; wSet, wCardIndex)
-        = set_do(rio_sets, wSet, wCardIndex, |s| s.set_tolerance(wTime));
-    /// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
-    /// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
-    MCC_SetRIOTriggerType(wType: WORD; wSet, wDigitalInput, wCardIndex)
-        = set_do(rio_sets, wSet, wCardIndex, |s| s.set_trigger_type(wDigitalInput, wType));
+/// Stops data transfer with one slave of a RIO set.
+#[no_mangle]
+pub extern "system" fn MCC_DisableRIOSlaveControl(
+    wSet: WORD,
+    wSlave: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { slave_control(rio_sets, wSet, wSlave, wCardIndex, false) }
 }
 
-on_off! {
-    /// An edge of the digital input calls the RIO routine with `RDIn` set.
-    MCC_EnableRIOInputTrigger,
-    /// The digital input no longer calls the RIO routine.
-    MCC_DisableRIOInputTrigger(wSet: WORD, wDigitalInput: WORD, wCardIndex: WORD)
-        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.set_input_trigger(wDigitalInput, on));
+/// Transfer status of a RIO set: 1 normal, 0 error (master or a transmitting slave).
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetRIOTransStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pwStatus, rio_sets, wSet, wCardIndex, Set::trans_status) }
+    }
 }
 
-on_off! {
-    /// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
-    /// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
-    MCC_EnableRIOTransTrigger,
-    /// Transfer errors no longer call the RIO routine.
-    MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD)
-        = |on| set_do(rio_sets, wSet, wCardIndex, |s| s.set_trans_trigger(on));
+/// Master status of a RIO set: 1 normal, 0 error.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetRIOMasterStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pwStatus, rio_sets, wSet, wCardIndex, Set::master_status) }
+    }
+}
+
+/// Slave status of a RIO set: 1 when every transmitting slave works, 0 otherwise.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetRIOSlaveStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pwStatus, rio_sets, wSet, wCardIndex, Set::slave_status) }
+    }
+}
+
+/// Failed transmitting slaves of a RIO set, bit n = slave n.
+///
+/// # Safety
+/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `DWORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetRIOSlaveFail(
+    pdwStatus: *mut DWORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pdwStatus, rio_sets, wSet, wCardIndex, Set::slave_fail) }
+    }
+}
+
+/// The 16 inputs of a RIO port (bit n = input n), as last transferred.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetRIOInputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_set(pwValue, rio_sets, wSet, wCardIndex, |s| s.input(wPort)) }
+    }
+}
+
+/// Sets the 16 outputs of a RIO port (sent at the next transfer).
+#[no_mangle]
+pub extern "system" fn MCC_SetRIOOutputValue(
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
+}
+
+/// The 16 outputs set for a RIO port.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetRIOOutputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_set(pwValue, rio_sets, wSet, wCardIndex, |s| s.output(wPort)) }
+    }
+}
+
+/// Consecutive failed transfers a slave of the RIO set may have before the set reports
+/// it (`…SlaveFail` bit, statuses 0, the transfer trigger): 0 (the default) reports the
+/// first failed transfer, 5 the sixth. Undocumented by the vendor; see docs/compatibility.md.
+#[no_mangle]
+pub extern "system" fn MCC_SetRIOTransError(wTime: WORD, wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.set_tolerance(wTime)) }
+}
+
+/// Sets the trigger type of digital input `wDigitalInput` (`RIO_DI0..7` = bits 0..7 of
+/// port 0): `RIO_INT_NO`, `RIO_INT_RISE` (default), `RIO_INT_FALL`, `RIO_INT_LEVEL`.
+#[no_mangle]
+pub extern "system" fn MCC_SetRIOTriggerType(
+    wType: WORD,
+    wSet: WORD,
+    wDigitalInput: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        set_do(rio_sets, wSet, wCardIndex, |s| {
+            s.set_trigger_type(wDigitalInput, wType)
+        })
+    }
+}
+
+/// An edge of the digital input calls the RIO routine with `RDIn` set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableRIOInputTrigger(
+    wSet: WORD,
+    wDigitalInput: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        set_do(rio_sets, wSet, wCardIndex, |s| {
+            s.set_input_trigger(wDigitalInput, true)
+        })
+    }
+}
+
+/// The digital input no longer calls the RIO routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableRIOInputTrigger(
+    wSet: WORD,
+    wDigitalInput: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        set_do(rio_sets, wSet, wCardIndex, |s| {
+            s.set_input_trigger(wDigitalInput, false)
+        })
+    }
+}
+
+/// A transfer error of the set (its status going from 1 to 0) calls the RIO routine with
+/// every `RDIn` 0 and the driver's `FAIL` byte (after the 8 RDI bytes) set.
+#[no_mangle]
+pub extern "system" fn MCC_EnableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.set_trans_trigger(true)) }
+}
+
+/// Transfer errors no longer call the RIO routine.
+#[no_mangle]
+pub extern "system" fn MCC_DisableRIOTransTrigger(wSet: WORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.set_trans_trigger(false)) }
 }
 
 // ---- ARIO ----
 
-value_fns! {
-    /// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
-    /// 2^32 − 1 ms long) for the ARIO
-    /// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
-    /// restarts at the call.
-    MCC_SetARIOUpdateRate(dfUpdateRate: f64; wSet, wCardIndex)
-        = card_do_at(wCardIndex, || set_ix(wSet), |p, s| {
-            p.rio.ario_timing.set_update_rate(s, dfUpdateRate)
-        });
-    /// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
-    /// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
-    /// restarts at the call.
-    MCC_SetARIOClockDivider(wDivider: WORD; wSet, wCardIndex)
-        = card_do_at(wCardIndex, || set_ix(wSet), |p, s| {
-            p.rio.ario_timing.set_divider(s, wDivider)
-        });
-    /// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
-    /// of the card. The cycle count restarts at the call.
-    MCC_SetARIONode2NodeDelay(dwDelay: DWORD; wCardIndex)
-        = card_do_at(wCardIndex, || Ok(()), |p, ()| {
-            p.rio.ario_timing.set_node_delay(dwDelay)
-        });
+/// At most `dfUpdateRate` transfer cycles per second (Hz; > 0, a cycle of 1 / rate at most
+/// 2^32 − 1 ms long) for the ARIO
+/// set: a cycle lasts `1 / rate` or the bus time, whichever is longer. The cycle count
+/// restarts at the call.
+#[no_mangle]
+pub extern "system" fn MCC_SetARIOUpdateRate(
+    dfUpdateRate: f64,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        card_do_at(
+            wCardIndex,
+            || set_ix(wSet),
+            |p, s| p.rio.ario_timing.set_update_rate(s, dfUpdateRate),
+        )
+    }
 }
 
-remote_io! {
-    ario_sets;
-    /// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
-    MCC_EnableARIOSlaveControl,
-    /// Stops data transfer with an ARIO slave.
-    MCC_DisableARIOSlaveControl,
-    /// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
-    MCC_GetARIOTransStatus,
-    /// ARIO master status: 1 normal, 0 error.
-    MCC_GetARIOMasterStatus,
-    /// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
-    MCC_GetARIOSlaveStatus,
-    /// Failed transmitting ARIO slaves, bit n = slave n.
-    MCC_GetARIOSlaveFail,
-    /// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
-    MCC_GetARIOInputValue,
-    /// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
-    MCC_SetARIOOutputValue,
-    /// The 16 outputs set for ARIO slave `wPort`.
-    MCC_GetARIOOutputValue;
+/// Serial clock of the ARIO set: one bit every `wDivider` system clocks of 10 ns
+/// (1..65535, default 10); a slave's 32 bits take `32 × wDivider × 10 ns`. The cycle count
+/// restarts at the call.
+#[no_mangle]
+pub extern "system" fn MCC_SetARIOClockDivider(
+    wDivider: WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        card_do_at(
+            wCardIndex,
+            || set_ix(wSet),
+            |p, s| p.rio.ario_timing.set_divider(s, wDivider),
+        )
+    }
+}
+
+/// Gap after each ARIO slave's frame, in system clocks of 10 ns (default 0), for both sets
+/// of the card. The cycle count restarts at the call.
+#[no_mangle]
+pub extern "system" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
+    ffi_boundary! {
+        card_do_at(
+            wCardIndex,
+            || Ok(()),
+            |p, ()| p.rio.ario_timing.set_node_delay(dwDelay),
+        )
+    }
+}
+
+/// Starts data transfer with an ARIO slave (`RIO_SLAVE0..31`).
+#[no_mangle]
+pub extern "system" fn MCC_EnableARIOSlaveControl(
+    wSet: WORD,
+    wSlave: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { slave_control(ario_sets, wSet, wSlave, wCardIndex, true) }
+}
+
+/// Stops data transfer with an ARIO slave.
+#[no_mangle]
+pub extern "system" fn MCC_DisableARIOSlaveControl(
+    wSet: WORD,
+    wSlave: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { slave_control(ario_sets, wSet, wSlave, wCardIndex, false) }
+}
+
+/// ARIO transfer status: 1 normal, 0 error (master or a transmitting slave).
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetARIOTransStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pwStatus, ario_sets, wSet, wCardIndex, Set::trans_status) }
+    }
+}
+
+/// ARIO master status: 1 normal, 0 error.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetARIOMasterStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pwStatus, ario_sets, wSet, wCardIndex, Set::master_status) }
+    }
+}
+
+/// ARIO slave status: 1 when every transmitting slave works, 0 otherwise.
+///
+/// # Safety
+/// `pwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetARIOSlaveStatus(
+    pwStatus: *mut WORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pwStatus, ario_sets, wSet, wCardIndex, Set::slave_status) }
+    }
+}
+
+/// Failed transmitting ARIO slaves, bit n = slave n.
+///
+/// # Safety
+/// `pdwStatus` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `DWORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetARIOSlaveFail(
+    pdwStatus: *mut DWORD,
+    wSet: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_status(pdwStatus, ario_sets, wSet, wCardIndex, Set::slave_fail) }
+    }
+}
+
+/// The 16 inputs of ARIO slave `wPort` (0..31), as last transferred.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetARIOInputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_set(pwValue, ario_sets, wSet, wCardIndex, |s| s.input(wPort)) }
+    }
+}
+
+/// Sets the 16 outputs of ARIO slave `wPort` (0..31; sent at the next transfer).
+#[no_mangle]
+pub extern "system" fn MCC_SetARIOOutputValue(
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! { set_do(ario_sets, wSet, wCardIndex, |s| s.set_output(wPort, wValue)) }
+}
+
+/// The 16 outputs set for ARIO slave `wPort`.
+///
+/// # Safety
+/// `pwValue` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetARIOOutputValue(
+    pwValue: *mut WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { read_set(pwValue, ario_sets, wSet, wCardIndex, |s| s.output(wPort)) }
+    }
 }

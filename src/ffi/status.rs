@@ -23,27 +23,53 @@ pub extern "system" fn MCC_GetMotionStatus(wGroupIndex: WORD) -> c_int {
     }
 }
 
-pointer_fns! {
-    /// The command being executed (`nType` -1 when none): type (user manual §2.6.5 codes
-    /// 0..10), index, feed speed (PtP: ratio; delay: ms left), target, acc/dec times,
-    /// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
-    /// started since `MCC_ResetCommandIndexLD`.
-    /// With nothing running it writes the index of the last command started and returns
-    /// `RUN_TIME_ERR`, as the vendor's library does.
-    MCC_GetCurCommand(pstCurCommand: crate::vendor::COMMAND_INFO; wGroupIndex) = {
-        let info = read_published(wGroupIndex, |p| p.load_info())?;
-        write_out(pstCurCommand, || Ok(info.cmd))?;
-        if info.running {
-            Ok(crate::vendor::consts::NO_ERR)
-        } else {
-            Err(crate::error::McclError::RunTime)
+/// The command being executed (`nType` -1 when none): type (user manual §2.6.5 codes
+/// 0..10), index, feed speed (PtP: ratio; delay: ms left), target, acc/dec times,
+/// phase (0 accelerating, 1 constant speed, 2 decelerating) and the count of commands
+/// started since `MCC_ResetCommandIndexLD`.
+/// With nothing running it writes the index of the last command started and returns
+/// `RUN_TIME_ERR`, as the vendor's library does.
+///
+/// # Safety
+/// `pstCurCommand` must be NULL (refused with `PARAMETER_ERR`) or point to a valid
+/// `crate::vendor::COMMAND_INFO`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetCurCommand(
+    pstCurCommand: *mut crate::vendor::COMMAND_INFO,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            let info = read_published(wGroupIndex, |p| p.load_info())?;
+            write_out(pstCurCommand, || Ok(info.cmd))?;
+            if info.running {
+                Ok(crate::vendor::consts::NO_ERR)
+            } else {
+                Err(crate::error::McclError::RunTime)
+            }
         }
-    };
-    /// Commands queued and not yet started (the running one is not counted).
-    MCC_GetCommandCount(pnCmdCount: c_int; wGroupIndex) = write_out(pnCmdCount, || {
-        let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
-        Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
-    });
+    }
+}
+
+/// Commands queued and not yet started (the running one is not counted).
+///
+/// # Safety
+/// `pnCmdCount` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `c_int`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetCommandCount(
+    pnCmdCount: *mut c_int,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(pnCmdCount, || {
+                let n = super::with_group(wGroupIndex, |g| Ok(g.queued()))?;
+                Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
+            })
+        }
+    }
 }
 
 /// The next queued command gets index 0 again (automatic numbering).
@@ -74,13 +100,22 @@ pub extern "system" fn MCC_SetCommandIndex(
     }
 }
 
-pointer_fns! {
-    /// The index of the last command started (0 before any; one queued and not started
-    /// yet does not count), as the vendor's library answers.
-    MCC_GetCommandIndex(wIndex: WORD; wGroupIndex) = write_out(wIndex, || {
-        let n = super::with_group(wGroupIndex, |g| Ok(g.last_command_index()))?;
-        Ok(n as WORD)
-    });
+/// The index of the last command started (0 before any; one queued and not started
+/// yet does not count), as the vendor's library answers.
+///
+/// # Safety
+/// `wIndex` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `WORD`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetCommandIndex(wIndex: *mut WORD, wGroupIndex: WORD) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            write_out(wIndex, || {
+                let n = super::with_group(wGroupIndex, |g| Ok(g.last_command_index()))?;
+                Ok(n as WORD)
+            })
+        }
+    }
 }
 
 /// Depth of the card's pulse FIFO (> 0; at most [`MAX_PULSE_STOCK`], a larger one is

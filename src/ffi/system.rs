@@ -56,27 +56,113 @@ pub extern "system" fn MCC_GetSysMaxSpeed() -> f64 {
     ffi_boundary! { Ok(system::config(|c| c.sys_max_speed)) }
 }
 
-pointer_fns! {
-    /// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
-    /// take effect at `MCC_UpdateParam`.
-    MCC_SetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
-        = set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param);
-    /// Reads the mechanism parameters last set for one channel.
-    MCC_GetMacParam(pstMacParam: SYS_MAC_PARAM; wChannel, wCardIndex)
-        = get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac);
-    /// Sets the encoder configuration of one channel (§2.4.2).
-    MCC_SetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
-        = set_channel_config(pstEncoderConfig, wChannel, wCardIndex, Config::set_encoder_config);
-    /// Reads the encoder configuration last set for one channel.
-    MCC_GetEncoderConfig(pstEncoderConfig: SYS_ENCODER_CONFIG; wChannel, wCardIndex)
-        = get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder);
-    /// Sets the go-home parameters of one channel (§2.4.3); mode 0..19 (`MCC_Home` runs
-    /// 3..16).
-    MCC_SetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
-        = set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config);
-    /// Reads the go-home parameters last set for one channel.
-    MCC_GetHomeConfig(pstHomeConfig: SYS_HOME_CONFIG; wChannel, wCardIndex)
-        = get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home);
+/// Sets the mechanism parameters of one channel (§2.4.1). After `MCC_InitSystem` they
+/// take effect at `MCC_UpdateParam`.
+///
+/// # Safety
+/// `pstMacParam` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `SYS_MAC_PARAM`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_SetMacParam(
+    pstMacParam: *mut SYS_MAC_PARAM,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { set_channel_config(pstMacParam, wChannel, wCardIndex, Config::set_mac_param) }
+    }
+}
+
+/// Reads the mechanism parameters last set for one channel.
+///
+/// # Safety
+/// `pstMacParam` must be NULL (refused with `PARAMETER_ERR`) or point to a valid `SYS_MAC_PARAM`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetMacParam(
+    pstMacParam: *mut SYS_MAC_PARAM,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_channel_config(pstMacParam, wChannel, wCardIndex, |c| &c.mac) }
+    }
+}
+
+/// Sets the encoder configuration of one channel (§2.4.2).
+///
+/// # Safety
+/// `pstEncoderConfig` must be NULL (refused with `PARAMETER_ERR`) or point to a valid
+/// `SYS_ENCODER_CONFIG`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_SetEncoderConfig(
+    pstEncoderConfig: *mut SYS_ENCODER_CONFIG,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe {
+            set_channel_config(
+                pstEncoderConfig,
+                wChannel,
+                wCardIndex,
+                Config::set_encoder_config,
+            )
+        }
+    }
+}
+
+/// Reads the encoder configuration last set for one channel.
+///
+/// # Safety
+/// `pstEncoderConfig` must be NULL (refused with `PARAMETER_ERR`) or point to a valid
+/// `SYS_ENCODER_CONFIG`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetEncoderConfig(
+    pstEncoderConfig: *mut SYS_ENCODER_CONFIG,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_channel_config(pstEncoderConfig, wChannel, wCardIndex, |c| &c.encoder) }
+    }
+}
+
+/// Sets the go-home parameters of one channel (§2.4.3); mode 0..19 (`MCC_Home` runs
+/// 3..16).
+///
+/// # Safety
+/// `pstHomeConfig` must be NULL (refused with `PARAMETER_ERR`) or point to a valid
+/// `SYS_HOME_CONFIG`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_SetHomeConfig(
+    pstHomeConfig: *mut SYS_HOME_CONFIG,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { set_channel_config(pstHomeConfig, wChannel, wCardIndex, Config::set_home_config) }
+    }
+}
+
+/// Reads the go-home parameters last set for one channel.
+///
+/// # Safety
+/// `pstHomeConfig` must be NULL (refused with `PARAMETER_ERR`) or point to a valid
+/// `SYS_HOME_CONFIG`.
+#[no_mangle]
+pub unsafe extern "system" fn MCC_GetHomeConfig(
+    pstHomeConfig: *mut SYS_HOME_CONFIG,
+    wChannel: WORD,
+    wCardIndex: WORD,
+) -> c_int {
+    ffi_boundary! {
+        // SAFETY: forwarded under this function's contract.
+        unsafe { get_channel_config(pstHomeConfig, wChannel, wCardIndex, |c| &c.home) }
+    }
 }
 
 /// Removes every group (only while the system is closed).
@@ -93,33 +179,48 @@ fn create_group(map: [c_int; 8], nCardIndex: c_int, nMotionQueueSize: c_int) -> 
     Ok(g as c_int)
 }
 
-/// Declares `MCC_CreateGroup` and `MCC_CreateGroupEx`: the axis mappings and the card,
-/// then for the `Ex` form the queue size `$size`; `$queue` is the queue size used.
-macro_rules! create_groups {
-    ($($(#[$doc:meta])* $name:ident($($size:ident)?) = $queue:expr;)*) => {$(
-        $(#[$doc])*
-        #[no_mangle]
-        pub extern "system" fn $name(
-            xMapToCh: c_int, yMapToCh: c_int, zMapToCh: c_int, uMapToCh: c_int,
-            vMapToCh: c_int, wMapToCh: c_int, aMapToCh: c_int, bMapToCh: c_int,
-            nCardIndex: c_int, $($size: c_int)?
-        ) -> c_int {
-            ffi_boundary! {
-                let map = [
-                    xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
-                ];
-                create_group(map, nCardIndex, $queue)
-            }
-        }
-    )*};
+/// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
+#[no_mangle]
+pub extern "system" fn MCC_CreateGroup(
+    xMapToCh: c_int,
+    yMapToCh: c_int,
+    zMapToCh: c_int,
+    uMapToCh: c_int,
+    vMapToCh: c_int,
+    wMapToCh: c_int,
+    aMapToCh: c_int,
+    bMapToCh: c_int,
+    nCardIndex: c_int,
+) -> c_int {
+    ffi_boundary! {
+        let map = [
+            xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
+        ];
+        create_group(map, nCardIndex, c::MOTION_QUEUE_SIZE)
+    }
 }
 
-create_groups! {
-    /// Creates a group with a queue of `MOTION_QUEUE_SIZE` commands; returns its index.
-    MCC_CreateGroup() = c::MOTION_QUEUE_SIZE;
-    /// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
-    /// of `nMotionQueueSize` commands; returns the group index (lowest free slot).
-    MCC_CreateGroupEx(nMotionQueueSize) = nMotionQueueSize;
+/// Creates a group mapping axes X..B to channels of one card (-1: unused) with a queue
+/// of `nMotionQueueSize` commands; returns the group index (lowest free slot).
+#[no_mangle]
+pub extern "system" fn MCC_CreateGroupEx(
+    xMapToCh: c_int,
+    yMapToCh: c_int,
+    zMapToCh: c_int,
+    uMapToCh: c_int,
+    vMapToCh: c_int,
+    wMapToCh: c_int,
+    aMapToCh: c_int,
+    bMapToCh: c_int,
+    nCardIndex: c_int,
+    nMotionQueueSize: c_int,
+) -> c_int {
+    ffi_boundary! {
+        let map = [
+            xMapToCh, yMapToCh, zMapToCh, uMapToCh, vMapToCh, wMapToCh, aMapToCh, bMapToCh,
+        ];
+        create_group(map, nCardIndex, nMotionQueueSize)
+    }
 }
 
 /// Removes one group (only while the system is closed).

@@ -58,13 +58,17 @@ pub extern "system" fn MCC_AbortMotionEx(dfDecTime: f64, wGroupIndex: WORD) -> c
     }
 }
 
-on_off! {
-    /// Single-block mode on: after each command the group waits (`GMS_HOLD`) for
-    /// `MCC_RunSingleBlock`.
-    MCC_EnableSingleBlock,
-    /// Single-block mode off.
-    MCC_DisableSingleBlock(wGroupIndex: WORD)
-        = |on| super::update_group(wGroupIndex, |g| g.set_single_block(on));
+/// Single-block mode on: after each command the group waits (`GMS_HOLD`) for
+/// `MCC_RunSingleBlock`.
+#[no_mangle]
+pub extern "system" fn MCC_EnableSingleBlock(wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_single_block(true)) }
+}
+
+/// Single-block mode off.
+#[no_mangle]
+pub extern "system" fn MCC_DisableSingleBlock(wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_single_block(false)) }
 }
 
 /// Lets the next command run in single-block mode (`COMMAND_NOTACCEPTED_ERR` when the
@@ -95,13 +99,17 @@ pub extern "system" fn MCC_DisableBlendInstant(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { super::update_group(wGroupIndex, |g| g.set_blend_now(false)) }
 }
 
-on_off! {
-    /// Queues "blending on": general motions after it start while the previous one
-    /// decelerates. Returns the command index.
-    MCC_EnableBlend,
-    /// Queues "blending off". Returns the command index.
-    MCC_DisableBlend(wGroupIndex: WORD)
-        = |on| queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(on))));
+/// Queues "blending on": general motions after it start while the previous one
+/// decelerates. Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_EnableBlend(wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(true)))) }
+}
+
+/// Queues "blending off". Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_DisableBlend(wGroupIndex: WORD) -> c_int {
+    ffi_boundary! { queue(wGroupIndex, |ctx| Ok(ctx.marker(Plan::Blend(false)))) }
 }
 
 /// 0 when blending is on (as the end of the queue will have it), 1 when off.
@@ -263,13 +271,28 @@ pub extern "system" fn MCC_QueueLIOOutputValue(
     }
 }
 
-value_fns! {
-    /// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
-    /// `wBitMask` take those of `wValue` when the queue reaches it. Returns the command index.
-    MCC_QueueRIOOutputValue(wBitMask, wValue, wSet, wPort, wGroupIndex)
-        = queue_remote(false, wBitMask, wValue, wSet, wPort, wGroupIndex);
-    /// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
-    /// Returns the command index.
-    MCC_QueueARIOOutputValue(wBitMask, wValue, wSet, wPort, wGroupIndex)
-        = queue_remote(true, wBitMask, wValue, wSet, wPort, wGroupIndex);
+/// Queues a change of a RIO port's outputs (set 0..1, port 0..3): the bits of
+/// `wBitMask` take those of `wValue` when the queue reaches it. Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_QueueRIOOutputValue(
+    wBitMask: WORD,
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { queue_remote(false, wBitMask, wValue, wSet, wPort, wGroupIndex) }
+}
+
+/// Queues a change of an ARIO slave's outputs (set 0..1, slave 0..31 in `wPort`).
+/// Returns the command index.
+#[no_mangle]
+pub extern "system" fn MCC_QueueARIOOutputValue(
+    wBitMask: WORD,
+    wValue: WORD,
+    wSet: WORD,
+    wPort: WORD,
+    wGroupIndex: WORD,
+) -> c_int {
+    ffi_boundary! { queue_remote(true, wBitMask, wValue, wSet, wPort, wGroupIndex) }
 }
