@@ -3,8 +3,7 @@
 //! [`crate::engine::kinematics`]; what each function does and why is in
 //! docs/compatibility.md, "Robot kinematics".
 
-use super::motion::direction;
-use super::{finite, finite8, with_group, ERR_BAD_ARC};
+use super::{direction, finite, finite2, finite8, with_group, ERR_BAD_ARC};
 use crate::engine::command::Curve;
 use crate::engine::command::{Command, Ctx};
 use crate::engine::kinematics::{register, Registration};
@@ -301,7 +300,7 @@ fn circle_plane(
     posture: DWORD,
     g: WORD,
 ) -> McclResult<c_int> {
-    let c2 = super::motion::finite2(c2)?;
+    let c2 = finite2(c2)?;
     let r = finite3(r)?;
     let ccw = direction(dir)?;
     queue_v6_curve(g, posture, Curve::Arc, |ctx| {

@@ -556,6 +556,17 @@ pub fn flag(v: impl Into<i64>) -> McclResult<bool> {
     }
 }
 
+/// `byCirDir`: counter-clockwise (true) or clockwise.
+fn direction(byCirDir: crate::vendor::BYTE) -> McclResult<bool> {
+    // `CIR_CW` (0) or anything else: counter-clockwise, as the vendor's library takes it.
+    Ok(i32::from(byCirDir) != crate::vendor::consts::CIR_CW)
+}
+
+/// A point of a plane from C: both coordinates finite.
+fn finite2(v: [f64; 2]) -> McclResult<[f64; 2]> {
+    Ok([finite(v[0])?, finite(v[1])?])
+}
+
 /// Checks that 8 numbers from C are finite.
 pub fn finite8(v: [f64; 8]) -> McclResult<[f64; 8]> {
     v.iter().try_for_each(|&x| finite(x).map(|_| ()))?;

@@ -2,8 +2,8 @@
 //! §2.6.2; vendor header "General Motions"), plus the obsolete forms whose meaning is clear.
 
 use super::{
-    axis_mask, finite, finite8, queue, queue_curve, read_published, shape, shape_code, with_group,
-    write_outs,
+    axis_mask, direction, finite, finite2, finite8, queue, queue_curve, read_published, shape,
+    shape_code, with_group, write_outs,
 };
 use crate::engine::command::Curve;
 use crate::error::{McclError, McclResult};
@@ -14,12 +14,6 @@ use crate::vendor::{BYTE, DWORD, WORD};
 use std::os::raw::{c_char, c_int};
 
 use crate::config::range::time_ms;
-
-/// `byCirDir`: counter-clockwise (true) or clockwise.
-pub(super) fn direction(byCirDir: BYTE) -> McclResult<bool> {
-    // `CIR_CW` (0) or anything else: counter-clockwise, as the vendor's library takes it.
-    Ok(i32::from(byCirDir) != c::CIR_CW)
-}
 
 /// A feed speed from C, as the vendor's library takes it: its size (−1 is 1), not 0, at
 /// most the speed range's top, then at most the system maximum (`MCC_SetSysMaxSpeed`).
@@ -379,11 +373,6 @@ fn check_plane(
 fn aux5(v: [f64; 5]) -> McclResult<[f64; 5]> {
     v.iter().try_for_each(|&x| finite(x).map(|_| ()))?;
     Ok(v)
-}
-
-/// A point of a plane from C: both coordinates finite.
-pub(super) fn finite2(v: [f64; 2]) -> McclResult<[f64; 2]> {
-    Ok([finite(v[0])?, finite(v[1])?])
 }
 
 /// A curve about a center `c` of a plane (arc by an angle, circle, helix, cone), with
