@@ -13,36 +13,25 @@
 // live) has the lint back.
 #![allow(non_snake_case)]
 
-#[warn(non_snake_case)]
-pub mod card;
+// The core: the vendor's data, the configuration, the planner, the simulated machine and
+// the card's peripherals (crates/core). Re-exported under their names, so that the
+// library's modules and its Rust users name them as before.
+pub use mccl_core::{card, config, planner, vendor};
+pub(crate) use mccl_core::{error, error_record, interrupt, machine, sim};
+
 #[warn(non_snake_case)]
 pub mod clock;
 #[warn(non_snake_case)]
-pub mod config;
-#[warn(non_snake_case)]
 pub mod engine;
-#[warn(non_snake_case)]
-pub(crate) mod error;
-#[warn(non_snake_case)]
-pub(crate) mod error_record;
 #[warn(non_snake_case)]
 pub(crate) mod fault;
 pub mod ffi;
-#[warn(non_snake_case)]
-pub(crate) mod interrupt;
-#[warn(non_snake_case)]
-pub(crate) mod machine;
 #[warn(non_snake_case)]
 pub mod mc3b;
 #[cfg(feature = "panel")]
 #[warn(non_snake_case)]
 pub mod panel;
 #[warn(non_snake_case)]
-pub mod planner;
-#[warn(non_snake_case)]
 pub mod platform;
 #[warn(non_snake_case)]
-pub(crate) mod sim;
-#[warn(non_snake_case)]
 pub mod system;
-pub mod vendor;

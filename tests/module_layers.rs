@@ -3,6 +3,10 @@
 //! layers into a cycle, which this test rejects with the file that makes it.
 //!
 //! It reads `src/` and collects every `crate::<module>` path outside comments and tests.
+//! The lowest layers, from `vendor` to `card`, are the core crate's modules
+//! (`crates/core`), which the library re-exports under their names: the core cannot
+//! name the library, so the compiler keeps them below; the order among them is the
+//! core's own.
 
 use std::collections::BTreeMap;
 #[path = "support/rust_files.rs"]

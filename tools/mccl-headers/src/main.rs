@@ -22,7 +22,7 @@
 //! calling convention, or a table function the crate does not export, fails to compile. An
 //! `extern "C"` `MCC_*` function, which cbindgen does see, is still checked against the
 //! table here (return type, parameter count, types and names), and every `#define` against
-//! the vendor constants of `src/vendor/consts.rs`. `--check` compares instead of writing
+//! the vendor constants of `crates/core/src/vendor/consts.rs`. `--check` compares instead of writing
 //! and fails on drift.
 
 use std::collections::{BTreeSet, HashSet};
@@ -706,7 +706,7 @@ fn rustfmt(text: &str) -> Result<String, String> {
 fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
     let here = root.join("tools/mccl-headers");
     let vendor = Vendor::load(&here.join("vendor_prototypes.txt"))?;
-    let consts = rust_const_names(&root.join("src/vendor/consts.rs"))?;
+    let consts = rust_const_names(&root.join("crates/core/src/vendor/consts.rs"))?;
     let raw = run_cbindgen(root)?;
     let inc = root.join("include");
     Ok(vec![

@@ -2,7 +2,7 @@
 //! pulse corrections at points `dwInterval` pulses apart, point `wHome_No` at the home
 //! position; the table follows the direction of motion, and between points the correction
 //! is linear, truncated to whole pulses. The manual's example: interval 10000, home at
-//! point 4, forward table ..., [5] = 10, [6] = 12: a move of +15000 pulses sends
+//! point 4, forward table ..., `[5] = 10`, `[6] = 12`: a move of +15000 pulses sends
 //! 15000 + 10 + (int)(5000 / 10000 x 2) = 15011 pulses.
 
 use crate::vendor::SYS_COMP_PARAM;

@@ -93,7 +93,7 @@ fn default_example_parses_to_expected_structs() {
 /// The example of docs/simulated-machine.md is valid.
 #[test]
 fn docs_example_parses() {
-    let doc = include_str!("../../../docs/simulated-machine.md");
+    let doc = include_str!("../../../../../docs/simulated-machine.md");
     let section = doc
         .split("# The simulated machine: `MCCL_SIM`")
         .nth(1)

@@ -3,9 +3,10 @@
 //! pulses, how the plant follows the command, the emergency-stop, ADC and remote I/O
 //! inputs, and which channels are an MC3B.
 //!
-//! The file is TOML. [`SimConfig::from_env`] reads the file named by `MCCL_SIM`
-//! ([`ENV_VAR`]) or, when that is unset or empty, the embedded default
-//! `src/sim/default.toml` ([`DEFAULT_TOML`]), which documents every key. Unknown keys,
+//! The file is TOML. [`SimConfig::from_env_value`] reads the file named by `MCCL_SIM`
+//! ([`ENV_VAR`]; the library reads the variable) or, when that is unset or empty, the
+//! embedded default `crates/core/src/sim/default.toml` ([`DEFAULT_TOML`]), which
+//! documents every key. Unknown keys,
 //! wrong types and impossible values are errors whose message names the file, the 1-based
 //! line and the key, e.g.
 //! `machine.toml:7: card[0].channel[2].limit_minus: must be less than limit_plus (100)`.
@@ -208,15 +209,10 @@ impl SimConfig {
         self.card(card).channel(ch)
     }
 
-    /// Reads the configuration `MCCL_SIM` names, or the embedded default when it is unset
-    /// or empty. The error is one message per problem, one per line, each naming the file
-    /// and, for the file's contents, the line and the key.
-    pub fn from_env() -> Result<SimConfig, String> {
-        SimConfig::from_env_value(std::env::var_os(ENV_VAR).as_deref())
-    }
-
-    /// [`SimConfig::from_env`] with the variable's value given: `None` or empty uses the
-    /// embedded default, anything else is a path.
+    /// The configuration the value of `MCCL_SIM` ([`ENV_VAR`]) names: `None` or empty uses
+    /// the embedded default, anything else is a path. The error is one message per
+    /// problem, one per line, each naming the file and, for the file's contents, the line
+    /// and the key. (The caller reads the environment; this crate reads none.)
     pub fn from_env_value(value: Option<&OsStr>) -> Result<SimConfig, String> {
         match value {
             Some(path) if !path.is_empty() => SimConfig::from_file(Path::new(path)),

@@ -9,13 +9,13 @@ use crate::vendor::{SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM};
 pub mod legacy;
 
 /// Cards the library accepts (`MAX_CARD_NUM`).
-pub(crate) const CARDS: usize = c::MAX_CARD_NUM as usize;
+pub const CARDS: usize = c::MAX_CARD_NUM as usize;
 /// Channels (axes) per card and axes per group.
-pub(crate) const AXES: usize = c::MAX_AXIS_NUM as usize;
+pub const AXES: usize = c::MAX_AXIS_NUM as usize;
 /// Group slots (`MAX_GROUP_NUM`).
-pub(crate) const GROUPS: usize = c::MAX_GROUP_NUM as usize;
+pub const GROUPS: usize = c::MAX_GROUP_NUM as usize;
 /// Largest command queue a group may ask for (memory guard; the vendor default is 10000).
-pub(crate) const MAX_QUEUE_SIZE: usize = 1_000_000;
+pub const MAX_QUEUE_SIZE: usize = 1_000_000;
 
 /// Mechanism parameters per card and channel.
 pub type MacTable = [[SYS_MAC_PARAM; AXES]; CARDS];
@@ -396,7 +396,7 @@ pub struct Config {
 
 /// The system maximum feed speed until `MCC_SetSysMaxSpeed` is called, UU/s: 100, as the
 /// vendor's library reads right after init (the manuals give none).
-pub(crate) const DEFAULT_SYS_MAX_SPEED: f64 = 100.0;
+pub const DEFAULT_SYS_MAX_SPEED: f64 = 100.0;
 
 impl Default for Config {
     fn default() -> Self {

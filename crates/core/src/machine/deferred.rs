@@ -7,7 +7,7 @@
 //! in between), on ticks that copy no view for an observer (the panel), and only on
 //! cards whose triggers are not armed, with no homing and no safety check that reads
 //! the channels. It brings every
-//! channel up to date ([`Machine::catch_up`]) before it lets go of the lock and before
+//! channel up to date ([`Machine::catch_up`](crate::machine::Machine::catch_up)) before it lets go of the lock and before
 //! any tick that does not defer.
 //!
 //! What a step of an ideal channel leaves (see `Channel::step_ideal`) follows from the
@@ -125,7 +125,7 @@ pub(super) fn slot(n: u64) -> usize {
 }
 
 /// The channels that recorded a deferred step at the last tick and so record the next
-/// one without asking ([`Channel::record_step`]): ideal, with steps deferred since they
+/// one without asking ([`Channel::record_step`](crate::machine::Channel::record_step)): ideal, with steps deferred since they
 /// were last brought up to date. A byte a card, bit n for channel n.
 ///
 /// The tick that defers builds it afresh; bringing channels up to date empties it, and

@@ -1,7 +1,7 @@
 //! The card's peripherals that do not depend on the simulated machine: timer and
 //! watchdog, D/A and A/D converters, remote I/O; and the interrupt causes raised on the
-//! card ([`crate::engine::isr`]). One [`Peripherals`] per card, behind its own mutex in
-//! [`crate::engine::Shared::periph`].
+//! card (the library's engine delivers them to the program's routines). One
+//! [`Peripherals`] per card, behind its own mutex ([`PeriphCell`]).
 //!
 //! Lock order: a group's lock may be held while a card's peripherals are locked (the
 //! encoder compare of a group's tick calls [`Peripherals::dac_trigger`]), never the

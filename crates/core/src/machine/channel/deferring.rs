@@ -61,7 +61,7 @@ impl Channel {
 
     /// [`Channel::step_or_defer`] of a channel known to record its steps (an ideal
     /// channel with steps deferred since it was last brought up to date, see
-    /// [`Recording`]): the step recorded without asking.
+    /// [`Recording`](crate::machine::deferred::Recording)): the step recorded without asking.
     #[inline]
     pub fn record_step(&mut self, n: u64) {
         debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
