@@ -13,7 +13,8 @@
 
 mod check;
 mod gen;
-mod model;
+
+use mccl_header_model as model;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -27,10 +28,10 @@ fn load_header(root: &Path) -> Result<model::Header, String> {
     let a = root.join("include/MCCL.h");
     let b = root.join("include/MCCL_Fun.h");
     let (ta, tb) = (read(&a)?, read(&b)?);
-    model::Header::parse(
+    model::Header::parse(&[
         (&a.display().to_string(), &ta),
         (&b.display().to_string(), &tb),
-    )
+    ])
     .map_err(|e| e.to_string())
 }
 
