@@ -117,14 +117,68 @@ fn dll_exports(lib: &Path) -> Result<Vec<String>, String> {
     Ok(names)
 }
 
+const USAGE: &str =
+    "usage: mccl-bindings [--check | --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>]";
+
+/// What the command line asks for.
+#[derive(Debug, PartialEq)]
+enum Mode {
+    /// Write the bindings.
+    Write,
+    /// Compare them with what would be written.
+    Check,
+    /// Check the committed files against the headers and this library's exports.
+    Verify(PathBuf),
+    /// Print the usage.
+    Help,
+}
+
+/// Reads the command line.
+fn mode(mut p: lexopt::Parser) -> Result<Mode, String> {
+    use lexopt::prelude::*;
+    let mut mode = Mode::Write;
+    while let Some(arg) = p.next().map_err(|e| e.to_string())? {
+        let next = match arg {
+            Short('h') | Long("help") => return Ok(Mode::Help),
+            Long("check") => Mode::Check,
+            Long("verify") => Mode::Verify(
+                p.value()
+                    .map_err(|_| {
+                        "usage: mccl-bindings --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>"
+                    })?
+                    .into(),
+            ),
+            a => {
+                let a = match a {
+                    Short(c) => format!("-{c}"),
+                    Long(l) => format!("--{l}"),
+                    Value(v) => v.to_string_lossy().into_owned(),
+                };
+                return Err(format!(
+                    "unknown argument {a:?}; usage: mccl-bindings [--check | --verify <lib.so | lib.dll>]"
+                ));
+            }
+        };
+        if mode != Mode::Write {
+            return Err(format!("one of --check and --verify\n{USAGE}"));
+        }
+        mode = next;
+    }
+    Ok(mode)
+}
+
 fn run() -> Result<bool, String> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mode = mode(lexopt::Parser::from_env())?;
+    if mode == Mode::Help {
+        println!("{USAGE}\n\nWrites csharp/MCCL.cs, vb-bindings/MCCLPCI_IMP.bas and vb-bindings/MCCL.vb from\ninclude/MCCL.h and include/MCCL_Fun.h; --check fails if a committed file differs;\n--verify checks the committed files against the headers and the library's exports.");
+        return Ok(true);
+    }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let root = root.canonicalize().unwrap_or(root);
     let h = load_header(&root)?;
-    match args.first().map(String::as_str) {
-        None | Some("--check") => {
-            let check = !args.is_empty();
+    match mode {
+        Mode::Write | Mode::Check | Mode::Help => {
+            let check = mode == Mode::Check;
             let mut ok = true;
             for (path, text) in generate(&root, &h)? {
                 let old = std::fs::read_to_string(&path).unwrap_or_default();
@@ -151,11 +205,8 @@ fn run() -> Result<bool, String> {
             }
             Ok(ok)
         }
-        Some("--verify") => {
-            let lib = args
-                .get(1)
-                .ok_or("usage: mccl-bindings --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>")?;
-            let syms = exports(Path::new(lib))?;
+        Mode::Verify(lib) => {
+            let syms = exports(&lib)?;
             let files = [
                 (check::Lang::CSharp, root.join("csharp/MCCL.cs")),
                 (check::Lang::Vb6, root.join("vb-bindings/MCCLPCI_IMP.bas")),
@@ -177,9 +228,6 @@ fn run() -> Result<bool, String> {
             }
             Ok(total == 0)
         }
-        Some(a) => Err(format!(
-            "unknown argument {a:?}; usage: mccl-bindings [--check | --verify <lib.so | lib.dll>]"
-        )),
     }
 }
 
@@ -197,6 +245,26 @@ fn main() -> ExitCode {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_command_line() {
+        let m = |args: &[&str]| mode(lexopt::Parser::from_args(args));
+        assert_eq!(m(&[]), Ok(Mode::Write));
+        assert_eq!(m(&["--check"]), Ok(Mode::Check));
+        assert_eq!(m(&["--verify", "x.so"]), Ok(Mode::Verify("x.so".into())));
+        assert_eq!(m(&["--verify=x.dll"]), Ok(Mode::Verify("x.dll".into())));
+        assert_eq!(m(&["-h"]), Ok(Mode::Help));
+        assert!(m(&["--verify"])
+            .unwrap_err()
+            .starts_with("usage: mccl-bindings --verify"));
+        assert!(m(&["--frob"])
+            .unwrap_err()
+            .starts_with("unknown argument \"--frob\""));
+        assert!(m(&["x.so"])
+            .unwrap_err()
+            .starts_with("unknown argument \"x.so\""));
+        assert!(m(&["--check", "--verify", "x.so"]).is_err());
+    }
 
     #[test]
     fn a_windows_dll_is_told_by_its_pe_signature() {

@@ -54,13 +54,38 @@ fn run(out: &str, headers: &[String]) -> Result<(), String> {
     Ok(())
 }
 
-fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.len() < 2 {
-        eprintln!("usage: mccl-fuzzgen OUT.c HEADER.h...");
-        return ExitCode::from(2);
+const USAGE: &str = "usage: mccl-fuzzgen OUT.c HEADER.h...";
+
+/// Reads the command line: the output and the headers, `None` for the usage.
+fn args(mut p: lexopt::Parser) -> Result<Option<(String, Vec<String>)>, String> {
+    use lexopt::prelude::*;
+    let mut paths = Vec::new();
+    while let Some(arg) = p.next().map_err(|e| e.to_string())? {
+        match arg {
+            Short('h') | Long("help") => return Ok(None),
+            Value(v) => paths.push(v.string().map_err(|e| e.to_string())?),
+            a => return Err(a.unexpected().to_string()),
+        }
     }
-    match run(&args[0], &args[1..]) {
+    match paths.split_first() {
+        Some((out, headers)) if !headers.is_empty() => Ok(Some((out.clone(), headers.to_vec()))),
+        _ => Err("an output and at least one header".into()),
+    }
+}
+
+fn main() -> ExitCode {
+    let (out, headers) = match args(lexopt::Parser::from_env()) {
+        Ok(Some(a)) => a,
+        Ok(None) => {
+            println!("{USAGE}");
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => {
+            eprintln!("mccl-fuzzgen: {e}\n{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
+    match run(&out, &headers) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("mccl-fuzzgen: {e}");

@@ -101,3 +101,18 @@ fn generated_callers_and_routines() {
         assert!(c.contains(want), "missing:\n{want}\nin:\n{c}");
     }
 }
+
+#[test]
+fn the_command_line() {
+    let a = |args: &[&str]| crate::args(lexopt::Parser::from_args(args));
+    let (out, headers) = a(&["t.c", "MCCL.h", "mcl.h"]).unwrap().unwrap();
+    assert_eq!(
+        (out.as_str(), headers),
+        ("t.c", vec!["MCCL.h".to_string(), "mcl.h".into()])
+    );
+    assert_eq!(a(&["--help"]), Ok(None));
+    assert!(a(&["t.c"]).is_err());
+    assert!(a(&["t.c", "--frob", "MCCL.h"])
+        .unwrap_err()
+        .contains("--frob"));
+}

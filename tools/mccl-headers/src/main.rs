@@ -60,8 +60,38 @@ fn generate(root: &Path) -> Result<Vec<(PathBuf, String)>, String> {
     ])
 }
 
+const USAGE: &str = "usage: mccl-headers [--check]
+
+Writes include/MCCL.h, MCCL_Fun.h, mccl.h, mcl.h, MCCL_Sim.h and tests/vendor_prototypes.rs
+from the Rust sources and tools/mccl-headers/vendor_prototypes.txt; --check writes nothing
+and fails if a committed file differs.";
+
+/// Reads the command line: whether to check instead of writing, `None` for the usage.
+fn check_flag(mut p: lexopt::Parser) -> Result<Option<bool>, String> {
+    use lexopt::prelude::*;
+    let mut check = false;
+    while let Some(arg) = p.next().map_err(|e| e.to_string())? {
+        match arg {
+            Long("check") => check = true,
+            Short('h') | Long("help") => return Ok(None),
+            a => return Err(a.unexpected().to_string()),
+        }
+    }
+    Ok(Some(check))
+}
+
 fn main() -> ExitCode {
-    let check = std::env::args().any(|a| a == "--check");
+    let check = match check_flag(lexopt::Parser::from_env()) {
+        Ok(Some(c)) => c,
+        Ok(None) => {
+            println!("{USAGE}");
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => {
+            eprintln!("mccl-headers: {e}\n{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let root = root.canonicalize().unwrap_or(root);
     let files = match generate(&root) {

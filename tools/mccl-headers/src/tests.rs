@@ -98,3 +98,13 @@ fn vendor_table_has_all_344_plus_one() {
     let p = v.find("MCC_CreateGroupEx").unwrap();
     assert_eq!(p.params[9].default.as_deref(), Some("MOTION_QUEUE_SIZE"));
 }
+
+#[test]
+fn the_command_line() {
+    let f = |args: &[&str]| crate::check_flag(lexopt::Parser::from_args(args));
+    assert_eq!(f(&[]), Ok(Some(false)));
+    assert_eq!(f(&["--check"]), Ok(Some(true)));
+    assert_eq!(f(&["--help"]), Ok(None));
+    assert!(f(&["--chek"]).unwrap_err().contains("--chek"));
+    assert!(f(&["x"]).is_err());
+}
