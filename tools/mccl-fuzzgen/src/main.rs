@@ -1,10 +1,11 @@
 //! mccl-fuzzgen: writes the dispatch table of the random-call fuzzer (`c-tests/fuzz/`)
 //! from the prototypes of the headers the library exports.
 //!
-//! `mccl-fuzzgen OUT.c include/*.h` reads every header given, collects its typedefs
-//! (integer aliases, structs, callback types) and its function prototypes, and writes a C
-//! file with, for every function, a caller that draws each argument from a generator
-//! chosen by the parameter's type (and, to reach deeper code more often, by its name:
+//! `mccl-fuzzgen OUT.c include/*.h` reads every header given into the one header model
+//! (`mccl-header-model`: typedefs, structs, callback types, function prototypes), takes
+//! its view of them (`view`), and writes a C file with, for every function, a caller that
+//! draws each argument from a generator chosen by the parameter's type (and, to reach
+//! deeper code more often, by its name:
 //! `wGroupIndex` draws group indices, `cAxis` axis letters, ...), logs the call, makes it
 //! and checks the result (canaries around every pointer argument, the vendor's
 //! `RUN_TIME_ERR`). Callback parameters get a routine that counts its deliveries and calls
