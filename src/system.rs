@@ -248,7 +248,8 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
     })?;
     let sim = crate::sim::config::SimConfig::from_env_value(
         std::env::var_os(crate::sim::config::ENV_VAR).as_deref(),
-    ).map_err(|msg| {
+    )
+    .map_err(|msg| {
         for line in msg.lines() {
             eprintln!("MCCL: MCC_InitSystem failed: {line}");
         }

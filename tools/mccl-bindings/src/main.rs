@@ -12,11 +12,13 @@
 //!   table.
 
 mod check;
+mod exports;
 mod gen;
-mod model;
+
+use mccl_header_model as model;
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode};
+use std::process::ExitCode;
 
 fn read(path: &Path) -> Result<String, String> {
     std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))
@@ -27,10 +29,10 @@ fn load_header(root: &Path) -> Result<model::Header, String> {
     let a = root.join("include/MCCL.h");
     let b = root.join("include/MCCL_Fun.h");
     let (ta, tb) = (read(&a)?, read(&b)?);
-    model::Header::parse(
+    model::Header::parse(&[
         (&a.display().to_string(), &ta),
         (&b.display().to_string(), &tb),
-    )
+    ])
     .map_err(|e| e.to_string())
 }
 
@@ -43,87 +45,68 @@ fn generate(root: &Path, h: &model::Header) -> Result<Vec<(PathBuf, String)>, St
     ])
 }
 
-/// The exported functions of a library: of a Windows DLL its export table (`objdump -p`:
-/// the names `DllImport` and VB6 `Declare` look up), else the exported, defined text
-/// symbols of a shared library (`nm -D --defined-only`).
-fn exports(lib: &Path) -> Result<Vec<String>, String> {
-    if is_windows_dll(lib) {
-        return dll_exports(lib);
-    }
-    let out = Command::new("nm")
-        .args(["-D", "--defined-only"])
-        .arg(lib)
-        .output()
-        .map_err(|e| format!("nm: {e}"))?;
-    if !out.status.success() {
-        return Err(format!(
-            "nm -D {}: {}",
-            lib.display(),
-            String::from_utf8_lossy(&out.stderr)
-        ));
-    }
-    Ok(String::from_utf8_lossy(&out.stdout)
-        .lines()
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split_whitespace().collect();
-            match f.as_slice() {
-                [_, "T", name] => Some(name.to_string()),
-                _ => None,
+const USAGE: &str =
+    "usage: mccl-bindings [--check | --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>]";
+
+/// What the command line asks for.
+#[derive(Debug, PartialEq)]
+enum Mode {
+    /// Write the bindings.
+    Write,
+    /// Compare them with what would be written.
+    Check,
+    /// Check the committed files against the headers and this library's exports.
+    Verify(PathBuf),
+    /// Print the usage.
+    Help,
+}
+
+/// Reads the command line.
+fn mode(mut p: lexopt::Parser) -> Result<Mode, String> {
+    use lexopt::prelude::*;
+    let mut mode = Mode::Write;
+    while let Some(arg) = p.next().map_err(|e| e.to_string())? {
+        let next = match arg {
+            Short('h') | Long("help") => return Ok(Mode::Help),
+            Long("check") => Mode::Check,
+            Long("verify") => Mode::Verify(
+                p.value()
+                    .map_err(|_| {
+                        "usage: mccl-bindings --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>"
+                    })?
+                    .into(),
+            ),
+            a => {
+                let a = match a {
+                    Short(c) => format!("-{c}"),
+                    Long(l) => format!("--{l}"),
+                    Value(v) => v.to_string_lossy().into_owned(),
+                };
+                return Err(format!(
+                    "unknown argument {a:?}; usage: mccl-bindings [--check | --verify <lib.so | lib.dll>]"
+                ));
             }
-        })
-        .collect())
-}
-
-/// Whether `lib` is a Windows DLL (PE), by its first bytes: `MZ`, then the `PE\0\0`
-/// signature where the DOS header's `e_lfanew` (offset 0x3c) points.
-fn is_windows_dll(lib: &Path) -> bool {
-    let Ok(b) = std::fs::read(lib) else {
-        return false;
-    };
-    let pe_at = b
-        .get(0x3c..0x40)
-        .and_then(|s| <[u8; 4]>::try_from(s).ok())
-        .map(|s| u32::from_le_bytes(s) as usize);
-    b.starts_with(b"MZ") && pe_at.and_then(|at| b.get(at..at + 4)) == Some(&b"PE\0\0"[..])
-}
-
-/// The names of a DLL's export table (`objdump -p`, section "[Ordinal/Name Pointer]
-/// Table").
-fn dll_exports(lib: &Path) -> Result<Vec<String>, String> {
-    let out = Command::new("objdump")
-        .arg("-p")
-        .arg(lib)
-        .output()
-        .map_err(|e| format!("objdump: {e}"))?;
-    if !out.status.success() {
-        return Err(format!(
-            "objdump -p {}: {}",
-            lib.display(),
-            String::from_utf8_lossy(&out.stderr)
-        ));
+        };
+        if mode != Mode::Write {
+            return Err(format!("one of --check and --verify\n{USAGE}"));
+        }
+        mode = next;
     }
-    let text = String::from_utf8_lossy(&out.stdout);
-    let names: Vec<String> = text
-        .lines()
-        .skip_while(|l| !l.contains("[Ordinal/Name Pointer] Table"))
-        .skip(1)
-        .take_while(|l| !l.trim().is_empty())
-        .filter_map(|l| l.split_once(']').map(|(_, n)| n.trim().to_string()))
-        .collect();
-    if names.is_empty() {
-        return Err(format!("{}: no export table", lib.display()));
-    }
-    Ok(names)
+    Ok(mode)
 }
 
 fn run() -> Result<bool, String> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mode = mode(lexopt::Parser::from_env())?;
+    if mode == Mode::Help {
+        println!("{USAGE}\n\nWrites csharp/MCCL.cs, vb-bindings/MCCLPCI_IMP.bas and vb-bindings/MCCL.vb from\ninclude/MCCL.h and include/MCCL_Fun.h; --check fails if a committed file differs;\n--verify checks the committed files against the headers and the library's exports.");
+        return Ok(true);
+    }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let root = root.canonicalize().unwrap_or(root);
     let h = load_header(&root)?;
-    match args.first().map(String::as_str) {
-        None | Some("--check") => {
-            let check = !args.is_empty();
+    match mode {
+        Mode::Write | Mode::Check | Mode::Help => {
+            let check = mode == Mode::Check;
             let mut ok = true;
             for (path, text) in generate(&root, &h)? {
                 let old = std::fs::read_to_string(&path).unwrap_or_default();
@@ -150,11 +133,8 @@ fn run() -> Result<bool, String> {
             }
             Ok(ok)
         }
-        Some("--verify") => {
-            let lib = args
-                .get(1)
-                .ok_or("usage: mccl-bindings --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>")?;
-            let syms = exports(Path::new(lib))?;
+        Mode::Verify(lib) => {
+            let syms = exports::exports(&lib)?;
             let files = [
                 (check::Lang::CSharp, root.join("csharp/MCCL.cs")),
                 (check::Lang::Vb6, root.join("vb-bindings/MCCLPCI_IMP.bas")),
@@ -176,9 +156,6 @@ fn run() -> Result<bool, String> {
             }
             Ok(total == 0)
         }
-        Some(a) => Err(format!(
-            "unknown argument {a:?}; usage: mccl-bindings [--check | --verify <lib.so | lib.dll>]"
-        )),
     }
 }
 
@@ -198,25 +175,22 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_windows_dll_is_told_by_its_pe_signature() {
-        let dir = std::env::temp_dir().join(format!("mccl-bindings-pe-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        // MZ, e_lfanew = 0x40 at 0x3c, "PE\0\0" at 0x40.
-        let mut pe = vec![0u8; 0x48];
-        pe[..2].copy_from_slice(b"MZ");
-        pe[0x3c] = 0x40;
-        pe[0x40..0x44].copy_from_slice(b"PE\0\0");
-        let dll = dir.join("x.dll");
-        std::fs::write(&dll, &pe).unwrap();
-        assert!(is_windows_dll(&dll));
-        // An ELF library, an MZ stub without the signature, a missing file.
-        let elf = dir.join("x.so");
-        std::fs::write(&elf, b"\x7fELF\x02\x01\x01\0\0\0\0\0\0\0\0\0").unwrap();
-        assert!(!is_windows_dll(&elf));
-        pe[0x40] = b'X';
-        std::fs::write(&dll, &pe).unwrap();
-        assert!(!is_windows_dll(&dll));
-        assert!(!is_windows_dll(&dir.join("missing.dll")));
-        std::fs::remove_dir_all(&dir).unwrap();
+    fn the_command_line() {
+        let m = |args: &[&str]| mode(lexopt::Parser::from_args(args));
+        assert_eq!(m(&[]), Ok(Mode::Write));
+        assert_eq!(m(&["--check"]), Ok(Mode::Check));
+        assert_eq!(m(&["--verify", "x.so"]), Ok(Mode::Verify("x.so".into())));
+        assert_eq!(m(&["--verify=x.dll"]), Ok(Mode::Verify("x.dll".into())));
+        assert_eq!(m(&["-h"]), Ok(Mode::Help));
+        assert!(m(&["--verify"])
+            .unwrap_err()
+            .starts_with("usage: mccl-bindings --verify"));
+        assert!(m(&["--frob"])
+            .unwrap_err()
+            .starts_with("unknown argument \"--frob\""));
+        assert!(m(&["x.so"])
+            .unwrap_err()
+            .starts_with("unknown argument \"x.so\""));
+        assert!(m(&["--check", "--verify", "x.so"]).is_err());
     }
 }

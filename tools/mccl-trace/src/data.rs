@@ -1,8 +1,8 @@
 //! Reading traces and their events, as streams: a [`Reader`] yields one row at a time, so
 //! memory does not grow with the length of the trace.
 
+use crate::lines::{text, Lines};
 use std::fs::File;
-use std::io::{BufRead, BufReader};
 
 /// The header line of a trace (`MCCL_TRACE`).
 pub const HEADER: &str = "time_ms,group,command,status,x,y,z,u,v,w,a,b,speed";
@@ -31,24 +31,20 @@ pub struct Row {
 /// A trace file read row by row.
 pub struct Reader {
     name: String,
-    input: Box<dyn BufRead>,
-    line_no: usize,
-    buf: String,
+    lines: Lines,
 }
 
 impl Reader {
     /// Opens `path` and checks its header.
     pub fn open(path: &str) -> Result<Reader, String> {
         let f = File::open(path).map_err(|e| format!("{path}: cannot open: {e}"))?;
-        let mut r = Reader {
-            name: path.to_string(),
-            input: Box::new(BufReader::with_capacity(1 << 16, f)),
-            line_no: 0,
-            buf: String::new(),
-        };
-        match r.line()? {
+        let mut lines = Lines::new(path, f, true);
+        match lines.next_record()?.map(|(_, r)| text(r)) {
             None => Err(format!("{path}: empty file (not a trace: no header)")),
-            Some(h) if h == HEADER => Ok(r),
+            Some(h) if h == HEADER => Ok(Reader {
+                name: path.to_string(),
+                lines,
+            }),
             Some(h) => Err(format!(
                 "{path}:1: not a trace header: expected \"{HEADER}\", found \"{}\"",
                 h.chars().take(80).collect::<String>()
@@ -63,67 +59,37 @@ impl Reader {
 
     /// The line number of the last row read.
     pub fn line_no(&self) -> usize {
-        self.line_no
-    }
-
-    fn line(&mut self) -> Result<Option<&str>, String> {
-        self.buf.clear();
-        let n = self
-            .input
-            .read_line(&mut self.buf)
-            .map_err(|e| format!("{}:{}: cannot read: {e}", self.name, self.line_no + 1))?;
-        if n == 0 {
-            return Ok(None);
-        }
-        self.line_no += 1;
-        if !self.buf.ends_with('\n') {
-            return Err(format!(
-                "{}:{}: truncated line (the file ends without an end of line)",
-                self.name, self.line_no
-            ));
-        }
-        Ok(Some(self.buf.trim_end_matches(['\n', '\r'])))
+        self.lines.line_no()
     }
 
     /// The next row, `None` at the end of the file.
     pub fn next_row(&mut self) -> Result<Option<Row>, String> {
-        if self.line()?.is_none() {
+        let Some((ln, fields)) = self.lines.next_record()? else {
             return Ok(None);
-        }
-        let (name, ln, line) = (
-            &self.name,
-            self.line_no,
-            self.buf.trim_end_matches(['\n', '\r']),
-        );
+        };
+        let name = &self.name;
         let err = |what: String| format!("{name}:{ln}: {what}");
-        let mut fields = [""; 13];
-        let mut n = 0;
-        for s in line.split(',') {
-            if n < 13 {
-                fields[n] = s;
-            }
-            n += 1;
+        if fields.len() != 13 {
+            return Err(err(format!("expected 13 fields, found {}", fields.len())));
         }
-        if n != 13 {
-            return Err(err(format!("expected 13 fields, found {n}")));
-        }
+        let field = |i: usize| fields.get(i).unwrap_or_default();
         let col = |i: usize| HEADER.split(',').nth(i).unwrap_or("?");
         let num = |i: usize| -> Result<f64, String> {
-            match fields[i].parse::<f64>() {
+            match field(i).parse::<f64>() {
                 Ok(v) if v.is_finite() => Ok(v),
                 _ => Err(err(format!(
                     "field {}: not a finite number: \"{}\"",
                     col(i),
-                    fields[i]
+                    field(i)
                 ))),
             }
         };
         let int = |i: usize| -> Result<i64, String> {
-            fields[i].parse::<i64>().map_err(|_| {
+            field(i).parse::<i64>().map_err(|_| {
                 err(format!(
                     "field {}: not an integer: \"{}\"",
                     col(i),
-                    fields[i]
+                    field(i)
                 ))
             })
         };
@@ -195,34 +161,35 @@ pub fn read_events(path: &str) -> Result<Vec<Event>, String> {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
         Err(e) => return Err(format!("{ep}: cannot open: {e}")),
     };
-    let mut out = Vec::new();
-    for (i, line) in BufReader::new(f).lines().enumerate() {
-        let line = line.map_err(|e| format!("{ep}:{}: cannot read: {e}", i + 1))?;
-        if i == 0 {
-            if line != EVENTS_HEADER {
-                return Err(format!(
-                    "{ep}:1: not an events header: expected \"{EVENTS_HEADER}\""
-                ));
-            }
-            continue;
+    let mut lines = Lines::new(&ep, f, false);
+    match lines.next_record()?.map(|(_, r)| text(r)) {
+        None => return Ok(Vec::new()),
+        Some(h) if h == EVENTS_HEADER => {}
+        Some(_) => {
+            return Err(format!(
+                "{ep}:1: not an events header: expected \"{EVENTS_HEADER}\""
+            ))
         }
-        let bad = |w: &str| format!("{ep}:{}: {w}", i + 1);
-        let mut f = line.splitn(5, ',');
-        let (Some(t), Some(c), Some(g), Some(k), Some(d)) =
-            (f.next(), f.next(), f.next(), f.next(), f.next())
-        else {
+    }
+    let mut out = Vec::new();
+    while let Some((ln, r)) = lines.next_record()? {
+        let bad = |w: &str| format!("{ep}:{ln}: {w}");
+        if r.len() < 5 {
             return Err(bad("expected 5 fields"));
-        };
+        }
+        let field = |i: usize| r.get(i).unwrap_or_default();
+        // The detail has no comma; if one came, it stays in the detail.
+        let detail = r.iter().skip(4).collect::<Vec<_>>().join(",");
         out.push(Event {
-            t_ms: t
+            t_ms: field(0)
                 .parse()
                 .ok()
                 .filter(|v: &f64| v.is_finite())
                 .ok_or_else(|| bad("time_ms: not a number"))?,
-            card: c.parse().map_err(|_| bad("card: not an integer"))?,
-            group: g.parse().map_err(|_| bad("group: not an integer"))?,
-            kind: k.to_string(),
-            detail: d.to_string(),
+            card: field(1).parse().map_err(|_| bad("card: not an integer"))?,
+            group: field(2).parse().map_err(|_| bad("group: not an integer"))?,
+            kind: field(3).to_string(),
+            detail,
         });
     }
     Ok(out)

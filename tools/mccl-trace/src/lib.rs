@@ -4,6 +4,7 @@
 #![allow(clippy::needless_range_loop)] // axis loops index several arrays at once
 pub mod data;
 pub mod diff;
+mod lines;
 pub mod plot;
 pub mod report;
 pub mod scan;

@@ -1,5 +1,7 @@
 //! `mccl-trace plot|report|diff`: see what the machine did (see `--help`).
 
+use lexopt::prelude::*;
+use lexopt::{Arg, Parser};
 use mccl_trace::{diff, plot, report};
 use std::process::ExitCode;
 
@@ -22,8 +24,7 @@ printed digits), and times, groups, commands and statuses exactly. Exit status: 
 the traces agree, 1 when they differ, 2 on bad input.";
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
+    match run(lexopt::Parser::from_env()) {
         Ok(code) => ExitCode::from(code),
         Err(msg) => {
             eprintln!("mccl-trace: {msg}");
@@ -32,44 +33,64 @@ fn main() -> ExitCode {
     }
 }
 
-fn num(flag: &str, v: Option<&String>) -> Result<f64, String> {
-    let v = v.ok_or_else(|| format!("{flag} needs a value"))?;
+/// The value of option `flag` as text.
+fn value(p: &mut Parser, flag: &str, missing: &str) -> Result<String, String> {
+    p.value()
+        .map_err(|_| missing.to_string())?
+        .into_string()
+        .map_err(|v| format!("{flag}: not text: {v:?}"))
+}
+
+/// The value of option `flag` as a finite number.
+fn num(p: &mut Parser, flag: &str) -> Result<f64, String> {
+    let v = value(p, flag, &format!("{flag} needs a value"))?;
     v.parse::<f64>()
         .ok()
         .filter(|x| x.is_finite())
         .ok_or_else(|| format!("{flag}: not a number: {v}"))
 }
 
-fn run(args: &[String]) -> Result<u8, String> {
-    let Some(cmd) = args.first() else {
-        return Err(format!("no command\n\n{HELP}"));
-    };
-    if cmd == "--help" || cmd == "-h" || cmd == "help" {
-        println!("{HELP}");
-        return Ok(0);
+/// An option as the user wrote it, for messages.
+fn spelled(arg: &Arg) -> String {
+    match arg {
+        Short(c) => format!("-{c}"),
+        Long(s) => format!("--{s}"),
+        Value(v) => v.to_string_lossy().into_owned(),
     }
+}
+
+fn run(mut p: Parser) -> Result<u8, String> {
+    let cmd = match p.next().map_err(|e| e.to_string())? {
+        None => return Err(format!("no command\n\n{HELP}")),
+        Some(Short('h') | Long("help")) => {
+            println!("{HELP}");
+            return Ok(0);
+        }
+        Some(Value(v)) if v == "help" => {
+            println!("{HELP}");
+            return Ok(0);
+        }
+        Some(arg) => spelled(&arg),
+    };
     let mut files = Vec::new();
     let mut out: Option<String> = None;
     let mut opts = plot::Options::default();
     let mut tol = 0.0;
-    let mut i = 1;
-    while i < args.len() {
-        let a = &args[i];
-        let v = args.get(i + 1);
-        match a.as_str() {
-            "-o" | "--output" => {
-                out = Some(v.ok_or("-o needs a file name")?.clone());
-                i += 1;
+    while let Some(arg) = p.next().map_err(|e| e.to_string())? {
+        match arg {
+            Short('h') | Long("help") => {
+                println!("{HELP}");
+                return Ok(0);
             }
-            "--tol" => {
-                tol = num(a, v)?;
+            Short('o') | Long("output") => out = Some(value(&mut p, "-o", "-o needs a file name")?),
+            Long("tol") => {
+                tol = num(&mut p, "--tol")?;
                 if tol < 0.0 {
                     return Err("--tol must not be negative".into());
                 }
-                i += 1;
             }
-            "--group" => {
-                let v = v.ok_or("--group needs a value")?;
+            Long("group") => {
+                let v = value(&mut p, "--group", "--group needs a value")?;
                 let gs = v
                     .split(',')
                     .map(|g| {
@@ -78,32 +99,23 @@ fn run(args: &[String]) -> Result<u8, String> {
                     })
                     .collect::<Result<Vec<_>, _>>()?;
                 opts.groups = Some(gs);
-                i += 1;
             }
-            "--plane" => {
-                let v = v.ok_or("--plane needs a value")?;
-                opts.plane = plot::Plane::parse(v)
+            Long("plane") => {
+                let v = value(&mut p, "--plane", "--plane needs a value")?;
+                opts.plane = plot::Plane::parse(&v)
                     .ok_or_else(|| format!("--plane: {v} (xy, xz, yz or 3d)"))?;
-                i += 1;
             }
-            "--from" => {
-                opts.from = num(a, v)?;
-                i += 1;
-            }
-            "--to" => {
-                opts.to = num(a, v)?;
-                i += 1;
-            }
-            "--width" => {
-                let w = num(a, v)?;
+            Long("from") => opts.from = num(&mut p, "--from")?,
+            Long("to") => opts.to = num(&mut p, "--to")?,
+            Long("width") => {
+                let w = num(&mut p, "--width")?;
                 if !(600.0..=20000.0).contains(&w) {
                     return Err("--width: 600 to 20000".into());
                 }
                 opts.width = w as u32;
-                i += 1;
             }
-            "--axes" => {
-                let v = v.ok_or("--axes needs a value")?;
+            Long("axes") => {
+                let v = value(&mut p, "--axes", "--axes needs a value")?;
                 let ax = v
                     .split(',')
                     .map(|n| {
@@ -114,12 +126,13 @@ fn run(args: &[String]) -> Result<u8, String> {
                     })
                     .collect::<Result<Vec<_>, _>>()?;
                 opts.axes = Some(ax);
-                i += 1;
             }
-            s if s.starts_with('-') => return Err(format!("unknown option {s}\n\n{HELP}")),
-            _ => files.push(a.clone()),
+            Value(v) => files.push(
+                v.into_string()
+                    .map_err(|v| format!("not a file name in text: {v:?}"))?,
+            ),
+            arg => return Err(format!("unknown option {}\n\n{HELP}", spelled(&arg))),
         }
-        i += 1;
     }
     if opts.from > opts.to {
         return Err("--from is after --to".into());

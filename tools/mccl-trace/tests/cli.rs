@@ -167,3 +167,59 @@ fn bad_input_is_a_clear_error() {
         assert!(text(&o).contains(msg), "{args:?}: {}", text(&o));
     }
 }
+
+#[test]
+fn options_values_and_help() {
+    let d = common::dir("opts");
+    let a = d.join("a.csv");
+    common::write_trace(&a);
+    let a = a.to_str().unwrap();
+    let svg = d.join("o.svg");
+    let svg = svg.to_str().unwrap();
+    // The usage, on standard output with success, also asked for after a command.
+    for args in [
+        vec!["--help"],
+        vec!["-h"],
+        vec!["help"],
+        vec!["plot", a, "--help"],
+    ] {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            out.contains("usage:\n  mccl-trace plot TRACE.csv"),
+            "{args:?}: {out}"
+        );
+    }
+    // A value follows its option or is joined to it with '='; a value that starts with
+    // '-' is a value (a time window before the trace: -5 ms).
+    let o = run(&["diff", a, a, "--tol=2e-6"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o));
+    let o = run(&["plot", a, "-o", svg, "--from", "-5", "--to", "100"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o));
+    assert!(std::fs::metadata(svg).unwrap().len() > 0);
+    for (args, msg) in [
+        (vec!["plot", a, "-o"], "-o needs a file name"),
+        (vec!["plot", a, "--group"], "--group needs a value"),
+        (
+            vec!["plot", a, "-o", svg, "--width", "10"],
+            "--width: 600 to 20000",
+        ),
+        (
+            vec!["plot", a, "-o", svg, "--bogus"],
+            "unknown option --bogus",
+        ),
+        (
+            vec!["plot", a, "-o", svg, "--from", "9", "--to", "1"],
+            "--from is after --to",
+        ),
+        (
+            vec!["diff", a, a, "--tol", "-1"],
+            "--tol must not be negative",
+        ),
+    ] {
+        let o = run(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(text(&o).contains(msg), "{args:?}: {}", text(&o));
+    }
+}

@@ -18,7 +18,7 @@ fn real_header_text() -> (String, String) {
 }
 
 fn header(a: &str, b: &str) -> Header {
-    Header::parse(("MCCL.h", a), ("MCCL_Fun.h", b)).unwrap()
+    Header::parse(&[("MCCL.h", a), ("MCCL_Fun.h", b)]).unwrap()
 }
 
 fn real() -> Header {

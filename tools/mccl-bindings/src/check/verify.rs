@@ -7,7 +7,7 @@ pub(super) fn c_abi(h: &Header, t: &CType, clong: u8) -> Abi {
     let pointee = |t: &CType| match t {
         CType::Int { bytes, .. } => Pointee::Int(*bytes),
         CType::Bool => Pointee::Int(4),
-        CType::Char => Pointee::Int(1),
+        CType::Char | CType::CBool => Pointee::Int(1),
         CType::CLong { .. } => Pointee::Int(clong),
         CType::Float(b) => Pointee::Float(*b),
         CType::Struct(s) => Pointee::Struct(h.canonical(s).to_string()),
@@ -18,7 +18,7 @@ pub(super) fn c_abi(h: &Header, t: &CType, clong: u8) -> Abi {
         CType::Void => Abi::Void,
         CType::Int { bytes, .. } => Abi::Int(*bytes),
         CType::Bool => Abi::Int(4),
-        CType::Char => Abi::Int(1),
+        CType::Char | CType::CBool => Abi::Int(1),
         CType::CLong { .. } => Abi::Int(clong),
         CType::Float(b) => Abi::Float(*b),
         CType::Struct(s) => Abi::Struct(h.canonical(s).to_string()),

@@ -18,6 +18,8 @@ pub(super) fn cs_scalar(t: &CType, la: LongAs) -> Result<String, String> {
         .into(),
         CType::Bool => "bool".into(),
         CType::Char => "sbyte".into(),
+        // Only mcl.h has one, and the bindings cover MCCL.h and MCCL_Fun.h.
+        CType::CBool => return Err("C99 bool: no C# binding".into()),
         CType::CLong { signed } => match (la, signed) {
             (LongAs::Int, true) => "int",
             (LongAs::Int, false) => "uint",

@@ -258,7 +258,7 @@ pub(super) fn cb_param(p: &Param, n: usize) -> Param {
 }
 
 pub(super) fn cb_param_name(p: &Param, n: usize) -> String {
-    if p.name.starts_with("arg") && n == 1 {
+    if !p.named && n == 1 {
         "value".into()
     } else {
         p.name.clone()

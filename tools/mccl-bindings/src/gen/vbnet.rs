@@ -18,6 +18,8 @@ pub(super) fn vbnet_scalar(t: &CType, la: LongAs) -> Result<String, String> {
         .into(),
         CType::Bool => "Boolean".into(),
         CType::Char => "SByte".into(),
+        // Only mcl.h has one, and the bindings cover MCCL.h and MCCL_Fun.h.
+        CType::CBool => return Err("C99 bool: no VB.NET binding".into()),
         CType::CLong { signed } => match (la, signed) {
             (LongAs::Int, true) => "Integer",
             (LongAs::Int, false) => "UInteger",
