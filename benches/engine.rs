@@ -99,15 +99,11 @@ fn main() {
     let moving = (0..GROUPS as u16).all(|g| MCC_GetMotionStatus(g) == GMS_RUNNING);
     // The same with a snapshot published on every tick, as under the realtime clock.
     let shared = MCCLPCI_IMP::system::active().unwrap();
-    shared
-        .live_snapshots
-        .store(true, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(true);
     let t = Instant::now();
     MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(10_000);
     let wall_live = t.elapsed().as_secs_f64();
-    shared
-        .live_snapshots
-        .store(false, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(false);
     println!("engine: 48 groups x 2 axes moving, 10000 ticks of 1 ms: {wall:.3} s wall");
     println!(
         "  cost per tick: {:.2} us; {:.2} us publishing every tick as the realtime clock does (target < 20 us)",
@@ -191,9 +187,7 @@ fn main() {
 #[cfg(feature = "panel")]
 fn tick_cpu_us() -> f64 {
     let shared = MCCLPCI_IMP::system::active().unwrap();
-    shared
-        .live_snapshots
-        .store(true, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(true);
     MCCLPCI_IMP::ffi::trajectory::MCC_TimeDelay(1);
     let engine = engine_thread::engine_cpu_clock();
     let c = engine_thread::cpu_clock_ns(engine);

@@ -258,7 +258,7 @@ unsafe extern "system" fn on_timer(_: *mut MCCLPCI_IMP::vendor::TMRINT) {
     // SAFETY: both point at values the bench keeps alive while the engine runs.
     let (s, h) = unsafe { (&*s, &*h) };
     // During delivery the tick in progress is `ticks()` (it counts when it ends).
-    let due = s.clock.deadline_ns(s.clock.ticks());
+    let due = s.clock().deadline_ns(s.clock().ticks());
     let late = now.saturating_sub(due);
     h.record_ns(late);
     ON_ENGINE.with(|e| e.set(true));
@@ -434,16 +434,25 @@ fn engine_chunk(
     // The measured window starts half a period after tick LEAD_TICKS from now was due
     // (no tick is in progress then), so not while this thread configures the card.
     let period_ns = u64::from(period_ms) * 1_000_000;
-    let start = shared.clock.deadline_ns(shared.clock.ticks() + LEAD_TICKS) + period_ns / 2;
+    let start = shared
+        .clock()
+        .deadline_ns(shared.clock().ticks() + LEAD_TICKS)
+        + period_ns / 2;
     MCCLPCI_IMP::clock::sleep_until_ns(start);
-    let then = shared.clock.lateness().snapshot();
+    let then = shared.clock().lateness().snapshot();
     ENGINE_STALLED.store(false, Ordering::Relaxed);
     ISR_ON.store(true, Ordering::Release);
-    let (first, a0) = (shared.clock.ticks(), ENGINE_ALLOCS.load(Ordering::Relaxed));
-    poll(1, samples, &|| shared.clock.ticks() >= first + ticks);
+    let (first, a0) = (
+        shared.clock().ticks(),
+        ENGINE_ALLOCS.load(Ordering::Relaxed),
+    );
+    poll(1, samples, &|| shared.clock().ticks() >= first + ticks);
     ISR_ON.store(false, Ordering::Release);
-    let (last, a1) = (shared.clock.ticks(), ENGINE_ALLOCS.load(Ordering::Relaxed));
-    tick_h.merge_since(shared.clock.lateness(), &then);
+    let (last, a1) = (
+        shared.clock().ticks(),
+        ENGINE_ALLOCS.load(Ordering::Relaxed),
+    );
+    tick_h.merge_since(shared.clock().lateness(), &then);
     ENGINE_ALLOC_SUM.fetch_add(a1 - a0, Ordering::Relaxed);
     ENGINE_TICKS.fetch_add(last - first, Ordering::Relaxed);
     if print_stats {
@@ -452,7 +461,7 @@ fn engine_chunk(
     MCC_CloseSystem();
     SHARED.store(std::ptr::null_mut(), Ordering::Release);
     ISR_HIST.store(std::ptr::null_mut(), Ordering::Release);
-    shared.clock.missed()
+    shared.clock().missed()
 }
 static ENGINE_ALLOC_SUM: AtomicU64 = AtomicU64::new(0);
 

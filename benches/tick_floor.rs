@@ -119,17 +119,13 @@ fn round_ticks(groups: u16) -> u32 {
 
 fn engine_tick_us(live: bool, engine: libc::clockid_t, ticks: u32) -> (f64, f64) {
     let shared = MCCLPCI_IMP::system::active().expect("running system");
-    shared
-        .live_snapshots
-        .store(live, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(live);
     let c = cpu_clock_ns(engine);
     let t = Instant::now();
     MCC_TimeDelay(ticks);
     let us = t.elapsed().as_secs_f64() / f64::from(ticks) * 1e6;
     let cpu = (cpu_clock_ns(engine) - c) as f64 / f64::from(ticks) / 1e3;
-    shared
-        .live_snapshots
-        .store(false, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(false);
     (us, cpu)
 }
 
@@ -299,9 +295,7 @@ fn profile(spec: &str) {
         .expect("MCCL_TICK_FLOOR_PROFILE=<groups>[,live]");
     start(groups);
     let shared = MCCLPCI_IMP::system::active().expect("running system");
-    shared
-        .live_snapshots
-        .store(live, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(live);
     let t = Instant::now();
     let cruised = shared.cruise_ticks();
     MCC_TimeDelay(PROFILE_TICKS);

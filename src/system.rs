@@ -305,7 +305,7 @@ pub fn init(period: Duration, cards: &[SYS_CARD_CONFIG], kind: InitKind) -> Mccl
             McclError::RunTime
         })?;
     // ADC inputs the configuration wires (default: ADC n reads DAC n of the card).
-    for (c, p) in engine.shared().periph.iter().enumerate() {
+    for (c, p) in engine.shared().periphs().iter().enumerate() {
         let mut p = p.lock();
         for ch in 0..AXES {
             match sim.channel(c, ch).adc {

@@ -87,7 +87,7 @@ fn look(groups: &[u16]) -> Seen {
         })
         .collect();
     Seen {
-        tick: shared.clock.ticks(),
+        tick: shared.clock().ticks(),
         groups,
         channels,
     }
@@ -209,9 +209,7 @@ fn an_observer_looking_leaves_the_ticks_between_its_copies_cruising() {
     assert!(MCC_Line(100.0, 50.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, g, IMP_AXIS_ALL) >= 0);
     MCC_TimeDelay(400);
     let shared = MCCLPCI_IMP::system::active().expect("running");
-    shared
-        .live_snapshots
-        .store(true, std::sync::atomic::Ordering::Relaxed);
+    shared.publish_every_tick(true);
     // Cruise ticks in 2,000 ticks, and the real time they took, ms.
     let watch = || {
         let before = shared.cruise_ticks();
@@ -224,14 +222,14 @@ fn an_observer_looking_leaves_the_ticks_between_its_copies_cruising() {
     };
     let (alone, _) = watch();
     assert_eq!(alone, 1998, "without an observer");
-    shared.view.want(true);
+    shared.view().want(true);
     let (cruised, ms) = watch();
     let least = 1998u64.saturating_sub(3 * (ms / 20 + 1));
     assert!(
         cruised >= least,
         "{cruised} of 2000 ticks cruised in {ms} ms with an observer (at least {least})"
     );
-    let view = shared.view.get();
+    let view = shared.view().get();
     assert!(view.made, "the run's last tick copied a view");
     let mut q = [0 as c_long; 8];
     let [a, b, c, d, e, f, h, i] = &mut q;
@@ -252,6 +250,6 @@ fn an_observer_looking_leaves_the_ticks_between_its_copies_cruising() {
         (read[0] - 2 * read[1]).abs() <= 1,
         "along the line: {read:?}"
     );
-    shared.view.want(false);
+    shared.view().want(false);
     MCC_CloseSystem();
 }

@@ -20,11 +20,11 @@ fn another_thread_gets_the_locks_during_a_long_virtual_run() {
         || {
             assert_eq!(common::init(1), NO_ERR);
             let shared = MCCLPCI_IMP::system::active().expect("running");
-            let start = shared.clock.ticks();
+            let start = shared.clock().ticks();
             let other = std::thread::spawn(move || {
                 let shared = MCCLPCI_IMP::system::active().expect("running");
                 // Into the run: the ticks move.
-                while shared.clock.ticks() < start + 1_000 {
+                while shared.clock().ticks() < start + 1_000 {
                     std::thread::yield_now();
                 }
                 for i in 0..100u16 {
@@ -33,7 +33,7 @@ fn another_thread_gets_the_locks_during_a_long_virtual_run() {
                     // ... and the machine's (the gains are the card's).
                     assert_eq!(MCC_SetPGain(i, i, i, i, i, i, i, i, 0), NO_ERR);
                 }
-                let at = shared.clock.ticks();
+                let at = shared.clock().ticks();
                 // The only way the run below ends: 2^32 - 1 ms is 49 days of virtual time.
                 assert_eq!(MCC_CloseSystem(), NO_ERR);
                 at

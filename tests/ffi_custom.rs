@@ -327,7 +327,7 @@ fn pos(g: u16) -> [f64; 8] {
 }
 
 fn tick(n: u64) {
-    MCCLPCI_IMP::system::active().unwrap().clock.wait_ticks(n);
+    MCCLPCI_IMP::system::active().unwrap().clock().wait_ticks(n);
 }
 
 fn wait_stop(g: u16) {

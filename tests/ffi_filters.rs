@@ -24,11 +24,11 @@ fn pos(g: u16) -> [f64; 8] {
 }
 
 fn tick(n: u64) {
-    MCCLPCI_IMP::system::active().unwrap().clock.wait_ticks(n);
+    MCCLPCI_IMP::system::active().unwrap().clock().wait_ticks(n);
 }
 
 fn ticks() -> u64 {
-    MCCLPCI_IMP::system::active().unwrap().clock.ticks()
+    MCCLPCI_IMP::system::active().unwrap().clock().ticks()
 }
 
 /// Runs ticks until the group stops; the number of ticks it took.

@@ -82,11 +82,11 @@ fn start(sim: &str, chans: &[(u16, SYS_HOME_CONFIG)], trace: Option<&str>) {
 /// Runs until the homing ends; returns the status and the ticks it took.
 fn wait_home() -> (i32, u64) {
     let shared = MCCLPCI_IMP::system::active().unwrap();
-    let t0 = shared.clock.ticks();
+    let t0 = shared.clock().ticks();
     for _ in 0..200_000 {
         let s = MCC_GetGoHomeStatus();
         if s != 0 {
-            return (s, shared.clock.ticks() - t0);
+            return (s, shared.clock().ticks() - t0);
         }
         MCC_TimeDelay(1);
     }

@@ -37,7 +37,8 @@ fn pulses(g: u16) -> [i64; 8] {
 
 /// Runs ticks one by one until the group stops; returns the number of ticks it took.
 fn ticks_until_stop(g: u16, limit: u64) -> u64 {
-    let clock = &MCCLPCI_IMP::system::active().unwrap().clock;
+    let shared = MCCLPCI_IMP::system::active().unwrap();
+    let clock = shared.clock();
     let t0 = clock.ticks();
     while MCC_GetMotionStatus(g) != GMS_STOP {
         assert!(
@@ -94,7 +95,7 @@ fn status(g: u16) -> i32 {
 }
 
 fn tick(n: u64) {
-    MCCLPCI_IMP::system::active().unwrap().clock.wait_ticks(n);
+    MCCLPCI_IMP::system::active().unwrap().clock().wait_ticks(n);
 }
 
 fn path_speed(g: u16) -> f64 {

@@ -25,13 +25,20 @@ use MCCLPCI_IMP::vendor::consts::*;
 use MCCLPCI_IMP::vendor::*;
 
 fn periph(card: usize) -> Peripherals {
-    MCCLPCI_IMP::system::active().unwrap().periph[card]
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .periph(card)
+        .unwrap()
         .lock()
         .clone()
 }
 
 fn with_periph<R>(card: usize, f: impl FnOnce(&mut Peripherals) -> R) -> R {
-    f(&mut MCCLPCI_IMP::system::active().unwrap().periph[card].lock())
+    f(&mut MCCLPCI_IMP::system::active()
+        .unwrap()
+        .periph(card)
+        .unwrap()
+        .lock())
 }
 
 fn status(g: u16) -> i32 {
@@ -554,14 +561,22 @@ fn every_entry_point_checks_its_arguments_and_changes_nothing() {
     assert_eq!(init_ms(2, 1), NO_ERR);
     let before = (periph(0), periph(1));
     let isr_before: Vec<usize> = (0..7)
-        .map(|k| MCCLPCI_IMP::system::active().unwrap().isr.get(0, ORDER[k]))
+        .map(|k| {
+            MCCLPCI_IMP::system::active()
+                .unwrap()
+                .interrupt_routine(0, ORDER[k])
+        })
         .collect();
     for (name, call) in bad_calls() {
         assert_eq!(call(), PARAMETER_ERR, "{name}");
         assert_eq!((periph(0), periph(1)), before, "{name} changed something");
     }
     let isr_after: Vec<usize> = (0..7)
-        .map(|k| MCCLPCI_IMP::system::active().unwrap().isr.get(0, ORDER[k]))
+        .map(|k| {
+            MCCLPCI_IMP::system::active()
+                .unwrap()
+                .interrupt_routine(0, ORDER[k])
+        })
         .collect();
     assert_eq!(isr_before, isr_after);
     assert!(out_bufs_untouched(), "nothing written");
@@ -806,8 +821,8 @@ fn watchdog_expiry_resets_the_card() {
     assert_eq!(status(0), GMS_STOP);
     assert_eq!(x_pos(0), x);
     let shared = MCCLPCI_IMP::system::active().unwrap();
-    assert_eq!(shared.servo_on[0].load(SeqCst), 0);
-    assert!(!shared.pos_ready[0].load(SeqCst));
+    assert_eq!(shared.servo_on(0), 0);
+    assert!(!shared.pos_ready(0));
     let p = periph(0);
     assert_eq!(p.dac.output(4), 0.0);
     assert_eq!(p.rio.ario[0].output(2), Ok(0));
@@ -1329,8 +1344,7 @@ fn callbacks_read_positions_abort_and_close_the_system() {
     assert_eq!(
         MCCLPCI_IMP::system::active()
             .unwrap()
-            .isr
-            .get(0, MCCLPCI_IMP::engine::isr::Kind::Tmr),
+            .interrupt_routine(0, MCCLPCI_IMP::engine::isr::Kind::Tmr),
         0
     );
     assert_eq!(MCC_CloseSystem(), NO_ERR);

@@ -353,16 +353,16 @@ fn time_delay_runs_virtual_time_in_stepped_mode() {
     assert_eq!(init(1), NO_ERR); // 2 ms period
     let shared = MCCLPCI_IMP::system::active().unwrap();
     assert_eq!(
-        shared.clock.ticks(),
+        shared.clock().ticks(),
         0,
         "stepped: nothing runs until the program waits"
     );
     MCC_TimeDelay(7); // ceil(7 / 2) = 4 ticks
-    assert_eq!(shared.clock.ticks(), 4);
+    assert_eq!(shared.clock().ticks(), 4);
     MCC_TimeDelay(0);
-    assert_eq!(shared.clock.ticks(), 4);
+    assert_eq!(shared.clock().ticks(), 4);
     MCC_TimeDelay(1000);
-    assert_eq!(shared.clock.ticks(), 504);
+    assert_eq!(shared.clock().ticks(), 504);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }
 
@@ -373,7 +373,7 @@ fn fast_clock_idles_without_work() {
     assert_eq!(init(1), NO_ERR);
     let shared = MCCLPCI_IMP::system::active().unwrap();
     MCC_TimeDelay(100); // 50 ticks of 2 ms
-    assert_eq!(shared.clock.ticks(), 50);
-    assert_eq!(shared.clock.now(), std::time::Duration::from_millis(100));
+    assert_eq!(shared.clock().ticks(), 50);
+    assert_eq!(shared.clock().now(), std::time::Duration::from_millis(100));
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

@@ -173,15 +173,15 @@ fn handshake_under(clock: &str) {
     // Two host interrupts and one slave interrupt between ticks: the card acknowledges
     // both requests in its next tick and the slave's own interrupt is delivered after it
     // too: one call with HANDSHAKE = 3, after exactly one tick.
-    let t0 = shared.clock.ticks();
+    let t0 = shared.clock().ticks();
     assert_eq!(MCC_HostInterrupt(1), NO_ERR);
     assert_eq!(MCC_HostInterrupt(1), NO_ERR);
     assert_eq!(MCC_SlaveInterrupt(1), NO_ERR);
     assert_eq!(HSK_CALLS.load(SeqCst), 0, "not before a tick");
     MCC_TimeDelay(1);
-    assert_eq!(shared.clock.ticks(), t0 + 1);
+    assert_eq!(shared.clock().ticks(), t0 + 1);
     assert_eq!((HSK_CALLS.load(SeqCst), HSK_SUM.load(SeqCst)), (1, 3));
-    assert_eq!(shared.periph[1].lock().handshake.received, 2);
+    assert_eq!(shared.periph(1).unwrap().lock().handshake.received, 2);
     // Nothing more: each request is acknowledged once.
     MCC_TimeDelay(5);
     assert_eq!(HSK_CALLS.load(SeqCst), 1);
@@ -324,7 +324,7 @@ fn timing_under(clock: &str) {
     // Refusals change nothing.
     let shared = MCCLPCI_IMP::system::active().unwrap();
     let snap = |s: &std::sync::Arc<MCCLPCI_IMP::engine::Shared>| {
-        let p = s.periph[0].lock();
+        let p = s.periph(0).unwrap().lock();
         (p.dac.cadence, p.adc.cadence, p.rio.rio_timing)
     };
     let before = snap(&shared);
@@ -661,7 +661,7 @@ fn units_under(clock: &str) {
     assert_eq!(MCC_SetAccTime(100.0, 0), NO_ERR);
     assert_eq!(MCC_SetDecTime(100.0, 0), NO_ERR);
     let shared = MCCLPCI_IMP::system::active().unwrap();
-    let t0 = shared.clock.ticks();
+    let t0 = shared.clock().ticks();
     assert!(MCC_Line(0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0xFF) >= 0);
     let mut peak: f64 = 0.0;
     while MCCLPCI_IMP::ffi::status::MCC_GetMotionStatus(0) != GMS_STOP {
@@ -671,7 +671,7 @@ fn units_under(clock: &str) {
     assert_eq!(pulses(0)[0], 6350);
     assert_eq!(cur_pos(0)[0], 0.5);
     assert!((peak - 2.0).abs() <= 1e-9, "feed in inch/s: {peak}");
-    let ticks = shared.clock.ticks() - t0;
+    let ticks = shared.clock().ticks() - t0;
     assert!(ticks.abs_diff(353) <= 1, "{ticks} ticks");
     // A continuous jog travels the work zone end's distance, 2 inch (50.8 mm / 25.4),
     // from where the axis stands (as the vendor's library runs it), so to 2.5 inch =

@@ -10,7 +10,6 @@ use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{BOOL, CYCLE_INTERRUPT_ISR, INTERP, WORD};
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
 
 /// The filters change only while the group stands still (its queue empty, its output
 /// settled): `COMMAND_NOTFINISHED_ERR` otherwise; `COMMAND_NOTACCEPTED_ERR` on an MC3B
@@ -46,7 +45,7 @@ pub extern "system" fn MCC_SetComposeAxis(wAxesMask: WORD, wGroupIndex: WORD) ->
 #[no_mangle]
 pub extern "system" fn MCC_EnableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        let dt = system::active()?.clock.period().as_secs_f64();
+        let dt = system::active()?.clock().period().as_secs_f64();
         with_group(wGroupIndex, |g| {
             still(g)?;
             let periods = (g.settings.acc_ms / 1000.0 / dt).round();
@@ -105,8 +104,7 @@ pub extern "system" fn MCC_SetCycleInterruptRoutine(
 ) -> c_int {
     ffi_boundary! {
         let shared = system::active()?;
-        shared.cycle.set_cycle(pfnCycleIntRoutine.map_or(0, |f| f as usize));
-        shared.live_snapshots.store(shared.routines_any(), Ordering::Relaxed);
+        shared.set_cycle_routine(pfnCycleIntRoutine.map_or(0, |f| f as usize));
         Ok(c::NO_ERR)
     }
 }
@@ -131,8 +129,7 @@ pub extern "system" fn MCC_SetReverseInterpRoutine(
             Ok(())
         })?;
         if f != 0 {
-            shared.cycle.arm_reverse();
-            shared.live_snapshots.store(true, Ordering::Relaxed);
+            shared.arm_reverse_routines();
         }
         Ok(c::NO_ERR)
     }

@@ -16,11 +16,7 @@ use std::os::raw::c_int;
 fn register(kind: Kind, f: usize, wCardIndex: WORD) -> McclResult<c_int> {
     let shared = system::active()?;
     let cd = shared.card(card(wCardIndex)?)?;
-    shared.isr.set(cd, kind, f);
-    // Routines run between ticks and may read positions: publish every tick then.
-    shared
-        .live_snapshots
-        .store(shared.routines_any(), std::sync::atomic::Ordering::Relaxed);
+    shared.set_interrupt_routine(cd, kind, f);
     Ok(c::NO_ERR)
 }
 

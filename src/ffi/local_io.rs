@@ -14,18 +14,13 @@ use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
 
 fn servo(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let (cd, ch) = (card(wCardIndex)?, channel(wChannel)?);
     let shared = system::active()?;
     let cd = shared.card(cd)?;
     let bit = 1u32 << ch.0;
-    if on {
-        shared.servo_on[cd].fetch_or(bit, Ordering::AcqRel);
-    } else {
-        shared.servo_on[cd].fetch_and(!bit, Ordering::AcqRel);
-    }
+    shared.set_servo_on(cd, bit, on);
     Ok(c::NO_ERR)
 }
 
@@ -44,7 +39,7 @@ pub extern "system" fn MCC_SetServoOff(wChannel: WORD, wCardIndex: WORD) -> c_in
 fn pos_ready(wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let shared = system::active()?;
     let cd = shared.card(card(wCardIndex)?)?;
-    shared.pos_ready[cd].store(on, Ordering::Release);
+    shared.set_pos_ready(cd, on);
     Ok(c::NO_ERR)
 }
 

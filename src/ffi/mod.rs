@@ -145,7 +145,7 @@ pub fn with_card<R>(
 ) -> crate::error::McclResult<R> {
     let shared = crate::system::active()?;
     let cd = shared.card(crate::config::CardIx::new(wCardIndex)?)?;
-    let mut p = shared.periph[cd].lock();
+    let mut p = shared.periph(cd).ok_or(McclError::Parameter)?.lock();
     f(&mut p)
 }
 

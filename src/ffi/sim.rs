@@ -12,7 +12,6 @@ use crate::system;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-use std::sync::atomic::Ordering;
 
 /// Sensor numbers of `MCCL_SimSetSensor` and `MCCL_SimPlaceSensor`.
 pub const MCCL_SIM_HOME: c_int = 0;
@@ -122,10 +121,10 @@ pub unsafe extern "C" fn MCCL_SimGetOutput(
                 let cd = shared.card(cd)?;
                 let v = match nOutput {
                     MCCL_SIM_OUT_SERVO => {
-                        let bits = shared.servo_on[cd].load(Ordering::Acquire);
+                        let bits = shared.servo_on(cd);
                         shared.lock_machine().servo_output(cd, ch.0, bits)
                     }
-                    MCCL_SIM_OUT_POS_READY => shared.pos_ready[cd].load(Ordering::Acquire),
+                    MCCL_SIM_OUT_POS_READY => shared.pos_ready(cd),
                     MCCL_SIM_OUT_LED => shared.lock_machine().led_lit(cd, ch.0),
                     _ => return Err(McclError::Parameter),
                 };
@@ -168,7 +167,7 @@ pub unsafe extern "C" fn MCCL_SimGetMotor(
 pub unsafe extern "C" fn MCCL_SimGetTime(pdfMs: *mut f64) -> c_int {
     ffi_boundary! {
         // SAFETY: forwarded under this function's contract.
-        unsafe { write_out(pdfMs, || Ok(system::active()?.clock.now_ns() as f64 / 1e6)) }
+        unsafe { write_out(pdfMs, || Ok(system::active()?.clock().now_ns() as f64 / 1e6)) }
     }
 }
 
@@ -245,7 +244,7 @@ fn stats_of(
 pub unsafe extern "C" fn MCCL_SimGetClockStats(pstStats: *mut MCCL_CLOCK_STATS) -> c_int {
     ffi_boundary! {
         // SAFETY: forwarded under this function's contract.
-        unsafe { write_out(pstStats, || Ok(clock_stats(&system::active()?.clock))) }
+        unsafe { write_out(pstStats, || Ok(clock_stats(system::active()?.clock()))) }
     }
 }
 
@@ -320,11 +319,11 @@ mod tests {
         assert_eq!(init_ms(1, 1), c::NO_ERR);
         let shared = crate::system::active().unwrap();
         let t = Instant::now();
-        while shared.clock.ticks() < 20 {
+        while shared.clock().ticks() < 20 {
             assert!(
                 t.elapsed() < Duration::from_secs(10),
                 "the realtime clock ran {} ticks of 1 ms in 10 s",
-                shared.clock.ticks()
+                shared.clock().ticks()
             );
             std::thread::sleep(Duration::from_millis(5));
         }

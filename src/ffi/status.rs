@@ -128,9 +128,7 @@ pub extern "system" fn MCC_SetMaxPulseStockNum(nMaxStockNum: c_int) -> c_int {
             .filter(|n| *n >= 1)
             .ok_or(crate::error::McclError::Parameter)?
             .min(MAX_PULSE_STOCK);
-        system::active()?
-            .max_pulse_stock
-            .store(n, std::sync::atomic::Ordering::Relaxed);
+        system::active()?.set_max_pulse_stock(n);
         Ok(n as c_int)
     }
 }
@@ -142,9 +140,7 @@ pub const MAX_PULSE_STOCK: u32 = 63;
 #[no_mangle]
 pub extern "system" fn MCC_GetMaxPulseStockNum() -> c_int {
     ffi_boundary! {
-        let n = system::active()?
-            .max_pulse_stock
-            .load(std::sync::atomic::Ordering::Relaxed);
+        let n = system::active()?.max_pulse_stock();
         Ok(c_int::try_from(n).unwrap_or(c_int::MAX))
     }
 }
@@ -168,9 +164,7 @@ pub unsafe extern "system" fn MCC_GetCurPulseStockCount(
                 let shared = system::active()?;
                 shared.card(cd)?;
                 let moving = shared.channel_moving(cd.0, ch.0);
-                let depth = shared
-                    .max_pulse_stock
-                    .load(std::sync::atomic::Ordering::Relaxed);
+                let depth = shared.max_pulse_stock();
                 let n = if moving {
                     depth.min(u32::from(WORD::MAX)) as WORD
                 } else {

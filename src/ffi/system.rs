@@ -8,7 +8,6 @@ use crate::system::{self, InitKind};
 use crate::vendor::consts as c;
 use crate::vendor::{SYS_CARD_CONFIG, SYS_ENCODER_CONFIG, SYS_HOME_CONFIG, SYS_MAC_PARAM, WORD};
 use std::os::raw::{c_char, c_int};
-use std::sync::atomic::Ordering;
 
 /// The version string written by `MCC_GetVersion`: the vendor interface level this
 /// library reproduces (short, because callers pass small buffers).
@@ -403,7 +402,7 @@ pub extern "system" fn MCC_EnableDryRun() -> c_int {
         if system::has_mc3b() {
             return Err(crate::error::McclError::NotAccepted);
         }
-        shared.dry_run.store(true, Ordering::Release);
+        shared.set_dry_run(true);
         Ok(c::NO_ERR)
     }
 }
@@ -412,7 +411,7 @@ pub extern "system" fn MCC_EnableDryRun() -> c_int {
 #[no_mangle]
 pub extern "system" fn MCC_DisableDryRun() -> c_int {
     ffi_boundary! {
-        system::active()?.dry_run.store(false, Ordering::Release);
+        system::active()?.set_dry_run(false);
         Ok(c::NO_ERR)
     }
 }
@@ -422,7 +421,7 @@ pub extern "system" fn MCC_DisableDryRun() -> c_int {
 pub extern "system" fn MCC_CheckDryRun() -> c_int {
     ffi_boundary! {
         Ok(c_int::from(
-            !system::active()?.dry_run.load(Ordering::Acquire),
+            !system::active()?.dry_run(),
         ))
     }
 }

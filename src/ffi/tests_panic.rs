@@ -21,7 +21,8 @@ fn line_x(x: f64) -> i32 {
 
 /// Runs ticks one by one until group 0 stops; returns how many it took.
 fn ticks_until_stop(limit: u64) -> u64 {
-    let clock = &crate::system::active().unwrap().clock;
+    let shared = crate::system::active().unwrap();
+    let clock = shared.clock();
     let t0 = clock.ticks();
     while MCC_GetMotionStatus(0) != GMS_STOP {
         assert!(
@@ -79,7 +80,7 @@ fn stops_after_a_fault_at(point: &'static str, ticks: u32) -> (f64, f64) {
     assert_eq!(MCC_SetFeedSpeed(10.0, 0), 10.0);
     assert_eq!(line_x(10.0), 0);
     MCC_TimeDelay(300);
-    let clock = crate::system::active().unwrap().clock.period();
+    let clock = crate::system::active().unwrap().clock().period();
     assert_eq!(clock, Duration::from_millis(1));
     let before = x(0);
     assert!(before > 0.0 && before < 10.0, "moving: X = {before}");

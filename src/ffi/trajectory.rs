@@ -11,7 +11,7 @@ use crate::vendor::DWORD;
 pub extern "system" fn MCC_TimeDelay(dwTime: DWORD) {
     ffi_boundary! {
         match system::active() {
-            Ok(shared) => shared.clock.delay_ms(dwTime),
+            Ok(shared) => shared.clock().delay_ms(dwTime),
             Err(_) => std::thread::sleep(std::time::Duration::from_millis(u64::from(dwTime))),
         }
         Ok(())

@@ -154,7 +154,7 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
                 }
                 Some(_) => return Err(bad("volts must be -10..10")),
             };
-            let p = shared.periph.get(cd).ok_or_else(|| bad("no such card"))?;
+            let p = shared.periph(cd).ok_or_else(|| bad("no such card"))?;
             p.lock().set_adc_source(ch, src);
         }
         Control::RioInput {
@@ -164,7 +164,7 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
             value,
         } => {
             let cd = card_of(shared, card)?;
-            let p = shared.periph.get(cd).ok_or_else(|| bad("no such card"))?;
+            let p = shared.periph(cd).ok_or_else(|| bad("no such card"))?;
             let (s, pt) = (usize::from(set), usize::from(port));
             let mut p = p.lock();
             let slot = p

@@ -369,7 +369,7 @@ impl Server {
                     Ok(()) => {
                         let body = serde_json::json!({
                             "ok": true,
-                            "time_ms": self.source.shared.clock.now_ns() as f64 / 1e6,
+                            "time_ms": self.source.shared.clock().now_ns() as f64 / 1e6,
                         })
                         .to_string();
                         response(200, "application/json", body.as_bytes())

@@ -8,7 +8,6 @@ use crate::config::{GroupDef, AXES};
 use crate::engine::Shared;
 use crate::vendor::consts as c;
 use serde_json::{json, Value};
-use std::sync::atomic::Ordering;
 use std::sync::Arc;
 
 /// Where the state comes from.
@@ -83,14 +82,14 @@ impl Source {
 
     /// Asks the engine to keep (or stop) copying its view.
     pub fn want(&self, on: bool) {
-        self.shared.view.want(on);
+        self.shared.view().want(on);
     }
 
     /// The whole state.
     pub fn json(&self) -> Value {
         let s = &self.shared;
-        let clock = &s.clock;
-        let view = s.view.get();
+        let clock = s.clock();
+        let view = s.view().get();
         let groups: Vec<Value> = self
             .groups
             .iter()
@@ -116,10 +115,10 @@ impl Source {
                 }))
             })
             .collect();
-        let cards: Vec<Value> = (0..s.cards)
+        let cards: Vec<Value> = (0..s.cards())
             .map(|cd| {
                 let cv = view.cards.get(cd).copied().unwrap_or_default();
-                let servo = s.servo_on.get(cd).map_or(0, |a| a.load(Ordering::Acquire));
+                let servo = s.servo_on(cd);
                 let channels: Vec<Value> = cv
                     .channels
                     .iter()
@@ -143,7 +142,7 @@ impl Source {
                     "index": cd,
                     "emergency_stop": cv.emergency,
                     "servo_on": servo,
-                    "pos_ready": s.pos_ready.get(cd).is_some_and(|a| a.load(Ordering::Acquire)),
+                    "pos_ready": s.pos_ready(cd),
                     "channels": channels,
                     "timer": { "enabled": cv.timer.0, "period_clocks": cv.timer.1 },
                     "watchdog": { "enabled": cv.watchdog.0, "compare": cv.watchdog.1,

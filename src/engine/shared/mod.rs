@@ -4,6 +4,7 @@
 //! The tick ([`super::tick`]), the virtual-time polls ([`super::poll`]) and the go-home
 //! control ([`super::crate::engine::homing::control`]) are methods of it in their own files.
 
+mod card_state;
 mod checks;
 mod custom_stage;
 mod home;
@@ -29,7 +30,7 @@ use std::time::Duration;
 #[derive(Debug)]
 pub struct Shared {
     /// The tick clock.
-    pub clock: Clock,
+    pub(super) clock: Clock,
     /// Group slot -> position in `groups`, -1 for none. Written only with the groups'
     /// lock held (`MCC_CreateGroup`/`MCC_CloseGroup` while running, [`Shared::open_group`]);
     /// read without it where a stale answer is harmless.
@@ -59,8 +60,6 @@ pub struct Shared {
     /// A fast-clock poll in progress: group slot (or -1) and the status it saw; the engine
     /// ends the run of ticks when that status changes.
     pub(super) watch: (AtomicI32, AtomicI32),
-    /// Number of cards passed to `MCC_InitSystem`.
-    pub cards: usize,
     /// The simulated machine behind the channels ([`Shared::lock_machine`]). Lock order:
     /// machine before the groups.
     pub(super) machine: Mutex<Machine>,
@@ -69,26 +68,26 @@ pub struct Shared {
     /// ([`super::running`]), lets them go at the next tick when this is not 0.
     pub(super) lock_wanted: AtomicU32,
     /// Hardware limit switch check (`MCC_EnableLimitSwitchCheck` mode, -1 when off).
-    pub limit_check: AtomicI32,
+    pub(super) limit_check: AtomicI32,
     /// `MCC_EnableDryRun` is in effect.
-    pub dry_run: AtomicBool,
+    pub(super) dry_run: AtomicBool,
     /// Publish snapshots on every tick even under a virtual clock (set while code runs on
     /// the engine thread between ticks, i.e. interrupt callbacks are registered).
-    pub live_snapshots: AtomicBool,
+    pub(super) live_snapshots: AtomicBool,
     /// A group is kinematic: the engine runs the kinematics stage after each tick.
-    pub kinematics_on: AtomicBool,
+    pub(super) kinematics_on: AtomicBool,
     /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
-    pub servo_on: Vec<AtomicU32>,
+    pub(super) servo_on: Vec<AtomicU32>,
     /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
-    pub pos_ready: Vec<AtomicBool>,
+    pub(super) pos_ready: Vec<AtomicBool>,
     /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
-    pub max_pulse_stock: AtomicU32,
+    pub(super) max_pulse_stock: AtomicU32,
     /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
-    pub periph: Vec<crate::card::PeriphCell>,
+    pub(super) periph: Vec<crate::card::PeriphCell>,
     /// The interrupt routines registered per card (`isr`).
-    pub isr: crate::engine::isr::IsrTable,
+    pub(super) isr: crate::engine::isr::IsrTable,
     /// The per-period routines (`cycle`).
-    pub cycle: super::cycle::CycleRoutines,
+    pub(super) cycle: super::cycle::CycleRoutines,
     /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
     pub(super) homing: Mutex<Option<crate::engine::homing::Homing>>,
     /// `MCC_GetGoHomeStatus`: [`crate::engine::homing::HOME_BUSY`], [`crate::engine::homing::HOME_DONE`] or
@@ -112,7 +111,7 @@ pub struct Shared {
     /// The cruise ticks run (written by the engine thread alone).
     pub(super) cruise_ticks: AtomicU64,
     /// What an observer (the browser panel) sees beyond the snapshots (`view.rs`).
-    pub view: super::view::ViewCell,
+    pub(super) view: super::view::ViewCell,
 }
 
 /// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum`: 1, as the vendor's library
@@ -171,7 +170,6 @@ impl Shared {
             comp: (0..GROUPS)
                 .map(|_| std::array::from_fn(|_| AtomicI32::new(0)))
                 .collect(),
-            cards: machine.cards.len(),
             machine: Mutex::new(machine),
             lock_wanted: AtomicU32::new(0),
             limit_check: AtomicI32::new(-1),
@@ -397,7 +395,7 @@ impl Shared {
 
     /// Checks that `card` is one of the cards passed to `MCC_InitSystem`.
     pub fn card(&self, card: crate::config::CardIx) -> McclResult<usize> {
-        if card.0 < self.cards {
+        if card.0 < self.cards() {
             Ok(card.0)
         } else {
             Err(McclError::Parameter)

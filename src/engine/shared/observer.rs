@@ -13,7 +13,7 @@ impl crate::engine::Shared {
         machine: &Machine,
         running: &[crate::engine::group::GroupState],
     ) {
-        let cards = (0..self.cards)
+        let cards = (0..self.cards())
             .map(|cd| self.card_view(machine, cd))
             .collect();
         let mut groups = vec![None; GROUPS];
