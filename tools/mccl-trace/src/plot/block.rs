@@ -1,13 +1,25 @@
 //! Drawing one group's block: the path coloured by command, the time panels' series,
 //! command boundaries and the hold, delay, abort and error spans.
 
-use super::draw::Block;
+use super::columns::Columns;
+use super::panel::Panel;
+use super::path::PathSimplifier;
 use super::spans::{boundaries, spans};
 use super::style::{e, font, AXIS_COLORS, BOUNDARY, CMD_COLORS, SPEED};
 use crate::data::{Event, AXIS_NAMES};
 use crate::scan::GroupScan;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+
+/// One group's block of panels in the plot: its panels, the axes drawn, the path
+/// drawn in the plane and the columns read for each panel.
+pub(super) struct Block {
+    pub(super) group: u32,
+    pub(super) panels: Vec<Panel>,
+    pub(super) axes: Vec<usize>,
+    pub(super) path: PathSimplifier,
+    pub(super) cols: Vec<Columns>,
+}
 
 pub(super) fn draw_block<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,

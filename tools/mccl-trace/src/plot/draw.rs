@@ -1,9 +1,9 @@
 //! Drawing a picture: the panels of each group laid out from the first pass, the second
 //! pass over the trace decimating into them, then each group's block drawn.
 
-use super::block::draw_block;
+use super::block::{draw_block, Block};
 use super::columns::Columns;
-use super::panel::{pad, pad_time, panel_chart, speed_range, GroupPlot, Panel, PlotInfo};
+use super::panel::{pad, pad_time, panel_chart, speed_range, GroupPlot, PlotInfo};
 use super::path::PathSimplifier;
 use super::style::{e, font, fonts, TITLE_H};
 use super::Options;
@@ -12,14 +12,6 @@ use crate::scan::{deriver, GroupScan, Scan};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::collections::BTreeMap;
-
-pub(super) struct Block {
-    pub(super) group: u32,
-    pub(super) panels: Vec<Panel>,
-    pub(super) axes: Vec<usize>,
-    pub(super) path: PathSimplifier,
-    pub(super) cols: Vec<Columns>,
-}
 
 pub(super) fn draw<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
