@@ -51,11 +51,11 @@ impl Shared {
         let Some(h) = held.as_mut() else {
             return false;
         };
-        if !self.cruise_enabled || !self.clock.next_is_inside_run() {
+        if !self.cruise.cruise_enabled || !self.clock.next_is_inside_run() {
             return false;
         }
-        if self.home_status.load(Ordering::Acquire) == HOME_BUSY
-            || self.limit_check.load(Ordering::Relaxed) >= 0
+        if self.home.home_status.load(Ordering::Acquire) == HOME_BUSY
+            || self.outputs.limit_check.load(Ordering::Relaxed) >= 0
         {
             return false;
         }
@@ -80,7 +80,7 @@ impl Shared {
     /// [`Shared::tick`] decides it.
     #[inline]
     fn publishes_everything(&self, n: u64) -> bool {
-        self.live_snapshots.load(Ordering::Relaxed) || n % PUBLISH_EVERY == 0
+        self.routines.live_snapshots.load(Ordering::Relaxed) || n % PUBLISH_EVERY == 0
     }
 
     /// How many ticks from the next are cruise ticks for the groups and the machine (0:
@@ -89,7 +89,7 @@ impl Shared {
     /// channels, no trace, every group quiet ahead.
     fn plan_cruise(&self, held: &mut Held<'_>) -> u32 {
         let machine = &*held.machine;
-        if self.tracing || self.safety_reads_channels(machine, false) {
+        if self.tracer.tracing || self.safety_reads_channels(machine, false) {
             return 0;
         }
         let cards = machine.triggers.iter().zip(&machine.settings).enumerate();
@@ -114,6 +114,6 @@ impl Shared {
 
     /// How many ticks of this engine were cruise ticks (for tests and benchmarks).
     pub fn cruise_ticks(&self) -> u64 {
-        self.cruise_ticks.load(Ordering::Relaxed)
+        self.cruise.cruise_ticks.load(Ordering::Relaxed)
     }
 }

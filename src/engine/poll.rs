@@ -33,11 +33,14 @@ impl Shared {
             ClockMode::Realtime => {}
             ClockMode::Stepped => self.clock.wait_ticks(1),
             ClockMode::Fast => {
-                self.watch.1.store(status, Ordering::Release);
-                self.watch.0.store(i32::from(g), Ordering::Release);
+                self.published.watch.1.store(status, Ordering::Release);
+                self.published
+                    .watch
+                    .0
+                    .store(i32::from(g), Ordering::Release);
                 self.clock
                     .wait_ticks(self.clock.ticks_for(crate::clock::FAST_POLL_MAX));
-                self.watch.0.store(-1, Ordering::Release);
+                self.published.watch.0.store(-1, Ordering::Release);
             }
         }
         self.mark_polled(g, 0);
@@ -47,7 +50,7 @@ impl Shared {
     /// same virtual time, it runs one tick, so `while (x < 10) MCC_GetCurPos(&x, ...)` moves.
     pub fn poll_position(&self, g: u16) {
         if self.repeated(g, 1)
-            && self.status[usize::from(g)].load(Ordering::Acquire)
+            && self.published.status[usize::from(g)].load(Ordering::Acquire)
                 != crate::vendor::consts::GMS_STOP
         {
             self.clock.wait_ticks(1);
@@ -58,7 +61,7 @@ impl Shared {
     /// Counts reads of one kind at the same virtual time; from the
     /// [`SPIN_POLLS`]th on the program is taken to be waiting.
     fn repeated(&self, g: u16, kind: usize) -> bool {
-        match self.last_poll.get(usize::from(g)) {
+        match self.published.last_poll.get(usize::from(g)) {
             Some(l) => self.repeated_in(&l[kind]),
             None => false,
         }
@@ -76,7 +79,7 @@ impl Shared {
     }
 
     fn mark_polled(&self, g: u16, kind: usize) {
-        if let Some(l) = self.last_poll.get(usize::from(g)) {
+        if let Some(l) = self.published.last_poll.get(usize::from(g)) {
             self.mark_polled_in(&l[kind]);
         }
     }
@@ -96,32 +99,34 @@ impl Shared {
     /// spins on it (as [`Shared::poll`] does for motion status: `fast` runs ticks until
     /// the status changes, `stepped` one tick).
     pub fn home_status(&self) -> i32 {
-        let status = self.home_status.load(Ordering::Acquire);
-        if status == homing::HOME_BUSY && self.repeated_in(&self.home_poll) {
+        let status = self.home.home_status.load(Ordering::Acquire);
+        if status == homing::HOME_BUSY && self.repeated_in(&self.home.home_poll) {
             match self.clock.mode() {
                 ClockMode::Realtime => {}
                 ClockMode::Stepped => self.clock.wait_ticks(1),
                 ClockMode::Fast => {
-                    self.home_watch.store(status, Ordering::Release);
+                    self.home.home_watch.store(status, Ordering::Release);
                     self.clock
                         .wait_ticks(self.clock.ticks_for(crate::clock::FAST_POLL_MAX));
-                    self.home_watch.store(i32::MIN, Ordering::Release);
+                    self.home.home_watch.store(i32::MIN, Ordering::Release);
                 }
             }
-            self.mark_polled_in(&self.home_poll);
+            self.mark_polled_in(&self.home.home_poll);
         }
-        homing::home_status_read(self.home_status.load(Ordering::Acquire))
+        homing::home_status_read(self.home.home_status.load(Ordering::Acquire))
     }
 
     /// During a tick: ends a fast-clock poll's run when its group's status changed.
     pub(super) fn check_watch(&self) {
-        let h = self.home_watch.load(Ordering::Acquire);
-        if h != i32::MIN && self.home_status.load(Ordering::Acquire) != h {
+        let h = self.home.home_watch.load(Ordering::Acquire);
+        if h != i32::MIN && self.home.home_status.load(Ordering::Acquire) != h {
             self.clock.end_run_now();
         }
-        let g = self.watch.0.load(Ordering::Acquire);
+        let g = self.published.watch.0.load(Ordering::Acquire);
         if let Ok(g) = usize::try_from(g) {
-            if self.status[g].load(Ordering::Acquire) != self.watch.1.load(Ordering::Acquire) {
+            if self.published.status[g].load(Ordering::Acquire)
+                != self.published.watch.1.load(Ordering::Acquire)
+            {
                 self.clock.end_run_now();
             }
         }

@@ -119,7 +119,7 @@ impl Drop for Engine {
                 let _ = t.join();
             }
         }
-        if let Some(t) = self.shared.trace.lock().as_mut() {
+        if let Some(t) = self.shared.tracer.trace.lock().as_mut() {
             // No tick follows: what the groups noted since their last row (a call made
             // just before the close, an abort) and the ends of the commands the close
             // cuts short are written at the end of the last tick.
@@ -182,13 +182,13 @@ fn run(shared: &Shared, ready: std::sync::mpsc::SyncSender<()>) {
                         shared.end_of_run(held.as_mut());
                     }
                     if !quiet {
-                        if shared.tracing && !interrupts.is_empty() {
+                        if shared.tracer.tracing && !interrupts.is_empty() {
                             shared.trace_interrupts(&interrupts);
                         }
                         // Custom-motion callbacks, then the interrupt callbacks collected
                         // in the tick, run here without any lock.
                         shared.custom_stage();
-                        shared.isr.deliver(&interrupts, &shared.clock);
+                        shared.routines.isr.deliver(&interrupts, &shared.clock);
                         shared.call_cycle_routines();
                     }
                     // Asked before the tick is counted: the next one is then due at once.

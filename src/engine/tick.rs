@@ -79,12 +79,12 @@ impl Shared {
         // The virtual time the trace and the triggers see, made only where they look.
         let t_ns = || self.running_tick_end_ns();
         let full = !self.clock.mode().virtual_time()
-            || self.live_snapshots.load(Ordering::Relaxed)
+            || self.routines.live_snapshots.load(Ordering::Relaxed)
             || n % PUBLISH_EVERY == 0
             || self.clock.last_of_run();
         // The trace's lock only while tracing: an uncontended lock is still two atomic
         // operations a tick.
-        let mut trace_guard = self.tracing.then(|| self.trace.lock());
+        let mut trace_guard = self.tracer.tracing.then(|| self.tracer.trace.lock());
         let mut trace = trace_guard.as_mut().and_then(|t| t.as_mut());
         // The locks were kept from the last tick: no other thread looked in between.
         let carried = held.is_some();
@@ -92,15 +92,16 @@ impl Shared {
         if cruise {
             held.cruise = held.cruise.saturating_sub(1);
             // One writer: a load and a store, no read-modify-write.
-            let ran = self.cruise_ticks.load(Ordering::Relaxed);
-            self.cruise_ticks
+            let ran = self.cruise.cruise_ticks.load(Ordering::Relaxed);
+            self.cruise
+                .cruise_ticks
                 .store(ran.wrapping_add(1), Ordering::Relaxed);
         } else {
             // What this tick changes, no cruise plan made before it covers.
             held.cruise = 0;
         }
         let machine = &mut *held.machine;
-        let dry = self.dry_run.load(Ordering::Relaxed);
+        let dry = self.outputs.dry_run.load(Ordering::Relaxed);
         let homed = if cruise {
             None
         } else {
@@ -125,8 +126,8 @@ impl Shared {
                 }
                 if let Some(status) = g.take_home_result() {
                     // A go home on an MC3B ended.
-                    self.home_status.store(status, Ordering::Release);
-                    self.mc3b_home_card.store(-1, Ordering::Release);
+                    self.home.home_status.store(status, Ordering::Release);
+                    self.home.mc3b_home_card.store(-1, Ordering::Release);
                     g.end_homing();
                 }
                 if g.has_outputs() {
@@ -284,9 +285,9 @@ impl Shared {
     /// nothing to run; a routine registered meanwhile is called from the next tick on.
     pub(super) fn quiet_between_ticks(&self) -> bool {
         self.clock.mode().virtual_time()
-            && !self.tracing
+            && !self.tracer.tracing
             && !self.routines_any()
-            && !self.kinematics_on.load(Ordering::Acquire)
+            && !self.routines.kinematics_on.load(Ordering::Acquire)
             && !super::custom::live()
             && self.lock_wanted.load(Ordering::Acquire) == 0
     }
@@ -300,8 +301,8 @@ impl Shared {
     /// Writes the interrupts a tick collected to the trace's events file.
     pub(super) fn trace_interrupts(&self, collected: &isr::Collected) {
         let t_ns = self.running_tick_end_ns();
-        if let Some(t) = self.trace.lock().as_mut() {
-            t.interrupt_events(t_ns, collected, &self.isr);
+        if let Some(t) = self.tracer.trace.lock().as_mut() {
+            t.interrupt_events(t_ns, collected, &self.routines.isr);
         }
     }
 
@@ -310,7 +311,7 @@ impl Shared {
         for o in outputs {
             match *o {
                 command::Output::Local { mask, value } => {
-                    if let Some(s) = self.servo_on.get(card) {
+                    if let Some(s) = self.outputs.servo_on.get(card) {
                         let (m, v) = (u32::from(mask & 0xFF), u32::from(value & 0xFF));
                         let _ = s.fetch_update(Ordering::AcqRel, Ordering::Acquire, |old| {
                             Some(old & !m | v & m)
@@ -403,7 +404,7 @@ impl<'a> Held<'a> {
     /// Locks the machine, then the groups.
     fn lock(shared: &'a Shared) -> Held<'a> {
         let machine = shared.machine.lock();
-        let groups = shared.groups.lock();
+        let groups = shared.table.groups.lock();
         Held {
             groups,
             machine,

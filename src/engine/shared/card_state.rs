@@ -39,7 +39,7 @@ impl Shared {
     /// Sets (`on`) or clears the servo-on output of the channels in `mask` of `card`
     /// (`MCC_SetServoOn`/`Off`); an unknown card is ignored.
     pub fn set_servo_on(&self, card: usize, mask: u32, on: bool) {
-        if let Some(s) = self.servo_on.get(card) {
+        if let Some(s) = self.outputs.servo_on.get(card) {
             if on {
                 s.fetch_or(mask, Ordering::AcqRel);
             } else {
@@ -50,21 +50,23 @@ impl Shared {
 
     /// The servo-on outputs of `card`, one bit a channel (0 for an unknown card).
     pub fn servo_on(&self, card: usize) -> u32 {
-        self.servo_on
+        self.outputs
+            .servo_on
             .get(card)
             .map_or(0, |s| s.load(Ordering::Acquire))
     }
 
     /// Sets the position-ready output of `card` (`MCC_EnablePosReady`/`Disable`).
     pub fn set_pos_ready(&self, card: usize, on: bool) {
-        if let Some(p) = self.pos_ready.get(card) {
+        if let Some(p) = self.outputs.pos_ready.get(card) {
             p.store(on, Ordering::Release);
         }
     }
 
     /// The position-ready output of `card` (false for an unknown card).
     pub fn pos_ready(&self, card: usize) -> bool {
-        self.pos_ready
+        self.outputs
+            .pos_ready
             .get(card)
             .is_some_and(|p| p.load(Ordering::Acquire))
     }
@@ -72,43 +74,45 @@ impl Shared {
     /// Turns the dry run on or off (`MCC_EnableDryRun`/`Disable`): the plan runs, nothing
     /// is sent to the channels.
     pub fn set_dry_run(&self, on: bool) {
-        self.dry_run.store(on, Ordering::Release);
+        self.outputs.dry_run.store(on, Ordering::Release);
     }
 
     /// Whether a dry run is in effect.
     pub fn dry_run(&self) -> bool {
-        self.dry_run.load(Ordering::Acquire)
+        self.outputs.dry_run.load(Ordering::Acquire)
     }
 
     /// Sets the pulse FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
     pub fn set_max_pulse_stock(&self, n: u32) {
-        self.max_pulse_stock.store(n, Ordering::Relaxed);
+        self.outputs.max_pulse_stock.store(n, Ordering::Relaxed);
     }
 
     /// The pulse FIFO depth reported while moving.
     pub fn max_pulse_stock(&self) -> u32 {
-        self.max_pulse_stock.load(Ordering::Relaxed)
+        self.outputs.max_pulse_stock.load(Ordering::Relaxed)
     }
 
     /// Registers the interrupt routine at address `f` (0 unregisters) of `kind` on `card`.
     /// Routines run between ticks and may read positions: while any is registered,
     /// snapshots are published every tick.
     pub fn set_interrupt_routine(&self, card: usize, kind: Kind, f: usize) {
-        self.isr.set(card, kind, f);
-        self.live_snapshots
+        self.routines.isr.set(card, kind, f);
+        self.routines
+            .live_snapshots
             .store(self.routines_any(), Ordering::Relaxed);
     }
 
     /// The interrupt routine of `kind` registered on `card` (its address, 0: none).
     pub fn interrupt_routine(&self, card: usize, kind: Kind) -> usize {
-        self.isr.get(card, kind)
+        self.routines.isr.get(card, kind)
     }
 
     /// Registers the cycle routine at address `f` (0 unregisters), publishing snapshots
     /// every tick while any routine is registered.
     pub fn set_cycle_routine(&self, f: usize) {
-        self.cycle.set_cycle(f);
-        self.live_snapshots
+        self.routines.cycle.set_cycle(f);
+        self.routines
+            .live_snapshots
             .store(self.routines_any(), Ordering::Relaxed);
     }
 
@@ -116,14 +120,15 @@ impl Shared {
     /// returns to what the routines registered ask: for an observer that reads between
     /// the ticks of a virtual run, and for measuring what publishing costs.
     pub fn publish_every_tick(&self, on: bool) {
-        self.live_snapshots
+        self.routines
+            .live_snapshots
             .store(on || self.routines_any(), Ordering::Relaxed);
     }
 
     /// Notes that a group has an INTERP routine from now on: the engine looks for its
     /// calls, and snapshots are published every tick.
     pub fn arm_reverse_routines(&self) {
-        self.cycle.arm_reverse();
-        self.live_snapshots.store(true, Ordering::Relaxed);
+        self.routines.cycle.arm_reverse();
+        self.routines.live_snapshots.store(true, Ordering::Relaxed);
     }
 }

@@ -11,7 +11,8 @@ impl Shared {
     /// Turns the hardware limit switch check on in `mode` (see [`limit_check_mode`]) or,
     /// with `None`, off.
     pub fn set_limit_check(&self, mode: Option<i32>) {
-        self.limit_check
+        self.outputs
+            .limit_check
             .store(mode.unwrap_or(-1), Ordering::Release);
     }
 
@@ -23,7 +24,7 @@ impl Shared {
         machine: &Machine,
         group_checks: bool,
     ) -> bool {
-        group_checks || global_checks(self.limit_check.load(Ordering::Relaxed), machine)
+        group_checks || global_checks(self.outputs.limit_check.load(Ordering::Relaxed), machine)
     }
 
     /// The checks that need the machine: emergency stop (0xF102), hardware limit
@@ -39,7 +40,7 @@ impl Shared {
         full: bool,
         dt: f64,
     ) {
-        let limit_mode = self.limit_check.load(Ordering::Relaxed);
+        let limit_mode = self.outputs.limit_check.load(Ordering::Relaxed);
         // Checks every moving group needs; otherwise only groups with checks of their own
         // (tracking error, in-position) are looked at again.
         let global = global_checks(limit_mode, machine);

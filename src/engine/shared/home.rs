@@ -21,18 +21,18 @@ impl Shared {
         orders: [i32; AXES],
         cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
     ) -> McclResult<()> {
-        if self.dry_run.load(Ordering::Acquire) {
+        if self.outputs.dry_run.load(Ordering::Acquire) {
             return Err(McclError::NotAccepted);
         }
-        if self.home_status.load(Ordering::Acquire) == homing::HOME_BUSY {
+        if self.home.home_status.load(Ordering::Acquire) == homing::HOME_BUSY {
             return Err(McclError::NotFinished);
         }
-        if self.mc3b_cards.load(Ordering::Acquire) & (1 << card) != 0 {
+        if self.home.mc3b_cards.load(Ordering::Acquire) & (1 << card) != 0 {
             return self.start_mc3b_homing(card, orders, cfgs);
         }
         let machine = self.lock_machine();
         let chans = machine.cards.get(card).ok_or(McclError::Parameter)?;
-        let mut slot = self.homing.lock();
+        let mut slot = self.home.homing.lock();
         if slot.is_some() {
             return Err(McclError::NotFinished);
         }
@@ -66,10 +66,14 @@ impl Shared {
         }
         drop(groups);
         if chan_mask == 0 {
-            self.home_status.store(homing::HOME_DONE, Ordering::Release);
+            self.home
+                .home_status
+                .store(homing::HOME_DONE, Ordering::Release);
         } else {
             *slot = Some(h);
-            self.home_status.store(homing::HOME_BUSY, Ordering::Release);
+            self.home
+                .home_status
+                .store(homing::HOME_BUSY, Ordering::Release);
         }
         Ok(())
     }
@@ -90,7 +94,9 @@ impl Shared {
             .filter(|&c| orders[c] != homing::ORDER_SKIP)
             .collect();
         if homed.is_empty() {
-            self.home_status.store(homing::HOME_DONE, Ordering::Release);
+            self.home
+                .home_status
+                .store(homing::HOME_DONE, Ordering::Release);
             return Ok(());
         }
         for g in self.lock_groups().iter_mut() {
@@ -99,9 +105,12 @@ impl Shared {
             }
             g.begin_external_home(&orders, cfgs)?;
             self.publish(g);
-            self.mc3b_home_card
+            self.home
+                .mc3b_home_card
                 .store(i32::try_from(card).unwrap_or(-1), Ordering::Release);
-            self.home_status.store(homing::HOME_BUSY, Ordering::Release);
+            self.home
+                .home_status
+                .store(homing::HOME_BUSY, Ordering::Release);
             return Ok(());
         }
         Err(McclError::NotAccepted)
@@ -111,7 +120,7 @@ impl Shared {
     /// without completing. `HOME_COMMAND_NOTCALLED_ERR` when no homing was started (or
     /// the last one was aborted); `NO_ERR` after one completed.
     pub fn abort_homing(&self) -> McclResult<()> {
-        if let Ok(card) = usize::try_from(self.mc3b_home_card.load(Ordering::Acquire)) {
+        if let Ok(card) = usize::try_from(self.home.mc3b_home_card.load(Ordering::Acquire)) {
             self.for_each_group(|g| {
                 if g.def.card.0 == card {
                     g.abort_external_home();
@@ -119,12 +128,12 @@ impl Shared {
             });
             return Ok(());
         }
-        match self.homing.lock().as_mut() {
+        match self.home.homing.lock().as_mut() {
             Some(h) => {
                 h.abort();
                 Ok(())
             }
-            None if self.home_status.load(Ordering::Acquire) == homing::HOME_DONE => Ok(()),
+            None if self.home.home_status.load(Ordering::Acquire) == homing::HOME_DONE => Ok(()),
             None => Err(McclError::HomeNotCalled),
         }
     }
@@ -132,9 +141,11 @@ impl Shared {
     /// Drops a homing in progress (`MCC_ResetMotion`, `MCC_UpdateParam`): the channels
     /// stop where they are.
     pub(in crate::engine) fn cancel_homing(&self) {
-        let mc3b = self.mc3b_home_card.swap(-1, Ordering::AcqRel) >= 0;
-        if self.homing.lock().take().is_some() || mc3b {
-            self.home_status.store(homing::HOME_NONE, Ordering::Release);
+        let mc3b = self.home.mc3b_home_card.swap(-1, Ordering::AcqRel) >= 0;
+        if self.home.homing.lock().take().is_some() || mc3b {
+            self.home
+                .home_status
+                .store(homing::HOME_NONE, Ordering::Release);
         }
     }
 
@@ -142,7 +153,8 @@ impl Shared {
     /// vendor's library answers after a reset ([`homing::HOME_AFTER_RESET`]).
     pub(in crate::engine) fn reset_homing(&self) {
         self.cancel_homing();
-        self.home_status
+        self.home
+            .home_status
             .store(homing::HOME_AFTER_RESET, Ordering::Release);
     }
 
@@ -153,10 +165,10 @@ impl Shared {
         dt: f64,
     ) -> Option<homing::HomeTick> {
         // No lock on the tick's path while nothing is homed.
-        if self.home_status.load(Ordering::Acquire) != homing::HOME_BUSY {
+        if self.home.home_status.load(Ordering::Acquire) != homing::HOME_BUSY {
             return None;
         }
-        let mut slot = self.homing.lock();
+        let mut slot = self.home.homing.lock();
         let h = slot.as_mut()?;
         let card = h.card();
         let emergency = machine.emergency.get(card).copied().unwrap_or(false);
@@ -164,7 +176,7 @@ impl Shared {
         let out = h.tick(chans, emergency, dt);
         if let Some(status) = out.finished {
             *slot = None;
-            self.home_status.store(status, Ordering::Release);
+            self.home.home_status.store(status, Ordering::Release);
         }
         Some(out)
     }

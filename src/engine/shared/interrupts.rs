@@ -64,8 +64,8 @@ impl Shared {
 
     /// The card-level part of a watchdog reset (the peripherals reset themselves).
     fn reset_card(&self, card: usize, groups: &mut [crate::engine::group::GroupState]) {
-        self.servo_on[card].store(0, Ordering::Release);
-        self.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
+        self.outputs.servo_on[card].store(0, Ordering::Release);
+        self.outputs.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
         for g in groups.iter_mut() {
             if g.def.card.0 == card {
                 g.abort_within_period();

@@ -12,7 +12,7 @@ impl Shared {
     /// engine thread with no lock held, and holds a group's lock only to read what the
     /// callbacks need and to store what they returned.
     pub(in crate::engine) fn kinematics_stage(&self) {
-        if !self.kinematics_on.load(Ordering::Acquire) {
+        if !self.routines.kinematics_on.load(Ordering::Acquire) {
             return;
         }
         for n in 0..self.group_count() {
@@ -57,7 +57,7 @@ impl Shared {
                     .ok_or(McclError::NotAccepted)?;
             let mut grp = self.group(index)?;
             grp.set_kinematics(fns, joints, cart, posture)?;
-            self.kinematics_on.store(true, Ordering::Release);
+            self.routines.kinematics_on.store(true, Ordering::Release);
             self.publish(&mut grp);
         }
         Ok(())

@@ -26,40 +26,14 @@ use parking_lot::{MappedMutexGuard, Mutex, MutexGuard};
 use std::sync::atomic::{AtomicBool, AtomicI32, AtomicU32, AtomicU64, AtomicUsize, Ordering};
 use std::time::Duration;
 
-/// What the engine thread and the program's threads share.
+/// What the engine thread and the program's threads share: the clock, the machine, the
+/// peripherals and the observer's view, and its parts, one a concern.
 #[derive(Debug)]
 pub struct Shared {
     /// The tick clock.
     pub(super) clock: Clock,
-    /// Group slot -> position in `groups`, -1 for none. Written only with the groups'
-    /// lock held (`MCC_CreateGroup`/`MCC_CloseGroup` while running, [`Shared::open_group`]);
-    /// read without it where a stale answer is harmless.
-    pub(super) slots: [AtomicI32; GROUPS],
-    /// The running groups, behind one lock: the tick visits every group every period,
-    /// and one lock for all costs the engine one atomic operation per tick instead of one
-    /// per group (a locked instruction drains the store buffer: two per group were a
-    /// fifth of the tick at 48 groups). A program thread holds it only to
-    /// queue or change one group, as it held that group's lock before.
-    pub(super) groups: Mutex<Vec<GroupState>>,
-    /// Number of entries in `groups`, readable without its lock. Entries stay where
-    /// they are (the engine's stages visit them by position); a group closed while
-    /// running leaves a husk of no axis there until a new group takes its place.
-    group_count: AtomicUsize,
     /// The length of a tick in ns, as the peripherals count it ([`super::tick::tick_ns`]).
     pub(super) tick_len_ns: u64,
-    /// Published state per group slot.
-    pub(super) snaps: Vec<SnapshotCell>,
-    /// Per group slot and axis: the compensation pulses its channel adds to the command
-    /// (`MCC_UpdateCompParam`), written by the tick while compensation is on.
-    pub(super) comp: Vec<[AtomicI32; AXES]>,
-    /// Per group slot: the tick count at its last status poll and last position read
-    /// (virtual clocks: a repeated read at the same virtual time is a program waiting).
-    pub(super) last_poll: Vec<[AtomicU64; 2]>,
-    /// Per group slot: the published motion status.
-    pub(super) status: Vec<AtomicI32>,
-    /// A fast-clock poll in progress: group slot (or -1) and the status it saw; the engine
-    /// ends the run of ticks when that status changes.
-    pub(super) watch: (AtomicI32, AtomicI32),
     /// The simulated machine behind the channels ([`Shared::lock_machine`]). Lock order:
     /// machine before the groups.
     pub(super) machine: Mutex<Machine>,
@@ -67,51 +41,127 @@ pub struct Shared {
     /// engine thread, which may keep both from one virtual tick to the next
     /// ([`super::running`]), lets them go at the next tick when this is not 0.
     pub(super) lock_wanted: AtomicU32,
-    /// Hardware limit switch check (`MCC_EnableLimitSwitchCheck` mode, -1 when off).
-    pub(super) limit_check: AtomicI32,
-    /// `MCC_EnableDryRun` is in effect.
-    pub(super) dry_run: AtomicBool,
-    /// Publish snapshots on every tick even under a virtual clock (set while code runs on
-    /// the engine thread between ticks, i.e. interrupt callbacks are registered).
-    pub(super) live_snapshots: AtomicBool,
-    /// A group is kinematic: the engine runs the kinematics stage after each tick.
-    pub(super) kinematics_on: AtomicBool,
-    /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
-    pub(super) servo_on: Vec<AtomicU32>,
-    /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
-    pub(super) pos_ready: Vec<AtomicBool>,
-    /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
-    pub(super) max_pulse_stock: AtomicU32,
     /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
     pub(super) periph: Vec<crate::card::PeriphCell>,
-    /// The interrupt routines registered per card (`isr`).
-    pub(super) isr: crate::engine::isr::IsrTable,
-    /// The per-period routines (`cycle`).
-    pub(super) cycle: super::cycle::CycleRoutines,
-    /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
-    pub(super) homing: Mutex<Option<crate::engine::homing::Homing>>,
-    /// `MCC_GetGoHomeStatus`: [`crate::engine::homing::HOME_BUSY`], [`crate::engine::homing::HOME_DONE`] or
-    /// [`crate::engine::homing::HOME_NONE`].
-    pub(super) home_status: AtomicI32,
-    /// The tick count and count of go-home status reads at it (see [`Shared::poll`]).
-    pub(super) home_poll: AtomicU64,
-    /// A fast-clock wait on the go-home status in progress: the status it saw, or
-    /// `i32::MIN` when none.
-    pub(super) home_watch: AtomicI32,
-    /// Cards whose channels 0..2 are an MC3B, one bit each.
-    pub(super) mc3b_cards: AtomicU32,
-    /// The card whose MC3B runs a go home, or -1.
-    pub(super) mc3b_home_card: AtomicI32,
-    pub(super) trace: Mutex<Option<trace::Trace>>,
-    /// Whether `trace` is `Some` (read without its lock on every tick).
-    pub(super) tracing: bool,
-    /// Whether quiet ticks may be cruise ticks (`cruise.rs`; `MCCL_CRUISE=0` turns them
-    /// off).
-    pub(super) cruise_enabled: bool,
-    /// The cruise ticks run (written by the engine thread alone).
-    pub(super) cruise_ticks: AtomicU64,
     /// What an observer (the browser panel) sees beyond the snapshots (`view.rs`).
     pub(super) view: super::view::ViewCell,
+    /// The running groups.
+    pub(super) table: GroupTable,
+    /// What the groups publish.
+    pub(super) published: Publication,
+    /// The card's outputs and modes.
+    pub(super) outputs: CardOutputs,
+    /// The routines registered.
+    pub(super) routines: Routines,
+    /// The go home.
+    pub(super) home: HomeState,
+    /// The trace file.
+    pub(super) tracer: TraceFile,
+    /// Cruise ticks.
+    pub(super) cruise: CruiseState,
+}
+
+/// The running groups and where each group slot's is.
+#[derive(Debug)]
+pub(in crate::engine) struct GroupTable {
+    /// Group slot -> position in `groups`, -1 for none. Written only with the groups'
+    /// lock held (`MCC_CreateGroup`/`MCC_CloseGroup` while running, [`Shared::open_group`]);
+    /// read without it where a stale answer is harmless.
+    pub(in crate::engine) slots: [AtomicI32; GROUPS],
+    /// The running groups, behind one lock: the tick visits every group every period,
+    /// and one lock for all costs the engine one atomic operation per tick instead of one
+    /// per group (a locked instruction drains the store buffer: two per group were a
+    /// fifth of the tick at 48 groups). A program thread holds it only to
+    /// queue or change one group, as it held that group's lock before.
+    pub(in crate::engine) groups: Mutex<Vec<GroupState>>,
+    /// Number of entries in `groups`, readable without its lock. Entries stay where
+    /// they are (the engine's stages visit them by position); a group closed while
+    /// running leaves a husk of no axis there until a new group takes its place.
+    pub(in crate::engine) group_count: AtomicUsize,
+}
+
+/// What each group slot publishes, read without the groups' lock.
+#[derive(Debug)]
+pub(in crate::engine) struct Publication {
+    /// Published state per group slot.
+    pub(in crate::engine) snaps: Vec<SnapshotCell>,
+    /// Per group slot and axis: the compensation pulses its channel adds to the command
+    /// (`MCC_UpdateCompParam`), written by the tick while compensation is on.
+    pub(in crate::engine) comp: Vec<[AtomicI32; AXES]>,
+    /// Per group slot: the tick count at its last status poll and last position read
+    /// (virtual clocks: a repeated read at the same virtual time is a program waiting).
+    pub(in crate::engine) last_poll: Vec<[AtomicU64; 2]>,
+    /// Per group slot: the published motion status.
+    pub(in crate::engine) status: Vec<AtomicI32>,
+    /// A fast-clock poll in progress: group slot (or -1) and the status it saw; the engine
+    /// ends the run of ticks when that status changes.
+    pub(in crate::engine) watch: (AtomicI32, AtomicI32),
+}
+
+/// The card's outputs and modes the program sets.
+#[derive(Debug)]
+pub(in crate::engine) struct CardOutputs {
+    /// Hardware limit switch check (`MCC_EnableLimitSwitchCheck` mode, -1 when off).
+    pub(in crate::engine) limit_check: AtomicI32,
+    /// `MCC_EnableDryRun` is in effect.
+    pub(in crate::engine) dry_run: AtomicBool,
+    /// Servo-on output per card, one bit per channel (`MCC_SetServoOn`/`Off`).
+    pub(in crate::engine) servo_on: Vec<AtomicU32>,
+    /// Position-ready output per card (`MCC_EnablePosReady`/`Disable`).
+    pub(in crate::engine) pos_ready: Vec<AtomicBool>,
+    /// Hardware FIFO depth reported while moving (`MCC_SetMaxPulseStockNum`).
+    pub(in crate::engine) max_pulse_stock: AtomicU32,
+}
+
+/// The program's routines and callbacks registered, and what they make the engine do.
+#[derive(Debug)]
+pub(in crate::engine) struct Routines {
+    /// The interrupt routines registered per card (`isr`).
+    pub(in crate::engine) isr: crate::engine::isr::IsrTable,
+    /// The per-period routines (`cycle`).
+    pub(in crate::engine) cycle: super::cycle::CycleRoutines,
+    /// Publish snapshots on every tick even under a virtual clock (set while code runs on
+    /// the engine thread between ticks, i.e. interrupt callbacks are registered).
+    pub(in crate::engine) live_snapshots: AtomicBool,
+    /// A group is kinematic: the engine runs the kinematics stage after each tick.
+    pub(in crate::engine) kinematics_on: AtomicBool,
+}
+
+/// The go home of one card (`MCC_Home`) and the MC3B cards.
+#[derive(Debug)]
+pub(in crate::engine) struct HomeState {
+    /// The go home in progress (`MCC_Home`). Lock order: machine, then this, then a group.
+    pub(in crate::engine) homing: Mutex<Option<crate::engine::homing::Homing>>,
+    /// `MCC_GetGoHomeStatus`: [`crate::engine::homing::HOME_BUSY`], [`crate::engine::homing::HOME_DONE`] or
+    /// [`crate::engine::homing::HOME_NONE`].
+    pub(in crate::engine) home_status: AtomicI32,
+    /// The tick count and count of go-home status reads at it (see [`Shared::poll`]).
+    pub(in crate::engine) home_poll: AtomicU64,
+    /// A fast-clock wait on the go-home status in progress: the status it saw, or
+    /// `i32::MIN` when none.
+    pub(in crate::engine) home_watch: AtomicI32,
+    /// Cards whose channels 0..2 are an MC3B, one bit each.
+    pub(in crate::engine) mc3b_cards: AtomicU32,
+    /// The card whose MC3B runs a go home, or -1.
+    pub(in crate::engine) mc3b_home_card: AtomicI32,
+}
+
+/// The trace file (`MCCL_TRACE`).
+#[derive(Debug)]
+pub(in crate::engine) struct TraceFile {
+    pub(in crate::engine) trace: Mutex<Option<trace::Trace>>,
+    /// Whether `trace` is `Some` (read without its lock on every tick).
+    pub(in crate::engine) tracing: bool,
+}
+
+/// Cruise ticks (`cruise.rs`).
+#[derive(Debug)]
+pub(in crate::engine) struct CruiseState {
+    /// Whether quiet ticks may be cruise ticks (`cruise.rs`; `MCCL_CRUISE=0` turns them
+    /// off).
+    pub(in crate::engine) cruise_enabled: bool,
+    /// The cruise ticks run (written by the engine thread alone).
+    pub(in crate::engine) cruise_ticks: AtomicU64,
 }
 
 /// FIFO depth of the IMP card before `MCC_SetMaxPulseStockNum`: 1, as the vendor's library
@@ -157,45 +207,59 @@ impl Shared {
         let group_count = AtomicUsize::new(gs.len());
         Shared {
             clock: Clock::new(mode, period),
-            slots,
-            group_count,
             tick_len_ns: tick_ns(period),
-            last_poll: (0..GROUPS)
-                .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
-                .collect(),
-            status: (0..GROUPS).map(|_| AtomicI32::new(-1)).collect(),
-            watch: (AtomicI32::new(-1), AtomicI32::new(0)),
-            groups: Mutex::new(gs),
-            snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
-            comp: (0..GROUPS)
-                .map(|_| std::array::from_fn(|_| AtomicI32::new(0)))
-                .collect(),
             machine: Mutex::new(machine),
             lock_wanted: AtomicU32::new(0),
-            limit_check: AtomicI32::new(-1),
-            dry_run: AtomicBool::new(false),
-            live_snapshots: AtomicBool::new(false),
-            kinematics_on: AtomicBool::new(false),
-            servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
-            pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
-            max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
             periph: (0..cards)
                 .map(|_| crate::card::PeriphCell::new(tick_ns(period)))
                 .collect(),
-            isr: crate::engine::isr::IsrTable::new(cards),
-            cycle: Default::default(),
-            homing: Mutex::new(None),
-            // The vendor's library reads 1 (done) right after init.
-            home_status: AtomicI32::new(crate::engine::homing::HOME_DONE),
-            home_poll: AtomicU64::new(u64::MAX),
-            home_watch: AtomicI32::new(i32::MIN),
-            mc3b_cards: AtomicU32::new(0),
-            mc3b_home_card: AtomicI32::new(-1),
-            tracing: trace.is_some(),
-            cruise_enabled: cruise,
-            cruise_ticks: AtomicU64::new(0),
-            trace: Mutex::new(trace),
             view: super::view::ViewCell::default(),
+            table: GroupTable {
+                slots,
+                groups: Mutex::new(gs),
+                group_count,
+            },
+            published: Publication {
+                snaps: (0..GROUPS).map(|_| SnapshotCell::default()).collect(),
+                comp: (0..GROUPS)
+                    .map(|_| std::array::from_fn(|_| AtomicI32::new(0)))
+                    .collect(),
+                last_poll: (0..GROUPS)
+                    .map(|_| std::array::from_fn(|_| AtomicU64::new(u64::MAX)))
+                    .collect(),
+                status: (0..GROUPS).map(|_| AtomicI32::new(-1)).collect(),
+                watch: (AtomicI32::new(-1), AtomicI32::new(0)),
+            },
+            outputs: CardOutputs {
+                limit_check: AtomicI32::new(-1),
+                dry_run: AtomicBool::new(false),
+                servo_on: (0..cards).map(|_| AtomicU32::new(0)).collect(),
+                pos_ready: (0..cards).map(|_| AtomicBool::new(false)).collect(),
+                max_pulse_stock: AtomicU32::new(DEFAULT_PULSE_STOCK),
+            },
+            routines: Routines {
+                isr: crate::engine::isr::IsrTable::new(cards),
+                cycle: Default::default(),
+                live_snapshots: AtomicBool::new(false),
+                kinematics_on: AtomicBool::new(false),
+            },
+            home: HomeState {
+                homing: Mutex::new(None),
+                // The vendor's library reads 1 (done) right after init.
+                home_status: AtomicI32::new(crate::engine::homing::HOME_DONE),
+                home_poll: AtomicU64::new(u64::MAX),
+                home_watch: AtomicI32::new(i32::MIN),
+                mc3b_cards: AtomicU32::new(0),
+                mc3b_home_card: AtomicI32::new(-1),
+            },
+            tracer: TraceFile {
+                tracing: trace.is_some(),
+                trace: Mutex::new(trace),
+            },
+            cruise: CruiseState {
+                cruise_enabled: cruise,
+                cruise_ticks: AtomicU64::new(0),
+            },
         }
     }
 
@@ -209,7 +273,11 @@ impl Shared {
 
     /// The position in `groups` of group slot `g`, when it runs.
     fn position_of(&self, g: u16) -> Option<usize> {
-        let n = self.slots.get(usize::from(g))?.load(Ordering::Acquire);
+        let n = self
+            .table
+            .slots
+            .get(usize::from(g))?
+            .load(Ordering::Acquire);
         usize::try_from(n).ok()
     }
 
@@ -223,7 +291,7 @@ impl Shared {
         let mut gs = self.lock_groups();
         let mut g = GroupState::new(slot, def, axes_of(&def, mac), self.clock.period_s());
         g.start_at_channels(&machine.cards);
-        if let Some(t) = self.trace.lock().as_mut() {
+        if let Some(t) = self.tracer.trace.lock().as_mut() {
             t.start_group(&mut g, mac, &machine);
         }
         // A husk of the same slot first (so that no other entry publishes as `slot`),
@@ -241,11 +309,11 @@ impl Shared {
             }
             None => {
                 gs.push(g);
-                self.group_count.store(gs.len(), Ordering::Release);
+                self.table.group_count.store(gs.len(), Ordering::Release);
                 gs.len() - 1
             }
         };
-        self.slots[slot].store(n as i32, Ordering::Release);
+        self.table.slots[slot].store(n as i32, Ordering::Release);
         self.remap_channels(&mut gs);
         self.publish(&mut gs[n]);
     }
@@ -259,8 +327,8 @@ impl Shared {
         };
         let husk = GroupDef::none(gs[n].def.card);
         gs[n] = GroupState::new(slot, husk, axes_of(&husk, mac), self.clock.period_s());
-        self.slots[slot].store(-1, Ordering::Release);
-        self.status[slot].store(-1, Ordering::Release);
+        self.table.slots[slot].store(-1, Ordering::Release);
+        self.published.status[slot].store(-1, Ordering::Release);
         self.remap_channels(&mut gs);
     }
 
@@ -279,12 +347,12 @@ impl Shared {
 
     /// Locks the groups, for anyone but the engine's tick.
     pub(super) fn lock_groups(&self) -> MutexGuard<'_, Vec<GroupState>> {
-        wanted(&self.lock_wanted, &self.groups)
+        wanted(&self.lock_wanted, &self.table.groups)
     }
 
     /// Number of running groups (positions 0.. in the groups' lock).
     pub(super) fn group_count(&self) -> usize {
-        self.group_count.load(Ordering::Acquire)
+        self.table.group_count.load(Ordering::Acquire)
     }
 
     /// Locks the group at position `n` of the running groups (not its slot): for the
@@ -297,13 +365,13 @@ impl Shared {
     /// Marks `card` as an MC3B (its groups run on the device).
     pub fn mark_mc3b(&self, card: usize) {
         if card < 32 {
-            self.mc3b_cards.fetch_or(1 << card, Ordering::AcqRel);
+            self.home.mc3b_cards.fetch_or(1 << card, Ordering::AcqRel);
         }
     }
 
     /// The compensation pulses each axis of group `g` has (0 without compensation).
     pub fn compensation(&self, g: u16) -> [i64; 8] {
-        match self.comp.get(usize::from(g)) {
+        match self.published.comp.get(usize::from(g)) {
             Some(c) => std::array::from_fn(|i| i64::from(c[i].load(Ordering::Acquire))),
             None => [0; 8],
         }
@@ -311,7 +379,7 @@ impl Shared {
 
     /// Publishes what [`GroupState::read_compensation`] found.
     pub(super) fn store_compensation(&self, g: &GroupState) {
-        if let Some(c) = self.comp.get(g.index) {
+        if let Some(c) = self.published.comp.get(g.index) {
             for (cell, v) in c.iter().zip(g.comp_pulses()) {
                 cell.store(v, Ordering::Release);
             }
@@ -320,7 +388,7 @@ impl Shared {
 
     /// Whether `card` is an MC3B.
     pub fn is_mc3b(&self, card: usize) -> bool {
-        card < 32 && self.mc3b_cards.load(Ordering::Acquire) >> card & 1 == 1
+        card < 32 && self.home.mc3b_cards.load(Ordering::Acquire) >> card & 1 == 1
     }
 
     /// Whether group `g` runs.
@@ -340,7 +408,10 @@ impl Shared {
         if !self.has_group(g) {
             return Err(McclError::Group);
         }
-        self.snaps.get(usize::from(g)).ok_or(McclError::Group)
+        self.published
+            .snaps
+            .get(usize::from(g))
+            .ok_or(McclError::Group)
     }
 
     /// Publishes the motion part and the status of a group whose info is known unchanged
@@ -349,7 +420,7 @@ impl Shared {
     #[inline(always)]
     pub fn publish_motion(&self, g: &GroupState) {
         debug_assert!(g.published_key_holds(), "group {}: info unchanged", g.index);
-        if let Some(cell) = self.snaps.get(g.index) {
+        if let Some(cell) = self.published.snaps.get(g.index) {
             g.store_motion(cell);
         }
         self.store_status(g);
@@ -368,7 +439,7 @@ impl Shared {
     /// Stores a group's status where status calls read it without the snapshot.
     #[inline(always)]
     pub(super) fn store_status(&self, g: &GroupState) {
-        if let Some(s) = self.status.get(g.index) {
+        if let Some(s) = self.published.status.get(g.index) {
             s.store(g.status(), Ordering::Release);
         }
     }
@@ -380,7 +451,7 @@ impl Shared {
     /// rare rebuild of the info key out of line so that the tick's frame does not grow.
     #[inline(always)]
     pub fn publish(&self, g: &mut GroupState) {
-        let cell = &self.snaps[g.index];
+        let cell = &self.published.snaps[g.index];
         if g.info_changed() {
             publish_info(cell, g);
         } else {

@@ -29,7 +29,7 @@ impl crate::engine::Shared {
             ticks: self.clock.ticks() + 1,
             made: true,
             home_status: crate::engine::homing::home_status_read(
-                self.home_status.load(Ordering::Acquire),
+                self.home.home_status.load(Ordering::Acquire),
             ),
             cards,
             groups,

@@ -6,12 +6,12 @@ use crate::engine::cycle::*;
 impl Shared {
     /// Whether any routine (interrupt, cycle or INTERP) may run after a tick.
     pub fn routines_any(&self) -> bool {
-        self.isr.any() || self.cycle.any()
+        self.routines.isr.any() || self.routines.cycle.any()
     }
 
     /// Calls the routines of the module documentation. Call with no lock held.
     pub(in crate::engine) fn call_cycle_routines(&self) {
-        if self.cycle.reverse_armed() {
+        if self.routines.cycle.reverse_armed() {
             for n in 0..self.group_count() {
                 if self.clock.stopped() {
                     return;
@@ -27,7 +27,7 @@ impl Shared {
             }
         }
         if !self.clock.stopped() {
-            self.cycle.call_cycle();
+            self.routines.cycle.call_cycle();
         }
     }
 }

@@ -73,6 +73,7 @@ impl Path {
 
     /// Whether X, Y and Z stand still along the path (its length is then the longest
     /// auxiliary travel, see [`Path`]).
+    #[inline]
     pub fn aux_only(&self) -> bool {
         match self {
             Path::Line(l) => l.delta[..XYZ].iter().all(|d| *d == 0.0),
