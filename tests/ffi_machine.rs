@@ -455,7 +455,7 @@ fn led_settings() -> [(bool, bool, u16); 8] {
         .unwrap()
         .lock_machine()
         .triggers[0]
-        .led_trig_out
+        .trig_out_settings(mccl_core::machine::triggers::TrigOutKind::Led)
         .map(|o| (o.enabled, o.value, o.source))
 }
 

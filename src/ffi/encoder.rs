@@ -285,7 +285,7 @@ pub unsafe extern "system" fn MCC_GetENCCompStockCount(
 /// Index pulses of the channel call the encoder routine (`on`) or not.
 fn index_trigger(wChannel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
-        t.index_enabled[ch] = on;
+        t.enable_index(ch, on);
         Ok(())
     })
 }
@@ -361,7 +361,7 @@ pub extern "system" fn MCC_DisableENCCompTrigger(wChannel: WORD, wCardIndex: WOR
 pub extern "system" fn MCC_EraseENCCompValue(wChannel: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         set_channel_triggers(wChannel, wCardIndex, |t, ch, _| {
-            t.stock[ch].clear();
+            t.erase_compares(ch);
             Ok(())
         })
     }
@@ -377,7 +377,7 @@ pub extern "system" fn MCC_Enable3DCompareChannel(
     ffi_boundary! {
         bits(wCompareAxisMask, 0xFF)?;
         with_triggers(Card(wCardIndex), |t, _| {
-            t.compare_mask = wCompareAxisMask;
+            t.set_compare_mask(wCompareAxisMask);
             Ok(c::NO_ERR)
         })
     }
@@ -388,7 +388,7 @@ pub extern "system" fn MCC_Enable3DCompareChannel(
 pub extern "system" fn MCC_Set3DCompareTolerance(wTolerance: WORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_triggers(Card(wCardIndex), |t, _| {
-            t.compare_tol = wTolerance;
+            t.set_compare_tolerance(wTolerance);
             Ok(c::NO_ERR)
         })
     }

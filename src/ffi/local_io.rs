@@ -191,7 +191,7 @@ pub extern "system" fn MCC_SetLIOTriggerType(
             return Err(McclError::Parameter);
         }
         with_card_triggers(Card(wCardIndex), |t| {
-            t.lio_type[p] = wTriggerType;
+            t.set_input_type(p, wTriggerType);
             Ok(c::NO_ERR)
         })
     }
@@ -200,7 +200,7 @@ pub extern "system" fn MCC_SetLIOTriggerType(
 fn lio_trigger(wPoint: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let p = lio_point(wPoint)?;
     with_card_triggers(Card(wCardIndex), |t| {
-        t.lio_enabled[p] = on;
+        t.enable_input(p, on);
         Ok(c::NO_ERR)
     })
 }
@@ -354,7 +354,7 @@ pub extern "system" fn MCC_SetLIOTrigOutValueEx(
 pub extern "system" fn MCC_SetLIOTrigOutPeriod(dwPeriod: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card_triggers(Card(wCardIndex), |t| {
-            t.trig_period_ns = u64::from(dwPeriod);
+            t.set_trig_period_ns(u64::from(dwPeriod));
             Ok(c::NO_ERR)
         })
     }

@@ -10,7 +10,7 @@ impl Machine {
         let own = self.settings.get(cd).is_some_and(|s| s.leds >> ch & 1 == 1);
         self.triggers
             .get(cd)
-            .and_then(|t| t.led_trig_level.get(ch).copied().flatten())
+            .and_then(|t| t.led_trig_level(ch))
             .unwrap_or(own)
     }
 
@@ -18,11 +18,7 @@ impl Machine {
     /// bits, bit n channel n): while a trigger-out holds the point, its trigger value
     /// (1 = servo off) overrides it.
     pub fn servo_output(&self, cd: usize, ch: usize, servo_on: u32) -> bool {
-        match self
-            .triggers
-            .get(cd)
-            .and_then(|t| t.trig_level.get(ch).copied().flatten())
-        {
+        match self.triggers.get(cd).and_then(|t| t.trig_level(ch)) {
             Some(off) => !off,
             None => servo_on >> ch & 1 == 1,
         }

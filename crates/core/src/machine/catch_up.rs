@@ -14,7 +14,7 @@ pub fn catch_up_card(
 ) {
     for (ch, chan) in chans.iter_mut().enumerate() {
         if chan.catch_up(steps) {
-            triggers.index_status[ch] = true;
+            triggers.note_index(ch);
         }
     }
 }

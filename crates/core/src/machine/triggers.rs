@@ -14,52 +14,82 @@ use std::collections::VecDeque;
 /// Most compare values a channel's stock holds (the manuals give no number).
 pub const MAX_COMPARE_STOCK: usize = 65_536;
 
-/// Per-card trigger settings and state.
+/// Per-card trigger settings and state, one part a kind of trigger.
 #[derive(Debug, Clone)]
 pub struct CardTriggers {
+    compares: Compares,
+    index: IndexTriggers,
+    latches: Latches,
+    inputs: LocalInputs,
+    outs: TrigOutputs,
+}
+
+/// Compare triggers: the stock of compare values per channel, which are on, and how channels compare together.
+#[derive(Debug, Clone)]
+struct Compares {
     /// Pending compare values per channel; the front one is armed.
-    pub stock: [VecDeque<i64>; AXES],
+    stock: [VecDeque<i64>; AXES],
     /// Compare trigger (and its interrupt) enabled per channel.
-    pub comp_enabled: [bool; AXES],
+    comp_enabled: [bool; AXES],
     /// Channels compared together (`MCC_Enable3DCompareChannel`; 0 or one bit: each
     /// channel on its own).
-    pub compare_mask: u16,
+    compare_mask: u16,
     /// Tolerance (counts) of the 3-D compare.
-    pub compare_tol: u16,
+    compare_tol: u16,
+    prev_count: [i64; AXES],
+    prev_over: [(bool, bool); AXES],
+}
+
+/// Index pulse interrupts and the index status.
+#[derive(Debug, Clone)]
+struct IndexTriggers {
     /// Index interrupt enabled per channel.
-    pub index_enabled: [bool; AXES],
+    index_enabled: [bool; AXES],
     /// An index pulse passed since the status was last read.
-    pub index_status: [bool; AXES],
+    index_status: [bool; AXES],
+}
+
+/// Count latches per channel.
+#[derive(Debug, Clone)]
+struct Latches {
     /// `ENC_TRIG_FIRST` / `ENC_TRIG_LAST` per channel.
-    pub latch_type: [u16; AXES],
+    latch_type: [u16; AXES],
     /// Latch source bits per channel.
-    pub latch_source: [u32; AXES],
+    latch_source: [u32; AXES],
     /// The latched count per channel.
-    pub latch: [Option<i64>; AXES],
+    latch: [Option<i64>; AXES],
+}
+
+/// Local-input interrupts per point.
+#[derive(Debug, Clone)]
+struct LocalInputs {
     /// Local-input interrupt type per point (`LIO_LDI_*`: OTP 0..7, OTN 8..15, HOME 16..23).
-    pub lio_type: [u16; 24],
+    lio_type: [u16; 24],
     /// Local-input interrupt enabled per point.
-    pub lio_enabled: [bool; 24],
+    lio_enabled: [bool; 24],
+}
+
+/// Trigger-out of the local outputs and the LEDs, and how long a trigger holds them.
+#[derive(Debug, Clone)]
+struct TrigOutputs {
     /// Trigger-out per local output point.
-    pub trig_out: [TrigOut; AXES],
+    trig_out: [TrigOut; AXES],
     /// How long a triggered output holds its value, ns.
-    pub trig_period_ns: u64,
+    trig_period_ns: u64,
     /// Until when each triggered output holds (virtual ns).
     trig_until: [Option<u128>; AXES],
     /// Output levels driven by trigger-out (bit per point), `None` where not driven.
-    pub trig_level: [Option<bool>; AXES],
+    trig_level: [Option<bool>; AXES],
     /// LED trigger-out per LED point (`MCC_SetLedTrigOut*`; value true: lit). The LEDs
     /// share the trigger period.
-    pub led_trig_out: [TrigOut; AXES],
+    led_trig_out: [TrigOut; AXES],
     /// Until when each triggered LED holds (virtual ns).
     led_trig_until: [Option<u128>; AXES],
     /// Whether any of `trig_until` or `led_trig_until` is set (kept by the tick, which
     /// alone sets and clears them), so that [`CardTriggers::armed`] need not scan them.
     timed_outputs: bool,
     /// LED levels driven by trigger-out, `None` where not driven.
-    pub led_trig_level: [Option<bool>; AXES],
-    prev_count: [i64; AXES],
-    prev_over: [(bool, bool); AXES],
+    led_trig_level: [Option<bool>; AXES],
 }
 
 /// Trigger-out of one output point (a local output or an LED).
@@ -107,15 +137,15 @@ impl CardTriggers {
     /// The trigger-out settings of `kind`'s points.
     pub fn trig_outs(&mut self, kind: TrigOutKind) -> &mut [TrigOut; AXES] {
         match kind {
-            TrigOutKind::Local => &mut self.trig_out,
-            TrigOutKind::Led => &mut self.led_trig_out,
+            TrigOutKind::Local => &mut self.outs.trig_out,
+            TrigOutKind::Led => &mut self.outs.led_trig_out,
         }
     }
 
     /// Sets the trigger value of every local output point whose bit is set in `mask`
     /// to that bit of `values`.
     pub fn set_trig_out_values(&mut self, mask: u32, values: u32) {
-        for (p, o) in self.trig_out.iter_mut().enumerate() {
+        for (p, o) in self.outs.trig_out.iter_mut().enumerate() {
             if mask & (1 << p) != 0 {
                 o.value = values & (1 << p) != 0;
             }
@@ -124,7 +154,8 @@ impl CardTriggers {
 
     /// The compares that trigger some enabled local output point.
     pub fn lio_sources(&self) -> u16 {
-        self.trig_out
+        self.outs
+            .trig_out
             .iter()
             .filter(|o| o.enabled)
             .fold(0, |m, o| m | o.source)
@@ -143,7 +174,7 @@ impl CardTriggers {
     pub fn erase_lio_comp_values(&mut self) {
         let src = self.lio_sources();
         for ch in (0..AXES).filter(|ch| src & (1 << ch) != 0) {
-            self.stock[ch].clear();
+            self.compares.stock[ch].clear();
         }
     }
 }
@@ -175,87 +206,157 @@ impl CompareTable {
 impl CardTriggers {
     /// `MCC_SetENCLatchType`: sets channel `ch`'s latch type and re-arms its latch.
     pub fn set_latch_type(&mut self, ch: usize, t: u16) {
-        self.latch_type[ch] = t;
-        self.latch[ch] = None;
+        self.latches.latch_type[ch] = t;
+        self.latches.latch[ch] = None;
     }
 
     /// `MCC_SetENCLatchSource`: sets channel `ch`'s latch sources and re-arms its latch.
     pub fn set_latch_source(&mut self, ch: usize, src: u32) {
-        self.latch_source[ch] = src;
-        self.latch[ch] = None;
+        self.latches.latch_source[ch] = src;
+        self.latches.latch[ch] = None;
     }
 
     /// The latched count of channel `ch` (0 until something was latched).
     pub fn latch_value(&self, ch: usize) -> i64 {
-        self.latch[ch].unwrap_or(0)
+        self.latches.latch[ch].unwrap_or(0)
     }
 
     /// Whether an index pulse of channel `ch` passed since the last read; the read
     /// clears it.
     pub fn take_index_status(&mut self, ch: usize) -> bool {
-        std::mem::take(&mut self.index_status[ch])
+        std::mem::take(&mut self.index.index_status[ch])
     }
 
     /// Adds compare value `v` to channel `ch`'s stock (`BUFFER_FULL_ERR` when full).
     pub fn push_compare(&mut self, ch: usize, v: i64) -> McclResult<()> {
-        if self.stock[ch].len() >= MAX_COMPARE_STOCK {
+        if self.compares.stock[ch].len() >= MAX_COMPARE_STOCK {
             return Err(McclError::BufferFull);
         }
-        self.stock[ch].push_back(v);
+        self.compares.stock[ch].push_back(v);
         Ok(())
     }
 
     /// Adds every value of `t` to channel `ch`'s stock, or none (`BUFFER_FULL_ERR`) when
     /// they do not all fit.
     pub fn push_compare_table(&mut self, ch: usize, t: &CompareTable) -> McclResult<()> {
-        if self.stock[ch].len() as i64 + t.count > MAX_COMPARE_STOCK as i64 {
+        if self.compares.stock[ch].len() as i64 + t.count > MAX_COMPARE_STOCK as i64 {
             return Err(McclError::BufferFull);
         }
         for k in 0..t.count {
-            self.stock[ch].push_back(t.start + k * t.delta);
+            self.compares.stock[ch].push_back(t.start + k * t.delta);
         }
         Ok(())
     }
 
     /// The armed compare value of channel `ch` (0 when its stock is empty).
     pub fn armed_compare(&self, ch: usize) -> i64 {
-        self.stock[ch].front().copied().unwrap_or(0)
+        self.compares.stock[ch].front().copied().unwrap_or(0)
     }
 
     /// Turns channel `ch`'s compare trigger on or off; turning it on rebases the
     /// reference counts on `chans`, so values already passed do not fire.
     pub fn set_compare_trigger(&mut self, ch: usize, on: bool, chans: &[Channel; AXES]) {
-        if on && !self.comp_enabled[ch] {
+        if on && !self.compares.comp_enabled[ch] {
             self.rebase(chans);
         }
-        self.comp_enabled[ch] = on;
+        self.compares.comp_enabled[ch] = on;
+    }
+}
+
+impl CardTriggers {
+    /// Sets the interrupt type (`LIO_INT_*`) of local input point `p` (0..23).
+    pub fn set_input_type(&mut self, p: usize, kind: u16) {
+        self.inputs.lio_type[p] = kind;
+    }
+
+    /// Turns the interrupt of local input point `p` (0..23) on or off.
+    pub fn enable_input(&mut self, p: usize, on: bool) {
+        self.inputs.lio_enabled[p] = on;
+    }
+
+    /// How long a triggered output or LED holds its value, ns.
+    pub fn set_trig_period_ns(&mut self, ns: u64) {
+        self.outs.trig_period_ns = ns;
+    }
+
+    /// The trigger-out settings of the points of `kind`.
+    pub fn trig_out_settings(&self, kind: TrigOutKind) -> [TrigOut; AXES] {
+        match kind {
+            TrigOutKind::Local => self.outs.trig_out,
+            TrigOutKind::Led => self.outs.led_trig_out,
+        }
+    }
+
+    /// The level a trigger-out holds local output `ch` at, if one does.
+    pub fn trig_level(&self, ch: usize) -> Option<bool> {
+        self.outs.trig_level.get(ch).copied().flatten()
+    }
+
+    /// The level a trigger-out holds LED `ch` at, if one does.
+    pub fn led_trig_level(&self, ch: usize) -> Option<bool> {
+        self.outs.led_trig_level.get(ch).copied().flatten()
+    }
+
+    /// Turns the index pulse interrupt of channel `ch` on or off.
+    pub fn enable_index(&mut self, ch: usize, on: bool) {
+        self.index.index_enabled[ch] = on;
+    }
+
+    /// Notes that channel `ch` passed an index pulse (the index status reads it).
+    pub fn note_index(&mut self, ch: usize) {
+        self.index.index_status[ch] = true;
+    }
+
+    /// Removes every compare value of channel `ch`.
+    pub fn erase_compares(&mut self, ch: usize) {
+        self.compares.stock[ch].clear();
+    }
+
+    /// The channels compared together (bit n: channel n).
+    pub fn set_compare_mask(&mut self, mask: u16) {
+        self.compares.compare_mask = mask;
+    }
+
+    /// The tolerance (counts) of the 3-D compare.
+    pub fn set_compare_tolerance(&mut self, tol: u16) {
+        self.compares.compare_tol = tol;
     }
 }
 
 impl Default for CardTriggers {
     fn default() -> Self {
         CardTriggers {
-            stock: std::array::from_fn(|_| VecDeque::new()),
-            comp_enabled: [false; AXES],
-            compare_mask: 0,
-            compare_tol: 0,
-            index_enabled: [false; AXES],
-            index_status: [false; AXES],
-            latch_type: [c::ENC_TRIG_FIRST; AXES],
-            latch_source: [0; AXES],
-            latch: [None; AXES],
-            lio_type: [c::LIO_INT_RISE; 24],
-            lio_enabled: [false; 24],
-            trig_out: [TrigOut::default(); AXES],
-            trig_period_ns: 0,
-            trig_until: [None; AXES],
-            trig_level: [None; AXES],
-            led_trig_out: [TrigOut::default(); AXES],
-            led_trig_until: [None; AXES],
-            timed_outputs: false,
-            led_trig_level: [None; AXES],
-            prev_count: [0; AXES],
-            prev_over: [(false, false); AXES],
+            compares: Compares {
+                stock: std::array::from_fn(|_| VecDeque::new()),
+                comp_enabled: [false; AXES],
+                compare_mask: 0,
+                compare_tol: 0,
+                prev_count: [0; AXES],
+                prev_over: [(false, false); AXES],
+            },
+            index: IndexTriggers {
+                index_enabled: [false; AXES],
+                index_status: [false; AXES],
+            },
+            latches: Latches {
+                latch_type: [c::ENC_TRIG_FIRST; AXES],
+                latch_source: [0; AXES],
+                latch: [None; AXES],
+            },
+            inputs: LocalInputs {
+                lio_type: [c::LIO_INT_RISE; 24],
+                lio_enabled: [false; 24],
+            },
+            outs: TrigOutputs {
+                trig_out: [TrigOut::default(); AXES],
+                trig_period_ns: 0,
+                trig_until: [None; AXES],
+                trig_level: [None; AXES],
+                led_trig_out: [TrigOut::default(); AXES],
+                led_trig_until: [None; AXES],
+                timed_outputs: false,
+                led_trig_level: [None; AXES],
+            },
         }
     }
 }
@@ -314,12 +415,12 @@ pub struct Fired {
 impl CardTriggers {
     /// The compare values of channel `ch` still waiting (the armed one included).
     pub fn stock_count(&self, ch: usize) -> usize {
-        self.stock[ch].len()
+        self.compares.stock[ch].len()
     }
 
     /// Resets the reference counts (after the counts were set or the card reset).
     pub fn rebase(&mut self, chans: &[Channel; AXES]) {
-        for (p, ch) in self.prev_count.iter_mut().zip(chans) {
+        for (p, ch) in self.compares.prev_count.iter_mut().zip(chans) {
             *p = ch.encoder();
         }
     }
@@ -330,15 +431,15 @@ impl CardTriggers {
     #[inline]
     pub fn armed(&self, thresholds: &[(u16, u16); AXES]) -> bool {
         // Whole-array comparisons: a few wide compares instead of a loop per array.
-        self.comp_enabled != [false; AXES]
-            || self.index_enabled != [false; AXES]
-            || self.lio_enabled != [false; 24]
-            || self.latch_source != [0; AXES]
+        self.compares.comp_enabled != [false; AXES]
+            || self.index.index_enabled != [false; AXES]
+            || self.inputs.lio_enabled != [false; 24]
+            || self.latches.latch_source != [0; AXES]
             || thresholds
                 .iter()
                 .fold(0, |any, &(plus, minus)| any | plus | minus)
                 != 0
-            || self.timed_outputs
+            || self.outs.timed_outputs
     }
 
     /// [`CardTriggers::tick`] for a card with nothing [armed](CardTriggers::armed): only
@@ -347,7 +448,7 @@ impl CardTriggers {
     pub fn tick_idle(&mut self, chans: &[Channel; AXES]) {
         for (i, ch) in chans.iter().enumerate() {
             if ch.index_events > 0 {
-                self.index_status[i] = true;
+                self.index.index_status[i] = true;
             }
         }
     }
@@ -364,7 +465,7 @@ impl CardTriggers {
         let mut out = Fired::default();
         for (i, ch) in chans.iter().enumerate() {
             if ch.index_events > 0 {
-                self.index_status[i] = true;
+                self.index.index_status[i] = true;
             }
         }
         if !self.armed(thresholds) {
@@ -372,31 +473,32 @@ impl CardTriggers {
         }
         let counts: [i64; AXES] = std::array::from_fn(|i| chans[i].encoder());
         // Encoder compare: each channel on its own, or the 3-D set together.
-        let multi = self.compare_mask.count_ones() > 1;
+        let multi = self.compares.compare_mask.count_ones() > 1;
         if multi {
             let set: Vec<usize> = (0..AXES)
-                .filter(|i| self.compare_mask & (1 << i) != 0)
+                .filter(|i| self.compares.compare_mask & (1 << i) != 0)
                 .collect();
-            let tol = i64::from(self.compare_tol);
+            let tol = i64::from(self.compares.compare_tol);
             let all = set.iter().all(|&i| {
-                self.comp_enabled[i]
-                    && self.stock[i].front().is_some_and(|&v| {
-                        (counts[i] - v).abs() <= tol || reached(self.prev_count[i], counts[i], v)
+                self.compares.comp_enabled[i]
+                    && self.compares.stock[i].front().is_some_and(|&v| {
+                        (counts[i] - v).abs() <= tol
+                            || reached(self.compares.prev_count[i], counts[i], v)
                     })
             });
             if all && !set.is_empty() {
                 for &i in &set {
-                    self.stock[i].pop_front();
+                    self.compares.stock[i].pop_front();
                     out.compares.push(i);
                 }
             }
         }
         for i in 0..AXES {
-            if !multi || self.compare_mask & (1 << i) == 0 {
-                while self.comp_enabled[i] {
-                    match self.stock[i].front() {
-                        Some(&v) if reached(self.prev_count[i], counts[i], v) => {
-                            self.stock[i].pop_front();
+            if !multi || self.compares.compare_mask & (1 << i) == 0 {
+                while self.compares.comp_enabled[i] {
+                    match self.compares.stock[i].front() {
+                        Some(&v) if reached(self.compares.prev_count[i], counts[i], v) => {
+                            self.compares.stock[i].pop_front();
                             out.compares.push(i);
                         }
                         _ => break,
@@ -404,13 +506,13 @@ impl CardTriggers {
                 }
             }
             let ch = &chans[i];
-            if ch.index_events > 0 && self.index_enabled[i] {
+            if ch.index_events > 0 && self.index.index_enabled[i] {
                 out.interrupts.push(Interrupt::EncIndex(i as u8));
             }
             // Latch: sources are the index pulses, the limit switches and the timer.
             let lv = ch.levels();
             let p = prev_levels[i];
-            let src = self.latch_source[i];
+            let src = self.latches.latch_source[i];
             // An index pulse latches the count it happened at (exactly, as the card's
             // hardware latch does); a limit switch the count at the end of the tick.
             let mut latched = None;
@@ -429,8 +531,9 @@ impl CardTriggers {
                 }
             }
             if let Some(v) = latched {
-                if self.latch_type[i] == c::ENC_TRIG_LAST || self.latch[i].is_none() {
-                    self.latch[i] = Some(v);
+                if self.latches.latch_type[i] == c::ENC_TRIG_LAST || self.latches.latch[i].is_none()
+                {
+                    self.latches.latch[i] = Some(v);
                 }
             }
             // Local-input interrupts from the sensors.
@@ -440,7 +543,7 @@ impl CardTriggers {
                 (16 + i, p.home, lv.home, Interrupt::LioHome(i as u8)),
             ];
             for (pt, before, now, int) in pts {
-                if self.lio_enabled[pt] && edge(self.lio_type[pt], before, now) {
+                if self.inputs.lio_enabled[pt] && edge(self.inputs.lio_type[pt], before, now) {
                     out.interrupts.push(int);
                 }
             }
@@ -451,41 +554,42 @@ impl CardTriggers {
                 plus > 0 && e > i64::from(plus),
                 minus > 0 && e < -i64::from(minus),
             );
-            if over.0 && !self.prev_over[i].0 {
+            if over.0 && !self.compares.prev_over[i].0 {
                 out.interrupts.push(Interrupt::PclOvp(i as u8));
             }
-            if over.1 && !self.prev_over[i].1 {
+            if over.1 && !self.compares.prev_over[i].1 {
                 out.interrupts.push(Interrupt::PclOvn(i as u8));
             }
-            self.prev_over[i] = over;
+            self.compares.prev_over[i] = over;
         }
         for &i in &out.compares {
             out.interrupts.push(Interrupt::EncComp(i as u8));
         }
         // Trigger-out: local outputs and LEDs whose source includes a compare that fired.
-        let period = self.trig_period_ns;
+        let period = self.outs.trig_period_ns;
         trigger_outputs(
-            &self.trig_out,
-            &mut self.trig_until,
-            &mut self.trig_level,
+            &self.outs.trig_out,
+            &mut self.outs.trig_until,
+            &mut self.outs.trig_level,
             &out.compares,
             now_ns,
             period,
         );
         trigger_outputs(
-            &self.led_trig_out,
-            &mut self.led_trig_until,
-            &mut self.led_trig_level,
+            &self.outs.led_trig_out,
+            &mut self.outs.led_trig_until,
+            &mut self.outs.led_trig_level,
             &out.compares,
             now_ns,
             period,
         );
-        self.timed_outputs = self
+        self.outs.timed_outputs = self
+            .outs
             .trig_until
             .iter()
-            .chain(&self.led_trig_until)
+            .chain(&self.outs.led_trig_until)
             .any(Option::is_some);
-        self.prev_count = counts;
+        self.compares.prev_count = counts;
         out
     }
 }
@@ -512,12 +616,18 @@ mod tests {
         let mut t = CardTriggers::default();
         t.push_compare_table(1, &CompareTable::new(0, 10, 3).unwrap())
             .unwrap();
-        assert_eq!(t.stock[1].iter().copied().collect::<Vec<_>>(), [0, 3, 6, 9]);
+        assert_eq!(
+            t.compares.stock[1].iter().copied().collect::<Vec<_>>(),
+            [0, 3, 6, 9]
+        );
         assert_eq!(t.armed_compare(1), 0);
         // Downwards with a negative delta: 5, 3, 1.
         t.push_compare_table(2, &CompareTable::new(5, 0, -2).unwrap())
             .unwrap();
-        assert_eq!(t.stock[2].iter().copied().collect::<Vec<_>>(), [5, 3, 1]);
+        assert_eq!(
+            t.compares.stock[2].iter().copied().collect::<Vec<_>>(),
+            [5, 3, 1]
+        );
         // A zero delta, or one pointing away from the end, is refused.
         assert_eq!(
             CompareTable::new(0, 10, 0).unwrap_err(),
@@ -544,8 +654,8 @@ mod tests {
     fn compare_values_fire_in_turn() {
         let mut ch = chans();
         let mut t = CardTriggers::default();
-        t.stock[0].extend([100, 200, 300]);
-        t.comp_enabled[0] = true;
+        t.compares.stock[0].extend([100, 200, 300]);
+        t.compares.comp_enabled[0] = true;
         let lv = [SensorLevels::default(); AXES];
         let th = [(0, 0); AXES];
         ch[0].step(150, 0.001);
@@ -562,67 +672,70 @@ mod tests {
     fn trigger_out_holds_for_the_period() {
         let mut ch = chans();
         let mut t = CardTriggers::default();
-        t.stock[0].push_back(10);
-        t.comp_enabled[0] = true;
-        t.trig_out[1] = TrigOut {
+        t.compares.stock[0].push_back(10);
+        t.compares.comp_enabled[0] = true;
+        t.outs.trig_out[1] = TrigOut {
             enabled: true,
             value: true,
             source: 1,
         };
-        t.trig_period_ns = 500_000_000;
+        t.outs.trig_period_ns = 500_000_000;
         let lv = [SensorLevels::default(); AXES];
         let th = [(0, 0); AXES];
         ch[0].step(20, 0.001);
         t.tick(&ch, &lv, &th, 1_000_000);
-        assert_eq!(t.trig_level[1], Some(true));
+        assert_eq!(t.outs.trig_level[1], Some(true));
         t.tick(&ch, &lv, &th, 400_000_000);
-        assert_eq!(t.trig_level[1], Some(true));
+        assert_eq!(t.outs.trig_level[1], Some(true));
         t.tick(&ch, &lv, &th, 501_000_000);
-        assert_eq!(t.trig_level[1], None, "back after 0.5 s");
+        assert_eq!(t.outs.trig_level[1], None, "back after 0.5 s");
     }
 
     #[test]
     fn led_trigger_out_follows_its_own_source_and_the_shared_period() {
         let mut ch = chans();
         let mut t = CardTriggers::default();
-        t.stock[2].extend([10, 20]);
-        t.comp_enabled[2] = true;
-        t.led_trig_out[5] = TrigOut {
+        t.compares.stock[2].extend([10, 20]);
+        t.compares.comp_enabled[2] = true;
+        t.outs.led_trig_out[5] = TrigOut {
             enabled: true,
             value: true,
             source: 1 << 2,
         }; // LED 5 lights on compare 2
-        t.led_trig_out[6] = TrigOut {
+        t.outs.led_trig_out[6] = TrigOut {
             enabled: true,
             value: true,
             source: 1 << 3,
         }; // LED 6 waits for compare 3
-        t.trig_out[5] = TrigOut {
+        t.outs.trig_out[5] = TrigOut {
             enabled: false,
             value: true,
             source: 1 << 2,
         }; // the local output 5 is not enabled
-        t.trig_period_ns = 3_000_000;
+        t.outs.trig_period_ns = 3_000_000;
         let lv = [SensorLevels::default(); AXES];
         let th = [(0, 0); AXES];
         ch[2].step(15, 0.001);
         t.tick(&ch, &lv, &th, 1_000_000);
-        assert_eq!(t.led_trig_level[5], Some(true), "compare 2 passed 10");
-        assert_eq!((t.led_trig_level[6], t.trig_level[5]), (None, None));
+        assert_eq!(t.outs.led_trig_level[5], Some(true), "compare 2 passed 10");
+        assert_eq!(
+            (t.outs.led_trig_level[6], t.outs.trig_level[5]),
+            (None, None)
+        );
         t.tick(&ch, &lv, &th, 3_000_000);
-        assert_eq!(t.led_trig_level[5], Some(true), "held until 4 ms");
+        assert_eq!(t.outs.led_trig_level[5], Some(true), "held until 4 ms");
         ch[2].step(25, 0.001);
         t.tick(&ch, &lv, &th, 4_000_000);
         assert_eq!(
-            t.led_trig_level[5],
+            t.outs.led_trig_level[5],
             Some(true),
             "retriggered at 4 ms: until 7 ms"
         );
         t.tick(&ch, &lv, &th, 6_000_000);
-        assert_eq!(t.led_trig_level[5], Some(true));
+        assert_eq!(t.outs.led_trig_level[5], Some(true));
         t.tick(&ch, &lv, &th, 7_000_000);
-        assert_eq!(t.led_trig_level[5], None, "back after the period");
-        t.comp_enabled[2] = false;
+        assert_eq!(t.outs.led_trig_level[5], None, "back after the period");
+        t.compares.comp_enabled[2] = false;
         assert!(
             !t.armed(&th),
             "no LED holds any more: the card may skip its ticks"
@@ -633,13 +746,13 @@ mod tests {
     fn lio_edges_and_pcl_thresholds() {
         let ch = chans();
         let mut t = CardTriggers::default();
-        t.lio_enabled[0] = true; // OTP0, rising by default
+        t.inputs.lio_enabled[0] = true; // OTP0, rising by default
         let th = [(0, 0); AXES];
         let mut prev = [SensorLevels::default(); AXES];
         prev[0].plus = true; // was active, is not: a falling edge
         let f = t.tick(&ch, &prev, &th, 1);
         assert!(f.interrupts.is_empty());
-        t.lio_type[0] = c::LIO_INT_FALL;
+        t.inputs.lio_type[0] = c::LIO_INT_FALL;
         let f = t.tick(&ch, &prev, &th, 2);
         assert_eq!(f.interrupts, vec![Interrupt::LioOtp(0)]);
     }
