@@ -292,7 +292,7 @@ impl HomeAxis {
             Until::Index => {
                 let want = u32::try_from(self.cfg.nIndexCount).unwrap_or(0);
                 let mut found = None;
-                for k in 0..chan.index_events {
+                for k in 0..chan.index_events() {
                     if self.index_seen == want && found.is_none() {
                         found = chan.index_passed(k);
                     }

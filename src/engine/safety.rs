@@ -75,12 +75,12 @@ pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
         }
         if busy {
             let (d, dd) = chan.pulse_rate();
-            if d.abs() > i64::from(chan.max_speed) {
+            if d.abs() > i64::from(chan.max_speed()) {
                 return Some(Trip {
                     record: Some(ERR_PULSE_SPEED),
                 });
             }
-            if dd.abs() > i64::from(chan.max_acc) {
+            if dd.abs() > i64::from(chan.max_acc()) {
                 return Some(Trip {
                     record: Some(ERR_PULSE_ACC),
                 });

@@ -115,7 +115,7 @@ impl Trace {
             let m = &mac[card][ch];
             let (ms, ma) = machine
                 .channel(card, ch)
-                .map_or((0, 0), |c| (c.max_speed, c.max_acc));
+                .map_or((0, 0), |c| (c.max_speed(), c.max_acc()));
             let d = format!(
                 "axis={} channel={ch} ppr={} rpm={} pitch={:.9} gear={:.9} max_speed={:.9} \
                  pulses_per_uu={:.9} high={:.9} low={:.9} max_pulse_speed={ms} max_pulse_acc={ma}",
@@ -167,8 +167,8 @@ impl Trace {
             for (card, chans) in m.cards.iter().enumerate() {
                 let seen = &mut ev.cards[card];
                 for (ch, c) in chans.iter().enumerate() {
-                    seen.max_speed[ch] = c.max_speed;
-                    seen.max_acc[ch] = c.max_acc;
+                    seen.max_speed[ch] = c.max_speed();
+                    seen.max_acc[ch] = c.max_acc();
                 }
             }
         }
@@ -193,14 +193,14 @@ impl Trace {
                     }
                 }
                 ev.cards[card].levels[ch] = now;
-                if c.max_speed != ev.cards[card].max_speed[ch] {
-                    ev.cards[card].max_speed[ch] = c.max_speed;
-                    let d = format!("channel={ch} pulses={}", c.max_speed);
+                if c.max_speed() != ev.cards[card].max_speed[ch] {
+                    ev.cards[card].max_speed[ch] = c.max_speed();
+                    let d = format!("channel={ch} pulses={}", c.max_speed());
                     ev.write(t_ns, card as i64, -1, "max_pulse_speed", &d);
                 }
-                if c.max_acc != ev.cards[card].max_acc[ch] {
-                    ev.cards[card].max_acc[ch] = c.max_acc;
-                    let d = format!("channel={ch} pulses={}", c.max_acc);
+                if c.max_acc() != ev.cards[card].max_acc[ch] {
+                    ev.cards[card].max_acc[ch] = c.max_acc();
+                    let d = format!("channel={ch} pulses={}", c.max_acc());
                     ev.write(t_ns, card as i64, -1, "max_pulse_acc", &d);
                 }
             }

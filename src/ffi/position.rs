@@ -199,7 +199,7 @@ fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
         return Err(McclError::Parameter);
     }
     with_machine(Card(wCardIndex), |m, cd| {
-        m.settings[cd].dividers[k] = v;
+        m.settings[cd].set_divider(k, v);
         Ok(c::NO_ERR)
     })
 }
@@ -262,7 +262,7 @@ pub extern "system" fn MCC_SetErrorCountThreshold(
     ffi_boundary! {
         let ch = channel(wChannel)?;
         with_machine(Card(wCardIndex), |m, cd| {
-            m.settings[cd].error_threshold[ch.0] = (wPlusThreshold, wMinusThreshold);
+            m.settings[cd].set_error_threshold(ch.0, wPlusThreshold, wMinusThreshold);
             Ok(c::NO_ERR)
         })
     }

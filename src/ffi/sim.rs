@@ -94,7 +94,7 @@ pub extern "C" fn MCCL_SimSetEmergencyStop(wCardIndex: WORD, nLevel: c_int) -> c
             return Err(McclError::Parameter);
         }
         with_machine(Card(wCardIndex), |m, cd| {
-            m.emergency[cd] = nLevel == 1;
+            m.set_emergency(cd, nLevel == 1);
             Ok(c::NO_ERR)
         })
     }

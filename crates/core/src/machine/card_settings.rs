@@ -77,6 +77,16 @@ impl CardSettings {
         self.filters[k as usize] = value;
     }
 
+    /// Sets gain clock divider `k` (0: I, 1: D).
+    pub fn set_divider(&mut self, k: usize, v: u32) {
+        self.dividers[k] = v;
+    }
+
+    /// Sets the error counter thresholds (+, −) of channel `ch`.
+    pub fn set_error_threshold(&mut self, ch: usize, plus: u16, minus: u16) {
+        self.error_threshold[ch] = (plus, minus);
+    }
+
     /// Sets the LED output of channel `ch` (0..7) on or off.
     pub fn set_led(&mut self, ch: usize, on: bool) {
         let bit = 1u8 << ch;

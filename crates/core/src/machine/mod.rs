@@ -48,6 +48,13 @@ pub struct Machine {
 }
 
 impl Machine {
+    /// Presses (`on`) or releases the emergency-stop input of card `cd`.
+    pub fn set_emergency(&mut self, cd: usize, on: bool) {
+        if let Some(e) = self.emergency.get_mut(cd) {
+            *e = on;
+        }
+    }
+
     /// A machine for `n` cards from the parameters in effect and the specs.
     pub fn new(
         mac: &crate::config::MacTable,

@@ -88,7 +88,7 @@ pub struct Channel {
     /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
     base: f64,
     /// Index pulses passed in the last step.
-    pub index_events: u32,
+    pub(crate) index_events: u32,
     /// Motor positions (pulses, machine frame) at the start and end of the last step.
     pub(super) last_move: (f64, f64),
     /// The index interval of the last position looked up (`index_interval`), or
@@ -114,9 +114,9 @@ pub struct Channel {
     mac: SYS_MAC_PARAM,
     enc: SYS_ENCODER_CONFIG,
     /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
-    pub input_rate: Option<u16>,
+    pub(crate) input_rate: Option<u16>,
     /// `MCC_SetENCGearRate`.
-    pub gear_rate: f64,
+    pub(crate) gear_rate: f64,
     /// Encoder count = raw count + `enc_offset`.
     enc_offset: i64,
     /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
@@ -125,13 +125,13 @@ pub struct Channel {
     /// Physical sensor levels (before the program's wiring setting).
     raw: [bool; 3],
     /// The last index pulse passed, as a raw count.
-    pub last_index_count: Option<i64>,
+    pub(crate) last_index_count: Option<i64>,
     /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
-    pub latched: [bool; 2],
+    pub(crate) latched: [bool; 2],
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
-    pub max_speed: i32,
+    pub(crate) max_speed: i32,
     /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
-    pub max_acc: i32,
+    pub(crate) max_acc: i32,
 }
 
 impl Channel {
@@ -178,6 +178,24 @@ impl Channel {
         ch.prev_levels = ch.levels;
         ch.step_levels = ch.levels;
         ch
+    }
+
+    /// Index pulses passed in the last step.
+    #[inline]
+    pub fn index_events(&self) -> u32 {
+        self.index_events
+    }
+
+    /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
+    #[inline]
+    pub fn max_speed(&self) -> i32 {
+        self.max_speed
+    }
+
+    /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
+    #[inline]
+    pub fn max_acc(&self) -> i32 {
+        self.max_acc
     }
 
     /// Pulses per UU (signed: negative when wPosToEncoderDir reverses the output).
