@@ -362,8 +362,8 @@ fn attach_mc3b(shared: &Shared, devices: &[crate::mc3b::backend::Device]) {
         shared.mark_mc3b(d.card());
         let limits = d.limits();
         shared.for_each_group(|g| {
-            if g.def.card.0 == d.card() {
-                let mut x = crate::mc3b::backend::Executor::new(d.link(), &g.axes);
+            if g.def().card.0 == d.card() {
+                let mut x = crate::mc3b::backend::Executor::new(d.link(), g.axes());
                 x.set_limits(limits.map(|l| [l[0] != 0, l[2] != 0]));
                 g.attach_external(Box::new(x));
             }

@@ -36,8 +36,7 @@ pub extern "system" fn MCC_DisableLimitSwitchCheck() -> c_int {
 /// vendor's library takes it; the axes the group lacks stay off.
 fn set_over_travel_check(v: [c_int; 8], g: WORD) -> McclResult<c_int> {
     update_group(g, |g| {
-        let on: [bool; 8] = std::array::from_fn(|i| v[i] != 0 && g.axes[i].channel.is_some());
-        g.ot_check = on;
+        g.set_over_travel_check(v.map(|x| x != 0));
     })
 }
 
@@ -82,7 +81,7 @@ pub unsafe extern "system" fn MCC_GetOverTravelCheck(
         // SAFETY: forwarded under this function's contract.
         unsafe {
             write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.ot_check.map(c_int::from)))
+                with_group(wGroupIndex, |g| Ok(g.over_travel_check().map(c_int::from)))
             })
         }
     }

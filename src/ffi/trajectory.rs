@@ -115,7 +115,7 @@ pub extern "system" fn MCC_DisableBlend(wGroupIndex: WORD) -> c_int {
 /// 0 when blending is on (as the end of the queue will have it), 1 when off.
 #[no_mangle]
 pub extern "system" fn MCC_CheckBlend(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued))) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(!g.blend_queued()))) }
 }
 
 /// Queues a delay of `dwTime` ms (> 0) before the next command (`GMS_DELAYING`
@@ -184,7 +184,7 @@ pub extern "system" fn MCC_OverrideSpeedEx(dfRate: f64, bInstant: BOOL, wGroupIn
 /// one from the period after it was set).
 #[no_mangle]
 pub extern "system" fn MCC_GetOverrideRate(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.override_pct / 100.0)) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.override_pct() / 100.0)) }
 }
 
 /// With `bFix` TRUE the override no longer changes speeds (motion runs at 100 %).

@@ -31,7 +31,7 @@ pub extern "system" fn MCC_SetUnit(nUnitMode: c_int, wGroupIndex: WORD) -> c_int
         if system::active().is_ok() {
             // The running group rebuilds its axes from its definition at the next reset.
             with_group(wGroupIndex, |g| {
-                g.def.unit = nUnitMode;
+                g.set_unit(nUnitMode);
                 Ok(())
             })?;
         }

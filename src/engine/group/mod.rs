@@ -79,13 +79,13 @@ pub struct GroupState {
     single_block: bool,
     single_block_credit: bool,
     /// In-position check axes enabled by queued markers (used by the in-position check).
-    pub inpos_mask: u32,
+    pub(in crate::engine) inpos_mask: u32,
     /// Tracking error check per axis (`MCC_EnableTrackError` mask).
-    pub track_mask: u32,
+    pub(in crate::engine) track_mask: u32,
     /// Software over-travel check per axis (`MCC_SetOverTravelCheck`).
-    pub ot_check: [bool; AXES],
+    pub(in crate::engine) ot_check: [bool; AXES],
     /// Group index (0..95).
-    pub index: usize,
+    pub(in crate::engine) index: usize,
     /// Changes of the info other than its running command's phase and feed: a command
     /// queued, taken from the queue, started or ended, the queue dropped, the error
     /// record set or cleared, the running command's end or the offset changed
@@ -98,7 +98,7 @@ pub struct GroupState {
     newest_own_time: f64,
     /// The info last published, kept in test builds to check the key against it.
     #[cfg(debug_assertions)]
-    pub(crate) published_info: Option<super::snapshot::Info>,
+    pub(in crate::engine) published_info: Option<super::snapshot::Info>,
     /// Set when the group's commands run outside the card (an MC3B: `external`).
     external: Option<Box<dyn ExternalExecutor>>,
     /// After-interpolation filters and reverse interpolation (`post.rs`); `None` until
@@ -119,7 +119,7 @@ pub struct GroupState {
     /// Output changes the queue reached this tick (the engine makes them).
     outputs: Vec<Output>,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
-    pub trace_notes: Option<Vec<super::note::Note>>,
+    pub(in crate::engine) trace_notes: Option<Vec<super::note::Note>>,
     /// Periods the status still reads `GMS_RUNNING` with nothing running (the vendor's
     /// library shows one after the last command).
     lag: u8,
@@ -144,15 +144,15 @@ pub struct GroupState {
     /// In-position check of the last command, while it runs.
     inpos_wait: Option<InPosWait>,
     /// The mapping and queue size the group runs with.
-    pub def: GroupDef,
+    pub(in crate::engine) def: GroupDef,
     /// Mechanism facts per axis (from the parameters in effect).
-    pub axes: [AxisMech; AXES],
+    pub(in crate::engine) axes: [AxisMech; AXES],
     /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
-    pub blend_queued: bool,
+    pub(in crate::engine) blend_queued: bool,
     /// Override ratio, percent.
-    pub override_pct: f64,
+    pub(in crate::engine) override_pct: f64,
     /// `MCC_FixSpeed(TRUE)`: the override does not change speeds.
-    pub fixed_speed: bool,
+    pub(in crate::engine) fixed_speed: bool,
     /// End of the last queued command (user coordinates).
     queue_end: Axes,
     /// Command indices (`queue.rs`).
@@ -244,6 +244,47 @@ impl GroupState {
             post: None,
             kin: None,
         }
+    }
+
+    /// The group's slot (0..95).
+    pub fn index(&self) -> usize {
+        self.index
+    }
+
+    /// The mapping and queue size the group runs with.
+    pub fn def(&self) -> &GroupDef {
+        &self.def
+    }
+
+    /// Mechanism facts per axis.
+    pub fn axes(&self) -> &[AxisMech; AXES] {
+        &self.axes
+    }
+
+    /// Sets the unit (`UNIT_MM`, `UNIT_INCH`) the group's axes take from the next reset.
+    pub fn set_unit(&mut self, unit: std::os::raw::c_int) {
+        self.def.unit = unit;
+    }
+
+    /// Turns the software over-travel check on or off per axis; an axis the group lacks
+    /// stays off.
+    pub fn set_over_travel_check(&mut self, on: [bool; AXES]) {
+        self.ot_check = std::array::from_fn(|i| on[i] && self.axes[i].channel.is_some());
+    }
+
+    /// The software over-travel check per axis.
+    pub fn over_travel_check(&self) -> [bool; AXES] {
+        self.ot_check
+    }
+
+    /// Whether blending is on as the end of the queue will see it (`MCC_CheckBlend`).
+    pub fn blend_queued(&self) -> bool {
+        self.blend_queued
+    }
+
+    /// The override ratio, percent.
+    pub fn override_pct(&self) -> f64 {
+        self.override_pct
     }
 
     /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).

@@ -32,7 +32,7 @@ fn rig() -> Rig {
     });
     let mut g = GroupState::new(0, def, axes, 0.001);
     let (link, w) = worker();
-    let x = Executor::new(link.clone(), &g.axes);
+    let x = Executor::new(link.clone(), g.axes());
     g.attach_external(Box::new(x));
     g.settings.feed = 20.0;
     g.settings.acc_ms = 20.0;
@@ -375,8 +375,10 @@ fn hold_at_block_end_holds_after_the_job() {
 #[test]
 fn software_over_travel_stops_before_the_move() {
     let mut r = rig();
-    r.g.ot_check[0] = true;
-    r.g.axes[0].high = 5.0;
+    let mut axes = *r.g.axes();
+    axes[0].high = 5.0;
+    r.g.reset(axes);
+    r.g.set_over_travel_check([true, false, false, false, false, false, false, false]);
     r.line(4.0, 0.0).expect("line");
     r.line(10.0, 0.0).expect("line");
     r.run();
@@ -393,7 +395,7 @@ fn reset_makes_the_device_position_the_new_zero() {
     let mut r = rig();
     r.line(10.0, 5.0).expect("line");
     r.run();
-    let axes = r.g.axes;
+    let axes = *r.g.axes();
     r.g.reset(axes);
     assert!(close(r.pos(), [0.0, 0.0]));
     assert!(r.g.is_external());
@@ -435,7 +437,7 @@ fn homing_rig() -> Rig {
     let mut rec = Rec::new();
     rec.switches.push((0, 0, -500));
     let (link, w) = worker_with(rec, &[[0, 0, 1, 0], [0; 4], [0; 4]]);
-    let mut x = Executor::new(link.clone(), &r.g.axes);
+    let mut x = Executor::new(link.clone(), r.g.axes());
     x.set_limits(HOMING_LIMITS);
     r.g.attach_external(Box::new(x));
     r.link = link;
@@ -469,9 +471,9 @@ impl Rig {
         orders: &[i32; AXES],
         cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
     ) -> McclResult<(u32, Vec<Job>, [bool; MOTORS])> {
-        let mut x = Executor::new(self.link.clone(), &self.g.axes);
+        let mut x = Executor::new(self.link.clone(), self.g.axes());
         x.set_limits(HOMING_LIMITS);
-        x.plan_home(orders, cfgs, &self.g.axes)
+        x.plan_home(orders, cfgs, self.g.axes())
     }
 
     /// Ticks and runs the device until the homing ends; its result.
