@@ -423,7 +423,7 @@ pub fn update_param() -> McclResult<()> {
     let shared = r.engine.shared();
     {
         let mut m = shared.lock_machine();
-        for (c, chans) in m.cards.iter_mut().enumerate() {
+        for (c, chans) in m.cards_mut().iter_mut().enumerate() {
             for (ch, chan) in chans.iter_mut().enumerate() {
                 chan.set_params(mac[c][ch], encoder[c][ch]);
                 chan.rezero();

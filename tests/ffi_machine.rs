@@ -237,7 +237,11 @@ fn emergency_stop_stops_every_group_of_the_card() {
 fn tracking_error_with_a_lagging_motor() {
     let _g = setup();
     // A 50 ms lag: at 10 UU/s the motor trails by about 10 x 0.05 = 0.5 UU (250 pulses).
-    MCCLPCI_IMP::system::active().unwrap().lock_machine().cards[0][0].set_plant_lag(Some(0.05));
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .lock_machine()
+        .cards_mut()[0][0]
+        .set_plant_lag(Some(0.05));
     assert_eq!(MCC_SetTrackErrorLimit(0.3, 0, 0), NO_ERR);
     let mut lim = 0.0;
     // SAFETY: valid pointer.
@@ -338,7 +342,11 @@ fn in_position_waits_for_the_motor() {
     let _g = setup();
     // A 50 ms lag: after a move at 10 UU/s the motor trails by 0.5 UU and closes in as
     // e^(-t / 50 ms): within 0.01 UU after 50 ms x ln(50) = 196 ms.
-    MCCLPCI_IMP::system::active().unwrap().lock_machine().cards[0][0].set_plant_lag(Some(0.05));
+    MCCLPCI_IMP::system::active()
+        .unwrap()
+        .lock_machine()
+        .cards_mut()[0][0]
+        .set_plant_lag(Some(0.05));
     assert_eq!(MCC_SetInPosMode(IPM_ONETIME_BLOCK, 0), NO_ERR);
     assert_eq!(MCC_SetInPosMode(4, 0), PARAMETER_ERR);
     assert_eq!(MCC_SetInPosMaxCheckTime(1000, 0), NO_ERR);
@@ -454,7 +462,7 @@ fn led_settings() -> [(bool, bool, u16); 8] {
     MCCLPCI_IMP::system::active()
         .unwrap()
         .lock_machine()
-        .triggers[0]
+        .triggers(0)
         .trig_out_settings(mccl_core::machine::triggers::TrigOutKind::Led)
         .map(|o| (o.enabled, o.value, o.source))
 }
@@ -557,7 +565,7 @@ fn enc_filter_clock_is_kept_per_card_like_the_other_filter_clocks() {
         MCCLPCI_IMP::system::active()
             .unwrap()
             .lock_machine()
-            .settings[cd]
+            .card_settings(cd)
             .filters
     };
     assert_eq!(

@@ -92,7 +92,7 @@ impl Shared {
         if self.tracer.tracing || self.safety_reads_channels(machine, false) {
             return 0;
         }
-        let cards = machine.triggers.iter().zip(&machine.settings).enumerate();
+        let cards = machine.triggers_and_settings().enumerate();
         for (card, (triggers, settings)) in cards {
             let idle = held
                 .idle_cards

@@ -48,7 +48,7 @@ pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
         let Some(chan) = m.channel(card, ch) else {
             continue;
         };
-        if busy && m.emergency.get(card).copied().unwrap_or(false) {
+        if busy && m.emergency(card) {
             return Some(Trip {
                 record: Some(ERR_EMERGENCY),
             });

@@ -137,9 +137,9 @@ impl Shared {
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
             if !dry {
-                g.command_channels(&mut machine.cards);
+                g.command_channels(machine.cards_mut());
                 if !cruise && (machine.compensating() || g.comp_pulses() != [0; AXES]) {
-                    g.read_compensation(&mut machine.cards);
+                    g.read_compensation(machine.cards_mut());
                     self.store_compensation(g);
                 }
             }
@@ -188,12 +188,7 @@ impl Shared {
         let recorded = m.recording();
         let mut recording = Recording::default();
         let mut deferred = false;
-        let cards = m
-            .cards
-            .iter_mut()
-            .zip(m.triggers.iter_mut())
-            .zip(&m.settings);
-        for (card, ((chans, triggers), settings)) in cards.enumerate() {
+        for (card, (chans, triggers, settings)) in m.cards_triggers_settings().enumerate() {
             // A cruise plan found every card idle.
             let idle = cruise
                 || held

@@ -162,9 +162,9 @@ impl Trace {
     /// the pulse speed/acceleration limits.
     pub fn machine_events(&mut self, t_ns: u128, m: &Machine) {
         let ev = &mut self.events;
-        if ev.cards.len() < m.cards.len() {
-            ev.cards.resize(m.cards.len(), CardSeen::default());
-            for (card, chans) in m.cards.iter().enumerate() {
+        if ev.cards.len() < m.cards().len() {
+            ev.cards.resize(m.cards().len(), CardSeen::default());
+            for (card, chans) in m.cards().iter().enumerate() {
                 let seen = &mut ev.cards[card];
                 for (ch, c) in chans.iter().enumerate() {
                     seen.max_speed[ch] = c.max_speed();
@@ -172,8 +172,8 @@ impl Trace {
                 }
             }
         }
-        for (card, chans) in m.cards.iter().enumerate() {
-            let emg = m.emergency.get(card).copied().unwrap_or(false);
+        for (card, chans) in m.cards().iter().enumerate() {
+            let emg = m.emergency(card);
             if emg != ev.cards[card].emergency {
                 ev.cards[card].emergency = emg;
                 let d = format!("active={}", u8::from(emg));

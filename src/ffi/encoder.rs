@@ -129,7 +129,10 @@ fn with_triggers<R>(
         &[crate::machine::Channel; 8],
     ) -> McclResult<R>,
 ) -> McclResult<R> {
-    with_machine(cd, |m, cd| f(&mut m.triggers[cd], &m.cards[cd]))
+    with_machine(cd, |m, cd| {
+        let (t, chans) = m.triggers_and_channels_mut(cd);
+        f(t, chans)
+    })
 }
 
 /// Runs `f` on the triggers of card `wCardIndex` for channel `wChannel` (checked first,

@@ -68,7 +68,7 @@ pub unsafe extern "system" fn MCC_GetEmgcStopStatus(
         // SAFETY: forwarded under this function's contract.
         unsafe {
             write_out(pwStatus, || {
-                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency[cd])))
+                with_machine(Card(wCardIndex), |m, cd| Ok(WORD::from(m.emergency(cd))))
             })
         }
     }
@@ -77,7 +77,7 @@ pub unsafe extern "system" fn MCC_GetEmgcStopStatus(
 fn led(Channel: WORD, wCardIndex: WORD, on: bool) -> McclResult<c_int> {
     let ch = channel(Channel)?;
     with_machine(Card(wCardIndex), |m, cd| {
-        m.settings[cd].set_led(ch.0, on);
+        m.card_settings_mut(cd).set_led(ch.0, on);
         Ok(c::NO_ERR)
     })
 }
@@ -119,7 +119,7 @@ pub unsafe extern "system" fn MCC_GetLedLightStatus(
 /// Keeps filter clock `k` of the card (any WORD: the manuals give no range).
 pub(super) fn filter(k: FilterClock, Value: WORD, wCardIndex: WORD) -> McclResult<c_int> {
     with_machine(Card(wCardIndex), |m, cd| {
-        m.settings[cd].set_filter_clock(k, Value);
+        m.card_settings_mut(cd).set_filter_clock(k, Value);
         Ok(c::NO_ERR)
     })
 }

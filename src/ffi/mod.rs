@@ -197,7 +197,7 @@ pub fn with_card_triggers<R>(
     cd: Card,
     f: impl FnOnce(&mut crate::machine::triggers::CardTriggers) -> McclResult<R>,
 ) -> McclResult<R> {
-    with_machine(cd, |m, cd| f(&mut m.triggers[cd]))
+    with_machine(cd, |m, cd| f(m.triggers_mut(cd)))
 }
 
 /// Runs `f` on channel `ch` of card `cd` of the simulated machine with its lock held.

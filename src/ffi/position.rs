@@ -17,13 +17,13 @@ use std::os::raw::{c_char, c_int};
 fn set_gains(k: Gain, v: [WORD; 8], wCardIndex: WORD) -> McclResult<c_int> {
     let g = Gains::new(v)?;
     with_machine(Card(wCardIndex), |m, cd| {
-        m.settings[cd].set_gains(k, g);
+        m.card_settings_mut(cd).set_gains(k, g);
         Ok(c::NO_ERR)
     })
 }
 
 fn gains(k: Gain, wCardIndex: WORD) -> McclResult<[WORD; 8]> {
-    with_machine(Card(wCardIndex), |m, cd| Ok(m.settings[cd].gains(k)))
+    with_machine(Card(wCardIndex), |m, cd| Ok(m.card_settings(cd).gains(k)))
 }
 
 /// Proportional gain per channel (0..255).
@@ -199,7 +199,7 @@ fn set_divider(k: usize, v: DWORD, wCardIndex: WORD) -> McclResult<c_int> {
         return Err(McclError::Parameter);
     }
     with_machine(Card(wCardIndex), |m, cd| {
-        m.settings[cd].set_divider(k, v);
+        m.card_settings_mut(cd).set_divider(k, v);
         Ok(c::NO_ERR)
     })
 }
@@ -220,7 +220,7 @@ pub extern "system" fn MCC_SetDGainClockDivider(dwClockDivider: DWORD, wCardInde
 fn error_counts(wCardIndex: WORD) -> McclResult<[c_int; 8]> {
     with_machine(Card(wCardIndex), |m, cd| {
         Ok(std::array::from_fn(|ch| {
-            m.cards[cd][ch]
+            m.cards()[cd][ch]
                 .error_count()
                 .clamp(i64::from(c_int::MIN), i64::from(c_int::MAX)) as c_int
         }))
@@ -262,7 +262,7 @@ pub extern "system" fn MCC_SetErrorCountThreshold(
     ffi_boundary! {
         let ch = channel(wChannel)?;
         with_machine(Card(wCardIndex), |m, cd| {
-            m.settings[cd].set_error_threshold(ch.0, wPlusThreshold, wMinusThreshold);
+            m.card_settings_mut(cd).set_error_threshold(ch.0, wPlusThreshold, wMinusThreshold);
             Ok(c::NO_ERR)
         })
     }

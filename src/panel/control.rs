@@ -138,8 +138,10 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
         Control::EmergencyStop { card, on } => {
             let cd = card_of(shared, card)?;
             let mut m = shared.lock_machine();
-            let e = m.emergency.get_mut(cd).ok_or_else(|| bad("no such card"))?;
-            *e = on;
+            if cd >= m.cards().len() {
+                return Err(bad("no such card"));
+            }
+            m.set_emergency(cd, on);
         }
         Control::Adc {
             card,

@@ -74,5 +74,5 @@ impl Shared {
 /// Whether a check of every moving group is on: the hardware limit switches (`mode`
 /// from [`Shared::set_limit_check`], −1 off), an emergency stop, a pulse limit.
 fn global_checks(limit_mode: i32, machine: &Machine) -> bool {
-    limit_mode >= 0 || machine.emergency.iter().any(|&e| e) || machine.pulse_limits_set
+    limit_mode >= 0 || machine.any_emergency() || machine.pulse_limits_set()
 }

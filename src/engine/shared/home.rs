@@ -31,7 +31,7 @@ impl Shared {
             return self.start_mc3b_homing(card, orders, cfgs);
         }
         let machine = self.lock_machine();
-        let chans = machine.cards.get(card).ok_or(McclError::Parameter)?;
+        let chans = machine.cards().get(card).ok_or(McclError::Parameter)?;
         let mut slot = self.home.homing.lock();
         if slot.is_some() {
             return Err(McclError::NotFinished);
@@ -171,8 +171,8 @@ impl Shared {
         let mut slot = self.home.homing.lock();
         let h = slot.as_mut()?;
         let card = h.card();
-        let emergency = machine.emergency.get(card).copied().unwrap_or(false);
-        let chans = machine.cards.get_mut(card)?;
+        let emergency = machine.emergency(card);
+        let chans = machine.cards_mut().get_mut(card)?;
         let out = h.tick(chans, emergency, dt);
         if let Some(status) = out.finished {
             *slot = None;

@@ -182,7 +182,7 @@ impl Shared {
         trace: Option<trace::Trace>,
         cruise: bool,
     ) -> Shared {
-        let cards = machine.cards.len();
+        let cards = machine.cards().len();
         let slots: [AtomicI32; GROUPS] = std::array::from_fn(|_| AtomicI32::new(-1));
         let mut gs = Vec::with_capacity(groups.len());
         for (n, (i, d)) in groups.iter().enumerate() {
@@ -290,7 +290,7 @@ impl Shared {
         machine.catch_up();
         let mut gs = self.lock_groups();
         let mut g = GroupState::new(slot, def, axes_of(&def, mac), self.clock.period_s());
-        g.start_at_channels(&machine.cards);
+        g.start_at_channels(machine.cards());
         if let Some(t) = self.tracer.trace.lock().as_mut() {
             t.start_group(&mut g, mac, &machine);
         }

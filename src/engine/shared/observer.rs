@@ -39,7 +39,7 @@ impl crate::engine::Shared {
 
     fn card_view(&self, machine: &Machine, cd: usize) -> CardView {
         let mut v = CardView {
-            emergency: machine.emergency.get(cd).copied().unwrap_or(false),
+            emergency: machine.emergency(cd),
             ..Default::default()
         };
         for (ch, cv) in v.channels.iter_mut().enumerate() {

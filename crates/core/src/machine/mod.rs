@@ -30,15 +30,15 @@ pub use sensors::{Sensor, SensorLevels};
 #[derive(Debug, Clone)]
 pub struct Machine {
     /// Channels per card.
-    pub cards: Vec<[Channel; AXES]>,
+    pub(crate) cards: Vec<[Channel; AXES]>,
     /// Emergency-stop input per card (true: pressed).
-    pub emergency: Vec<bool>,
+    pub(crate) emergency: Vec<bool>,
     /// Per-card settings.
-    pub settings: Vec<CardSettings>,
+    pub(crate) settings: Vec<CardSettings>,
     /// Per-card encoder compare, latch, index, local-input and trigger-out state.
-    pub triggers: Vec<triggers::CardTriggers>,
+    pub(crate) triggers: Vec<triggers::CardTriggers>,
     /// Some channel's pulse speed or acceleration limit is below the default.
-    pub pulse_limits_set: bool,
+    pub(crate) pulse_limits_set: bool,
     /// Some channel compensates ([`Machine::apply_compensation`]).
     compensating: bool,
     /// The steps channels defer, while some may ([`deferred`]).
@@ -48,6 +48,86 @@ pub struct Machine {
 }
 
 impl Machine {
+    /// Every card's channels.
+    #[inline]
+    pub fn cards(&self) -> &[[Channel; AXES]] {
+        &self.cards
+    }
+
+    /// Every card's channels, to command and step them (each keeps its own state).
+    #[inline]
+    pub fn cards_mut(&mut self) -> &mut [[Channel; AXES]] {
+        &mut self.cards
+    }
+
+    /// Each card's channels and triggers, and its settings: what a tick steps and checks.
+    #[inline]
+    pub fn cards_triggers_settings(
+        &mut self,
+    ) -> impl Iterator<
+        Item = (
+            &mut [Channel; AXES],
+            &mut triggers::CardTriggers,
+            &CardSettings,
+        ),
+    > {
+        self.cards
+            .iter_mut()
+            .zip(self.triggers.iter_mut())
+            .zip(&self.settings)
+            .map(|((c, t), s)| (c, t, s))
+    }
+
+    /// Each card's triggers and settings.
+    pub fn triggers_and_settings(
+        &self,
+    ) -> impl Iterator<Item = (&triggers::CardTriggers, &CardSettings)> {
+        self.triggers.iter().zip(&self.settings)
+    }
+
+    /// Card `cd`'s triggers (compares, latches, index, local inputs, trigger-out).
+    pub fn triggers(&self, cd: usize) -> &triggers::CardTriggers {
+        &self.triggers[cd]
+    }
+
+    /// Card `cd`'s triggers, to change.
+    pub fn triggers_mut(&mut self, cd: usize) -> &mut triggers::CardTriggers {
+        &mut self.triggers[cd]
+    }
+
+    /// Card `cd`'s triggers and channels, together.
+    pub fn triggers_and_channels_mut(
+        &mut self,
+        cd: usize,
+    ) -> (&mut triggers::CardTriggers, &[Channel; AXES]) {
+        (&mut self.triggers[cd], &self.cards[cd])
+    }
+
+    /// Card `cd`'s settings (gains, dividers, LEDs, filters, error thresholds).
+    pub fn card_settings(&self, cd: usize) -> &CardSettings {
+        &self.settings[cd]
+    }
+
+    /// Card `cd`'s settings, to change.
+    pub fn card_settings_mut(&mut self, cd: usize) -> &mut CardSettings {
+        &mut self.settings[cd]
+    }
+
+    /// Whether card `cd`'s emergency-stop input is pressed (false for an unknown card).
+    pub fn emergency(&self, cd: usize) -> bool {
+        self.emergency.get(cd).copied().unwrap_or(false)
+    }
+
+    /// Whether any card's emergency-stop input is pressed.
+    pub fn any_emergency(&self) -> bool {
+        self.emergency.iter().any(|&e| e)
+    }
+
+    /// Whether some channel's pulse speed or acceleration limit is below the default.
+    pub fn pulse_limits_set(&self) -> bool {
+        self.pulse_limits_set
+    }
+
     /// Presses (`on`) or releases the emergency-stop input of card `cd`.
     pub fn set_emergency(&mut self, cd: usize, on: bool) {
         if let Some(e) = self.emergency.get_mut(cd) {
