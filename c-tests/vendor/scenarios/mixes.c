@@ -47,7 +47,7 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[9];
+static MixEvents mix_events[17];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -132,6 +132,14 @@ MIX(5, 5)
 MIX(6, 6)
 MIX(7, 7)
 MIX(8, 8)
+MIX(9, 9)
+MIX(10, 10)
+MIX(11, 11)
+MIX(12, 12)
+MIX(13, 13)
+MIX(14, 14)
+MIX(15, 15)
+MIX(16, 16)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -139,6 +147,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_3, std3, 1200, 60000),  SCEN(mix_4, std3, 1200, 60000),
     SCEN(mix_5, std3, 1200, 60000),  SCEN(mix_6, std3, 1200, 60000),
     SCEN(mix_7, std3, 1200, 60000),  SCEN(mix_8, std3, 1200, 60000),
+    SCEN(mix_9, std3, 1200, 60000),  SCEN(mix_10, std3, 1200, 60000),
+    SCEN(mix_11, std3, 1200, 60000), SCEN(mix_12, std3, 1200, 60000),
+    SCEN(mix_13, std3, 1200, 60000), SCEN(mix_14, std3, 1200, 60000),
+    SCEN(mix_15, std3, 1200, 60000), SCEN(mix_16, std3, 1200, 60000),
     SCEN_END,
 };
 
