@@ -34,8 +34,9 @@ pub extern "system" fn MCC_HoldMotion(wGroupIndex: WORD, bBlockEnd: BOOL) -> c_i
     ffi_boundary! { with_group(wGroupIndex, |g| g.hold(bBlockEnd != 0)).map(|()| c::NO_ERR) }
 }
 
-/// Resumes held motion with the command's acceleration time (`CONTI_ILLEGAL_ERR` unless
-/// held).
+/// Resumes held motion with the command's acceleration time; `CONTI_ILLEGAL_ERR` while
+/// the hold still decelerates (the hold goes on, as the vendor's library does), nothing
+/// done when nothing is held.
 #[no_mangle]
 pub extern "system" fn MCC_ContiMotion(wGroupIndex: WORD) -> c_int {
     ffi_boundary! { with_group(wGroupIndex, |g| g.conti()).map(|()| c::NO_ERR) }

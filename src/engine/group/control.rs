@@ -56,6 +56,17 @@ impl GroupState {
     /// `MCC_ContiMotion`: what was held runs on from rest. Not held: nothing, 0.
     pub fn conti(&mut self) -> McclResult<()> {
         match self.mode {
+            // As the vendor's library: a continue while the hold still decelerates is
+            // refused and the hold goes on (resuming from rest there would drop the speed
+            // to 0 within a period).
+            Mode::Held
+                if self
+                    .running
+                    .iter()
+                    .any(|r| matches!(r.stage, Stage::Stopping { .. })) =>
+            {
+                Err(McclError::ContiIllegal)
+            }
             Mode::Held | Mode::HoldAtBlockEnd => {
                 self.note(Note::Continue);
                 self.mode = Mode::Normal;
@@ -189,8 +200,11 @@ impl GroupState {
     /// At the start of a period: an override set since the last one comes into effect.
     pub(super) fn apply_override(&mut self) {
         if let Some((pct, instant)) = self.override_next.take() {
+            // The rate already in effect re-plans nothing (the vendor's library leaves a
+            // blend in progress as it is).
+            let same = pct == self.override_pct;
             self.override_pct = pct;
-            if instant {
+            if instant && !same {
                 self.retarget_running();
             }
         }

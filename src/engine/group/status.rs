@@ -374,14 +374,15 @@ pub(super) struct InfoKey {
 
 /// `COMMAND_INFO.nMotionPhase` of a running command, as the vendor's library numbers
 /// them: 11 accelerating, 13 at speed, 12 decelerating, 21 the period after arriving, 22
-/// held; while a general motion blends out of the one before, 17 (line after line), 18
+/// a general motion held (a held PtP reads 0, as the vendor's library shows it); while a
+/// general motion blends out of the one before, 17 (line after line), 18
 /// (line after arc) or 19 (arc after line); 0 for what has no phases (PtP, delay,
 /// switches).
 fn motion_phase(r: &Running, blending: bool) -> i32 {
     match r.stage {
         Stage::Ending { .. } if r.quiet_end => return 0,
         Stage::Ending { .. } if r.path_track().is_some() => return 21,
-        Stage::Held { .. } => return 22,
+        Stage::Held { .. } if r.path_track().is_some() => return 22,
         Stage::Stopping { .. } if r.path_track().is_some() => return 12,
         _ => {}
     }
