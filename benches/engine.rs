@@ -11,7 +11,7 @@
 //!   realtime tick lateness (p99) with the panel quiet against the panel under a stream
 //!   of bad requests and idle connections (goal: unchanged).
 //!
-//! Interrupt delivery and tick lateness under the realtime clock: `benches/realtime.rs`.
+//! Interrupt delivery and tick lateness under the realtime clock: `benches/realtime/`.
 //!
 //! Latencies are measured over batches of 100 calls (the clock's own cost is ~20 ns, too
 //! close to one call); the median and p99 are over 2000 batches, per call.

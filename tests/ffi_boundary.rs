@@ -7,10 +7,14 @@
 //! visible where the function is exported.
 //!
 //! Every exported function is written out in src/ffi (tests/exports_findable.rs), so the
-//! scan sees each one and accounts for every vendor function: 345 `MCC_*` names
-//! (docs/functions.md).
+//! scan, which reads src/ffi and its subfolders, sees each one and accounts for every
+//! vendor function: 345 `MCC_*` names (docs/functions.md).
+
+#[path = "support/rust_files.rs"]
+mod support;
 
 use std::path::Path;
+use support::rust_files;
 
 /// Index of the bracket that closes the one at `open`, skipping comments, strings and
 /// character literals.
@@ -126,14 +130,15 @@ fn every_exported_body_is_one_ffi_boundary() {
     let mut total = 0;
     let mut bad = Vec::new();
     let mut sources = Vec::new();
-    for entry in std::fs::read_dir(&dir).expect("src/ffi") {
-        let path = entry.expect("a directory entry").path();
+    // Its subfolders too: a chapter split into files (`motion.rs` and `motion/`).
+    for path in rust_files(&dir) {
         let file = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
-        if !file.ends_with(".rs") || file.starts_with("tests") {
+        if file.starts_with("tests") {
             continue;
         }
+        let name = path.strip_prefix(&dir).expect("under src/ffi").display();
         let src = std::fs::read_to_string(&path).expect("a readable source file");
-        sources.push((file.to_string(), src));
+        sources.push((name.to_string(), src));
     }
     let mut names = Vec::new();
     for (file, src) in &sources {

@@ -12,6 +12,8 @@
 #![allow(dead_code)]
 
 pub mod emu;
+pub mod order_log;
+pub mod periph;
 
 use parking_lot::{Mutex, MutexGuard};
 use std::sync::mpsc;
