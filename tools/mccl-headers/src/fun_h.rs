@@ -9,8 +9,8 @@ use std::fmt::Write as _;
 /// `include/MCCL_Fun.h`: every prototype of the vendor table, in its section order, with the
 /// vendor's C++ default arguments.
 ///
-/// The prototypes come from the table, not from cbindgen: an entry point declared by one of
-/// the family macros of `src/ffi` is invisible to cbindgen (it does not expand macros), and
+/// The prototypes come from the table, not from cbindgen: cbindgen does not read the
+/// `extern "system"` entry points (every `MCC_*` is one: stdcall on 32-bit Windows), and
 /// the generated `tests/vendor_prototypes.rs` makes the compiler check every Rust signature
 /// against the table instead. The functions cbindgen does see are still checked here, and
 /// an exported function that belongs in no header is an error.

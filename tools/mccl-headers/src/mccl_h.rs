@@ -133,7 +133,7 @@ fn declared_type(block: &str) -> Option<String> {
 /// `body` with its type declarations in `order`, each in the place of one of them (the
 /// defines stay where cbindgen put them). cbindgen declares a type where the first
 /// function using it makes it need one, so its order follows the Rust sources (and misses
-/// the functions that family macros declare, which it does not expand); MCCL.h instead
+/// the `extern "system"` entry points, which it does not read); MCCL.h instead
 /// declares the vendor types in one fixed order, each after the types it uses. A type
 /// missing from `order` is an error.
 pub fn in_type_order(body: &str, order: &[String]) -> Result<String, String> {
