@@ -11,14 +11,14 @@ use std::sync::Arc;
 #[derive(Debug, Clone)]
 pub struct CustomMove {
     /// The callbacks and their settings.
-    pub spec: Arc<CustomSpec>,
+    pub(in crate::engine) spec: Arc<CustomSpec>,
     /// Where the command started (the queue's end when queued, the group's position
     /// once started).
-    pub start: Axes,
+    pub(in crate::engine) start: Axes,
     /// Acceleration shape captured when queued.
-    pub acc: Shape,
+    pub(in crate::engine) acc: Shape,
     /// Deceleration shape captured when queued.
-    pub dec: Shape,
+    pub(in crate::engine) dec: Shape,
     run: Run,
 }
 

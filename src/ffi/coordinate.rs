@@ -11,19 +11,19 @@ use std::os::raw::{c_int, c_long, c_longlong};
 /// Following motion commands take absolute coordinates (the default).
 #[no_mangle]
 pub extern "system" fn MCC_SetAbsolute(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings.absolute = true) }
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings_mut().absolute = true) }
 }
 
 /// Following motion commands take increments from the end of the previous command.
 #[no_mangle]
 pub extern "system" fn MCC_SetIncrease(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings.absolute = false) }
+    ffi_boundary! { super::update_group(wGroupIndex, |g| g.settings_mut().absolute = false) }
 }
 
 /// 1 for absolute coordinates, 0 for incremental.
 #[no_mangle]
 pub extern "system" fn MCC_GetCoordType(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(g.settings.absolute))) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(c_int::from(g.settings().absolute))) }
 }
 
 /// The position of group `g` as the machine counts it (its pulses in UU, with the shift

@@ -34,7 +34,7 @@ pub extern "system" fn MCC_SetComposeAxis(wAxesMask: WORD, wGroupIndex: WORD) ->
         if mask == 0 || mask > 0xFF {
             return Err(McclError::Parameter);
         }
-        update_group(wGroupIndex, |g| g.settings.compose = mask)
+        update_group(wGroupIndex, |g| g.settings_mut().compose = mask)
     }
 }
 
@@ -48,7 +48,7 @@ pub extern "system" fn MCC_EnableAccDecAfterIPO(wGroupIndex: WORD) -> c_int {
         let dt = system::active()?.clock().period().as_secs_f64();
         with_group(wGroupIndex, |g| {
             still(g)?;
-            let periods = (g.settings.acc_ms / 1000.0 / dt).round();
+            let periods = (g.settings().acc_ms / 1000.0 / dt).round();
             if !(0.0..=MAX_FILTER_PERIODS as f64).contains(&periods) {
                 return Err(McclError::Parameter);
             }

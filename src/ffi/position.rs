@@ -427,7 +427,7 @@ pub unsafe extern "system" fn MCC_GetTrackErrorLimit(
         unsafe {
             write_out(pdfLimit, || {
                 let a = axis(cAxis)?;
-                let v = with_group(wGroupIndex, |g| g.own_axis(a).map(|()| g.track_limit[a]))?;
+                let v = with_group(wGroupIndex, |g| g.own_axis(a).map(|()| g.track_limit(a)))?;
                 Ok(v)
             })
         }
@@ -469,7 +469,7 @@ pub extern "system" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int
         if wMode > c::IPM_SETTLE_UNBLOCK {
             return Err(McclError::Parameter);
         }
-        update_group(wGroupIndex, |g| g.inpos.mode = wMode)
+        update_group(wGroupIndex, |g| g.inpos_settings_mut().mode = wMode)
     }
 }
 
@@ -477,7 +477,7 @@ pub extern "system" fn MCC_SetInPosMode(wMode: WORD, wGroupIndex: WORD) -> c_int
 #[no_mangle]
 pub extern "system" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        update_group(wGroupIndex, |g| g.inpos.set_max_check_ms(wMaxCheckTime))
+        update_group(wGroupIndex, |g| g.inpos_settings_mut().set_max_check_ms(wMaxCheckTime))
     }
 }
 
@@ -485,7 +485,7 @@ pub extern "system" fn MCC_SetInPosMaxCheckTime(wMaxCheckTime: WORD, wGroupIndex
 #[no_mangle]
 pub extern "system" fn MCC_SetInPosSettleTime(wSettleTime: WORD, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        update_group(wGroupIndex, |g| g.inpos.set_settle_ms(wSettleTime))
+        update_group(wGroupIndex, |g| g.inpos_settings_mut().set_settle_ms(wSettleTime))
     }
 }
 
@@ -559,7 +559,7 @@ pub unsafe extern "system" fn MCC_GetInPosToleranceEx(
     ffi_boundary! {
         let p = [p0, p1, p2, p3, p4, p5, p6, p7];
         // SAFETY: forwarded under this function's contract.
-        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.inpos.tolerance))) }
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.inpos_settings().tolerance))) }
     }
 }
 
@@ -599,7 +599,7 @@ pub extern "system" fn MCC_SetInPosCheckTime(wCheckTime: WORD, wGroupIndex: WORD
 #[no_mangle]
 pub extern "system" fn MCC_GetInPosStableTime(wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
-        with_group(wGroupIndex, |g| Ok(g.inpos.settle_ms()))
+        with_group(wGroupIndex, |g| Ok(g.inpos_settings().settle_ms()))
     }
 }
 

@@ -35,7 +35,7 @@ fn set_ptp<T>(
     field: impl FnOnce(&mut Settings) -> &mut [T; 8],
 ) -> McclResult<c_int> {
     let v = v?;
-    super::update_group(g, |grp| *field(&mut grp.settings) = v)
+    super::update_group(g, |grp| *field(grp.settings_mut()) = v)
 }
 
 /// PtP acceleration shape per axis ('T' or 'S').
@@ -135,7 +135,7 @@ pub unsafe extern "system" fn MCC_GetPtPAccType(
         // SAFETY: forwarded under this function's contract.
         unsafe {
             write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc.map(shape_byte)))
+                with_group(wGroupIndex, |g| Ok(g.settings().ptp_acc.map(shape_byte)))
             })
         }
     }
@@ -162,7 +162,7 @@ pub unsafe extern "system" fn MCC_GetPtPDecType(
         // SAFETY: forwarded under this function's contract.
         unsafe {
             write_outs(p, || {
-                with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec.map(shape_byte)))
+                with_group(wGroupIndex, |g| Ok(g.settings().ptp_dec.map(shape_byte)))
             })
         }
     }
@@ -187,7 +187,7 @@ pub unsafe extern "system" fn MCC_GetPtPAccTime(
     ffi_boundary! {
         let p = [p0, p1, p2, p3, p4, p5, p6, p7];
         // SAFETY: forwarded under this function's contract.
-        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.settings.ptp_acc_ms))) }
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.settings().ptp_acc_ms))) }
     }
 }
 
@@ -210,6 +210,6 @@ pub unsafe extern "system" fn MCC_GetPtPDecTime(
     ffi_boundary! {
         let p = [p0, p1, p2, p3, p4, p5, p6, p7];
         // SAFETY: forwarded under this function's contract.
-        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.settings.ptp_dec_ms))) }
+        unsafe { write_outs(p, || with_group(wGroupIndex, |g| Ok(g.settings().ptp_dec_ms))) }
     }
 }

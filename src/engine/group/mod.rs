@@ -115,7 +115,7 @@ pub struct GroupState {
     /// The info key last published and how long it holds ([`GroupState::info_changed`]).
     published_key: status::PublishedKey,
     /// Settings that queued commands capture (`compose` first, which publishing reads).
-    pub settings: Settings,
+    pub(in crate::engine) settings: Settings,
     /// Output changes the queue reached this tick (the engine makes them).
     outputs: Vec<Output>,
     /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
@@ -158,9 +158,9 @@ pub struct GroupState {
     /// Command indices (`queue.rs`).
     cmd_index: CommandIndex,
     /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
-    pub track_limit: Axes,
+    pub(in crate::engine) track_limit: Axes,
     /// In-position settings (`MCC_SetInPos*`).
-    pub inpos: InPosSettings,
+    pub(in crate::engine) inpos: InPosSettings,
     /// `MCC_GetInPosStatus`: 0xFF per axis once in position, until the next command.
     inpos_status: [u8; AXES],
     /// Custom commands started and not cleaned up yet (`custom.rs`).
@@ -244,6 +244,32 @@ impl GroupState {
             post: None,
             kin: None,
         }
+    }
+
+    /// The motion settings queued commands capture (a plain record: every value allowed
+    /// by its setter's checks is valid).
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The motion settings, to change: commands queued from now on capture them.
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
+    /// The in-position settings (`MCC_SetInPos*`).
+    pub fn inpos_settings(&self) -> &InPosSettings {
+        &self.inpos
+    }
+
+    /// The in-position settings, to change: the next check uses them.
+    pub fn inpos_settings_mut(&mut self) -> &mut InPosSettings {
+        &mut self.inpos
+    }
+
+    /// The tracking error limit of axis `a`, UU.
+    pub fn track_limit(&self, a: usize) -> f64 {
+        self.track_limit[a]
     }
 
     /// The group's slot (0..95).

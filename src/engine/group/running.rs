@@ -44,7 +44,7 @@ pub(super) enum Stage {
 /// A command being executed.
 #[derive(Debug, Clone)]
 pub(crate) struct Running {
-    pub(crate) cmd: Command,
+    pub(in crate::engine) cmd: Command,
     pub(super) progress: Progress,
     pub(super) stage: Stage,
     /// Periods it has run (its own clock; the published key's stretches count in it).

@@ -40,7 +40,7 @@ fn ramp_ms(t: f64) -> McclResult<f64> {
 pub extern "system" fn MCC_SetAccType(cAccType: c_char, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let v = shape(cAccType)?;
-        crate::ffi::update_group(wGroupIndex, |g| g.settings.acc = v)
+        crate::ffi::update_group(wGroupIndex, |g| g.settings_mut().acc = v)
     }
 }
 
@@ -49,7 +49,7 @@ pub extern "system" fn MCC_SetAccType(cAccType: c_char, wGroupIndex: WORD) -> c_
 pub extern "system" fn MCC_SetDecType(cDecType: c_char, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let v = shape(cDecType)?;
-        crate::ffi::update_group(wGroupIndex, |g| g.settings.dec = v)
+        crate::ffi::update_group(wGroupIndex, |g| g.settings_mut().dec = v)
     }
 }
 
@@ -59,7 +59,7 @@ pub extern "system" fn MCC_SetDecType(cDecType: c_char, wGroupIndex: WORD) -> c_
 pub extern "system" fn MCC_SetAccTime(dfAccTime: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let v = ramp_ms(dfAccTime)?;
-        crate::ffi::update_group(wGroupIndex, |g| g.settings.acc_ms = v)
+        crate::ffi::update_group(wGroupIndex, |g| g.settings_mut().acc_ms = v)
     }
 }
 
@@ -69,7 +69,7 @@ pub extern "system" fn MCC_SetAccTime(dfAccTime: f64, wGroupIndex: WORD) -> c_in
 pub extern "system" fn MCC_SetDecTime(dfDecTime: f64, wGroupIndex: WORD) -> c_int {
     ffi_boundary! {
         let v = ramp_ms(dfDecTime)?;
-        crate::ffi::update_group(wGroupIndex, |g| g.settings.dec_ms = v)
+        crate::ffi::update_group(wGroupIndex, |g| g.settings_mut().dec_ms = v)
     }
 }
 
@@ -81,7 +81,7 @@ pub extern "system" fn MCC_SetFeedSpeed(dfFeedSpeed: f64, wGroupIndex: WORD) -> 
     ffi_boundary! {
         let v = feed_speed(dfFeedSpeed)?;
         with_group(wGroupIndex, |g| {
-            g.settings.feed = v;
+            g.settings_mut().feed = v;
             Ok(v)
         })
     }
@@ -94,7 +94,7 @@ pub extern "system" fn MCC_SetPtPSpeed(dfRatio: f64, wGroupIndex: WORD) -> f64 {
     ffi_boundary! {
         let v = ptp_ratio(dfRatio)?;
         with_group(wGroupIndex, |g| {
-            g.settings.ptp_ratio = v;
+            g.settings_mut().ptp_ratio = v;
             Ok(v)
         })
     }
@@ -103,37 +103,37 @@ pub extern "system" fn MCC_SetPtPSpeed(dfRatio: f64, wGroupIndex: WORD) -> f64 {
 /// The acceleration shape: 0 'T', 1 'S' (as the vendor's library answers).
 #[no_mangle]
 pub extern "system" fn MCC_GetAccType(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(shape_code(g.settings.acc))) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(shape_code(g.settings().acc))) }
 }
 
 /// The deceleration shape: 0 'T', 1 'S'.
 #[no_mangle]
 pub extern "system" fn MCC_GetDecType(wGroupIndex: WORD) -> c_int {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(shape_code(g.settings.dec))) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(shape_code(g.settings().dec))) }
 }
 
 /// The acceleration time, ms.
 #[no_mangle]
 pub extern "system" fn MCC_GetAccTime(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.acc_ms)) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings().acc_ms)) }
 }
 
 /// The deceleration time, ms.
 #[no_mangle]
 pub extern "system" fn MCC_GetDecTime(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.dec_ms)) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings().dec_ms)) }
 }
 
 /// The feed speed of following general motion, UU/s.
 #[no_mangle]
 pub extern "system" fn MCC_GetFeedSpeed(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.feed)) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings().feed)) }
 }
 
 /// The point-to-point speed ratio, percent.
 #[no_mangle]
 pub extern "system" fn MCC_GetPtPSpeed(wGroupIndex: WORD) -> f64 {
-    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings.ptp_ratio)) }
+    ffi_boundary! { with_group(wGroupIndex, |g| Ok(g.settings().ptp_ratio)) }
 }
 
 /// The current tangential speed (UU/s): X/Y/Z path speed, or the fastest aux axis.

@@ -34,9 +34,9 @@ fn rig() -> Rig {
     let (link, w) = worker();
     let x = Executor::new(link.clone(), g.axes());
     g.attach_external(Box::new(x));
-    g.settings.feed = 20.0;
-    g.settings.acc_ms = 20.0;
-    g.settings.dec_ms = 20.0;
+    g.settings_mut().feed = 20.0;
+    g.settings_mut().acc_ms = 20.0;
+    g.settings_mut().dec_ms = 20.0;
     Rig { g, link, w }
 }
 
