@@ -79,7 +79,7 @@ impl Shared {
     /// Whether virtual tick `n` (not the last of its run) publishes every snapshot, as
     /// [`Shared::tick`] decides it.
     #[inline]
-    fn publishes_everything(&self, n: u64) -> bool {
+    pub(super) fn publishes_everything(&self, n: u64) -> bool {
         self.routines.live_snapshots.load(Ordering::Relaxed) || n % PUBLISH_EVERY == 0
     }
 

@@ -78,13 +78,18 @@ impl Shared {
         let n = self.clock.ticks();
         // The virtual time the trace and the triggers see, made only where they look.
         let t_ns = || self.running_tick_end_ns();
-        let full = !self.clock.mode().virtual_time()
-            || self.routines.live_snapshots.load(Ordering::Relaxed)
-            || n % PUBLISH_EVERY == 0
-            || self.clock.last_of_run();
+        // A cruise tick is inside its run and not its last, under a virtual clock.
+        let full = if cruise {
+            self.publishes_everything(n)
+        } else {
+            !self.clock.mode().virtual_time()
+                || self.routines.live_snapshots.load(Ordering::Relaxed)
+                || n % PUBLISH_EVERY == 0
+                || self.clock.last_of_run()
+        };
         // The trace's lock only while tracing: an uncontended lock is still two atomic
         // operations a tick.
-        let mut trace_guard = self.tracer.tracing.then(|| self.tracer.trace.lock());
+        let mut trace_guard = (!cruise && self.tracer.tracing).then(|| self.tracer.trace.lock());
         let mut trace = trace_guard.as_mut().and_then(|t| t.as_mut());
         // The locks were kept from the last tick: no other thread looked in between.
         let carried = held.is_some();
@@ -179,12 +184,12 @@ impl Shared {
         // view asked for in the middle of the tick waits for the next one instead of
         // reading channels this tick left deferred. The ticks between copies defer.
         let view = !cruise && full && self.view.due(self.clock.last_of_run());
-        let defer = carried && !view && homed.is_none() && !checks;
+        let defer = cruise || (carried && !view && homed.is_none() && !checks);
         if !defer {
             machine.catch_up();
         }
         let m = &mut *machine;
-        let pending = m.deferred();
+        let pending = if cruise { None } else { m.deferred() };
         let recorded = m.recording();
         let mut recording = Recording::default();
         let mut deferred = false;
