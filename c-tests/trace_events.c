@@ -44,12 +44,18 @@ int main(int argc, char **argv)
     card[0].wCardType = IMP_III_8_AXIS_PCI_CARD;
     CHECK_EQ(MCC_InitSystem(1, card, 1), NO_ERR);
     MCC_SetFeedSpeed(10.0, 0);
+    /* A hold decelerates over 100 ms, so that it has stopped when the continue comes. */
+    CHECK_EQ(MCC_SetDecTime(100, 0), NO_ERR);
     /* Queued at 0 ms: starts in the first tick, whose row is at 1 ms. */
     CHECK(MCC_Line(10, 0, 0, 0, 0, 0, 0, 0, 0, IMP_AXIS_ALL) == 0);
     /* Calls made between ticks are written with the next tick: 500 -> 501 ms. */
     MCC_TimeDelay(500);
     CHECK_EQ(MCC_HoldMotion(0, 0), NO_ERR);
-    MCC_TimeDelay(200);
+    /* While the hold still decelerates a continue is refused, as the vendor's library
+     * refuses it, and leaves no event. */
+    MCC_TimeDelay(50);
+    CHECK_EQ(MCC_ContiMotion(0), CONTI_ILLEGAL_ERR);
+    MCC_TimeDelay(150);
     CHECK_EQ(MCC_ContiMotion(0), NO_ERR);
     MCC_TimeDelay(100);
     /* Abort at 800 ms stops at once: the abort, then command 0 ends cut short, at 801. */
