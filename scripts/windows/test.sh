@@ -14,9 +14,9 @@
 #    CMake with MinGW-w64 against OUT/<arch> (cmake/mingw-wine.cmake), run by CTest in
 #    the same variants (fast and stepped clock, machine files) as on Linux; each run
 #    passes only with exit status 0 and its "N passed, 0 failed" line (wine-run.sh);
-# 3. the library's Rust unit tests, built for x86_64-pc-windows-gnu under wine64 and for
-#    i686-pc-windows-gnu under wine32 (the "test result: ok" line is checked, not only
-#    cargo's status).
+# 3. the Rust unit tests of the library, its core crate and the MC3B crate, built for
+#    x86_64-pc-windows-gnu under wine64 and for i686-pc-windows-gnu under wine32 (each
+#    crate's "test result: ok" line is checked, not only cargo's status).
 # Each step's time is printed at the end. What Wine cannot show (real Windows timing, a
 # real COM port, VB6) is in docs/windows.md.
 set -euo pipefail
@@ -95,17 +95,19 @@ for arch in x64 x86; do
   [ $arch = x64 ] || export "CARGO_TARGET_${var}_RUSTFLAGS=-L native=$out/rtstartup/$triple"
   log="$out/rust-unit-tests-$arch.log"
   status=0
+  # The unit tests of the library and of its crates: the core (planner, machine, card)
+  # and the MC3B board's (protocol, client, emulator).
   (cd "$root" && /usr/bin/cargo test --release --lib -q -Zbuild-std=std,panic_unwind \
-    --target "$triple") >"$log" 2>&1 || status=$?
+    -p mcclpci_imp -p mccl-core -p mc3b --target "$triple") >"$log" 2>&1 || status=$?
   line=$(grep -E '^test result:' "$log" || true)
   step "Rust unit tests, build and $wine" $(($(now) - t))
-  if [ $status -ne 0 ] || [ "$(grep -c . <<<"$line")" -ne 1 ] ||
-     ! grep -q '^test result: ok\. [0-9]* passed; 0 failed' <<<"$line"; then
+  if [ $status -ne 0 ] || [ "$(grep -c . <<<"$line")" -ne 3 ] ||
+     [ "$(grep -c '^test result: ok\. [0-9]* passed; 0 failed' <<<"$line")" -ne 3 ]; then
     cat "$log"
     echo "test.sh: the Rust unit tests failed under $wine" >&2
     exit 1
   fi
-  summary+=("$wine: Rust unit tests: $line")
+  summary+=("$wine: Rust unit tests: $(tr '\n' ' ' <<<"$line")")
 done
 
 echo "Windows tests:"
