@@ -72,6 +72,13 @@ impl GroupState {
                 self.mode = Mode::Normal;
                 for r in self.running.iter_mut() {
                     if matches!(r.stage, Stage::Stopping { .. } | Stage::Held { .. }) {
+                        if r.is_ptp() && r.arrived() {
+                            // A PtP the hold let arrive spent the first of its two ending
+                            // periods before holding: the last one follows (`mix_16`).
+                            r.quiet_end = true;
+                            r.stage = Stage::Ending { left: 1 };
+                            continue;
+                        }
                         r.stage = Stage::Moving;
                         r.resume_tracks();
                     }

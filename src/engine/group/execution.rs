@@ -265,6 +265,9 @@ impl GroupState {
             }
             if let Stage::Ending { left } = r.stage {
                 match (&r.progress, left) {
+                    // Continued after a hold let it arrive, its last ending period
+                    // keeps the speeds the hold kept (`mix_16`).
+                    (Progress::Axes { .. }, 1) if r.quiet_end => {}
                     (Progress::Axes { master, .. }, 1) => zero_mask |= 1 << master,
                     (Progress::Axes { .. }, _) => {}
                     _ => zero_mask = u32::MAX,

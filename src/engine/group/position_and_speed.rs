@@ -77,6 +77,9 @@ impl GroupState {
             None if self.error != 0 => self.feed_now,
             None => 0.0,
             Some(r) => match (&r.progress, &r.cmd.plan) {
+                // The last ending period of a PtP continued after a hold let it arrive
+                // keeps its speeds but reads no feed (`mix_16`).
+                (Progress::Axes { .. }, _) if r.quiet_end => 0.0,
                 (Progress::Axes { master, .. }, _) => self.vel[*master].abs(),
                 (Progress::Path { track, sync: None }, Plan::Path(m)) if m.path.aux_only() => {
                     let _ = track;
