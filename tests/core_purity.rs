@@ -4,8 +4,12 @@
 //! the library). Its unit tests (`tests.rs` files, `#[cfg(test)] mod tests`) may use the
 //! environment (a temporary directory) and are not read.
 
+#[path = "support/code.rs"]
+mod code;
 #[path = "support/rust_files.rs"]
 mod support;
+
+use code::code_of;
 
 use std::path::Path;
 
@@ -25,18 +29,6 @@ const FORBIDDEN: &[(&str, &str)] = &[
 const INTERIOR: &[&str] = &[
     "Mutex", "RwLock", "Atomic", "Cell", "OnceLock", "OnceCell", "Lazy", "Condvar",
 ];
-
-/// The code of a file outside comments and its unit tests.
-fn code_of(text: &str) -> String {
-    let text = match text.find("#[cfg(test)]\nmod tests {") {
-        Some(i) => &text[..i],
-        None => text,
-    };
-    text.lines()
-        .filter(|l| !l.trim_start().starts_with("//"))
-        .collect::<Vec<_>>()
-        .join("\n")
-}
 
 /// What `code` contains that the core must not.
 fn offences(code: &str) -> Vec<String> {

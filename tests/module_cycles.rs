@@ -3,6 +3,8 @@
 //! how the uses are read). The top level of the library is also ranked in layers by
 //! `module_layers`; this check covers every level of every crate.
 
+#[path = "support/code.rs"]
+mod code;
 #[path = "support/module_graph.rs"]
 mod module_graph;
 #[path = "support/rust_files.rs"]

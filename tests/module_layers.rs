@@ -9,9 +9,12 @@
 //! core's own.
 
 use std::collections::BTreeMap;
+#[path = "support/code.rs"]
+mod code;
 #[path = "support/rust_files.rs"]
 mod support;
 
+use code::code_of;
 use std::path::Path;
 use support::rust_files;
 
@@ -40,19 +43,6 @@ const LAYERS: &[&str] = &[
 
 fn rank(m: &str) -> Option<usize> {
     LAYERS.iter().position(|&l| l == m)
-}
-
-/// The text of a source file without comments and without its test module.
-fn code_of(text: &str) -> String {
-    let text = match text.find("#[cfg(test)]\nmod tests {") {
-        Some(i) => &text[..i],
-        None => text,
-    };
-    text.lines()
-        .filter(|l| !l.trim_start().starts_with("//"))
-        .map(|l| l.split(" // ").next().unwrap_or(l))
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 /// The top-level modules a piece of code names as `crate::<module>`.

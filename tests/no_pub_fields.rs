@@ -12,8 +12,12 @@
 //! The compiler does the rest: the engine's other fields are `pub(in crate::engine)` or
 //! private, the core's `pub(crate)` or private, so the C entry points cannot set them.
 
+#[path = "support/code.rs"]
+mod code;
 #[path = "support/rust_files.rs"]
 mod support;
+
+use code::code_of;
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -112,11 +116,7 @@ fn open_fields(dir: &Path, crate_wide: bool, out: &mut BTreeMap<String, (String,
         if name.starts_with("tests") || f.components().any(|c| c.as_os_str() == "tests") {
             continue;
         }
-        let text = std::fs::read_to_string(&f).expect("read a source file");
-        let text = match text.find("#[cfg(test)]\nmod tests {") {
-            Some(i) => &text[..i],
-            None => &text[..],
-        };
+        let text = code_of(&std::fs::read_to_string(&f).expect("read a source file"));
         let mut current: Option<String> = None;
         for line in text.lines() {
             let t = line.trim_start();

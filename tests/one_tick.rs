@@ -4,8 +4,12 @@
 //! that a change could miss. What a cruise tick leaves out is checked to change nothing
 //! a program sees by `engine_cruise`.
 
+#[path = "support/code.rs"]
+mod code;
 #[path = "support/rust_files.rs"]
 mod support;
+
+use code::code_of;
 
 use std::path::Path;
 
@@ -25,14 +29,7 @@ const STEPS: &[&str] = &[
 
 /// The lines of `text` outside comments and unit tests that call `step`.
 fn calls(text: &str, step: &str) -> usize {
-    let code = match text.find("#[cfg(test)]\nmod tests {") {
-        Some(i) => &text[..i],
-        None => text,
-    };
-    code.lines()
-        .filter(|l| !l.trim_start().starts_with("//"))
-        .filter(|l| l.contains(step))
-        .count()
+    code_of(text).lines().filter(|l| l.contains(step)).count()
 }
 
 #[test]

@@ -51,7 +51,7 @@ impl Crate {
                 path.push(stem.to_string());
             }
             let text = std::fs::read_to_string(&f).expect("read a source file");
-            code.insert(path, strip(&text));
+            code.insert(path, crate::code::code_of(&text));
         }
         Crate { code }
     }
@@ -149,19 +149,6 @@ impl Crate {
         }
         module
     }
-}
-
-/// The code of a file without comments and without its unit tests.
-fn strip(text: &str) -> String {
-    let text = match text.find("#[cfg(test)]\nmod tests {") {
-        Some(i) => &text[..i],
-        None => text,
-    };
-    text.lines()
-        .filter(|l| !l.trim_start().starts_with("//"))
-        .map(|l| l.split(" // ").next().unwrap_or(l))
-        .collect::<Vec<_>>()
-        .join("\n")
 }
 
 fn is_ident(c: char) -> bool {
