@@ -97,9 +97,7 @@ impl Shared {
     /// snapshots are published every tick.
     pub fn set_interrupt_routine(&self, card: usize, kind: Kind, f: usize) {
         self.routines.isr.set(card, kind, f);
-        self.routines
-            .live_snapshots
-            .store(self.routines_any(), Ordering::Relaxed);
+        self.publish_every_tick(false);
     }
 
     /// The interrupt routine of `kind` registered on `card` (its address, 0: none).
@@ -111,14 +109,13 @@ impl Shared {
     /// every tick while any routine is registered.
     pub fn set_cycle_routine(&self, f: usize) {
         self.routines.cycle.set_cycle(f);
-        self.routines
-            .live_snapshots
-            .store(self.routines_any(), Ordering::Relaxed);
+        self.publish_every_tick(false);
     }
 
     /// Publishes every snapshot every tick (`on`), as while a routine is registered, or
-    /// returns to what the routines registered ask: for an observer that reads between
-    /// the ticks of a virtual run, and for measuring what publishing costs.
+    /// returns to what the routines registered ask (what every registration calls): for
+    /// an observer that reads between the ticks of a virtual run, and for measuring what
+    /// publishing costs.
     pub fn publish_every_tick(&self, on: bool) {
         self.routines
             .live_snapshots
@@ -129,6 +126,6 @@ impl Shared {
     /// calls, and snapshots are published every tick.
     pub fn arm_reverse_routines(&self) {
         self.routines.cycle.arm_reverse();
-        self.routines.live_snapshots.store(true, Ordering::Relaxed);
+        self.publish_every_tick(false);
     }
 }
