@@ -83,8 +83,7 @@ impl Shared {
             self.publishes_everything(n)
         } else {
             !self.clock.mode().virtual_time()
-                || self.routines.live_snapshots.load(Ordering::Relaxed)
-                || n % PUBLISH_EVERY == 0
+                || self.publishes_everything(n)
                 || self.clock.last_of_run()
         };
         // The trace's lock only while tracing: an uncontended lock is still two atomic
