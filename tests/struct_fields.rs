@@ -18,7 +18,7 @@ use std::path::Path;
 const MOST: usize = 15;
 
 /// Types over the limit, to be cut into parts. Only shrinks.
-const NOT_YET: &[&str] = &["GroupState", "Channel", "Adc"];
+const NOT_YET: &[&str] = &["Channel", "Adc"];
 
 /// Per struct name (braced structs only): its field count and file.
 fn field_counts(dir: &Path, out: &mut BTreeMap<String, (String, usize)>) {
@@ -116,5 +116,6 @@ fn the_counter_sees_the_known_structs() {
     // and its seven parts); the counter must find them all, or the limit means nothing.
     let counts = all_counts();
     assert_eq!(counts.get("Shared").map(|(_, c)| *c), Some(13));
-    assert!(counts.get("GroupState").is_some_and(|(_, c)| *c > MOST));
+    // GroupState: status, error, homing, index, settings and nine parts.
+    assert_eq!(counts.get("GroupState").map(|(_, c)| *c), Some(14));
 }

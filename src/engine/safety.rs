@@ -41,7 +41,7 @@ pub struct Trip {
 pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
     let busy = g.busy();
     let vel = g.vel();
-    for (i, ax) in g.axes.iter().enumerate() {
+    for (i, ax) in g.axes().iter().enumerate() {
         let Some((card, ch)) = ax.channel else {
             continue;
         };
@@ -65,9 +65,9 @@ pub fn check(g: &GroupState, m: &Machine, limit_mode: i32) -> Option<Trip> {
                 return Some(Trip { record });
             }
         }
-        if g.track_mask & (1 << i) != 0 {
+        if let Some(limit) = g.checked_track_limit(i) {
             let f = ax.factor.abs();
-            if f > 0.0 && (chan.error_count() as f64 / f).abs() > g.track_limit[i] {
+            if f > 0.0 && (chan.error_count() as f64 / f).abs() > limit {
                 return Some(Trip {
                     record: Some(ERR_TRACKING + i as i32),
                 });

@@ -136,7 +136,7 @@ impl Shared {
                 }
                 if g.has_outputs() {
                     let outputs = g.take_outputs();
-                    self.make_outputs(g.def.card.0, &outputs);
+                    self.make_outputs(g.def().card.0, &outputs);
                 }
             }
             // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).

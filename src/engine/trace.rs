@@ -107,8 +107,8 @@ impl Trace {
     /// UU/s; `pulses_per_uu`; the work zone; `max_pulse_speed`/`max_pulse_acc` of the
     /// channel in pulses per period).
     pub fn start_group(&mut self, g: &mut GroupState, mac: &MacTable, machine: &Machine) {
-        g.trace_notes = Some(Vec::new());
-        for (i, a) in g.axes.iter().enumerate() {
+        g.start_notes();
+        for (i, a) in g.axes().iter().enumerate() {
             let Some((card, ch)) = a.channel else {
                 continue;
             };
@@ -136,13 +136,14 @@ impl Trace {
 
     /// The events group `g` noted since its last row (call after [`Trace::row`]).
     pub fn group_events(&mut self, t_ns: u128, g: &mut GroupState) {
-        let Some(notes) = g.trace_notes.as_mut() else {
+        let card = g.def().card.0 as i64;
+        let index = g.index as i64;
+        let Some(notes) = g.notes_mut() else {
             return;
         };
-        let card = g.def.card.0 as i64;
         for n in notes.drain(..) {
             let (kind, detail) = note_text(&n);
-            self.events.write(t_ns, card, g.index as i64, kind, &detail);
+            self.events.write(t_ns, card, index, kind, &detail);
         }
     }
 

@@ -8,6 +8,31 @@ use crate::config::AXES;
 use crate::engine::note::Note;
 use crate::error::{McclError, McclResult};
 
+/// The group's rate: hold and stop modes, the override and the fixed speed.
+#[derive(Debug)]
+pub(super) struct Rate {
+    pub(super) mode: Mode,
+    /// Override ratio, percent.
+    pub(super) override_pct: f64,
+    /// `MCC_FixSpeed(TRUE)`: the override does not change speeds.
+    pub(super) fixed_speed: bool,
+    /// An override set since the last period and whether it is instant
+    /// (`MCC_OverrideSpeedEx`): in effect from the next period.
+    pub(super) override_next: Option<(f64, bool)>,
+}
+
+impl Default for Rate {
+    /// Running normally at 100 %.
+    fn default() -> Rate {
+        Rate {
+            mode: Mode::Normal,
+            override_pct: 100.0,
+            fixed_speed: false,
+            override_next: None,
+        }
+    }
+}
+
 /// What the group is doing besides running commands.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Mode {
@@ -29,38 +54,40 @@ impl GroupState {
     /// whatever `bBlockEnd` says (as the vendor's library does), but on an MC3B, which
     /// can only stop between jobs, `bBlockEnd` holds at the end of the running job.
     pub fn hold(&mut self, at_block_end: bool) -> McclResult<()> {
-        if self.running.is_empty() || self.mode != Mode::Normal {
+        if self.exec.running.is_empty() || self.rate.mode != Mode::Normal {
             return Ok(());
         }
-        if self.external.is_some() {
+        if self.features.external.is_some() {
             if !at_block_end {
                 return Err(McclError::NotAccepted);
             }
             self.note(Note::Hold { block_end: true });
-            self.mode = Mode::HoldAtBlockEnd;
+            self.rate.mode = Mode::HoldAtBlockEnd;
             return Ok(());
         }
         let ending = self
+            .exec
             .running
             .iter()
             .all(|r| r.path_track().is_some_and(|t| t.in_final_decel()) || !r.holds());
-        if ending && self.queue.is_empty() {
+        if ending && self.queued.commands.is_empty() {
             return Ok(());
         }
         self.note(Note::Hold { block_end: false });
-        self.mode = Mode::Held;
+        self.rate.mode = Mode::Held;
         self.stop_tracks(false, None);
         Ok(())
     }
 
     /// `MCC_ContiMotion`: what was held runs on from rest. Not held: nothing, 0.
     pub fn conti(&mut self) -> McclResult<()> {
-        match self.mode {
+        match self.rate.mode {
             // As the vendor's library: a continue while the hold still decelerates is
             // refused and the hold goes on (resuming from rest there would drop the speed
             // to 0 within a period).
             Mode::Held
                 if self
+                    .exec
                     .running
                     .iter()
                     .any(|r| matches!(r.stage, Stage::Stopping { .. })) =>
@@ -69,8 +96,8 @@ impl GroupState {
             }
             Mode::Held | Mode::HoldAtBlockEnd => {
                 self.note(Note::Continue);
-                self.mode = Mode::Normal;
-                for r in self.running.iter_mut() {
+                self.rate.mode = Mode::Normal;
+                for r in self.exec.running.iter_mut() {
                     if matches!(r.stage, Stage::Stopping { .. } | Stage::Held { .. }) {
                         if r.is_ptp() && r.arrived() {
                             // A PtP the hold let arrive spent the first of its two ending
@@ -94,7 +121,7 @@ impl GroupState {
     /// Every running command with tracks decelerates to a stop: with its own
     /// deceleration time, or `dec_s`.
     fn stop_tracks(&mut self, abort: bool, dec_s: Option<f64>) {
-        for r in self.running.iter_mut() {
+        for r in self.exec.running.iter_mut() {
             if !r.holds() || matches!(r.stage, Stage::Ending { .. }) {
                 continue;
             }
@@ -123,27 +150,36 @@ impl GroupState {
     pub fn abort(&mut self, dec_ms: f64, at_block_end: bool) {
         let dec_ms = crate::planner::whole_ms(dec_ms.max(0.0));
         // The MC3B stops at once (`S`); it has no controlled stop.
-        let dec_ms = if self.external.is_some() { 0.0 } else { dec_ms };
+        let dec_ms = if self.features.external.is_some() {
+            0.0
+        } else {
+            dec_ms
+        };
         self.note(Note::Abort {
             dec_s: dec_ms / 1000.0,
             block_end: at_block_end,
         });
         self.clear_queue();
         if at_block_end {
-            self.queue_end = self.running.back().map_or(self.pos, |r| r.cmd.target);
+            self.queued.end = self
+                .exec
+                .running
+                .back()
+                .map_or(self.exec.pos, |r| r.cmd.target);
             self.update_status();
             return;
         }
-        let held = self.mode == Mode::Held
+        let held = self.rate.mode == Mode::Held
             && self
+                .exec
                 .running
                 .iter()
                 .all(|r| matches!(r.stage, Stage::Held { .. }));
-        if dec_ms <= 0.0 || held || self.running.is_empty() {
+        if dec_ms <= 0.0 || held || self.exec.running.is_empty() {
             // Held at rest, the vendor's library stops at once without a running period.
             self.abort_now(!held);
         } else {
-            self.mode = Mode::Aborting;
+            self.rate.mode = Mode::Aborting;
             self.stop_tracks(true, Some(dec_ms / 1000.0));
         }
     }
@@ -153,25 +189,25 @@ impl GroupState {
     /// called between periods.
     pub fn abort_within_period(&mut self) {
         self.abort(0.0, false);
-        if self.lag > 0 {
-            self.lag = 0;
-            self.lag_shown = true;
+        if self.exec.lag > 0 {
+            self.exec.lag = 0;
+            self.exec.lag_shown = true;
         }
     }
 
     /// Drops what runs and is queued where the group stands; `lag`: the status reads
     /// `GMS_RUNNING` for one more period (an abort, as the vendor's library shows it).
     pub(super) fn abort_now(&mut self, lag: bool) {
-        let was_busy = !self.running.is_empty();
+        let was_busy = !self.exec.running.is_empty();
         self.stop_here();
-        self.vel = [0.0; AXES];
-        self.feed_now = 0.0;
+        self.exec.vel = [0.0; AXES];
+        self.exec.feed_now = 0.0;
         // An external executor (the MC3B) reports its own stop: no period to show.
-        if lag && was_busy && self.external.is_none() {
-            self.lag = 1;
+        if lag && was_busy && self.features.external.is_none() {
+            self.exec.lag = 1;
             // Until that period has passed the abort is not finished: the vendor's
             // library refuses commands meanwhile (`ABORT_NOT_FINISH_ERR`, measured).
-            self.mode = Mode::Aborting;
+            self.rate.mode = Mode::Aborting;
         }
         self.update_status();
     }
@@ -180,37 +216,37 @@ impl GroupState {
     /// speeds stay as the last period left them (the vendor's library, stopped by an
     /// error, keeps reading them); an abort sets them to 0.
     pub(super) fn stop_here(&mut self) {
-        if let Some(x) = self.external.as_mut() {
+        if let Some(x) = self.features.external.as_mut() {
             x.stop();
         }
-        self.inpos_wait = None;
+        self.in_pos.wait = None;
         self.note_stopped();
-        self.running.clear();
-        self.jump = None;
-        self.lag = 0;
-        self.lag_shown = false;
+        self.exec.running.clear();
+        self.exec.jump = None;
+        self.exec.lag = 0;
+        self.exec.lag_shown = false;
         self.info_touched();
         self.clear_queue();
         self.post_stopped();
-        self.base = self.pos;
-        self.queue_end = self.pos;
-        self.mode = Mode::Normal;
+        self.exec.base = self.exec.pos;
+        self.queued.end = self.exec.pos;
+        self.rate.mode = Mode::Normal;
     }
 
     /// `MCC_OverrideSpeedEx`: the new ratio is in effect from the next period; with
     /// `instant` what runs then re-plans its rest, otherwise it keeps its speed and the
     /// commands after it run at the new ratio.
     pub fn override_speed(&mut self, pct: f64, instant: bool) {
-        self.override_next = Some((pct, instant));
+        self.rate.override_next = Some((pct, instant));
     }
 
     /// At the start of a period: an override set since the last one comes into effect.
     pub(super) fn apply_override(&mut self) {
-        if let Some((pct, instant)) = self.override_next.take() {
+        if let Some((pct, instant)) = self.rate.override_next.take() {
             // The rate already in effect re-plans nothing (the vendor's library leaves a
             // blend in progress as it is).
-            let same = pct == self.override_pct;
-            self.override_pct = pct;
+            let same = pct == self.rate.override_pct;
+            self.rate.override_pct = pct;
             if instant && !same {
                 self.retarget_running();
             }
@@ -220,11 +256,11 @@ impl GroupState {
     /// What runs at speed re-plans the rest of its length at its feed times the ratio
     /// (not with the speed fixed).
     fn retarget_running(&mut self) {
-        if self.mode != Mode::Normal || self.fixed_speed {
+        if self.rate.mode != Mode::Normal || self.rate.fixed_speed {
             return;
         }
         let k = self.speed_ratio();
-        for r in self.running.iter_mut() {
+        for r in self.exec.running.iter_mut() {
             if r.stage == Stage::Moving {
                 r.retarget_tracks(k);
             }
@@ -234,10 +270,10 @@ impl GroupState {
 
     /// The ratio feed speeds run at: the override, or 1 with the speed fixed.
     pub(super) fn speed_ratio(&self) -> f64 {
-        if self.fixed_speed {
+        if self.rate.fixed_speed {
             1.0
         } else {
-            self.override_pct / 100.0
+            self.rate.override_pct / 100.0
         }
     }
 
@@ -245,12 +281,12 @@ impl GroupState {
     /// motion re-plans its rest at `v`.
     pub fn change_feed_speed(&mut self, v: f64) {
         self.settings.feed = v;
-        if self.external.is_some() {
+        if self.features.external.is_some() {
             // A running MC3B job keeps its speed: later commands get the new feed.
             return;
         }
         let k = self.speed_ratio();
-        for r in self.running.iter_mut() {
+        for r in self.exec.running.iter_mut() {
             if r.stage == Stage::Moving
                 && matches!(r.cmd.plan, crate::engine::command::Plan::Path(_))
             {
@@ -262,9 +298,9 @@ impl GroupState {
 
     /// `MCC_FixSpeed`: with the speed fixed the override changes no speed.
     pub fn fix_speed(&mut self, fixed: bool) {
-        let was = self.fixed_speed;
-        self.fixed_speed = fixed;
-        if was && !fixed && self.override_pct != 100.0 {
+        let was = self.rate.fixed_speed;
+        self.rate.fixed_speed = fixed;
+        if was && !fixed && self.rate.override_pct != 100.0 {
             self.retarget_running();
         }
     }

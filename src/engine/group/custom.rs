@@ -122,23 +122,27 @@ pub struct CustomSide {
 
 impl GroupState {
     fn custom_running(&mut self, id: Option<u64>) -> Option<(c_int, &mut CustomMove)> {
-        self.running.iter_mut().find_map(|r| match &mut r.cmd.plan {
-            Plan::Custom(m) if id.is_none_or(|id| m.spec.id == id) && !m.ended() => {
-                Some((r.cmd.index, m))
-            }
-            _ => None,
-        })
+        self.exec
+            .running
+            .iter_mut()
+            .find_map(|r| match &mut r.cmd.plan {
+                Plan::Custom(m) if id.is_none_or(|id| m.spec.id == id) && !m.ended() => {
+                    Some((r.cmd.index, m))
+                }
+                _ => None,
+            })
     }
 
     fn custom_is_running(&self, id: u64) -> bool {
-        self.running
+        self.exec
+            .running
             .iter()
             .any(|r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id))
     }
 
     /// Takes every started command for its cleanup (the engine is closing).
     pub(crate) fn custom_take_all(&mut self) -> Vec<(c_int, Arc<CustomSpec>)> {
-        std::mem::take(&mut self.custom.started)
+        std::mem::take(&mut self.features.custom.started)
     }
 
     /// What the stage does for this group after a tick of `dt` seconds.
@@ -147,29 +151,29 @@ impl GroupState {
             group: self.index,
             ..CustomBatch::default()
         };
-        if !self.custom.started.is_empty() {
-            let started = std::mem::take(&mut self.custom.started);
+        if !self.features.custom.started.is_empty() {
+            let started = std::mem::take(&mut self.features.custom.started);
             for (idx, spec) in started {
                 if self.custom_is_running(spec.id) {
-                    self.custom.started.push((idx, spec));
+                    self.features.custom.started.push((idx, spec));
                 } else {
                     batch.cleanups.push((idx, spec));
                 }
             }
         }
-        let pos = self.pos;
+        let pos = self.exec.pos;
         let Some((index, m)) = self.custom_running(None) else {
             return batch;
         };
         if m.start_at(pos) {
             let spec = m.spec.clone();
-            for r in self.running.iter_mut() {
+            for r in self.exec.running.iter_mut() {
                 if matches!(&r.cmd.plan, Plan::Custom(c) if c.spec.id == spec.id) {
                     r.cmd.target = pos;
                 }
             }
             self.info_touched();
-            self.custom.started.push((index, spec.clone()));
+            self.features.custom.started.push((index, spec.clone()));
             batch.call = Some(Call::Start {
                 spec,
                 index,
@@ -185,12 +189,12 @@ impl GroupState {
     /// the next call (None when the command is gone or the group stopped).
     pub(crate) fn custom_begin(&mut self, id: u64, tot: f64, dt: f64) -> Option<Call> {
         let (feed, acc_ms, dec_ms) = {
-            let r = self.running.iter().find(
+            let r = self.exec.running.iter().find(
                 |r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id && !m.ended()),
             )?;
             (r.cmd.info_feed, r.cmd.acc_ms, r.cmd.dec_ms)
         };
-        let blend_on = self.blend_on;
+        let blend_on = self.exec.blend_on;
         let ratio = self.speed_ratio();
         let (index, m) = self.custom_running(Some(id))?;
         // A custom motion that follows the override starts at the rate in effect, as a
@@ -237,7 +241,7 @@ impl GroupState {
 
     /// The interpolation call for the coming tick.
     fn custom_step(&mut self, _dt: f64) -> Option<Call> {
-        let cur = self.pos;
+        let cur = self.exec.pos;
         let (index, m) = self.custom_running(None)?;
         let step = m.next_step()?;
         Some(Call::Interp {
@@ -262,8 +266,8 @@ impl GroupState {
         next: &Axes,
         step: Step,
     ) -> bool {
-        let axes = self.axes;
-        let offset = self.offset;
+        let axes = self.mech.axes;
+        let offset = self.exec.offset;
         let Some((_, m)) = self.custom_running(Some(id)) else {
             return false;
         };
@@ -290,7 +294,7 @@ impl GroupState {
         let blend_end = m.advance(next, step, ended);
         if ended {
             let target: Axes = std::array::from_fn(|i| m.start[i] + next[i]);
-            for r in self.running.iter_mut() {
+            for r in self.exec.running.iter_mut() {
                 if matches!(&r.cmd.plan, Plan::Custom(c) if c.spec.id == id) {
                     r.cmd.target = target;
                 }
@@ -300,10 +304,10 @@ impl GroupState {
             // known): they move with it, translated by its displacement, and so does the
             // queue's end.
             if next != [0.0; AXES] {
-                for cmd in self.queue.iter_mut() {
+                for cmd in self.queued.commands.iter_mut() {
                     translate(cmd, &next);
                 }
-                for (q, d) in self.queue_end.iter_mut().zip(next) {
+                for (q, d) in self.queued.end.iter_mut().zip(next) {
                     *q += d;
                 }
             }

@@ -17,12 +17,70 @@
 //! - The speeds a program reads are the distances of the last period over the period.
 
 use super::running::{advance, Progress, Running, Stage};
-use super::GroupState;
+use super::{GroupState, Rezero};
 use super::{InPosWait, Mode};
 use crate::config::AXES;
 use crate::engine::command::{Command, Plan};
 use crate::engine::trace::Note;
+use crate::planner::Axes;
 use crate::vendor::consts as c;
+use std::collections::VecDeque;
+
+/// The running commands and what they make of the group's position, period by period.
+///
+/// `repr(C)`: the running commands and the flags a tick reads first, then the positions.
+#[derive(Debug)]
+#[repr(C)]
+pub(super) struct Execution {
+    pub(super) running: VecDeque<Running>,
+    /// Blending as the engine has reached it in the queue.
+    pub(super) blend_on: bool,
+    /// Periods the status still reads `GMS_RUNNING` with nothing running (the vendor's
+    /// library shows one after the last command).
+    pub(super) lag: u8,
+    /// The period that just ran read running for `lag` (see [`GroupState::tick`]).
+    pub(super) lag_shown: bool,
+    /// When the pulse counters of the commanded channels restart from 0
+    /// ([`GroupState::reset_motion`]).
+    pub(super) rezero: Rezero,
+    /// A jog by pulses: its displacement and the periods it still keeps the group running.
+    pub(super) jump: Option<(Axes, u8)>,
+    /// The feed speed of the last period (`MCC_GetCurFeedSpeed`).
+    pub(super) feed_now: f64,
+    /// The interpolation period, seconds.
+    pub(super) period_s: f64,
+    /// Position of everything finished (user coordinates).
+    pub(super) base: Axes,
+    /// Current command position (user coordinates).
+    pub(super) pos: Axes,
+    /// Current speed per axis (UU/s).
+    pub(super) vel: Axes,
+    /// Reference position = user position + offset (MCC_DefinePos moves the offset).
+    pub(super) offset: Axes,
+    /// Compensation pulses per axis ([`GroupState::read_compensation`]).
+    pub(super) comp: [i32; AXES],
+}
+
+impl Execution {
+    /// Nothing running, at position 0, with the interpolation period `period_s`.
+    pub(super) fn new(period_s: f64) -> Execution {
+        Execution {
+            running: VecDeque::new(),
+            blend_on: false,
+            lag: 0,
+            lag_shown: false,
+            rezero: Rezero::No,
+            jump: None,
+            feed_now: 0.0,
+            period_s,
+            base: [0.0; AXES],
+            pos: [0.0; AXES],
+            vel: [0.0; AXES],
+            offset: [0.0; AXES],
+            comp: [0; AXES],
+        }
+    }
+}
 
 /// Periods a point-to-point move stays after its last axis arrived: one unchanged, one
 /// with the master axis's speed 0.
@@ -43,15 +101,15 @@ pub(super) const JUMP_PERIODS: u8 = 4;
 impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
-        self.lag_shown = false;
-        if self.running.is_empty()
-            && self.queue.is_empty()
-            && self.jump.is_none()
+        self.exec.lag_shown = false;
+        if self.exec.running.is_empty()
+            && self.queued.commands.is_empty()
+            && self.exec.jump.is_none()
             && self.steady()
-            && self.lag == 0
+            && self.exec.lag == 0
         {
-            if let Some((pct, _)) = self.override_next.take() {
-                self.override_pct = pct;
+            if let Some((pct, _)) = self.rate.override_next.take() {
+                self.rate.override_pct = pct;
             }
             // Idle: nothing moves; the status is STOP (unless an error holds the queue).
             self.vel_hold_idle();
@@ -65,13 +123,13 @@ impl GroupState {
     /// filters or kinematics, no over-travel check, not in an in-position check.
     fn steady(&self) -> bool {
         self.homing == 0
-            && self.external.is_none()
-            && self.post.is_none()
-            && self.kin.is_none()
-            && self.ot_check == [false; AXES]
-            && self.inpos_wait.is_none()
+            && self.features.external.is_none()
+            && self.features.post.is_none()
+            && self.features.kin.is_none()
+            && self.limits.over_travel == [false; AXES]
+            && self.in_pos.wait.is_none()
             && !matches!(
-                self.rezero,
+                self.exec.rezero,
                 super::Rezero::NextPeriod | super::Rezero::Channels
             )
     }
@@ -81,7 +139,7 @@ impl GroupState {
     /// reading the speeds of its last period, the feed speed too).
     fn vel_hold_idle(&mut self) {
         if self.error == 0 {
-            self.feed_now = 0.0;
+            self.exec.feed_now = 0.0;
         }
     }
 
@@ -93,25 +151,26 @@ impl GroupState {
         if !self.steady()
             || self.has_outputs()
             || self.has_safety_checks()
-            || self.override_next.is_some()
+            || self.rate.override_next.is_some()
         {
             return 0;
         }
         if self.published_key_holds_below().is_none() {
             return 0;
         }
-        if self.running.is_empty() {
-            let idle = self.queue.is_empty() && self.jump.is_none() && self.lag == 0;
+        if self.exec.running.is_empty() {
+            let idle =
+                self.queued.commands.is_empty() && self.exec.jump.is_none() && self.exec.lag == 0;
             return if idle && self.status == c::GMS_STOP {
                 max
             } else {
                 0
             };
         }
-        if self.running.len() != 1 || self.status != c::GMS_RUNNING {
+        if self.exec.running.len() != 1 || self.status != c::GMS_RUNNING {
             return 0;
         }
-        let Some(r) = self.running.front() else {
+        let Some(r) = self.exec.running.front() else {
             return 0;
         };
         if r.stage != Stage::Moving {
@@ -133,15 +192,15 @@ impl GroupState {
     /// [`GroupState::tick`] when the group does more than stand idle.
     #[inline(never)]
     fn tick_full(&mut self, dt: f64) {
-        if self.homing != 0 && self.external.is_none() {
+        if self.homing != 0 && self.features.external.is_none() {
             // The homing sets the positions (`set_homing_axis`).
             self.update_status();
             return;
         }
-        if self.external.is_some() {
+        if self.features.external.is_some() {
             return self.tick_external(dt);
         }
-        if self.post.is_some() {
+        if self.features.post.is_some() {
             return self.tick_post(dt);
         }
         self.tick_commands(dt);
@@ -153,20 +212,20 @@ impl GroupState {
         if self.tick_one_path(dt) {
             return;
         }
-        if self.rezero == super::Rezero::NextPeriod {
-            self.rezero = super::Rezero::Channels;
-            self.base = [0.0; AXES];
-            self.pos = [0.0; AXES];
+        if self.exec.rezero == super::Rezero::NextPeriod {
+            self.exec.rezero = super::Rezero::Channels;
+            self.exec.base = [0.0; AXES];
+            self.exec.pos = [0.0; AXES];
         }
-        let mut before = self.pos;
+        let mut before = self.exec.pos;
         let mut vel_mask: u32 = 0;
         let mut zero_mask: u32 = 0;
         self.apply_override();
         // What ended in the last period goes.
         let mut i = 0;
         let mut lag = false;
-        while i < self.running.len() {
-            match self.running[i].finished {
+        while i < self.exec.running.len() {
+            match self.exec.running[i].finished {
                 Some(l) => {
                     lag |= l;
                     self.retire(i);
@@ -174,36 +233,36 @@ impl GroupState {
                 None => i += 1,
             }
         }
-        if self.running.is_empty() && lag {
-            self.lag = 1;
+        if self.exec.running.is_empty() && lag {
+            self.exec.lag = 1;
         }
-        if let Some((d, left)) = self.jump.take() {
+        if let Some((d, left)) = self.exec.jump.take() {
             // A jog by pulses: the jump in its first period, then two at rest.
             if left == JUMP_PERIODS {
-                for (b, di) in self.base.iter_mut().zip(d) {
+                for (b, di) in self.exec.base.iter_mut().zip(d) {
                     *b += di;
                 }
             }
             if left > 1 {
-                self.jump = Some((d, left - 1));
+                self.exec.jump = Some((d, left - 1));
             }
         }
         let mut started = false;
-        if self.running.is_empty() && self.may_start() {
+        if self.exec.running.is_empty() && self.may_start() {
             if let Some(cmd) = self.pop_next() {
                 self.start(cmd);
-                self.lag = 0;
+                self.exec.lag = 0;
                 started = true;
             }
         }
         let mut abort_done = false;
-        let inpos_on = self.inpos_mask != 0;
-        let inpos_waiting = self.inpos_wait.is_some();
+        let inpos_on = self.in_pos.mask != 0;
+        let inpos_waiting = self.in_pos.wait.is_some();
         let mut start_inpos = false;
-        let n = self.running.len();
+        let n = self.exec.running.len();
         for idx in 0..n {
             let newest = idx + 1 == n;
-            let r = &mut self.running[idx];
+            let r = &mut self.exec.running[idx];
             r.periods += 1;
             match r.stage {
                 Stage::Moving => {
@@ -289,38 +348,39 @@ impl GroupState {
             }
         }
         if start_inpos {
-            self.note(Note::InPosBegin(self.inpos_mask));
-            self.inpos_wait = Some(InPosWait {
-                mask: self.inpos_mask,
+            self.note(Note::InPosBegin(self.in_pos.mask));
+            self.in_pos.wait = Some(InPosWait {
+                mask: self.in_pos.mask,
                 elapsed: 0.0,
                 settled: 0.0,
-                settings: self.inpos,
+                settings: self.in_pos.settings,
             });
         }
         if abort_done {
             // The timed abort's last period: everything goes in the next.
-            for r in self.running.iter_mut() {
+            for r in self.exec.running.iter_mut() {
                 r.finished = Some(false);
             }
             self.clear_queue();
         }
         self.try_blend(&mut vel_mask, started);
-        if self.rezero == super::Rezero::Channels {
+        if self.exec.rezero == super::Rezero::Channels {
             // Restarted from 0 (`GroupState::reset_motion`): no jump to show as speed.
             before = [0.0; AXES];
         }
         self.compute_pos();
         self.compute_vel(&before, dt, vel_mask, zero_mask);
-        if self.ot_check != [false; AXES] {
+        if self.limits.over_travel != [false; AXES] {
             self.check_over_travel(&before);
         }
-        self.newest_own_time = self.running.back().map_or(0.0, |r| r.periods as f64);
+        self.publishing.newest_own_time =
+            self.exec.running.back().map_or(0.0, |r| r.periods as f64);
         self.update_status();
-        if self.running.is_empty() && self.jump.is_none() && self.lag > 0 {
-            self.lag -= 1;
+        if self.exec.running.is_empty() && self.exec.jump.is_none() && self.exec.lag > 0 {
+            self.exec.lag -= 1;
             // This period still shows it, whoever looks again within it (the filters'
             // tick updates the status once more).
-            self.lag_shown = true;
+            self.exec.lag_shown = true;
         }
     }
 
@@ -342,8 +402,8 @@ impl GroupState {
     pub fn cruise_period(&mut self, dt: f64) {
         #[cfg(debug_assertions)]
         let status = self.status;
-        self.lag_shown = false;
-        if self.running.is_empty() {
+        self.exec.lag_shown = false;
+        if self.exec.running.is_empty() {
             self.vel_hold_idle();
         } else if !self.one_path_period(dt, false) {
             self.tick(dt);
@@ -359,29 +419,30 @@ impl GroupState {
     /// status (a cruise period knows it stays).
     #[inline(always)]
     fn one_path_period(&mut self, dt: f64, status: bool) -> bool {
-        let (Some(r), 1) = (self.running.front(), self.running.len()) else {
+        let (Some(r), 1) = (self.exec.running.front(), self.exec.running.len()) else {
             return false;
         };
         let plain = r.finished.is_none()
             && r.stage == Stage::Moving
             && matches!(r.progress, Progress::Path { .. })
             && !r.arrived()
-            && self.jump.is_none()
-            && self.override_next.is_none()
-            && self.rezero == super::Rezero::No
-            && self.ot_check == [false; AXES];
+            && self.exec.jump.is_none()
+            && self.rate.override_next.is_none()
+            && self.exec.rezero == super::Rezero::No
+            && self.limits.over_travel == [false; AXES];
         if !plain {
             return false;
         }
-        let before = self.pos;
+        let before = self.exec.pos;
         let mut vel_mask = 0;
-        let r = &mut self.running[0];
+        let r = &mut self.exec.running[0];
         r.periods += 1;
         advance(r, &mut vel_mask);
         self.try_blend(&mut vel_mask, false);
         self.compute_pos();
         self.compute_vel(&before, dt, vel_mask, 0);
-        self.newest_own_time = self.running.back().map_or(0.0, |r| r.periods as f64);
+        self.publishing.newest_own_time =
+            self.exec.running.back().map_or(0.0, |r| r.periods as f64);
         if status {
             self.update_status();
         }
@@ -391,10 +452,10 @@ impl GroupState {
     /// Blending: when the newest general motion has just started to decelerate and the
     /// next queued motion is general too, starts it now.
     fn try_blend(&mut self, vel_mask: &mut u32, just_started: bool) {
-        if !self.blend_on || !self.may_start() {
+        if !self.exec.blend_on || !self.may_start() {
             return;
         }
-        let Some(last) = self.running.back() else {
+        let Some(last) = self.exec.running.back() else {
             return;
         };
         if last.stage != Stage::Moving || !matches!(last.cmd.plan, Plan::Path(_)) {
@@ -415,12 +476,13 @@ impl GroupState {
         let Some(next) = self.pop_next() else {
             return;
         };
-        if let Some(Progress::Path { track, .. }) = self.running.back_mut().map(|r| &mut r.progress)
+        if let Some(Progress::Path { track, .. }) =
+            self.exec.running.back_mut().map(|r| &mut r.progress)
         {
             track.blend_out();
         }
         self.start(next);
-        if let Some(r) = self.running.back_mut() {
+        if let Some(r) = self.exec.running.back_mut() {
             r.blended_from = Some(from);
             if let Progress::Path { track, .. } = &mut r.progress {
                 track.blend_in();
@@ -433,30 +495,30 @@ impl GroupState {
     pub(super) fn start(&mut self, cmd: Command) {
         if let Plan::Fault(code) = cmd.plan {
             // A curve with no geometry fails as it starts.
-            self.cmd_index.last_started = Some((cmd.index, cmd.index));
+            self.queued.index.last_started = Some((cmd.index, cmd.index));
             self.stop_here();
             self.set_error(code);
             return;
         }
-        if self.rezero == super::Rezero::OnStart {
+        if self.exec.rezero == super::Rezero::OnStart {
             // Reset while busy: the group restarts from 0 with this command.
-            self.rezero = super::Rezero::Channels;
-            self.base = [0.0; AXES];
+            self.exec.rezero = super::Rezero::Channels;
+            self.exec.base = [0.0; AXES];
         }
         let cmd = self.kinematics_start(cmd);
-        if cmd.is_motion() && self.inpos_mask != 0 {
-            self.inpos_status = [0; AXES];
+        if cmd.is_motion() && self.in_pos.mask != 0 {
+            self.in_pos.status = [0; AXES];
         }
         self.info_touched();
         // `nCommandIndex_LD`: the vendor's library shows the started command's index.
-        self.cmd_index.last_started = Some((cmd.index, cmd.index));
-        self.cmd_index.ld = self.cmd_index.ld.wrapping_add(1);
+        self.queued.index.last_started = Some((cmd.index, cmd.index));
+        self.queued.index.ld = self.queued.index.ld.wrapping_add(1);
         self.note(Note::Start {
             index: cmd.index,
             ctype: cmd.ctype,
         });
-        if self.single_block {
-            self.single_block_credit = false;
+        if self.queued.single_block {
+            self.queued.single_block_credit = false;
         }
         let mut r = Running::new(cmd);
         // A running override applies to the motion that starts.
@@ -464,7 +526,7 @@ impl GroupState {
         if k != 1.0 {
             r.retarget_tracks(k);
         }
-        self.running.push_back(r);
+        self.exec.running.push_back(r);
     }
 
     /// `MCC_JogPulse`: axis `a` moves `pulses` pulses in the next period (see
@@ -473,27 +535,27 @@ impl GroupState {
         if self.busy() || self.homing != 0 {
             return Err(crate::error::McclError::NotFinished);
         }
-        let f = self.axes[a].factor;
+        let f = self.mech.axes[a].factor;
         if f == 0.0 {
             return Err(crate::error::McclError::Parameter);
         }
         let mut d = [0.0; AXES];
         d[a] = f64::from(pulses) / f.abs();
-        crate::config::range::position(self.queue_end[a] + d[a], f)?;
-        self.queue_end[a] += d[a];
-        self.jump = Some((d, JUMP_PERIODS));
+        crate::config::range::position(self.queued.end[a] + d[a], f)?;
+        self.queued.end[a] += d[a];
+        self.exec.jump = Some((d, JUMP_PERIODS));
         self.update_status();
         Ok(())
     }
 
     /// Takes command `i` off the running ones: its displacement joins the base.
     fn retire(&mut self, i: usize) {
-        let Some(done) = self.running.remove(i) else {
+        let Some(done) = self.exec.running.remove(i) else {
             return;
         };
         self.info_touched();
-        if self.running.len() == 1 {
-            if let Some(r) = self.running.front_mut() {
+        if self.exec.running.len() == 1 {
+            if let Some(r) = self.exec.running.front_mut() {
                 // Blended in and now alone: no longer blending.
                 r.blended_from = None;
             }
@@ -506,15 +568,15 @@ impl GroupState {
         if done.cmd.is_motion() {
             let s = done.cmd.start();
             let p = done.position();
-            for ((b, p), s) in self.base.iter_mut().zip(p).zip(s) {
+            for ((b, p), s) in self.exec.base.iter_mut().zip(p).zip(s) {
                 *b += p - s;
             }
-            if self.running.is_empty() && matches!(done.stage, Stage::Ending { .. }) {
-                self.base = done.cmd.target;
+            if self.exec.running.is_empty() && matches!(done.stage, Stage::Ending { .. }) {
+                self.exec.base = done.cmd.target;
             }
         }
-        if self.running.is_empty() && self.mode == Mode::HoldAtBlockEnd {
-            self.mode = Mode::Held;
+        if self.exec.running.is_empty() && self.rate.mode == Mode::HoldAtBlockEnd {
+            self.rate.mode = Mode::Held;
         }
     }
 }

@@ -109,18 +109,18 @@ impl GroupState {
     /// Runs this group's commands on `executor` from now on (an MC3B: the system attaches
     /// one to every group of the device's card).
     pub fn attach_external(&mut self, executor: Box<dyn ExternalExecutor>) {
-        self.external = Some(executor);
+        self.features.external = Some(executor);
         self.external_positions();
     }
 
     /// Whether this group's commands run outside the card (on an MC3B).
     pub fn is_external(&self) -> bool {
-        self.external.is_some()
+        self.features.external.is_some()
     }
 
     /// Whether the external executor is running (or stopping) a job of this group.
     pub fn external_busy(&self) -> bool {
-        self.external.as_ref().is_some_and(|x| x.busy())
+        self.features.external.as_ref().is_some_and(|x| x.busy())
     }
 
     /// `MCC_Home` with `orders` (per channel, 255 skips) and the go-home parameters
@@ -134,8 +134,12 @@ impl GroupState {
         cfgs: &[crate::vendor::SYS_HOME_CONFIG; AXES],
     ) -> McclResult<()> {
         let busy = self.busy();
-        let x = self.external.as_mut().ok_or(McclError::NotAccepted)?;
-        let mask = x.start_home(orders, cfgs, &self.axes, busy)?;
+        let x = self
+            .features
+            .external
+            .as_mut()
+            .ok_or(McclError::NotAccepted)?;
+        let mask = x.start_home(orders, cfgs, &self.mech.axes, busy)?;
         self.homing = mask;
         self.update_status();
         Ok(())
@@ -144,34 +148,34 @@ impl GroupState {
     /// `MCC_AbortGoHome` on the external executor: the job running stops and the homing
     /// ends without completing.
     pub fn abort_external_home(&mut self) {
-        if let Some(x) = self.external.as_mut() {
+        if let Some(x) = self.features.external.as_mut() {
             x.abort_home();
         }
     }
 
     /// The end of an external go home, once: `HOME_DONE` or `HOME_NONE`.
     pub fn take_home_result(&mut self) -> Option<i32> {
-        self.external.as_mut()?.take_home_result()
+        self.features.external.as_mut()?.take_home_result()
     }
 
     /// Positions from the external executor (axes it drives), else from what has finished.
     pub(super) fn external_positions(&mut self) {
-        if let Some(x) = &self.external {
-            self.pos = x.positions(self.base, &self.offset, &self.axes);
-            self.vel = [0.0; AXES];
+        if let Some(x) = &self.features.external {
+            self.exec.pos = x.positions(self.exec.base, &self.exec.offset, &self.mech.axes);
+            self.exec.vel = [0.0; AXES];
         }
     }
 
     /// One tick of a group on an external executor: it runs with the group as its
-    /// [`Host`]. It is out of `self.external` meanwhile and back before the status is
+    /// [`Host`]. It is out of `self.features.external` meanwhile and back before the status is
     /// updated, also when the tick panics (the engine's recovery then stops the device's
     /// job).
     pub(super) fn tick_external(&mut self, dt: f64) {
-        let Some(mut x) = self.external.take() else {
+        let Some(mut x) = self.features.external.take() else {
             return;
         };
         let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| x.tick(self, dt)));
-        self.external = Some(x);
+        self.features.external = Some(x);
         if let Err(p) = r {
             std::panic::resume_unwind(p);
         }
@@ -182,31 +186,31 @@ impl GroupState {
 /// What an external executor may do with its group (see [`Host`]).
 impl Host for GroupState {
     fn axes(&self) -> &[AxisMech; AXES] {
-        &self.axes
+        &self.mech.axes
     }
 
     fn offset(&self) -> &Axes {
-        &self.offset
+        &self.exec.offset
     }
 
     fn ot_check(&self) -> &[bool; AXES] {
-        &self.ot_check
+        &self.limits.over_travel
     }
 
     fn base(&self) -> Axes {
-        self.base
+        self.exec.base
     }
 
     fn speed_scale(&self) -> f64 {
-        if self.fixed_speed {
+        if self.rate.fixed_speed {
             1.0
         } else {
-            self.override_pct / 100.0
+            self.rate.override_pct / 100.0
         }
     }
 
     fn single_block(&self) -> bool {
-        self.single_block
+        self.queued.single_block
     }
 
     fn may_start(&self) -> bool {
@@ -214,19 +218,19 @@ impl Host for GroupState {
     }
 
     fn may_go_on(&self) -> bool {
-        self.error == 0 && self.mode == Mode::Normal
+        self.error == 0 && self.rate.mode == Mode::Normal
     }
 
     fn held(&self) -> bool {
-        self.mode == Mode::Held
+        self.rate.mode == Mode::Held
     }
 
     fn queued(&self) -> usize {
-        self.queue.len()
+        self.queued.commands.len()
     }
 
     fn front(&self) -> Option<&Command> {
-        self.queue.front()
+        self.queued.commands.front()
     }
 
     fn pop_front(&mut self) -> Option<Command> {
@@ -234,19 +238,19 @@ impl Host for GroupState {
     }
 
     fn apply_switch(&mut self) {
-        let Some(cmd) = self.queue.front() else {
+        let Some(cmd) = self.queued.commands.front() else {
             return;
         };
         match cmd.plan {
-            Plan::Blend(on) => self.blend_on = on,
+            Plan::Blend(on) => self.exec.blend_on = on,
             Plan::InPos(on, mask) => {
                 if on {
-                    self.inpos_mask |= mask;
+                    self.in_pos.mask |= mask;
                 } else {
-                    self.inpos_mask &= !mask;
+                    self.in_pos.mask &= !mask;
                 }
             }
-            Plan::Output(o) => self.outputs.push(o),
+            Plan::Output(o) => self.emitted.outputs.push(o),
             _ => return,
         }
         self.pop_queued();
@@ -258,22 +262,22 @@ impl Host for GroupState {
 
     fn retire(&mut self, n: usize) {
         for _ in 0..n {
-            if let Some(done) = self.running.pop_front() {
-                self.base = done.cmd.target;
+            if let Some(done) = self.exec.running.pop_front() {
+                self.exec.base = done.cmd.target;
                 self.info_touched();
             }
         }
     }
 
     fn drop_first(&mut self) {
-        if self.running.pop_front().is_some() {
+        if self.exec.running.pop_front().is_some() {
             self.info_touched();
         }
     }
 
     fn job_ended(&mut self) {
-        if self.mode == Mode::HoldAtBlockEnd {
-            self.mode = Mode::Held;
+        if self.rate.mode == Mode::HoldAtBlockEnd {
+            self.rate.mode = Mode::Held;
         }
     }
 
@@ -286,24 +290,24 @@ impl Host for GroupState {
     }
 
     fn clear_running(&mut self) {
-        self.running.clear();
+        self.exec.running.clear();
         self.info_touched();
     }
 
     fn zero_offset(&mut self, i: usize) {
-        self.offset[i] = 0.0;
+        self.exec.offset[i] = 0.0;
         self.info_touched();
     }
 
     fn set_pos(&mut self, pos: Axes) {
-        self.pos = pos;
-        self.vel = [0.0; AXES];
+        self.exec.pos = pos;
+        self.exec.vel = [0.0; AXES];
     }
 
     fn rebase(&mut self, mask: u32) {
         for i in (0..AXES).filter(|&i| mask & (1 << i) != 0) {
-            self.base[i] = self.pos[i];
-            self.queue_end[i] = self.pos[i];
+            self.exec.base[i] = self.exec.pos[i];
+            self.queued.end[i] = self.exec.pos[i];
         }
     }
 }

@@ -14,7 +14,7 @@ impl GroupState {
     /// `MCC_Home` on the simulated machine starts on the channels of axes `mask`: the
     /// group must be idle. A group on an MC3B homes on the device (`begin_external_home`).
     pub fn begin_homing(&mut self, mask: u32) -> McclResult<()> {
-        if self.external.is_some() {
+        if self.features.external.is_some() {
             return Err(McclError::NotAccepted);
         }
         if self.busy() {
@@ -27,16 +27,16 @@ impl GroupState {
 
     /// Homing moved axis `i` to reference position `x` (UU) at speed `v` (UU/s).
     pub fn set_homing_axis(&mut self, i: usize, x: f64, v: f64) {
-        let p = x - self.offset[i];
-        self.pos[i] = p;
-        self.base[i] = p;
-        self.queue_end[i] = p;
-        self.vel[i] = v;
+        let p = x - self.exec.offset[i];
+        self.exec.pos[i] = p;
+        self.exec.base[i] = p;
+        self.queued.end[i] = p;
+        self.exec.vel[i] = v;
     }
 
     /// Axis `i` reached its working home: its position, reference and pulses read 0.
     pub fn home_zero_axis(&mut self, i: usize) {
-        self.offset[i] = 0.0;
+        self.exec.offset[i] = 0.0;
         self.info_touched();
         self.set_homing_axis(i, 0.0, 0.0);
     }
@@ -44,7 +44,7 @@ impl GroupState {
     /// The homing ended (done, aborted or failed): the group is its own again.
     pub fn end_homing(&mut self) {
         self.homing = 0;
-        self.vel = [0.0; AXES];
+        self.exec.vel = [0.0; AXES];
         self.update_status();
     }
 }

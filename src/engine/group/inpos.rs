@@ -4,9 +4,37 @@
 use super::GroupState;
 use super::TIME_EPS;
 use crate::config::AXES;
+use crate::engine::command::AxisMech;
 use crate::engine::note::Note;
 use crate::planner::Axes;
 use crate::vendor::consts as c;
+
+/// The in-position check: its settings, the axes queued markers enabled, the wait of the
+/// command running and what `MCC_GetInPosStatus` reads.
+#[derive(Debug)]
+pub(super) struct InPosition {
+    /// In-position settings (`MCC_SetInPos*`).
+    pub(super) settings: InPosSettings,
+    /// In-position check axes enabled by queued markers.
+    pub(super) mask: u32,
+    /// In-position check of the last command, while it runs.
+    pub(super) wait: Option<InPosWait>,
+    /// `MCC_GetInPosStatus`: 0xFF per axis once in position, until the next command.
+    pub(super) status: [u8; AXES],
+}
+
+impl InPosition {
+    /// No check enabled; the settings' defaults for `axes`.
+    pub(super) fn for_axes(axes: &[AxisMech; AXES]) -> InPosition {
+        InPosition {
+            settings: InPosSettings::for_axes(axes),
+            mask: 0,
+            wait: None,
+            // The vendor's library reads 255 for every axis right after init.
+            status: [0xFF; AXES],
+        }
+    }
+}
 
 /// In-position settings of a group (user manual §2.7.2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -115,22 +143,22 @@ pub const ERR_IN_POSITION: i32 = crate::error_record::ErrorRecord::InPosition.co
 impl GroupState {
     /// Whether a check that needs the machine watches this group even when it stands.
     pub fn has_safety_checks(&self) -> bool {
-        self.track_mask != 0 || self.inpos_wait.is_some()
+        self.limits.track_mask != 0 || self.in_pos.wait.is_some()
     }
 
     /// Whether an in-position check is running (the engine feeds it the machine).
     pub fn inpos_waiting(&self) -> bool {
-        self.inpos_wait.is_some()
+        self.in_pos.wait.is_some()
     }
 
     /// The in-position mask of the check running.
     pub fn inpos_mask_waiting(&self) -> u32 {
-        self.inpos_wait.map_or(0, |w| w.mask)
+        self.in_pos.wait.map_or(0, |w| w.mask)
     }
 
     /// `MCC_GetInPosStatus`.
     pub fn inpos_status(&self) -> [u8; AXES] {
-        self.inpos_status
+        self.in_pos.status
     }
 
     /// One tick of the in-position check (user manual §2.7.2): `errs[i]` is the position
@@ -140,7 +168,7 @@ impl GroupState {
     /// maximum check time: the `BLOCK` modes record 0xF501 and drop the rest of the queue;
     /// the `UNBLOCK` modes let the queue go on without a record.
     pub fn check_inpos(&mut self, errs: &[Option<f64>; AXES], dt: f64) {
-        let Some(mut w) = self.inpos_wait else {
+        let Some(mut w) = self.in_pos.wait else {
             return;
         };
         w.elapsed += dt;
@@ -157,23 +185,23 @@ impl GroupState {
         if done {
             for i in 0..AXES {
                 if w.mask & (1 << i) != 0 {
-                    self.inpos_status[i] = 0xFF;
+                    self.in_pos.status[i] = 0xFF;
                 }
             }
             self.note(Note::InPosDone(w.mask));
-            self.inpos_wait = None;
+            self.in_pos.wait = None;
         } else if w.elapsed >= w.settings.max_check_s - TIME_EPS {
             self.note(Note::InPosFail {
                 mask: w.mask,
                 error: w.fails_with_error(),
             });
-            self.inpos_wait = None;
+            self.in_pos.wait = None;
             if w.fails_with_error() {
                 self.stop_here();
                 self.set_error(ERR_IN_POSITION);
             }
         } else {
-            self.inpos_wait = Some(w);
+            self.in_pos.wait = Some(w);
         }
         self.update_status();
     }
@@ -185,9 +213,9 @@ impl GroupState {
     /// be a distance of its axis within the position range ("Ranges"); an error changes
     /// nothing.
     pub fn set_inpos_tolerances(&mut self, v: Axes) {
-        for (i, (t, a)) in v.iter().zip(&self.axes).enumerate() {
+        for (i, (t, a)) in v.iter().zip(&self.mech.axes).enumerate() {
             if a.channel.is_some() {
-                self.inpos.tolerance[i] = tolerance_as_vendor_keeps(*t, a.factor);
+                self.in_pos.settings.tolerance[i] = tolerance_as_vendor_keeps(*t, a.factor);
             }
         }
     }
@@ -196,15 +224,15 @@ impl GroupState {
     /// pulses per UU, 0 for an axis without a factor.
     pub fn set_inpos_tolerances_pulses(&mut self, v: [u16; AXES]) {
         for (i, t) in v.iter().enumerate() {
-            let f = self.axes[i].factor.abs();
-            self.inpos.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
+            let f = self.mech.axes[i].factor.abs();
+            self.in_pos.settings.tolerance[i] = if f > 0.0 { f64::from(*t) / f } else { 0.0 };
         }
     }
 
     /// The tolerances in pulses, rounded, at most `u16::MAX`.
     pub fn inpos_tolerances_pulses(&self) -> [u16; AXES] {
         std::array::from_fn(|i| {
-            (self.inpos.tolerance[i] * self.axes[i].factor.abs())
+            (self.in_pos.settings.tolerance[i] * self.mech.axes[i].factor.abs())
                 .round()
                 .min(f64::from(u16::MAX)) as u16
         })
@@ -237,7 +265,7 @@ mod tests {
         // and back; 70 UU = 70000 pulses reads as the WORD maximum 65535.
         let mut g = group(-1000.0);
         g.set_inpos_tolerances_pulses([10; AXES]);
-        assert_eq!(g.inpos.tolerance, [0.01; AXES]);
+        assert_eq!(g.in_pos.settings.tolerance, [0.01; AXES]);
         assert_eq!(g.inpos_tolerances_pulses(), [10; AXES]);
         g.set_inpos_tolerances([70.0; AXES]);
         assert_eq!(g.inpos_tolerances_pulses(), [65535; AXES]);
@@ -254,11 +282,11 @@ mod tests {
         v[2] = f64::NAN;
         v[3] = 0.123_456_78;
         g.set_inpos_tolerances(v);
-        assert_eq!(g.inpos.tolerance[0], 1.0);
-        assert_eq!(g.inpos.tolerance[1], 214_748.364_8);
-        assert_eq!(g.inpos.tolerance[2], 214_748.364_8);
+        assert_eq!(g.in_pos.settings.tolerance[0], 1.0);
+        assert_eq!(g.in_pos.settings.tolerance[1], 214_748.364_8);
+        assert_eq!(g.in_pos.settings.tolerance[2], 214_748.364_8);
         // 1234.5678 pulses: whole pulses, truncated.
-        assert_eq!(g.inpos.tolerance[3], 0.1234);
+        assert_eq!(g.in_pos.settings.tolerance[3], 0.1234);
     }
 
     #[test]
@@ -279,11 +307,11 @@ mod tests {
         let mut g = group(1000.0);
         g.set_track_error_limit(2, 0.3).unwrap();
         assert_eq!(g.set_track_error_limit(2, 2e12), Err(McclError::Parameter));
-        assert_eq!(g.track_limit[2], 0.3);
+        assert_eq!(g.limits.track_limit[2], 0.3);
         g.enable_track_error(0b101);
         g.enable_track_error(0b010);
-        assert_eq!(g.track_mask, 0b111);
+        assert_eq!(g.limits.track_mask, 0b111);
         g.disable_track_error();
-        assert_eq!(g.track_mask, 0);
+        assert_eq!(g.limits.track_mask, 0);
     }
 }

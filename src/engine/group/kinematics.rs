@@ -199,13 +199,13 @@ fn cartesian(plan: &Plan) -> bool {
 impl GroupState {
     /// Whether the group is kinematic.
     pub fn is_kinematic(&self) -> bool {
-        self.kin.is_some()
+        self.features.kin.is_some()
     }
 
     /// The joints the channels carry: a kinematic group's joints, else the reference
     /// positions of the axes.
     pub fn current_joints(&self) -> Axes {
-        match &self.kin {
+        match &self.features.kin {
             Some(k) => k.joints,
             None => std::array::from_fn(|i| self.ref_pos(i)),
         }
@@ -214,14 +214,17 @@ impl GroupState {
     /// The kinematics of the group and its posture (`None` for a group that is not
     /// kinematic).
     pub fn kinematics_fns(&self) -> Option<(KinFns, DWORD)> {
-        self.kin.as_ref().map(|k| (k.fns.clone(), k.posture))
+        self.features
+            .kin
+            .as_ref()
+            .map(|k| (k.fns.clone(), k.posture))
     }
 
     /// What a kinematic group in Cartesian space publishes: the joints, their speeds and
     /// composed speed (in joint space its own positions are the joints, and it publishes
     /// them as any group). `None` otherwise.
     pub(super) fn kinematics_published(&self) -> Option<Motion> {
-        let k = self.kin.as_ref()?;
+        let k = self.features.kin.as_ref()?;
         (k.space == Space::Cartesian).then_some(Motion {
             status: self.status,
             pos: k.joints,
@@ -242,13 +245,13 @@ impl GroupState {
         cart: Axes,
         posture: DWORD,
     ) -> McclResult<()> {
-        if self.external.is_some() {
+        if self.features.external.is_some() {
             return Err(McclError::NotAccepted);
         }
         if self.busy() || self.homing != 0 || self.current_joints() != joints {
             return Err(McclError::NotFinished);
         }
-        self.kin = Some(Box::new(Kinematics {
+        self.features.kin = Some(Box::new(Kinematics {
             fns,
             pre: None,
             generation: GENERATION.fetch_add(1, Ordering::Relaxed),
@@ -263,19 +266,19 @@ impl GroupState {
             queued_joints: None,
             pre_done: None,
         }));
-        self.offset = [0.0; AXES];
+        self.exec.offset = [0.0; AXES];
         self.info_touched();
-        self.pos = joints;
-        self.base = joints;
-        self.queue_end = cart;
-        self.vel = [0.0; AXES];
+        self.exec.pos = joints;
+        self.exec.base = joints;
+        self.queued.end = cart;
+        self.exec.vel = [0.0; AXES];
         Ok(())
     }
 
     /// `MCC_SetPreProcessMotionCommandCallback` (NULL removes it);
     /// `COMMAND_NOTACCEPTED_ERR` on a group that is not kinematic.
     pub fn set_preprocess(&mut self, f: PRE_PROCESS_MOTION_COMMAND) -> McclResult<()> {
-        let k = self.kin.as_mut().ok_or(McclError::NotAccepted)?;
+        let k = self.features.kin.as_mut().ok_or(McclError::NotAccepted)?;
         k.pre = f;
         k.pre_done = None;
         Ok(())
@@ -284,12 +287,12 @@ impl GroupState {
     /// The joints a joint move queued now starts from, when known: the joints at the
     /// end of the queue (the group at rest, or the queue ending with a joint move).
     pub fn queue_end_joints(&self) -> Option<Axes> {
-        let k = self.kin.as_ref()?;
-        if self.queue.is_empty() && self.running.is_empty() {
+        let k = self.features.kin.as_ref()?;
+        if self.queued.commands.is_empty() && self.exec.running.is_empty() {
             return Some(k.next.unwrap_or(k.joints));
         }
         k.queued_joints
-            .filter(|(c, _)| *c == self.queue_end)
+            .filter(|(c, _)| *c == self.queued.end)
             .map(|(_, j)| j)
     }
 
@@ -304,11 +307,11 @@ impl GroupState {
         cart_end: Axes,
     ) -> McclResult<i32> {
         let i = self.enqueue(cmd)?;
-        self.queue_end = cart_end;
-        if let Some(k) = self.kin.as_mut() {
+        self.queued.end = cart_end;
+        if let Some(k) = self.features.kin.as_mut() {
             k.queued_joints = Some((cart_end, target));
         }
-        if self.running.is_empty() {
+        if self.exec.running.is_empty() {
             self.enter_joint_space();
         }
         Ok(i)
@@ -317,7 +320,7 @@ impl GroupState {
     /// Nothing runs and the next command moves the joints: the planner's position becomes
     /// the joints out now (or due next).
     fn enter_joint_space(&mut self) {
-        let Some(k) = self.kin.as_mut() else {
+        let Some(k) = self.features.kin.as_mut() else {
             return;
         };
         if k.space == Space::Joint {
@@ -327,9 +330,9 @@ impl GroupState {
         k.space = Space::Joint;
         k.cart = None;
         k.queue_end_stale = false;
-        self.pos = joints;
-        self.base = joints;
-        self.vel = [0.0; AXES];
+        self.exec.pos = joints;
+        self.exec.base = joints;
+        self.exec.vel = [0.0; AXES];
     }
 
     /// Called as `cmd` starts: a V6 command sets the posture; a PtP (in joint space, see
@@ -341,27 +344,36 @@ impl GroupState {
     /// cannot, as its numbers were checked when it was queued — stops the group as a
     /// fault of the library.
     pub(super) fn kinematics_start(&mut self, mut cmd: Command) -> Command {
-        let Some(k) = self.kin.as_mut() else {
+        let Some(k) = self.features.kin.as_mut() else {
             return cmd;
         };
         if let Some(p) = cmd.posture {
             k.posture = p;
         }
-        let from = self.pos;
+        let from = self.exec.pos;
         let ratio = cmd.info_feed;
         let (acc_ms, dec_ms) = (cmd.acc_ms, cmd.dec_ms);
         let mut replanned_end = None;
         if let Plan::Ptp(p) = &mut cmd.plan {
             let (s, e) = (p.start(), p.end());
             if s != from {
-                let period_ms = self.period_s * 1000.0;
+                let period_ms = self.exec.period_s * 1000.0;
                 let periods = |ms: f64| (ms / period_ms).round() as u32;
-                let speed: Axes = std::array::from_fn(|i| self.axes[i].safe_speed * ratio / 100.0);
+                let speed: Axes =
+                    std::array::from_fn(|i| self.mech.axes[i].safe_speed * ratio / 100.0);
                 let ramps = [(periods(acc_ms), periods(dec_ms)); AXES];
                 let shapes = [p.shapes(); AXES];
                 let end: Axes = std::array::from_fn(|i| from[i] + (e[i] - s[i]));
                 let sync = p.is_sync();
-                match PtpMove::new(&from, &end, &speed, &ramps, &shapes, self.period_s, sync) {
+                match PtpMove::new(
+                    &from,
+                    &end,
+                    &speed,
+                    &ramps,
+                    &shapes,
+                    self.exec.period_s,
+                    sync,
+                ) {
                     Ok(m) => {
                         replanned_end = Some(m.end());
                         *p = m;
@@ -382,7 +394,7 @@ impl GroupState {
     /// the stage); with a pre-process callback, a path command waits until the callback
     /// has seen it.
     pub(super) fn kinematics_ready(&self) -> bool {
-        let Some(k) = &self.kin else {
+        let Some(k) = &self.features.kin else {
             return true;
         };
         let Some(cmd) = self.front_moving() else {
@@ -392,7 +404,7 @@ impl GroupState {
             (Plan::Ptp(_), Space::Cartesian) => false,
             (plan, Space::Joint) if cartesian(plan) => false,
             (Plan::Path(_), Space::Cartesian) if k.pre.is_some() => {
-                k.pre_done == Some(pre_id(self.cmd_index.ld, cmd))
+                k.pre_done == Some(pre_id(self.queued.index.ld, cmd))
             }
             _ => true,
         }
@@ -400,15 +412,16 @@ impl GroupState {
 
     /// The first queued command that is not a switch.
     fn front_moving(&self) -> Option<&Command> {
-        self.queue
+        self.queued
+            .commands
             .iter()
             .find(|c| !matches!(c.plan, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
     }
 
     /// In Cartesian space, whether the joints still owe the planner's position.
     fn kinematics_owed(&self) -> bool {
-        self.kin.as_ref().is_some_and(|k| {
-            k.space == Space::Cartesian && (k.next.is_some() || k.cart != Some(self.pos))
+        self.features.kin.as_ref().is_some_and(|k| {
+            k.space == Space::Cartesian && (k.next.is_some() || k.cart != Some(self.exec.pos))
         })
     }
 
@@ -417,9 +430,9 @@ impl GroupState {
     /// over the period; while the joints still owe the planner's position, the group is
     /// not stopped.
     pub fn kinematics_apply(&mut self) {
-        let pos: Axes = std::array::from_fn(|i| self.pos[i] + self.offset[i]);
-        let (dt, compose) = (self.period_s, self.settings.compose);
-        let Some(k) = self.kin.as_mut() else {
+        let pos: Axes = std::array::from_fn(|i| self.exec.pos[i] + self.exec.offset[i]);
+        let (dt, compose) = (self.exec.period_s, self.settings.compose);
+        let Some(k) = self.features.kin.as_mut() else {
             return;
         };
         let before = k.joints;
@@ -446,7 +459,7 @@ impl GroupState {
         let ptp_next = self
             .front_moving()
             .is_some_and(|c| matches!(c.plan, Plan::Ptp(_)));
-        if ptp_next && self.running.is_empty() && !self.kinematics_owed() {
+        if ptp_next && self.exec.running.is_empty() && !self.kinematics_owed() {
             self.enter_joint_space();
         }
         self.running_while_owed();
@@ -461,16 +474,17 @@ impl GroupState {
 
     /// The pulses of axis `i` of a kinematic group: its joint's.
     pub(super) fn kinematics_pulses(&self, i: usize) -> Option<i64> {
-        self.kin
+        self.features
+            .kin
             .as_ref()
-            .map(|k| whole_pulses(k.joints[i] * self.axes[i].factor))
+            .map(|k| whole_pulses(k.joints[i] * self.mech.axes[i].factor))
     }
 
     /// The stage, under the lock: what to compute for the next tick.
     pub(crate) fn kinematics_job(&mut self) -> Option<Job> {
-        let k = self.kin.as_ref()?;
+        let k = self.features.kin.as_ref()?;
         let (space, pre_set) = (k.space, k.pre.is_some());
-        let idle = self.running.is_empty();
+        let idle = self.exec.running.is_empty();
         let front_path = self.front_moving().is_some_and(|c| cartesian(&c.plan));
         if space == Space::Cartesian && pre_set {
             self.rebase_front();
@@ -480,9 +494,9 @@ impl GroupState {
         } else {
             None
         };
-        let pos = self.pos;
-        let queue_empty = self.queue.is_empty();
-        let k = self.kin.as_mut()?;
+        let pos = self.exec.pos;
+        let queue_empty = self.queued.commands.is_empty();
+        let k = self.features.kin.as_mut()?;
         let latest = k.next.unwrap_or(k.joints);
         let step = match space {
             Space::Cartesian if k.cart != Some(pos) => Step::Inverse {
@@ -514,30 +528,30 @@ impl GroupState {
     }
 
     fn pre_request(&self) -> Option<PreRequest> {
-        let k = self.kin.as_ref()?;
+        let k = self.features.kin.as_ref()?;
         k.pre?;
         let cmd = self.front_moving()?;
         if !matches!(cmd.plan, Plan::Path(_)) {
             return None;
         }
-        let id = pre_id(self.cmd_index.ld, cmd);
+        let id = pre_id(self.queued.index.ld, cmd);
         if k.pre_done == Some(id) {
             return None;
         }
         Some(PreRequest {
             f: k.pre,
             id,
-            cur: self.pos,
+            cur: self.exec.pos,
         })
     }
 
     /// The stage, under the lock again: stores what the callbacks returned (dropped if
     /// the registration changed or the group moved meanwhile).
     pub(crate) fn kinematics_done(&mut self, d: Done) {
-        let idle = self.running.is_empty();
-        let queue_empty = self.queue.is_empty();
+        let idle = self.exec.running.is_empty();
+        let queue_empty = self.queued.commands.is_empty();
         let front_path = self.front_moving().is_some_and(|c| cartesian(&c.plan));
-        let Some(k) = self.kin.as_mut() else {
+        let Some(k) = self.features.kin.as_mut() else {
             return;
         };
         if k.generation != d.generation {
@@ -547,13 +561,13 @@ impl GroupState {
         match d.step {
             StepDone::None => {}
             StepDone::Inverse(cart, Some(j)) => {
-                if k.space == Space::Cartesian && self.pos == cart {
+                if k.space == Space::Cartesian && self.exec.pos == cart {
                     k.next = Some(j);
                     k.cart = Some(cart);
                 }
             }
             StepDone::Inverse(cart, None) => {
-                if k.space == Space::Cartesian && self.pos == cart {
+                if k.space == Space::Cartesian && self.exec.pos == cart {
                     // Unreachable: stop; the joints stay, the planner goes back to the
                     // last point they reached.
                     let good = k.cart;
@@ -575,7 +589,7 @@ impl GroupState {
                     (true, true, Some(cart)) if front_path => self.enter_cartesian_space(cart),
                     (true, false, Some(cart)) if queue_empty => {
                         k.queue_end_stale = false;
-                        self.queue_end = cart;
+                        self.queued.end = cart;
                     }
                     _ => {}
                 }
@@ -591,7 +605,7 @@ impl GroupState {
     /// the tool is, `cart` (the forward kinematics of the joints), and that command is
     /// planned again from there if it was queued from another point.
     fn enter_cartesian_space(&mut self, cart: Axes) {
-        let Some(k) = self.kin.as_mut() else {
+        let Some(k) = self.features.kin.as_mut() else {
             return;
         };
         k.space = Space::Cartesian;
@@ -599,13 +613,13 @@ impl GroupState {
         k.next = None;
         k.queue_end_stale = false;
         self.rest_at_keeping_queue(cart);
-        let Some(pos) = self.queue.iter().position(|c| cartesian(&c.plan)) else {
+        let Some(pos) = self.queued.commands.iter().position(|c| cartesian(&c.plan)) else {
             return;
         };
-        if self.queue[pos].start() != cart {
-            let moved = replanned(&self.queue[pos], &cart, &[0.0; AXES]);
+        if self.queued.commands[pos].start() != cart {
+            let moved = replanned(&self.queued.commands[pos], &cart, &[0.0; AXES]);
             if let Some((target, plan)) = moved {
-                let cmd = &mut self.queue[pos];
+                let cmd = &mut self.queued.commands[pos];
                 cmd.target = target;
                 cmd.plan = plan;
             }
@@ -617,7 +631,8 @@ impl GroupState {
     fn rebase_front(&mut self) {
         let start = self.actual_start();
         let Some(cmd) = self
-            .queue
+            .queued
+            .commands
             .iter_mut()
             .find(|c| !matches!(c.plan, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
         else {
@@ -631,20 +646,23 @@ impl GroupState {
     /// The group stands at Cartesian `cart` (its planner's position and queue end).
     fn rest_at(&mut self, cart: Axes) {
         self.rest_at_keeping_queue(cart);
-        self.queue_end = cart;
+        self.queued.end = cart;
     }
 
     /// The planner stands at `cart`; the queue end stays.
     fn rest_at_keeping_queue(&mut self, cart: Axes) {
-        self.pos = cart;
-        self.base = cart;
-        self.vel = [0.0; AXES];
+        self.exec.pos = cart;
+        self.exec.base = cart;
+        self.exec.vel = [0.0; AXES];
     }
 
     /// Where the front queued command actually starts: the end of the running commands
     /// (each planned from where the one before it ended), or where the group stands.
     fn actual_start(&self) -> Axes {
-        self.running.back().map_or(self.base, |r| r.cmd.target)
+        self.exec
+            .running
+            .back()
+            .map_or(self.exec.base, |r| r.cmd.target)
     }
 
     /// The pre-process callback returned `off` for the command `id`: a line is planned
@@ -658,15 +676,15 @@ impl GroupState {
             [0.0; AXES]
         };
         let start = self.actual_start();
-        let ld = self.cmd_index.ld;
-        let Some(pos) = self
-            .queue
-            .iter()
-            .position(|c| !matches!(c.plan, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_)))
+        let ld = self.queued.index.ld;
+        let Some(pos) =
+            self.queued.commands.iter().position(|c| {
+                !matches!(c.plan, Plan::Blend(_) | Plan::InPos(..) | Plan::Output(_))
+            })
         else {
             return;
         };
-        let cmd = &mut self.queue[pos];
+        let cmd = &mut self.queued.commands[pos];
         if pre_id(ld, cmd) != id {
             return;
         }
@@ -675,7 +693,7 @@ impl GroupState {
             cmd.plan = plan;
         }
         let done = pre_id(ld, cmd);
-        if let Some(k) = self.kin.as_mut() {
+        if let Some(k) = self.features.kin.as_mut() {
             k.pre_done = Some(done);
         }
     }

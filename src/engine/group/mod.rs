@@ -17,24 +17,29 @@
 //! abort, override, feed), `inpos.rs` (the in-position check), `status.rs` (motion
 //! status and the published parts), `homing.rs` (the group while `MCC_Home` drives it),
 //! `external.rs` (the door to an executor outside the card, e.g. the MC3B), `custom.rs`
-//! (the running custom motion's side of its callbacks' stage).
+//! (the running custom motion's side of its callbacks' stage), `mechanism.rs` (the mapping,
+//! the axes and the channels they command), `features.rs` (what a program attaches:
+//! executor, filters, kinematics, custom motion), `emitted.rs` (what a tick leaves for
+//! the engine). Each concern's state is a part of [`GroupState`] defined in its file.
 
-use super::command::{AxisMech, Command, Ctx, Output, Settings};
+use super::command::{AxisMech, Ctx, Settings};
 use super::track;
 use crate::config::{GroupDef, AXES};
 use crate::error::{McclError, McclResult};
 use crate::planner::Axes;
 use crate::vendor::consts as c;
-use std::collections::VecDeque;
 
 mod commanded;
 mod control;
 pub mod custom;
+mod emitted;
 mod execution;
 pub mod external;
+mod features;
 mod homing;
 mod inpos;
 pub mod kinematics;
+mod mechanism;
 mod position_and_speed;
 mod post;
 mod queue;
@@ -48,7 +53,6 @@ use inpos::InPosWait;
 pub use inpos::{InPosSettings, DEFAULT_INPOS_CHECK_MS, ERR_IN_POSITION};
 pub use post::{MAX_FILTER_PERIODS, MOVING_AVERAGE_TAPS, REVERSE_HISTORY};
 use queue::CommandIndex;
-use running::Running;
 
 /// Error record of software over-travel, + axis (docs/vendor-interface.md).
 pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0).code();
@@ -58,13 +62,13 @@ pub const ERR_OVER_TRAVEL: i32 = crate::error_record::ErrorRecord::OverTravel(0)
 /// joint moves, which run in continuous own time.
 pub const TIME_EPS: f64 = 1e-9;
 
-/// A group as the card runs it.
+/// A group as the card runs it: its identity and settings, and one part per concern,
+/// each in the file of that concern with the methods that keep it.
 ///
-/// `repr(C)` with the fields every tick reads first (status, flags, the running
-/// commands, the channels it commands, the rate, the positions), so a tick touches a few
-/// cache lines of each group instead of lines spread over its 1.8 KB. Among
-/// them, the published key and the settings (the compose mask first), which a tick that
-/// publishes reads too. What only queuing and status calls read comes after.
+/// `repr(C)` with what every tick reads first (status, homing, the execution, the rate,
+/// what it publishes, the channels it commands, the settings), so a tick touches a few
+/// cache lines of each group instead of lines spread over its 1.8 KB. What only queuing,
+/// checks and status calls read comes after.
 #[derive(Debug)]
 #[repr(C)]
 pub struct GroupState {
@@ -73,103 +77,29 @@ pub struct GroupState {
     /// Axes whose channels are being homed (`MCC_Home`), one bit each: the homing drives
     /// their positions and the group takes no command meanwhile.
     homing: u32,
-    mode: Mode,
-    /// Blending as the engine has reached it in the queue.
-    blend_on: bool,
-    single_block: bool,
-    single_block_credit: bool,
-    /// In-position check axes enabled by queued markers (used by the in-position check).
-    pub(in crate::engine) inpos_mask: u32,
-    /// Tracking error check per axis (`MCC_EnableTrackError` mask).
-    pub(in crate::engine) track_mask: u32,
-    /// Software over-travel check per axis (`MCC_SetOverTravelCheck`).
-    pub(in crate::engine) ot_check: [bool; AXES],
     /// Group index (0..95).
     pub(in crate::engine) index: usize,
-    /// Changes of the info other than its running command's phase and feed: a command
-    /// queued, taken from the queue, started or ended, the queue dropped, the error
-    /// record set or cleared, the running command's end or the offset changed
-    /// ([`GroupState::info_touched`]).
-    info_changes: u64,
-    /// The own time of the newest running command (the back of `running`), kept by every
-    /// writer of an own time, for the published key's check
-    /// ([`GroupState::info_changed`]): finding the back of the deque cost it 11
-    /// instructions a publication. Meaningless while nothing runs.
-    newest_own_time: f64,
-    /// The info last published, kept in test builds to check the key against it.
-    #[cfg(debug_assertions)]
-    pub(in crate::engine) published_info: Option<super::snapshot::Info>,
-    /// Set when the group's commands run outside the card (an MC3B: `external`).
-    external: Option<Box<dyn ExternalExecutor>>,
-    /// After-interpolation filters and reverse interpolation (`post.rs`); `None` until
-    /// the program uses one.
-    post: Option<Box<post::Post>>,
-    /// Robot kinematics (`MCC_SetKinematicTrans`, `kinematics.rs`): the channels carry
-    /// joints, the commands and positions are Cartesian.
-    kin: Option<Box<kinematics::Kinematics>>,
-    running: VecDeque<Running>,
-    queue: VecDeque<Command>,
-    /// The axes whose pulses command a channel, with the channel (set when the engine
-    /// starts, `engine::shared`: it depends on every group's mapping).
-    pub(in crate::engine) commanded: Commanded,
-    /// The info key last published and how long it holds ([`GroupState::info_changed`]).
-    published_key: status::PublishedKey,
+    /// The running commands, the positions and speeds they make (`execution.rs`).
+    exec: execution::Execution,
+    /// Hold, override and feed (`control.rs`).
+    rate: control::Rate,
+    /// What was published and when it must be again (`status.rs`).
+    publishing: status::Publishing,
+    /// The mapping, the axes' mechanism and the channels they command (`mechanism.rs`).
+    mech: mechanism::Mechanism,
     /// Settings that queued commands capture (`compose` first, which publishing reads).
-    pub(in crate::engine) settings: Settings,
-    /// Output changes the queue reached this tick (the engine makes them).
-    outputs: Vec<Output>,
-    /// Events for the trace's events file, `Some` only while tracing (`MCCL_TRACE`).
-    pub(in crate::engine) trace_notes: Option<Vec<super::note::Note>>,
-    /// Periods the status still reads `GMS_RUNNING` with nothing running (the vendor's
-    /// library shows one after the last command).
-    lag: u8,
-    /// The period that just ran read running for `lag` (see [`GroupState::tick`]).
-    lag_shown: bool,
-    /// A jog by pulses: its displacement and the periods it still keeps the group running.
-    jump: Option<(Axes, u8)>,
-    /// The feed speed of the last period (`MCC_GetCurFeedSpeed`).
-    feed_now: f64,
-    /// An override set since the last period and whether it is instant
-    /// (`MCC_OverrideSpeedEx`): in effect from the next period.
-    override_next: Option<(f64, bool)>,
-    /// The interpolation period, seconds.
-    period_s: f64,
-    /// Position of everything finished (user coordinates).
-    base: Axes,
-    /// Current command position (user coordinates).
-    pos: Axes,
-    vel: Axes,
-    /// Reference position = user position + offset (MCC_DefinePos moves the offset).
-    offset: Axes,
-    /// In-position check of the last command, while it runs.
-    inpos_wait: Option<InPosWait>,
-    /// The mapping and queue size the group runs with.
-    pub(in crate::engine) def: GroupDef,
-    /// Mechanism facts per axis (from the parameters in effect).
-    pub(in crate::engine) axes: [AxisMech; AXES],
-    /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
-    pub(in crate::engine) blend_queued: bool,
-    /// Override ratio, percent.
-    pub(in crate::engine) override_pct: f64,
-    /// `MCC_FixSpeed(TRUE)`: the override does not change speeds.
-    pub(in crate::engine) fixed_speed: bool,
-    /// End of the last queued command (user coordinates).
-    queue_end: Axes,
-    /// Command indices (`queue.rs`).
-    cmd_index: CommandIndex,
-    /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
-    pub(in crate::engine) track_limit: Axes,
-    /// In-position settings (`MCC_SetInPos*`).
-    pub(in crate::engine) inpos: InPosSettings,
-    /// `MCC_GetInPosStatus`: 0xFF per axis once in position, until the next command.
-    inpos_status: [u8; AXES],
-    /// Custom commands started and not cleaned up yet (`custom.rs`).
-    custom: custom::CustomSide,
-    /// Compensation pulses per axis ([`GroupState::read_compensation`]).
-    comp: [i32; AXES],
-    /// When the pulse counters of the commanded channels restart from 0
-    /// ([`GroupState::reset_motion`]).
-    rezero: Rezero,
+    settings: Settings,
+    /// The commands waiting and the queue's own state (`queue.rs`).
+    queued: queue::Queued,
+    /// Over-travel and tracking error checks (`position_and_speed.rs`).
+    limits: position_and_speed::Limits,
+    /// The in-position check (`inpos.rs`).
+    in_pos: inpos::InPosition,
+    /// What the program attached: an external executor, filters, kinematics, custom
+    /// motion (`features.rs`).
+    features: features::Features,
+    /// What a tick leaves for the engine: outputs and trace notes (`emitted.rs`).
+    emitted: emitted::Emitted,
 }
 
 /// When a reset group's position and its channels' pulse counters restart from 0.
@@ -190,59 +120,20 @@ impl GroupState {
     /// A stopped group at position 0.
     pub fn new(index: usize, def: GroupDef, axes: [AxisMech; AXES], period_s: f64) -> GroupState {
         GroupState {
-            index,
-            def,
-            axes,
-            commanded: Commanded::default(),
-            settings: Settings::default(),
-            blend_queued: false,
-            override_pct: 100.0,
-            fixed_speed: false,
-            // Grows as it fills (`enqueue` reserves fallibly): reserving the queue size up
-            // front (464 bytes a command) asked 44.5 GB for 96 queues of 1,000,000 and
-            // aborted the program under a memory limit.
-            queue: VecDeque::new(),
-            queue_end: [0.0; AXES],
-            running: VecDeque::new(),
-            base: [0.0; AXES],
-            pos: [0.0; AXES],
-            offset: [0.0; AXES],
-            vel: [0.0; AXES],
-            lag: 0,
-            lag_shown: false,
-            jump: None,
-            feed_now: 0.0,
-            override_next: None,
-            period_s,
-            mode: Mode::Normal,
-            single_block: false,
-            single_block_credit: false,
-            blend_on: false,
-            inpos_mask: 0,
-            error: 0,
-            cmd_index: CommandIndex::default(),
             status: c::GMS_STOP,
-            published_key: status::PublishedKey::NONE,
-            info_changes: 0,
-            newest_own_time: 0.0,
-            #[cfg(debug_assertions)]
-            published_info: None,
-            ot_check: [false; AXES],
-            track_mask: 0,
-            track_limit: [f64::INFINITY; AXES],
-            inpos: InPosSettings::for_axes(&axes),
-            inpos_wait: None,
-            // The vendor's library reads 255 for every axis right after init.
-            inpos_status: [0xFF; AXES],
-            outputs: Vec::new(),
-            external: None,
+            error: 0,
             homing: 0,
-            trace_notes: None,
-            custom: custom::CustomSide::default(),
-            rezero: Rezero::No,
-            comp: [0; AXES],
-            post: None,
-            kin: None,
+            index,
+            exec: execution::Execution::new(period_s),
+            rate: control::Rate::default(),
+            publishing: status::Publishing::default(),
+            in_pos: inpos::InPosition::for_axes(&axes),
+            mech: mechanism::Mechanism::new(def, axes),
+            settings: Settings::default(),
+            queued: queue::Queued::default(),
+            limits: position_and_speed::Limits::default(),
+            features: features::Features::default(),
+            emitted: emitted::Emitted::default(),
         }
     }
 
@@ -259,17 +150,51 @@ impl GroupState {
 
     /// The in-position settings (`MCC_SetInPos*`).
     pub fn inpos_settings(&self) -> &InPosSettings {
-        &self.inpos
+        &self.in_pos.settings
     }
 
     /// The in-position settings, to change: the next check uses them.
     pub fn inpos_settings_mut(&mut self) -> &mut InPosSettings {
-        &mut self.inpos
+        &mut self.in_pos.settings
+    }
+
+    /// The tracking error limit of axis `a`, UU, when its check is on
+    /// (`MCC_EnableTrackError`).
+    pub fn checked_track_limit(&self, a: usize) -> Option<f64> {
+        (self.limits.track_mask & (1 << a) != 0).then(|| self.limits.track_limit[a])
+    }
+
+    /// The channels the group's axes command, as every group's mapping decides
+    /// (`engine::shared`).
+    pub(in crate::engine) fn set_commanded(&mut self, c: Commanded) {
+        self.mech.commanded = c;
+    }
+
+    /// Starts noting events for the trace's events file.
+    pub(in crate::engine) fn start_notes(&mut self) {
+        self.emitted.trace_notes = Some(Vec::new());
+    }
+
+    /// The events noted since they were last taken, while tracing.
+    pub(in crate::engine) fn notes_mut(&mut self) -> Option<&mut Vec<super::note::Note>> {
+        self.emitted.trace_notes.as_mut()
+    }
+
+    /// The info last published (test builds, to check the published key against it).
+    #[cfg(debug_assertions)]
+    pub(in crate::engine) fn published_info(&self) -> Option<&super::snapshot::Info> {
+        self.publishing.info.as_ref()
+    }
+
+    /// Keeps the info just published (test builds).
+    #[cfg(debug_assertions)]
+    pub(in crate::engine) fn keep_published_info(&mut self, info: super::snapshot::Info) {
+        self.publishing.info = Some(info);
     }
 
     /// The tracking error limit of axis `a`, UU.
     pub fn track_limit(&self, a: usize) -> f64 {
-        self.track_limit[a]
+        self.limits.track_limit[a]
     }
 
     /// The group's slot (0..95).
@@ -279,55 +204,56 @@ impl GroupState {
 
     /// The mapping and queue size the group runs with.
     pub fn def(&self) -> &GroupDef {
-        &self.def
+        &self.mech.def
     }
 
     /// Mechanism facts per axis.
     pub fn axes(&self) -> &[AxisMech; AXES] {
-        &self.axes
+        &self.mech.axes
     }
 
     /// Sets the unit (`UNIT_MM`, `UNIT_INCH`) the group's axes take from the next reset.
     pub fn set_unit(&mut self, unit: std::os::raw::c_int) {
-        self.def.unit = unit;
+        self.mech.def.unit = unit;
     }
 
     /// Turns the software over-travel check on or off per axis; an axis the group lacks
     /// stays off.
     pub fn set_over_travel_check(&mut self, on: [bool; AXES]) {
-        self.ot_check = std::array::from_fn(|i| on[i] && self.axes[i].channel.is_some());
+        self.limits.over_travel =
+            std::array::from_fn(|i| on[i] && self.mech.axes[i].channel.is_some());
     }
 
     /// The software over-travel check per axis.
     pub fn over_travel_check(&self) -> [bool; AXES] {
-        self.ot_check
+        self.limits.over_travel
     }
 
     /// Whether blending is on as the end of the queue will see it (`MCC_CheckBlend`).
     pub fn blend_queued(&self) -> bool {
-        self.blend_queued
+        self.queued.blend
     }
 
     /// The override ratio, percent.
     pub fn override_pct(&self) -> f64 {
-        self.override_pct
+        self.rate.override_pct
     }
 
     /// Back to the state right after init (`MCC_ResetMotion`, `MCC_UpdateParam`).
     pub fn reset(&mut self, axes: [AxisMech; AXES]) {
-        let external = self.external.take();
-        let notes = self.trace_notes.take();
-        let custom = std::mem::take(&mut self.custom);
-        let commanded = self.commanded;
-        *self = GroupState::new(self.index, self.def, axes, self.period_s);
-        self.trace_notes = notes;
-        self.custom = custom;
+        let external = self.features.external.take();
+        let notes = self.emitted.trace_notes.take();
+        let custom = std::mem::take(&mut self.features.custom);
+        let commanded = self.mech.commanded;
+        *self = GroupState::new(self.index, self.mech.def, axes, self.exec.period_s);
+        self.emitted.trace_notes = notes;
+        self.features.custom = custom;
         // The channels it commands depend on every group's mapping, which a reset keeps.
-        self.commanded = commanded;
+        self.mech.commanded = commanded;
         // An MC3B group stays on its device, rezeroed.
         if let Some(mut x) = external {
             x.rezero();
-            self.external = Some(x);
+            self.features.external = Some(x);
             self.external_positions();
         }
     }
@@ -341,11 +267,11 @@ impl GroupState {
     /// where it stopped, with one more running period, until its next command starts
     /// from 0.
     pub fn reset_motion(&mut self) {
-        if self.mode == Mode::Aborting && self.running.is_empty() {
+        if self.rate.mode == Mode::Aborting && self.exec.running.is_empty() {
             // An abort at once has stopped it and is not finished yet: the vendor's
             // library then keeps its position (measured, jog_pulse_after) and restarts
             // only the command indices.
-            self.cmd_index = CommandIndex::default();
+            self.queued.index = CommandIndex::default();
             self.info_touched();
             return;
         }
@@ -354,22 +280,22 @@ impl GroupState {
         self.homing = 0;
         self.abort_now(true);
         // Stopped by a reset, not an abort: nothing waits for it to finish.
-        self.mode = Mode::Normal;
+        self.rate.mode = Mode::Normal;
         self.clear_error();
-        self.override_pct = 100.0;
-        self.override_next = None;
-        self.cmd_index = CommandIndex::default();
-        self.offset = [0.0; AXES];
-        self.queue_end = [0.0; AXES];
-        if let Some(x) = self.external.as_mut() {
+        self.rate.override_pct = 100.0;
+        self.rate.override_next = None;
+        self.queued.index = CommandIndex::default();
+        self.exec.offset = [0.0; AXES];
+        self.queued.end = [0.0; AXES];
+        if let Some(x) = self.features.external.as_mut() {
             x.rezero();
         }
         if busy {
             // `base` keeps the stop point, where the group stays until its next start.
-            self.rezero = Rezero::OnStart;
+            self.exec.rezero = Rezero::OnStart;
         } else {
-            self.inpos_status = [0xFF; AXES];
-            self.rezero = Rezero::NextPeriod;
+            self.in_pos.status = [0xFF; AXES];
+            self.exec.rezero = Rezero::NextPeriod;
         }
         self.info_touched();
         self.update_status();
@@ -377,16 +303,16 @@ impl GroupState {
 
     /// A group made while the card runs starts where its channels' pulse counts are.
     pub fn start_at_channels(&mut self, cards: &[[crate::machine::Channel; AXES]]) {
-        for (i, a) in self.axes.iter().enumerate() {
+        for (i, a) in self.mech.axes.iter().enumerate() {
             let Some((card, ch)) = a.channel else {
                 continue;
             };
             if let Some(chan) = cards.get(card).and_then(|c| c.get(ch)) {
                 if a.factor != 0.0 {
                     let p = chan.command_pulses() as f64 / a.factor;
-                    self.pos[i] = p;
-                    self.base[i] = p;
-                    self.queue_end[i] = p;
+                    self.exec.pos[i] = p;
+                    self.exec.base[i] = p;
+                    self.queued.end[i] = p;
                 }
             }
         }
@@ -397,16 +323,16 @@ impl GroupState {
     pub fn ctx(&self) -> Ctx<'_> {
         Ctx {
             settings: &self.settings,
-            axes: &self.axes,
-            from: self.queue_end,
-            offset: self.offset,
-            period_s: self.period_s,
+            axes: &self.mech.axes,
+            from: self.queued.end,
+            offset: self.exec.offset,
+            period_s: self.exec.period_s,
         }
     }
 
     /// The interpolation period, ms.
     pub fn period_ms(&self) -> f64 {
-        self.period_s * 1000.0
+        self.exec.period_s * 1000.0
     }
 
     /// Motion status (`GMS_*`).
@@ -417,7 +343,7 @@ impl GroupState {
     /// Records an event for the trace (nothing but this check when not tracing).
     #[inline]
     fn note(&mut self, n: super::note::Note) {
-        if let Some(v) = self.trace_notes.as_mut() {
+        if let Some(v) = self.emitted.trace_notes.as_mut() {
             v.push(n);
         }
     }
@@ -425,8 +351,8 @@ impl GroupState {
     /// Notes the running commands as cut short (they are about to be dropped, or the
     /// system closes).
     pub(crate) fn note_stopped(&mut self) {
-        if let Some(v) = self.trace_notes.as_mut() {
-            for r in &self.running {
+        if let Some(v) = self.emitted.trace_notes.as_mut() {
+            for r in &self.exec.running {
                 v.push(super::note::Note::End {
                     index: r.cmd.index,
                     ctype: r.cmd.ctype,
@@ -476,27 +402,27 @@ impl GroupState {
 
     /// The current position (user coordinates).
     pub fn pos(&self) -> Axes {
-        self.pos
+        self.exec.pos
     }
 
     /// The current reference position of axis `i` (user position + offset).
     pub fn ref_pos(&self, i: usize) -> f64 {
-        self.pos[i] + self.offset[i]
+        self.exec.pos[i] + self.exec.offset[i]
     }
 
     /// `MCC_DefinePos`: the current position of `axis` becomes `value` (only when stopped;
     /// `value` must be a position of the axis, `config::range::position`).
     pub fn define_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
-        crate::config::range::position(value, self.axes[axis].factor)?;
-        if self.busy() || self.kin.is_some() {
+        crate::config::range::position(value, self.mech.axes[axis].factor)?;
+        if self.busy() || self.features.kin.is_some() {
             return Err(McclError::NotFinished);
         }
-        let shift = value - self.pos[axis];
-        self.offset[axis] -= shift;
+        let shift = value - self.exec.pos[axis];
+        self.exec.offset[axis] -= shift;
         self.info_touched();
-        self.pos[axis] = value;
-        self.base[axis] = value;
-        self.queue_end[axis] = value;
+        self.exec.pos[axis] = value;
+        self.exec.base[axis] = value;
+        self.queued.end[axis] = value;
         Ok(())
     }
 
@@ -504,14 +430,17 @@ impl GroupState {
     /// coordinates, the offset kept (so the pulse count becomes it too); only when
     /// stopped, and `value` a position of the axis.
     pub fn set_pos(&mut self, axis: usize, value: f64) -> McclResult<()> {
-        crate::config::range::position(value, self.axes[axis].factor)?;
-        crate::config::range::position(value + self.offset[axis], self.axes[axis].factor)?;
-        if self.busy() || self.kin.is_some() {
+        crate::config::range::position(value, self.mech.axes[axis].factor)?;
+        crate::config::range::position(
+            value + self.exec.offset[axis],
+            self.mech.axes[axis].factor,
+        )?;
+        if self.busy() || self.features.kin.is_some() {
             return Err(McclError::NotFinished);
         }
-        self.pos[axis] = value;
-        self.base[axis] = value;
-        self.queue_end[axis] = value;
+        self.exec.pos[axis] = value;
+        self.exec.base[axis] = value;
+        self.queued.end[axis] = value;
         self.info_touched();
         Ok(())
     }
@@ -532,15 +461,15 @@ impl GroupState {
     /// `MCC_DefinePosHere`: the command position of axis `i` becomes the position the card
     /// has output (its pulse count in UU); only when stopped.
     pub fn sync_to_output(&mut self, i: usize) -> McclResult<()> {
-        if self.busy() || self.kin.is_some() {
+        if self.busy() || self.features.kin.is_some() {
             return Err(McclError::NotFinished);
         }
-        let f = self.axes[i].factor;
+        let f = self.mech.axes[i].factor;
         if f != 0.0 {
-            let here = self.pulses(i) as f64 / f - self.offset[i];
-            self.pos[i] = here;
-            self.base[i] = here;
-            self.queue_end[i] = here;
+            let here = self.pulses(i) as f64 / f - self.exec.offset[i];
+            self.exec.pos[i] = here;
+            self.exec.base[i] = here;
+            self.queued.end[i] = here;
         }
         Ok(())
     }
@@ -552,18 +481,18 @@ impl GroupState {
     /// Turns the check on for the axes of `mask` (a valid axis mask, which the caller
     /// checks), besides those already on.
     pub fn enable_track_error(&mut self, mask: u32) {
-        self.track_mask |= mask;
+        self.limits.track_mask |= mask;
     }
 
     /// Turns the check off for every axis.
     pub fn disable_track_error(&mut self) {
-        self.track_mask = 0;
+        self.limits.track_mask = 0;
     }
 
     /// `GROUP_PARAMETER_ERR` unless the group has `axis` (as the vendor's library answers
     /// for an axis past the group's).
     pub fn own_axis(&self, axis: usize) -> McclResult<()> {
-        match self.axes.get(axis) {
+        match self.mech.axes.get(axis) {
             Some(a) if a.channel.is_some() => Ok(()),
             _ => Err(McclError::Group),
         }
@@ -573,8 +502,8 @@ impl GroupState {
     /// of the axis within the position range ("Ranges"); an error changes nothing.
     pub fn set_track_error_limit(&mut self, axis: usize, limit: f64) -> McclResult<()> {
         self.own_axis(axis)?;
-        crate::config::range::position(limit, self.axes[axis].factor)?;
-        self.track_limit[axis] = limit;
+        crate::config::range::position(limit, self.mech.axes[axis].factor)?;
+        self.limits.track_limit[axis] = limit;
         Ok(())
     }
 }

@@ -8,10 +8,32 @@ use crate::config::AXES;
 use crate::engine::command::Plan;
 use crate::planner::Axes;
 
+/// The group's supervision limits: software over-travel and tracking error.
+#[derive(Debug)]
+pub(super) struct Limits {
+    /// Software over-travel check per axis (`MCC_SetOverTravelCheck`).
+    pub(super) over_travel: [bool; AXES],
+    /// Tracking error check per axis (`MCC_EnableTrackError` mask).
+    pub(super) track_mask: u32,
+    /// Tracking error limit per axis, UU (`MCC_SetTrackErrorLimit`).
+    pub(super) track_limit: Axes,
+}
+
+impl Default for Limits {
+    /// No check; tracking limits infinite until set.
+    fn default() -> Limits {
+        Limits {
+            over_travel: [false; AXES],
+            track_mask: 0,
+            track_limit: [f64::INFINITY; AXES],
+        }
+    }
+}
+
 impl GroupState {
     /// The command position: the base plus what every running command moved.
     pub(super) fn compute_pos(&mut self) {
-        if let (1, Some(r)) = (self.running.len(), self.running.front()) {
+        if let (1, Some(r)) = (self.exec.running.len(), self.exec.running.front()) {
             let (s, p) = match (&r.progress, &r.cmd.plan) {
                 // A general motion (most periods): its path's start and point, asked
                 // directly.
@@ -22,13 +44,17 @@ impl GroupState {
             };
             for i in 0..AXES {
                 // Both sides computed, one taken: a select the compiler pairs up.
-                let moved = self.base[i] + (p[i] - s[i]);
-                self.pos[i] = if self.base[i] == s[i] { p[i] } else { moved };
+                let moved = self.exec.base[i] + (p[i] - s[i]);
+                self.exec.pos[i] = if self.exec.base[i] == s[i] {
+                    p[i]
+                } else {
+                    moved
+                };
             }
             return;
         }
-        let mut pos = self.base;
-        for r in &self.running {
+        let mut pos = self.exec.base;
+        for r in &self.exec.running {
             if !r.cmd.is_motion() {
                 continue;
             }
@@ -38,7 +64,7 @@ impl GroupState {
                 pos[i] += p[i] - s[i];
             }
         }
-        self.pos = pos;
+        self.exec.pos = pos;
     }
 
     /// The speeds: the last period's distance over the period for the axes that moved
@@ -48,18 +74,25 @@ impl GroupState {
         if mask == u32::MAX && zero == 0 && dt > 0.0 {
             // Every axis (a general motion's period): one straight pass, which the
             // compiler turns into paired divisions.
-            for ((v, p), b) in self.vel.iter_mut().zip(&self.pos).zip(before) {
+            for ((v, p), b) in self.exec.vel.iter_mut().zip(&self.exec.pos).zip(before) {
                 *v = (p - b) / dt;
             }
         } else {
             self.compute_vel_masked(before, dt, mask, zero);
         }
-        self.feed_now = self.feed_speed();
+        self.exec.feed_now = self.feed_speed();
     }
 
     /// [`GroupState::compute_vel`]'s speeds for the axes of `mask` and `zero`.
     fn compute_vel_masked(&mut self, before: &Axes, dt: f64, mask: u32, zero: u32) {
-        for (i, ((v, p), b)) in self.vel.iter_mut().zip(&self.pos).zip(before).enumerate() {
+        for (i, ((v, p), b)) in self
+            .exec
+            .vel
+            .iter_mut()
+            .zip(&self.exec.pos)
+            .zip(before)
+            .enumerate()
+        {
             if zero & (1 << i) != 0 {
                 *v = 0.0;
             } else if mask & (1 << i) != 0 && dt > 0.0 {
@@ -72,23 +105,23 @@ impl GroupState {
     /// otherwise.
     #[inline]
     fn feed_speed(&self) -> f64 {
-        match self.running.back() {
+        match self.exec.running.back() {
             // Stopped by an error: the last period's feed speed stays (`vel_hold_idle`).
-            None if self.error != 0 => self.feed_now,
+            None if self.error != 0 => self.exec.feed_now,
             None => 0.0,
             Some(r) => match (&r.progress, &r.cmd.plan) {
                 // The last ending period of a PtP continued after a hold let it arrive
                 // keeps its speeds but reads no feed (`mix_16`).
                 (Progress::Axes { .. }, _) if r.quiet_end => 0.0,
-                (Progress::Axes { master, .. }, _) => self.vel[*master].abs(),
+                (Progress::Axes { master, .. }, _) => self.exec.vel[*master].abs(),
                 (Progress::Path { track, sync: None }, Plan::Path(m)) if m.path.aux_only() => {
                     let _ = track;
                     let lead = m.path.lead_axis();
-                    self.vel[lead].abs()
+                    self.exec.vel[lead].abs()
                 }
-                (Progress::Path { sync: Some(i), .. }, _) => self.vel[*i].abs(),
+                (Progress::Path { sync: Some(i), .. }, _) => self.exec.vel[*i].abs(),
                 (Progress::Path { .. }, _) => {
-                    crate::planner::compose::composed_speed(&self.vel, self.settings.compose)
+                    crate::planner::compose::composed_speed(&self.exec.vel, self.settings.compose)
                 }
                 _ => 0.0,
             },
@@ -101,13 +134,13 @@ impl GroupState {
     /// `MCC_ClearError`; a move back into the zone is allowed.
     pub(super) fn check_over_travel(&mut self, before: &Axes) {
         for i in 0..AXES {
-            if !self.ot_check[i] || self.axes[i].channel.is_none() {
+            if !self.limits.over_travel[i] || self.mech.axes[i].channel.is_none() {
                 continue;
             }
-            let (p, b) = (self.pos[i], before[i]);
-            let out = (p > self.axes[i].high && p > b) || (p < self.axes[i].low && p < b);
+            let (p, b) = (self.exec.pos[i], before[i]);
+            let out = (p > self.mech.axes[i].high && p > b) || (p < self.mech.axes[i].low && p < b);
             if out {
-                self.pos = *before;
+                self.exec.pos = *before;
                 self.stop_here();
                 self.set_error(ERR_OVER_TRAVEL + i as i32);
                 return;

@@ -201,7 +201,7 @@ impl Post {
 
 impl GroupState {
     fn post_mut(&mut self) -> &mut Post {
-        self.post.get_or_insert_with(Box::default)
+        self.features.post.get_or_insert_with(Box::default)
     }
 
     /// `MCC_EnableAccDecAfterIPO` (`Some(L)`: acc/dec over `L` periods) and its
@@ -239,14 +239,14 @@ impl GroupState {
     /// index)`, taken (the engine thread makes it without any lock held).
     pub fn take_reverse_call(&mut self) -> Option<(usize, i32, i32, i32)> {
         let index = i32::try_from(self.index).unwrap_or(i32::MAX);
-        let r = &mut self.post.as_mut()?.reverse;
+        let r = &mut self.features.post.as_mut()?.reverse;
         let (cmd, time) = r.due.take()?;
         (r.routine != 0).then_some((r.routine, index, cmd, time))
     }
 
     /// The INTERP routine's return value, applied at the next tick.
     pub fn set_reverse_decision(&mut self, decision: i32) {
-        if let Some(p) = self.post.as_mut() {
+        if let Some(p) = self.features.post.as_mut() {
             if p.reverse.enabled {
                 p.reverse.decision = decision;
             }
@@ -255,7 +255,8 @@ impl GroupState {
 
     /// The filters between the reference and the output, when they have a stage.
     fn output_filters(&self) -> Option<&Filters> {
-        self.post
+        self.features
+            .post
             .as_ref()
             .map(|p| &p.filters)
             .filter(|f| !f.stages.is_empty())
@@ -266,8 +267,8 @@ impl GroupState {
     #[inline(never)]
     pub(super) fn out_pos(&self) -> Axes {
         match self.output_filters() {
-            Some(f) => std::array::from_fn(|i| self.pos[i] - f.lag[i]),
-            None => self.pos,
+            Some(f) => std::array::from_fn(|i| self.exec.pos[i] - f.lag[i]),
+            None => self.exec.pos,
         }
     }
 
@@ -281,7 +282,7 @@ impl GroupState {
     pub(super) fn out_vel(&self) -> Axes {
         match self.output_filters() {
             Some(f) => f.vel,
-            None => self.vel,
+            None => self.exec.vel,
         }
     }
 
@@ -290,19 +291,19 @@ impl GroupState {
     pub(super) fn out_feed(&self) -> f64 {
         match self.output_filters() {
             Some(f) => crate::planner::compose::composed_speed(&f.vel, self.settings.compose),
-            None => self.feed_now,
+            None => self.exec.feed_now,
         }
     }
 
     /// Whether the output still moves after the commands (a filter settling, the group
     /// behind its path's front): the motion status stays running.
     pub(super) fn post_active(&self) -> bool {
-        self.post.as_ref().is_some_and(|p| p.active())
+        self.features.post.as_ref().is_some_and(|p| p.active())
     }
 
     /// A stop (`stop_here`): where the group stands becomes the front of its path.
     pub(super) fn post_stopped(&mut self) {
-        if let Some(p) = self.post.as_mut() {
+        if let Some(p) = self.features.post.as_mut() {
             p.reverse.truncate();
         }
     }
@@ -312,31 +313,31 @@ impl GroupState {
     #[cold]
     #[inline(never)]
     pub(super) fn tick_post(&mut self, dt: f64) {
-        let Some(mut post) = self.post.take() else {
+        let Some(mut post) = self.features.post.take() else {
             return;
         };
-        let before = self.pos;
+        let before = self.exec.pos;
         if self.reverse_step(&mut post.reverse, before) {
-            self.vel = if dt > 0.0 {
-                std::array::from_fn(|i| (self.pos[i] - before[i]) / dt)
+            self.exec.vel = if dt > 0.0 {
+                std::array::from_fn(|i| (self.exec.pos[i] - before[i]) / dt)
             } else {
                 ZERO
             };
         } else {
-            // The usual tick (`self.post` is None meanwhile, so it does not come back
+            // The usual tick (`self.features.post` is None meanwhile, so it does not come back
             // here), then the front of the path moves on.
             self.tick(dt);
             let r = &mut post.reverse;
-            let idle = self.running.is_empty() && self.pos == before;
+            let idle = self.exec.running.is_empty() && self.exec.pos == before;
             if r.enabled && idle {
                 // Nothing executed: nothing to record (the front stays where it is).
             } else if r.enabled {
-                r.hist.push_back(self.pos);
+                r.hist.push_back(self.exec.pos);
                 if r.hist.len() > REVERSE_HISTORY {
                     r.hist.pop_front();
                 }
                 r.cursor = r.hist.len() - 1;
-                let cmd = self.running.back().map_or(-1, |c| c.cmd.index);
+                let cmd = self.exec.running.back().map_or(-1, |c| c.cmd.index);
                 if cmd != r.cmd {
                     r.cmd = cmd;
                     r.ticks = 0;
@@ -347,12 +348,13 @@ impl GroupState {
                 r.cursor = 0;
             }
         }
-        let delta: Axes = std::array::from_fn(|i| self.pos[i] - before[i]);
+        let delta: Axes = std::array::from_fn(|i| self.exec.pos[i] - before[i]);
         post.filters.step(delta, dt);
         let r = &mut post.reverse;
-        r.due = (r.enabled && r.routine != 0 && (!self.running.is_empty() || r.behind_front()))
-            .then_some((r.cmd, r.ticks));
-        self.post = Some(post);
+        r.due =
+            (r.enabled && r.routine != 0 && (!self.exec.running.is_empty() || r.behind_front()))
+                .then_some((r.cmd, r.ticks));
+        self.features.post = Some(post);
         self.update_status();
     }
 
@@ -373,16 +375,16 @@ impl GroupState {
             }
             // Reverse or pause only a group that runs its commands normally and has
             // something to reverse from.
-            let running = !self.running.is_empty() || r.hist.len() > 1;
-            if decision > 0 || self.mode != Mode::Normal || !running {
+            let running = !self.exec.running.is_empty() || r.hist.len() > 1;
+            if decision > 0 || self.rate.mode != Mode::Normal || !running {
                 return false;
             }
-        } else if self.mode == Mode::Aborting {
+        } else if self.rate.mode == Mode::Aborting {
             // An abort behind the front stops where the group stands.
             self.stop_here();
             r.truncate();
             return true;
-        } else if matches!(self.mode, Mode::Held | Mode::HoldAtBlockEnd) {
+        } else if matches!(self.rate.mode, Mode::Held | Mode::HoldAtBlockEnd) {
             return true;
         }
         // Disabled behind the front: back to the front, then on with the commands.
@@ -393,7 +395,7 @@ impl GroupState {
             r.cursor = (r.cursor + 1).min(r.hist.len().saturating_sub(1));
         }
         if let Some(p) = r.hist.get(r.cursor) {
-            self.pos = *p;
+            self.exec.pos = *p;
         }
         true
     }

@@ -5,7 +5,28 @@ use super::GroupState;
 use super::Mode;
 use crate::engine::command::{Command, Output, Plan};
 use crate::error::{McclError, McclResult};
+use crate::planner::Axes;
 use crate::vendor::consts as c;
+use std::collections::VecDeque;
+
+/// The commands waiting to run and the queue's own state.
+#[derive(Debug, Default)]
+pub(super) struct Queued {
+    /// The commands, oldest first. Grows as it fills (`enqueue` reserves fallibly):
+    /// reserving the queue size up front (464 bytes a command) asked 44.5 GB for 96
+    /// queues of 1,000,000 and aborted the program under a memory limit.
+    pub(super) commands: VecDeque<Command>,
+    /// End of the last queued command (user coordinates).
+    pub(super) end: Axes,
+    /// Command indices.
+    pub(super) index: CommandIndex,
+    /// Single block mode (`MCC_EnableSingleBlock`).
+    pub(super) single_block: bool,
+    /// Single block: one command may start.
+    pub(super) single_block_credit: bool,
+    /// Blending as the end of the queue will see it (`MCC_CheckBlend`).
+    pub(super) blend: bool,
+}
 
 /// Commands a queue grows by at least when it is full (doubling from there on).
 const QUEUE_MIN_GROWTH: usize = 16;
@@ -38,17 +59,17 @@ impl Default for CommandIndex {
 impl GroupState {
     /// Commands waiting in the queue (not counting those running).
     pub fn queued(&self) -> usize {
-        self.queue.len()
+        self.queued.commands.len()
     }
 
     /// Whether a command runs (a jog by pulses included).
     pub fn commands_running(&self) -> bool {
-        !self.running.is_empty() || self.jump.is_some()
+        !self.exec.running.is_empty() || self.exec.jump.is_some()
     }
 
     /// Whether the group has anything to do.
     pub fn busy(&self) -> bool {
-        self.status != c::GMS_STOP || !self.queue.is_empty()
+        self.status != c::GMS_STOP || !self.queued.commands.is_empty()
     }
 
     /// Queues a command; returns its index. `ABORT_NOT_FINISH_ERR` while an abort is
@@ -58,10 +79,10 @@ impl GroupState {
         if self.homing != 0 || crate::engine::custom::in_callback() == Some(self.index) {
             return Err(McclError::NotAccepted);
         }
-        if let Some(x) = &self.external {
-            x.check(&cmd, &self.axes)?;
+        if let Some(x) = &self.features.external {
+            x.check(&cmd, &self.mech.axes)?;
         }
-        if self.mode == Mode::Aborting {
+        if self.rate.mode == Mode::Aborting {
             return Err(McclError::AbortNotFinished);
         }
         // With an error record the vendor's library refuses every command until
@@ -69,26 +90,26 @@ impl GroupState {
         if self.error != 0 {
             return Err(McclError::RunTime);
         }
-        if self.queue.len() >= self.def.queue_size {
+        if self.queued.commands.len() >= self.mech.def.queue_size {
             // The vendor's library counts the refused command's index too.
             self.skip_command_index();
             return Err(McclError::BufferFull);
         }
         // Memory the queue cannot get is a full queue: an error code, never an abort.
-        if self.queue.len() == self.queue.capacity() {
-            let room = self.def.queue_size - self.queue.len();
-            let want = self.queue.len().max(QUEUE_MIN_GROWTH).min(room);
-            if self.queue.try_reserve_exact(want).is_err() {
+        if self.queued.commands.len() == self.queued.commands.capacity() {
+            let room = self.mech.def.queue_size - self.queued.commands.len();
+            let want = self.queued.commands.len().max(QUEUE_MIN_GROWTH).min(room);
+            if self.queued.commands.try_reserve_exact(want).is_err() {
                 return Err(McclError::BufferFull);
             }
         }
-        cmd.index = self.cmd_index.next;
-        if self.cmd_index.auto {
-            self.cmd_index.next = self.cmd_index.next.wrapping_add(1) & 0x7FFF_FFFF;
+        cmd.index = self.queued.index.next;
+        if self.queued.index.auto {
+            self.queued.index.next = self.queued.index.next.wrapping_add(1) & 0x7FFF_FFFF;
         }
         match cmd.plan {
-            Plan::Blend(on) => self.blend_queued = on,
-            _ => self.queue_end = cmd.target,
+            Plan::Blend(on) => self.queued.blend = on,
+            _ => self.queued.end = cmd.target,
         }
         crate::fault::point("enqueue");
         let idx = cmd.index;
@@ -99,7 +120,7 @@ impl GroupState {
         {
             return Ok(idx);
         }
-        self.queue.push_back(cmd);
+        self.queued.commands.push_back(cmd);
         self.info_touched();
         self.update_status();
         Ok(idx)
@@ -107,63 +128,63 @@ impl GroupState {
 
     /// The next index is used up without a command.
     fn skip_command_index(&mut self) {
-        if self.cmd_index.auto {
-            self.cmd_index.next = self.cmd_index.next.wrapping_add(1) & 0x7FFF_FFFF;
+        if self.queued.index.auto {
+            self.queued.index.next = self.queued.index.next.wrapping_add(1) & 0x7FFF_FFFF;
         }
     }
 
     /// Index management (`MCC_ResetCommandIndex`, `MCC_SetCommandIndex`).
     pub fn set_command_index(&mut self, index: i32, manual: bool) {
-        self.cmd_index.next = index;
-        self.cmd_index.auto = !manual;
+        self.queued.index.next = index;
+        self.queued.index.auto = !manual;
     }
 
     /// The index the next queued command gets.
     pub fn next_command_index(&self) -> i32 {
-        self.cmd_index.next
+        self.queued.index.next
     }
 
     /// The index of the last command started (`MCC_GetCommandIndex`, as the vendor's
     /// library answers: a command queued and not started yet does not count; 0 before
     /// any).
     pub fn last_command_index(&self) -> i32 {
-        self.cmd_index.last_started.map_or(0, |(i, _)| i)
+        self.queued.index.last_started.map_or(0, |(i, _)| i)
     }
 
     /// `MCC_ResetCommandIndexLD`.
     pub fn reset_ld_index(&mut self) {
-        self.cmd_index.ld = 0;
+        self.queued.index.ld = 0;
     }
 
     /// Single-block mode: after each command the group waits for `MCC_RunSingleBlock`.
     pub fn set_single_block(&mut self, on: bool) {
-        self.single_block = on;
-        self.single_block_credit = false;
+        self.queued.single_block = on;
+        self.queued.single_block_credit = false;
         self.update_status();
     }
 
     /// `MCC_RunSingleBlock`: lets one more command run.
     pub fn run_single_block(&mut self) -> McclResult<()> {
-        if !self.single_block {
+        if !self.queued.single_block {
             return Err(McclError::NotAccepted);
         }
-        self.single_block_credit = true;
+        self.queued.single_block_credit = true;
         self.update_status();
         Ok(())
     }
 
     /// `MCC_EnableBlendInstant`: switches blending now, not through the queue.
     pub fn set_blend_now(&mut self, on: bool) {
-        self.blend_on = on;
-        self.blend_queued = on;
+        self.exec.blend_on = on;
+        self.queued.blend = on;
     }
 
     /// Whether a new command may start now.
     pub(super) fn may_start(&self) -> bool {
         self.error == 0
-            && matches!(self.mode, Mode::Normal)
-            && (!self.single_block || self.single_block_credit)
-            && !self.inpos_wait.is_some_and(|w| w.blocks())
+            && matches!(self.rate.mode, Mode::Normal)
+            && (!self.queued.single_block || self.queued.single_block_credit)
+            && !self.in_pos.wait.is_some_and(|w| w.blocks())
             && self.kinematics_ready()
     }
 
@@ -171,22 +192,22 @@ impl GroupState {
     /// command to run. A blending switch runs as a command of one period (the vendor's
     /// library shows it as the current command) and takes effect as it starts.
     pub(super) fn pop_next(&mut self) -> Option<Command> {
-        while let Some(front) = self.queue.front() {
+        while let Some(front) = self.queued.commands.front() {
             match front.plan {
                 Plan::Blend(on) => {
-                    self.blend_on = on;
+                    self.exec.blend_on = on;
                     return self.pop_queued();
                 }
                 Plan::InPos(on, mask) => {
                     if on {
-                        self.inpos_mask |= mask;
+                        self.in_pos.mask |= mask;
                     } else {
-                        self.inpos_mask &= !mask;
+                        self.in_pos.mask &= !mask;
                     }
                     // A command of one period too (`COMMAND_INFO` types 11 and 12).
                     return self.pop_queued();
                 }
-                Plan::Output(o) => self.outputs.push(o),
+                Plan::Output(o) => self.emitted.outputs.push(o),
                 _ => return self.pop_queued(),
             }
             self.pop_queued();
@@ -196,7 +217,7 @@ impl GroupState {
 
     /// Takes the front of the queue (its length is part of the published info).
     pub(super) fn pop_queued(&mut self) -> Option<Command> {
-        let cmd = self.queue.pop_front();
+        let cmd = self.queued.commands.pop_front();
         if cmd.is_some() {
             self.info_touched();
         }
@@ -205,8 +226,8 @@ impl GroupState {
 
     /// Drops every queued command (its length is part of the published info).
     pub(super) fn clear_queue(&mut self) {
-        if !self.queue.is_empty() {
-            self.queue.clear();
+        if !self.queued.commands.is_empty() {
+            self.queued.commands.clear();
             self.info_touched();
         }
     }
@@ -214,7 +235,8 @@ impl GroupState {
     /// The next queued command's plan, looking past the switches that act at once
     /// (in-position, outputs; a blending switch is a command of its own).
     pub(super) fn peek_motion(&self) -> Option<&Plan> {
-        self.queue
+        self.queued
+            .commands
             .iter()
             .map(|c| &c.plan)
             .find(|p| !matches!(p, Plan::Output(_)))
@@ -222,11 +244,11 @@ impl GroupState {
 
     /// Output changes the queue reached since the last call.
     pub fn take_outputs(&mut self) -> Vec<Output> {
-        std::mem::take(&mut self.outputs)
+        std::mem::take(&mut self.emitted.outputs)
     }
 
     /// Whether the queue reached output changes since the last [`GroupState::take_outputs`].
     pub fn has_outputs(&self) -> bool {
-        !self.outputs.is_empty()
+        !self.emitted.outputs.is_empty()
     }
 }

@@ -13,6 +13,39 @@ use crate::machine::Channel;
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
 
+/// What the group last published and what tells whether its info changed since.
+#[derive(Debug)]
+pub(super) struct Publishing {
+    /// Changes of the info other than its running command's phase and feed: a command
+    /// queued, taken from the queue, started or ended, the queue dropped, the error
+    /// record set or cleared, the running command's end or the offset changed
+    /// ([`GroupState::info_touched`]).
+    pub(super) info_changes: u64,
+    /// The own time of the newest running command (the back of `running`), kept by every
+    /// writer of an own time, for the published key's check
+    /// ([`GroupState::info_changed`]): finding the back of the deque cost it 11
+    /// instructions a publication. Meaningless while nothing runs.
+    pub(super) newest_own_time: f64,
+    /// The info key last published and how long it holds ([`GroupState::info_changed`]).
+    pub(super) key: PublishedKey,
+    /// The info last published, kept in test builds to check the key against it.
+    #[cfg(debug_assertions)]
+    pub(super) info: Option<crate::engine::snapshot::Info>,
+}
+
+impl Default for Publishing {
+    /// Nothing published yet.
+    fn default() -> Publishing {
+        Publishing {
+            info_changes: 0,
+            newest_own_time: 0.0,
+            key: PublishedKey::NONE,
+            #[cfg(debug_assertions)]
+            info: None,
+        }
+    }
+}
+
 impl GroupState {
     pub(super) fn update_status(&mut self) {
         if self.homing != 0 {
@@ -20,41 +53,41 @@ impl GroupState {
             self.status = c::GMS_RUNNING;
             return;
         }
-        let active = !self.running.is_empty()
-            || !self.queue.is_empty()
-            || self.jump.is_some()
-            || self.lag > 0
-            || self.lag_shown
-            || self.inpos_wait.is_some_and(|w| w.blocks())
-            || self.external.as_ref().is_some_and(|x| x.active())
+        let active = !self.exec.running.is_empty()
+            || !self.queued.commands.is_empty()
+            || self.exec.jump.is_some()
+            || self.exec.lag > 0
+            || self.exec.lag_shown
+            || self.in_pos.wait.is_some_and(|w| w.blocks())
+            || self.features.external.as_ref().is_some_and(|x| x.active())
             || self.post_active();
-        let held_shown = self
-            .running
-            .iter()
-            .any(|r| matches!(r.stage, Stage::Held { periods, .. } if periods >= HOLD_SHOWN_AFTER));
+        let held_shown =
+            self.exec.running.iter().any(
+                |r| matches!(r.stage, Stage::Held { periods, .. } if periods >= HOLD_SHOWN_AFTER),
+            );
         self.status = if !active {
             if matches!(
-                self.mode,
+                self.rate.mode,
                 Mode::Held | Mode::HoldAtBlockEnd | Mode::Aborting
             ) {
-                if self.mode == Mode::Aborting {
+                if self.rate.mode == Mode::Aborting {
                     // A timed abort stopped off the plan: what comes next starts here.
-                    self.queue_end = self.pos;
+                    self.queued.end = self.exec.pos;
                 }
-                self.mode = Mode::Normal;
+                self.rate.mode = Mode::Normal;
             }
             c::GMS_STOP
         } else if held_shown
-            || (self.running.is_empty()
-                && ((self.error != 0 && !self.queue.is_empty())
-                    || self.mode == Mode::Held
-                    || (self.single_block && !self.single_block_credit)))
+            || (self.exec.running.is_empty()
+                && ((self.error != 0 && !self.queued.commands.is_empty())
+                    || self.rate.mode == Mode::Held
+                    || (self.queued.single_block && !self.queued.single_block_credit)))
         {
             // Held and at rest, or commands waiting that an error, a hold at a block's
             // end or single-block mode keeps back.
             c::GMS_HOLD
         } else if matches!(
-            self.running.front().map(|r| &r.cmd.plan),
+            self.exec.running.front().map(|r| &r.cmd.plan),
             Some(Plan::Delay(_))
         ) {
             c::GMS_DELAYING
@@ -70,10 +103,10 @@ impl GroupState {
         if let Some(p) = self.kinematics_pulses(i) {
             return p;
         }
-        let pos = if self.post.is_some() {
+        let pos = if self.features.post.is_some() {
             self.out_pos()[i]
         } else {
-            self.pos[i]
+            self.exec.pos[i]
         };
         self.pulses_at(i, pos)
     }
@@ -82,7 +115,7 @@ impl GroupState {
     /// offset) times the pulses per UU, rounded halves away from zero.
     #[inline]
     fn pulses_at(&self, i: usize, pos: f64) -> i64 {
-        whole_pulses((pos + self.offset[i]) * self.axes[i].factor)
+        whole_pulses((pos + self.exec.offset[i]) * self.mech.axes[i].factor)
     }
 
     /// Commands the channels this group commands (`commanded`: axes each with a channel
@@ -94,15 +127,15 @@ impl GroupState {
     /// commanding group.
     #[inline(always)]
     pub fn command_channels(&mut self, cards: &mut [[Channel; AXES]]) {
-        if self.rezero == super::Rezero::Channels {
-            self.rezero = super::Rezero::No;
-            if let Some(chans) = cards.get_mut(self.commanded.card()) {
-                for (_, ch) in self.commanded.pairs() {
+        if self.exec.rezero == super::Rezero::Channels {
+            self.exec.rezero = super::Rezero::No;
+            if let Some(chans) = cards.get_mut(self.mech.commanded.card()) {
+                for (_, ch) in self.mech.commanded.pairs() {
                     chans[ch].rezero();
                 }
             }
         }
-        let commanded = &self.commanded;
+        let commanded = &self.mech.commanded;
         // Most groups sharing a card's channels command none of them (the last mapping
         // wins): asked first, before the card is looked up.
         if commanded.is_empty() {
@@ -111,15 +144,15 @@ impl GroupState {
         let Some(chans) = cards.get_mut(commanded.card()) else {
             return;
         };
-        if self.kin.is_none() && self.post.is_none() {
+        if self.features.kin.is_none() && self.features.post.is_none() {
             if commanded.is_identity() {
                 // Every axis to its own channel: no pair to look up, the same pulses.
                 for (i, chan) in chans.iter_mut().enumerate() {
-                    chan.command(self.pulses_at(i, self.pos[i]));
+                    chan.command(self.pulses_at(i, self.exec.pos[i]));
                 }
             } else {
                 for (i, ch) in commanded.pairs() {
-                    chans[ch].command(self.pulses_at(i, self.pos[i]));
+                    chans[ch].command(self.pulses_at(i, self.exec.pos[i]));
                 }
             }
         } else {
@@ -133,17 +166,17 @@ impl GroupState {
     /// (0 for the others), kept for [`GroupState::comp_pulses`].
     pub fn read_compensation(&mut self, cards: &mut [[Channel; AXES]]) {
         let mut comp = [0; AXES];
-        if let Some(chans) = cards.get_mut(self.commanded.card()) {
-            for (i, ch) in self.commanded.pairs() {
+        if let Some(chans) = cards.get_mut(self.mech.commanded.card()) {
+            for (i, ch) in self.mech.commanded.pairs() {
                 comp[i] = chans[ch].compensation_now();
             }
         }
-        self.comp = comp;
+        self.exec.comp = comp;
     }
 
     /// The compensation pulses per axis of the last [`GroupState::read_compensation`].
     pub fn comp_pulses(&self) -> [i32; AXES] {
-        self.comp
+        self.exec.comp
     }
 
     /// The part of the published state that changes every tick.
@@ -168,8 +201,13 @@ impl GroupState {
     /// `motion` copies then.
     #[inline]
     pub fn store_motion(&self, cell: &SnapshotCell) {
-        if self.output_is_reference() && self.kin.is_none() {
-            cell.store_motion_parts(self.status, &self.pos, &self.vel, self.feed_now);
+        if self.output_is_reference() && self.features.kin.is_none() {
+            cell.store_motion_parts(
+                self.status,
+                &self.exec.pos,
+                &self.exec.vel,
+                self.exec.feed_now,
+            );
         } else {
             self.store_filtered_motion(cell);
         }
@@ -186,13 +224,13 @@ impl GroupState {
     /// nothing running, `MCC_GetCurCommand` reports `RUN_TIME_ERR` with the index of the
     /// last command started (as the vendor's library does).
     pub fn info(&self) -> Info {
-        let blending = self.running.len() > 1;
-        let last = self.cmd_index.last_started;
-        let cmd = match self.running.back() {
+        let blending = self.exec.running.len() > 1;
+        let last = self.queued.index.last_started;
+        let cmd = match self.exec.running.back() {
             Some(r) => COMMAND_INFO {
                 nType: r.cmd.ctype,
                 nCommandIndex: r.cmd.index,
-                dfFeedSpeed: info_feed(r, self.period_s),
+                dfFeedSpeed: info_feed(r, self.exec.period_s),
                 // A delay or a switch has no target: the vendor's library shows zeros.
                 dfPos: if r.cmd.is_motion() {
                     r.cmd.target
@@ -213,11 +251,11 @@ impl GroupState {
         };
         Info {
             error: self.error,
-            queued: i32::try_from(self.queue.len()).unwrap_or(i32::MAX),
-            running: self.running.back().is_some(),
+            queued: i32::try_from(self.queued.commands.len()).unwrap_or(i32::MAX),
+            running: self.exec.running.back().is_some(),
             cmd,
-            offset: self.offset,
-            factor: self.axes.map(|a| a.factor),
+            offset: self.exec.offset,
+            factor: self.mech.axes.map(|a| a.factor),
         }
     }
 
@@ -228,13 +266,13 @@ impl GroupState {
     /// a reset (which publishes afresh).
     #[inline]
     pub(super) fn info_key(&self) -> InfoKey {
-        let back = self.running.back();
-        let blending = self.running.len() > 1;
+        let back = self.exec.running.back();
+        let blending = self.exec.running.len() > 1;
         InfoKey {
-            changes: self.info_changes,
+            changes: self.publishing.info_changes,
             running: back.is_some(),
             phase: back.map_or(0, |r| motion_phase(r, blending)),
-            feed: back.map_or(0, |r| info_feed(r, self.period_s).to_bits()),
+            feed: back.map_or(0, |r| info_feed(r, self.exec.period_s).to_bits()),
         }
     }
 
@@ -245,7 +283,7 @@ impl GroupState {
     /// those calls it; test builds check after every publication that an unchanged key
     /// really means an unchanged info.
     pub(super) fn info_touched(&mut self) {
-        self.info_changes = self.info_changes.wrapping_add(1);
+        self.publishing.info_changes = self.publishing.info_changes.wrapping_add(1);
     }
 
     /// The whole published state (as readers see it).
@@ -259,7 +297,7 @@ impl GroupState {
     pub fn info_changed(&mut self) -> bool {
         if self.published_key_holds() {
             debug_assert_eq!(
-                self.published_key.key,
+                self.publishing.key.key,
                 self.info_key(),
                 "group {}: the published key was taken to hold",
                 self.index
@@ -275,7 +313,11 @@ impl GroupState {
     #[inline(never)]
     fn renew_published_key(&mut self) -> bool {
         let key = self.info_key();
-        let until = self.running.back().map_or(f64::INFINITY, key_holds_until);
+        let until = self
+            .exec
+            .running
+            .back()
+            .map_or(f64::INFINITY, key_holds_until);
         let renewed = PublishedKey {
             key,
             until,
@@ -283,11 +325,11 @@ impl GroupState {
         };
         // Two stores of the same record, not one after a `changed` flag: compiled that
         // way, every publication paid 4 instructions more (callgrind).
-        if self.published_key.published && self.published_key.key == key {
-            self.published_key = renewed;
+        if self.publishing.key.published && self.publishing.key.key == key {
+            self.publishing.key = renewed;
             return false;
         }
-        self.published_key = renewed;
+        self.publishing.key = renewed;
         true
     }
 
@@ -300,21 +342,24 @@ impl GroupState {
     /// published yet: the end is −∞, which no own time is below.
     #[inline]
     pub(in crate::engine) fn published_key_holds(&self) -> bool {
-        let p = &self.published_key;
+        let p = &self.publishing.key;
         debug_assert_eq!(
-            self.running.back().map(|r| (r.periods as f64).to_bits()),
-            (!self.running.is_empty()).then_some(self.newest_own_time.to_bits()),
+            self.exec
+                .running
+                .back()
+                .map(|r| (r.periods as f64).to_bits()),
+            (!self.exec.running.is_empty()).then_some(self.publishing.newest_own_time.to_bits()),
             "group {}: newest_own_time is stale",
             self.index
         );
-        p.key.changes == self.info_changes && self.newest_own_time < p.until
+        p.key.changes == self.publishing.info_changes && self.publishing.newest_own_time < p.until
     }
 
     /// While the published key holds, the own time of the running command from which it
     /// may not ([`GroupState::published_key_holds`]); `None` when it does not hold now.
     pub(super) fn published_key_holds_below(&self) -> Option<f64> {
         self.published_key_holds()
-            .then_some(self.published_key.until)
+            .then_some(self.publishing.key.until)
     }
 }
 
@@ -463,7 +508,7 @@ mod tests {
                 "tick {tick}: published again exactly when the info changed"
             );
             if holds {
-                assert_eq!(g.published_key.key, g.info_key(), "tick {tick}");
+                assert_eq!(g.publishing.key.key, g.info_key(), "tick {tick}");
             }
             if changed {
                 changes.push(tick);

@@ -55,9 +55,9 @@ impl Shared {
             if g.inpos_waiting() {
                 let mask = g.inpos_mask_waiting();
                 let errs: [Option<f64>; AXES] = std::array::from_fn(|i| {
-                    let (card, ch) = g.axes[i].channel?;
+                    let (card, ch) = g.axes()[i].channel?;
                     let chan = machine.channel(card, ch)?;
-                    let f = g.axes[i].factor.abs();
+                    let f = g.axes()[i].factor.abs();
                     (mask & (1 << i) != 0 && f > 0.0).then(|| chan.error_count() as f64 / f)
                 });
                 g.check_inpos(&errs, dt);

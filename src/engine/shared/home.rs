@@ -39,7 +39,7 @@ impl Shared {
         let h = homing::Homing::new(card, orders, cfgs, chans);
         let chan_mask = h.channel_mask();
         let axes_of = |g: &GroupState| {
-            (0..AXES).fold(0u32, |m, i| match g.axes[i].channel {
+            (0..AXES).fold(0u32, |m, i| match g.axes()[i].channel {
                 Some((c, ch)) if c == card && chan_mask & (1 << ch) != 0 => m | 1 << i,
                 _ => m,
             })
@@ -100,7 +100,7 @@ impl Shared {
             return Ok(());
         }
         for g in self.lock_groups().iter_mut() {
-            if g.def.card.0 != card || !g.is_external() {
+            if g.def().card.0 != card || !g.is_external() {
                 continue;
             }
             g.begin_external_home(&orders, cfgs)?;
@@ -122,7 +122,7 @@ impl Shared {
     pub fn abort_homing(&self) -> McclResult<()> {
         if let Ok(card) = usize::try_from(self.home.mc3b_home_card.load(Ordering::Acquire)) {
             self.for_each_group(|g| {
-                if g.def.card.0 == card {
+                if g.def().card.0 == card {
                     g.abort_external_home();
                 }
             });
@@ -192,7 +192,7 @@ pub(in crate::engine) fn apply_homing(g: &mut GroupState, h: &homing::HomeTick) 
         if g.homing() & (1 << i) == 0 {
             continue;
         }
-        let Some((card, ch)) = g.axes[i].channel else {
+        let Some((card, ch)) = g.axes()[i].channel else {
             continue;
         };
         let Some(a) = h.axes.get(ch).filter(|_| card == h.card) else {

@@ -67,7 +67,7 @@ impl Shared {
         self.outputs.servo_on[card].store(0, Ordering::Release);
         self.outputs.pos_ready[card].store(false, std::sync::atomic::Ordering::Release);
         for g in groups.iter_mut() {
-            if g.def.card.0 == card {
+            if g.def().card.0 == card {
                 g.abort_within_period();
                 g.set_error(ERR_WATCHDOG_RESET);
             }

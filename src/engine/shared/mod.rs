@@ -202,7 +202,7 @@ impl Shared {
         }
         let commanded = commanding_axes(&gs);
         for (g, c) in gs.iter_mut().zip(commanded) {
-            g.commanded = c;
+            g.set_commanded(c);
         }
         let group_count = AtomicUsize::new(gs.len());
         Shared {
@@ -325,7 +325,7 @@ impl Shared {
         let Some(n) = self.position_of(slot as u16) else {
             return;
         };
-        let husk = GroupDef::none(gs[n].def.card);
+        let husk = GroupDef::none(gs[n].def().card);
         gs[n] = GroupState::new(slot, husk, axes_of(&husk, mac), self.clock.period_s());
         self.table.slots[slot].store(-1, Ordering::Release);
         self.published.status[slot].store(-1, Ordering::Release);
@@ -336,7 +336,7 @@ impl Shared {
     fn remap_channels(&self, gs: &mut [GroupState]) {
         let commanded = commanding_axes(gs);
         for (g, c) in gs.iter_mut().zip(commanded) {
-            g.commanded = c;
+            g.set_commanded(c);
         }
     }
 
@@ -458,7 +458,7 @@ impl Shared {
             // An unchanged key must mean an unchanged info (a writer that forgot
             // `info_touched` would leave readers with a stale info).
             #[cfg(debug_assertions)]
-            debug_assert_eq!(g.published_info, Some(g.info()), "group {}", g.index);
+            debug_assert_eq!(g.published_info(), Some(&g.info()), "group {}", g.index);
         }
         g.store_motion(cell);
         self.store_status(g);
@@ -478,7 +478,7 @@ impl Shared {
     pub fn channel_moving(&self, card: usize, ch: usize) -> bool {
         self.lock_groups()
             .iter()
-            .any(|g| g.commands_running() && g.axes.iter().any(|a| a.channel == Some((card, ch))))
+            .any(|g| g.commands_running() && g.axes().iter().any(|a| a.channel == Some((card, ch))))
     }
 
     /// `MCC_ResetMotion`: homing stops and every group resets
@@ -506,7 +506,7 @@ impl Shared {
     pub fn reset_all(&self, mac: &MacTable) {
         self.cancel_homing();
         self.for_each_group(|g| {
-            let axes = axes_of(&g.def, mac);
+            let axes = axes_of(g.def(), mac);
             g.reset(axes);
         });
     }
@@ -525,9 +525,7 @@ fn publish_info(cell: &SnapshotCell, g: &mut GroupState) {
     let info = g.info();
     cell.store_info(&info);
     #[cfg(debug_assertions)]
-    {
-        g.published_info = Some(info);
-    }
+    g.keep_published_info(info);
 }
 
 /// The length of a tick in ns, as the peripherals count it.
@@ -541,7 +539,7 @@ fn tick_ns(period: Duration) -> u64 {
 fn commanding_axes(groups: &[GroupState]) -> Vec<Commanded> {
     let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
     for (n, g) in groups.iter().enumerate() {
-        for (i, ax) in g.axes.iter().enumerate() {
+        for (i, ax) in g.axes().iter().enumerate() {
             if let Some((card, ch)) = ax.channel {
                 if let Some(c) = last.get_mut(card).and_then(|c| c.get_mut(ch)) {
                     *c = Some((n, i));
@@ -554,10 +552,10 @@ fn commanding_axes(groups: &[GroupState]) -> Vec<Commanded> {
         .enumerate()
         .map(|(n, g)| {
             Commanded::new(
-                g.def.card.0,
-                g.axes.iter().enumerate().filter_map(|(i, ax)| {
+                g.def().card.0,
+                g.axes().iter().enumerate().filter_map(|(i, ax)| {
                     let (card, ch) = ax.channel?;
-                    let own = card == g.def.card.0;
+                    let own = card == g.def().card.0;
                     let lasts = last.get(card)?.get(ch).copied().flatten() == Some((n, i));
                     (own && lasts).then_some((i, ch))
                 }),

@@ -20,7 +20,7 @@ impl crate::engine::Shared {
         for st in running {
             if let Some(g) = groups.get_mut(st.index) {
                 *g = Some(GroupView {
-                    override_pct: st.override_pct,
+                    override_pct: st.override_pct(),
                     inpos: st.inpos_status(),
                 });
             }
