@@ -11,37 +11,33 @@
 //! holds either while user code runs, so a callback may call any MCC_* function. Order:
 //! `system::SYSTEM`, the machine, then the groups.
 //!
-//! Files, one concept each, their uses a DAG: `command.rs` (planning a command),
-//! `track.rs` (a running motion's profile), `custom.rs` and `custom_move.rs` (custom
-//! motion), `note.rs` (events noted for the trace), `group/` (one group), the types
-//! [`Shared`] holds (`isr.rs`, `cycle.rs`, `homing.rs` and `homing/`, `view.rs`,
-//! `snapshot.rs`, `trace.rs`, `safety.rs`, `kinematics.rs`), `shared/` ([`Shared`] and its
-//! methods, one concern a file), `tick.rs` (one tick of the card, the one definition of
-//! its steps), `cruise.rs` (the plan of cruise ticks), `poll.rs` (polls that let virtual
-//! time run), `running.rs` ([`Engine`]: the thread's start, loop, stop and join),
-//! `thread.rs` (real-time settings of the thread).
+//! The groups themselves (planning, tracks, custom motion, kinematics, snapshots, one
+//! group and its parts) are the core's `mccl_core::engine`, re-exported here under the
+//! same names. Files here, one concept each, their uses a DAG: `custom.rs` (custom
+//! motion's process-wide count, ids and callback mark), `kinematics.rs` (registrations
+//! waiting for the next init), the types [`Shared`] holds (`isr.rs`, `cycle.rs`,
+//! `homing.rs` and `homing/`, `view.rs`, `trace.rs`, `safety.rs`), `shared/` ([`Shared`]
+//! and its methods, one concern a file), `tick.rs` (one tick of the card, the one
+//! definition of its steps), `cruise.rs` (the plan of cruise ticks), `poll.rs` (polls
+//! that let virtual time run), `running.rs` ([`Engine`]: the thread's start, loop, stop
+//! and join), `thread.rs` (real-time settings of the thread).
 
-pub mod command;
 mod cruise;
 pub mod custom;
-pub mod custom_move;
 pub mod cycle;
-pub mod group;
 pub mod homing;
 pub mod isr;
 pub mod kinematics;
-pub mod note;
 mod poll;
 mod running;
 pub mod safety;
 mod shared;
-pub mod snapshot;
 pub mod thread;
 mod tick;
 pub mod trace;
-mod track;
 pub mod view;
 
+pub use mccl_core::engine::{command, custom_move, group, note, snapshot, track};
 pub use poll::SPIN_POLLS;
 pub use running::{on_retired_engine_thread, Engine};
 pub use shared::{Shared, DEFAULT_PULSE_STOCK};

@@ -118,7 +118,11 @@ impl Shared {
             if cruise {
                 // A period along one command or standing idle: no stage, no output, no
                 // homing result (`GroupState::quiet_ticks_ahead`).
-                debug_assert!(g.quiet_ticks_ahead(dt, 1) == 1, "group {} cruises", g.index);
+                debug_assert!(
+                    g.quiet_ticks_ahead(dt, 1) == 1,
+                    "group {} cruises",
+                    g.index()
+                );
                 g.cruise_period(dt);
                 crate::fault::point("cruise tick");
             } else {

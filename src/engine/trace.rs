@@ -81,7 +81,7 @@ impl Trace {
             "{}.{:06},{},{},{}",
             t_ns / 1_000_000,
             t_ns % 1_000_000,
-            g.index,
+            g.index(),
             s.cmd.nCommandIndex,
             s.status
         );
@@ -130,14 +130,14 @@ impl Trace {
                 a.low
             );
             self.events
-                .write(0, card as i64, g.index as i64, "config", &d);
+                .write(0, card as i64, g.index() as i64, "config", &d);
         }
     }
 
     /// The events group `g` noted since its last row (call after [`Trace::row`]).
     pub fn group_events(&mut self, t_ns: u128, g: &mut GroupState) {
         let card = g.def().card.0 as i64;
-        let index = g.index as i64;
+        let index = g.index() as i64;
         let Some(notes) = g.notes_mut() else {
             return;
         };

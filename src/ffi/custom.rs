@@ -3,7 +3,7 @@
 //! library's speed profile. The engine's side is in `engine/custom.rs`.
 
 use super::queue;
-use crate::engine::custom::{custom_interp, infinite_interp, Blending, CustomSpec, Interp};
+use crate::engine::custom::{custom_interp, infinite_interp, Blending, Interp};
 use crate::engine::group::custom::command;
 use crate::error::{McclError, McclResult};
 use crate::vendor::{
@@ -33,7 +33,7 @@ fn custom(
         return Err(McclError::Parameter);
     }
     queue(g, |ctx| {
-        let spec = CustomSpec::new(
+        let spec = crate::engine::custom::new_spec(
             start,
             interp,
             cleanup,

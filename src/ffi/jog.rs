@@ -37,7 +37,7 @@ fn jog(
         to[a] = target(ctx.from[a], &ctx.axes[a]);
         let r = ratio.unwrap_or(ctx.settings.ptp_ratio);
         let cmd = ctx.ptp(to, r, false)?;
-        grp.enqueue(cmd)
+        super::enqueue(grp, cmd)
     })
 }
 

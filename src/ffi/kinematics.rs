@@ -96,7 +96,7 @@ fn queue_v6(
     with_group(g, |grp| {
         let mut cmd = plan(&grp.ctx())?;
         cmd.posture = Some(posture);
-        grp.enqueue(cmd)
+        super::enqueue(grp, cmd)
     })
 }
 
@@ -115,7 +115,7 @@ fn queue_v6_curve(
             Err(_) => return Err(McclError::Parameter),
         };
         cmd.posture = Some(posture);
-        grp.enqueue(cmd)
+        super::enqueue(grp, cmd)
     })
 }
 
@@ -464,7 +464,7 @@ pub extern "system" fn MCC_PtP_V6(
             None => with_group(wGroupIndex, |grp| {
                 let ctx = grp.ctx();
                 let cmd = ctx.ptp(ctx.resolve(&args, m), ctx.settings.ptp_ratio, true)?;
-                grp.enqueue(cmd)
+                super::enqueue(grp, cmd)
             }),
         }
     }

@@ -452,6 +452,20 @@ pub fn update_group(
     })
 }
 
+/// Queues `cmd` into `grp` for the program; returns its index. Refused
+/// (`COMMAND_NOTACCEPTED_ERR`) from inside a callback of the group itself, which the
+/// engine thread runs for it and which would wait for itself; the library's fault point
+/// "enqueue" sits half-way through changing the queue.
+pub(crate) fn enqueue(
+    grp: &mut crate::engine::group::GroupState,
+    cmd: crate::engine::command::Command,
+) -> McclResult<c_int> {
+    if crate::engine::custom::in_callback() == Some(grp.index()) {
+        return Err(McclError::NotAccepted);
+    }
+    grp.enqueue_probed(cmd, crate::fault::point)
+}
+
 /// Plans a command with the group's context at call time and queues it; returns the
 /// command index. A degenerate arc also records error 0xF104 (user manual §2.6.3 VI).
 pub fn queue(
@@ -460,7 +474,7 @@ pub fn queue(
 ) -> McclResult<c_int> {
     with_group(g, |grp| {
         let cmd = plan(&grp.ctx())?;
-        grp.enqueue(cmd)
+        enqueue(grp, cmd)
     })
 }
 
@@ -480,7 +494,7 @@ pub fn queue_curve(
             Err(crate::planner::PlanError::BadArc) => grp.ctx().fault(kind, ERR_BAD_ARC),
             Err(_) => return Err(McclError::Parameter),
         };
-        grp.enqueue(cmd)
+        enqueue(grp, cmd)
     })
 }
 

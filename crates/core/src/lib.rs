@@ -7,10 +7,14 @@
 //! [`interrupt`] (interrupt causes as data), [`config`] (what the program configures),
 //! [`sim`] (the simulated machine's configuration file), [`planner`] (pure trajectory
 //! planning), [`machine`] (the simulated machine: motors, encoders, sensors, triggers) and
-//! [`card`] (the card's peripherals: timer, watchdog, converters, remote I/O).
+//! [`card`] (the card's peripherals: timer, watchdog, converters, remote I/O), and on top
+//! [`engine`] (the motion groups: planning a command, running it period by period, what
+//! a group publishes). The caller owns time: a group or a channel advances one period
+//! when asked.
 
 pub mod card;
 pub mod config;
+pub mod engine;
 pub mod error;
 pub mod error_record;
 pub mod interrupt;

@@ -47,7 +47,7 @@ impl Shared {
                 let Some(mut g) = self.nth_group(n) else {
                     return;
                 };
-                (g.index, g.custom_take_all())
+                (g.index(), g.custom_take_all())
             };
             for (idx, spec) in specs {
                 cleanup(group, idx, &spec);

@@ -56,7 +56,13 @@ impl Shared {
                 crate::engine::custom::as_callback(g, || fns.forward(g, &joints, &mut posture))
                     .ok_or(McclError::NotAccepted)?;
             let mut grp = self.group(index)?;
-            grp.set_kinematics(fns, joints, cart, posture)?;
+            grp.set_kinematics(
+                fns,
+                super::super::kinematics::next_generation(),
+                joints,
+                cart,
+                posture,
+            )?;
             self.routines.kinematics_on.store(true, Ordering::Release);
             self.publish(&mut grp);
         }

@@ -298,7 +298,7 @@ impl Shared {
         // then any husk, then a new entry.
         let husk = |want: Option<usize>| {
             (0..gs.len()).find(|&n| {
-                let idx = gs[n].index;
+                let idx = gs[n].index();
                 self.position_of(idx as u16) != Some(n) && want.is_none_or(|w| w == idx)
             })
         };
@@ -379,7 +379,7 @@ impl Shared {
 
     /// Publishes what [`GroupState::read_compensation`] found.
     pub(super) fn store_compensation(&self, g: &GroupState) {
-        if let Some(c) = self.published.comp.get(g.index) {
+        if let Some(c) = self.published.comp.get(g.index()) {
             for (cell, v) in c.iter().zip(g.comp_pulses()) {
                 cell.store(v, Ordering::Release);
             }
@@ -419,8 +419,12 @@ impl Shared {
     /// [`Shared::publish`] does then, without looking.
     #[inline(always)]
     pub fn publish_motion(&self, g: &GroupState) {
-        debug_assert!(g.published_key_holds(), "group {}: info unchanged", g.index);
-        if let Some(cell) = self.published.snaps.get(g.index) {
+        debug_assert!(
+            g.published_key_holds(),
+            "group {}: info unchanged",
+            g.index()
+        );
+        if let Some(cell) = self.published.snaps.get(g.index()) {
             g.store_motion(cell);
         }
         self.store_status(g);
@@ -439,7 +443,7 @@ impl Shared {
     /// Stores a group's status where status calls read it without the snapshot.
     #[inline(always)]
     pub(super) fn store_status(&self, g: &GroupState) {
-        if let Some(s) = self.published.status.get(g.index) {
+        if let Some(s) = self.published.status.get(g.index()) {
             s.store(g.status(), Ordering::Release);
         }
     }
@@ -451,14 +455,14 @@ impl Shared {
     /// rare rebuild of the info key out of line so that the tick's frame does not grow.
     #[inline(always)]
     pub fn publish(&self, g: &mut GroupState) {
-        let cell = &self.published.snaps[g.index];
+        let cell = &self.published.snaps[g.index()];
         if g.info_changed() {
             publish_info(cell, g);
         } else {
             // An unchanged key must mean an unchanged info (a writer that forgot
             // `info_touched` would leave readers with a stale info).
             #[cfg(debug_assertions)]
-            debug_assert_eq!(g.published_info(), Some(&g.info()), "group {}", g.index);
+            debug_assert_eq!(g.published_info(), Some(&g.info()), "group {}", g.index());
         }
         g.store_motion(cell);
         self.store_status(g);

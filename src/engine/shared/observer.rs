@@ -18,7 +18,7 @@ impl crate::engine::Shared {
             .collect();
         let mut groups = vec![None; GROUPS];
         for st in running {
-            if let Some(g) = groups.get_mut(st.index) {
+            if let Some(g) = groups.get_mut(st.index()) {
                 *g = Some(GroupView {
                     override_pct: st.override_pct(),
                     inpos: st.inpos_status(),

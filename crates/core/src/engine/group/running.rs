@@ -43,7 +43,7 @@ pub(super) enum Stage {
 
 /// A command being executed.
 #[derive(Debug, Clone)]
-pub(crate) struct Running {
+pub struct Running {
     pub(in crate::engine) cmd: Command,
     pub(super) progress: Progress,
     pub(super) stage: Stage,

@@ -35,16 +35,11 @@ use crate::planner::{Axes, Path, PathMove, PtpMove};
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, PRE_PROCESS_MOTION_COMMAND};
 use std::os::raw::c_int;
-use std::sync::atomic::{AtomicU64, Ordering};
 
 /// Error record of a failed forward kinematics (0xF105).
 pub const ERR_FORWARD: i32 = ErrorRecord::ForwardKinematics.code();
 /// Error record of a failed inverse kinematics (0xF106).
 pub const ERR_INVERSE: i32 = ErrorRecord::InverseKinematics.code();
-
-/// Tells registrations apart, so a result computed for a replaced registration is
-/// dropped.
-static GENERATION: AtomicU64 = AtomicU64::new(1);
 
 /// The space a kinematic group's planner works in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -238,9 +233,12 @@ impl GroupState {
     /// lock): the group becomes kinematic in joint space, standing at `joints`, with its
     /// queue end at `cart`. Refused while it moves or homes (`COMMAND_NOTFINISHED_ERR`),
     /// if its joints moved meanwhile (the same), or on an MC3B (`COMMAND_NOTACCEPTED_ERR`).
+    /// `generation` tells this registration apart from every other the caller applies,
+    /// so that a result computed for a replaced one is dropped.
     pub fn set_kinematics(
         &mut self,
         fns: KinFns,
+        generation: u64,
         joints: Axes,
         cart: Axes,
         posture: DWORD,
@@ -254,7 +252,7 @@ impl GroupState {
         self.features.kin = Some(Box::new(Kinematics {
             fns,
             pre: None,
-            generation: GENERATION.fetch_add(1, Ordering::Relaxed),
+            generation,
             space: Space::Joint,
             joints,
             next: None,
@@ -481,7 +479,7 @@ impl GroupState {
     }
 
     /// The stage, under the lock: what to compute for the next tick.
-    pub(crate) fn kinematics_job(&mut self) -> Option<Job> {
+    pub fn kinematics_job(&mut self) -> Option<Job> {
         let k = self.features.kin.as_ref()?;
         let (space, pre_set) = (k.space, k.pre.is_some());
         let idle = self.exec.running.is_empty();
@@ -547,7 +545,7 @@ impl GroupState {
 
     /// The stage, under the lock again: stores what the callbacks returned (dropped if
     /// the registration changed or the group moved meanwhile).
-    pub(crate) fn kinematics_done(&mut self, d: Done) {
+    pub fn kinematics_done(&mut self, d: Done) {
         let idle = self.exec.running.is_empty();
         let queue_empty = self.queued.commands.is_empty();
         let front_path = self.front_moving().is_some_and(|c| cartesian(&c.plan));

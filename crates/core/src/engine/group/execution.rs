@@ -21,7 +21,7 @@ use super::{GroupState, Rezero};
 use super::{InPosWait, Mode};
 use crate::config::AXES;
 use crate::engine::command::{Command, Plan};
-use crate::engine::trace::Note;
+use crate::engine::note::Note;
 use crate::planner::Axes;
 use crate::vendor::consts as c;
 use std::collections::VecDeque;
@@ -399,6 +399,7 @@ impl GroupState {
     /// change. An idle group's period then only keeps its feed speed at rest; a general
     /// motion's is `GroupState::tick_one_path`'s without the status; anything else (a
     /// PtP) takes the ordinary period.
+    #[inline]
     pub fn cruise_period(&mut self, dt: f64) {
         #[cfg(debug_assertions)]
         let status = self.status;

@@ -46,7 +46,7 @@ mod queue;
 mod running;
 mod status;
 
-pub(crate) use commanded::Commanded;
+pub use commanded::Commanded;
 use control::Mode;
 use external::ExternalExecutor;
 use inpos::InPosWait;
@@ -166,29 +166,29 @@ impl GroupState {
 
     /// The channels the group's axes command, as every group's mapping decides
     /// (`engine::shared`).
-    pub(in crate::engine) fn set_commanded(&mut self, c: Commanded) {
+    pub fn set_commanded(&mut self, c: Commanded) {
         self.mech.commanded = c;
     }
 
     /// Starts noting events for the trace's events file.
-    pub(in crate::engine) fn start_notes(&mut self) {
+    pub fn start_notes(&mut self) {
         self.emitted.trace_notes = Some(Vec::new());
     }
 
     /// The events noted since they were last taken, while tracing.
-    pub(in crate::engine) fn notes_mut(&mut self) -> Option<&mut Vec<super::note::Note>> {
+    pub fn notes_mut(&mut self) -> Option<&mut Vec<super::note::Note>> {
         self.emitted.trace_notes.as_mut()
     }
 
     /// The info last published (test builds, to check the published key against it).
     #[cfg(debug_assertions)]
-    pub(in crate::engine) fn published_info(&self) -> Option<&super::snapshot::Info> {
+    pub fn published_info(&self) -> Option<&super::snapshot::Info> {
         self.publishing.info.as_ref()
     }
 
     /// Keeps the info just published (test builds).
     #[cfg(debug_assertions)]
-    pub(in crate::engine) fn keep_published_info(&mut self, info: super::snapshot::Info) {
+    pub fn keep_published_info(&mut self, info: super::snapshot::Info) {
         self.publishing.info = Some(info);
     }
 
@@ -350,7 +350,7 @@ impl GroupState {
 
     /// Notes the running commands as cut short (they are about to be dropped, or the
     /// system closes).
-    pub(crate) fn note_stopped(&mut self) {
+    pub fn note_stopped(&mut self) {
         if let Some(v) = self.emitted.trace_notes.as_mut() {
             for r in &self.exec.running {
                 v.push(super::note::Note::End {

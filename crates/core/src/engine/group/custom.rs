@@ -141,12 +141,12 @@ impl GroupState {
     }
 
     /// Takes every started command for its cleanup (the engine is closing).
-    pub(crate) fn custom_take_all(&mut self) -> Vec<(c_int, Arc<CustomSpec>)> {
+    pub fn custom_take_all(&mut self) -> Vec<(c_int, Arc<CustomSpec>)> {
         std::mem::take(&mut self.features.custom.started)
     }
 
     /// What the stage does for this group after a tick of `dt` seconds.
-    pub(crate) fn custom_batch(&mut self, dt: f64) -> CustomBatch {
+    pub fn custom_batch(&mut self, dt: f64) -> CustomBatch {
         let mut batch = CustomBatch {
             group: self.index,
             ..CustomBatch::default()
@@ -187,7 +187,7 @@ impl GroupState {
 
     /// `start` of command `id` returned `tot`: checks it, plans the profile, and returns
     /// the next call (None when the command is gone or the group stopped).
-    pub(crate) fn custom_begin(&mut self, id: u64, tot: f64, dt: f64) -> Option<Call> {
+    pub fn custom_begin(&mut self, id: u64, tot: f64, dt: f64) -> Option<Call> {
         let (feed, acc_ms, dec_ms) = {
             let r = self.exec.running.iter().find(
                 |r| matches!(&r.cmd.plan, Plan::Custom(m) if m.spec.id == id && !m.ended()),
@@ -233,7 +233,7 @@ impl GroupState {
     }
 
     /// `BlendingStart` of command `id` returned `accepted`: the next call.
-    pub(crate) fn custom_blending(&mut self, id: u64, accepted: bool, dt: f64) -> Option<Call> {
+    pub fn custom_blending(&mut self, id: u64, accepted: bool, dt: f64) -> Option<Call> {
         let (_, m) = self.custom_running(Some(id))?;
         m.set_blending(accepted);
         self.custom_step(dt)
@@ -258,7 +258,7 @@ impl GroupState {
 
     /// Stores what the interpolation callback of command `id` gave for the coming tick.
     /// Returns whether its blend ended with this call (`BlendingEnd` is due).
-    pub(crate) fn custom_apply(
+    pub fn custom_apply(
         &mut self,
         id: u64,
         ok: bool,

@@ -7,7 +7,7 @@ use crate::planner::{Shape, TickProfile};
 
 /// Where a track is on its profile, as `COMMAND_INFO.nMotionPhase` shows it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Phase {
+pub enum Phase {
     /// Ramping up to its speed.
     Accelerating,
     /// At its speed.
@@ -29,7 +29,7 @@ enum Prev {
 /// A motion's progress along `len`: the profile of the stretch running now (the plan
 /// from rest, or a re-plan) and how far the stretches before it came.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Track {
+pub struct Track {
     profile: TickProfile,
     /// Distance covered before `profile` started.
     s0: f64,
@@ -50,7 +50,7 @@ pub(crate) struct Track {
 impl Track {
     /// A track running `profile` (planned from rest over `len` at `feed` with these
     /// ramps) from its start.
-    pub(crate) fn new(
+    pub fn new(
         profile: TickProfile,
         feed: f64,
         ramps: (u32, u32),
@@ -71,7 +71,7 @@ impl Track {
 
     /// Distance covered.
     #[inline]
-    pub(crate) fn dist(&self) -> f64 {
+    pub fn dist(&self) -> f64 {
         if self.k >= self.profile.periods() {
             return self.s0 + self.profile.len();
         }
@@ -82,7 +82,7 @@ impl Track {
     /// track runs its first plan (so that positions land on the vendor's doubles), the
     /// distance over the length after a re-plan.
     #[inline]
-    pub(crate) fn fraction(&self) -> f64 {
+    pub fn fraction(&self) -> f64 {
         if self.s0 == 0.0 && self.profile.len() == self.len {
             return self.profile.fraction(self.k);
         }
@@ -95,18 +95,18 @@ impl Track {
 
     /// Whether the running stretch has ended.
     #[inline]
-    pub(crate) fn stretch_done(&self) -> bool {
+    pub fn stretch_done(&self) -> bool {
         self.k >= self.profile.periods()
     }
 
     /// Whether the whole length is covered (and the stretch ended).
-    pub(crate) fn arrived(&self) -> bool {
+    pub fn arrived(&self) -> bool {
         self.stretch_done() && self.s0 + self.profile.len() >= self.len
     }
 
     /// Moves one period on. Returns whether it moved.
     #[inline]
-    pub(crate) fn step(&mut self) -> bool {
+    pub fn step(&mut self) -> bool {
         if self.k >= self.profile.periods() {
             self.prev = Prev::At(self.dist());
             return false;
@@ -131,7 +131,7 @@ impl Track {
     }
 
     /// The average speed over the last period (distance over the period).
-    pub(crate) fn last_speed(&self) -> f64 {
+    pub fn last_speed(&self) -> f64 {
         let t = self.profile.period();
         if t > 0.0 {
             (self.dist() - self.prev_dist()) / t
@@ -141,28 +141,28 @@ impl Track {
     }
 
     /// Periods until the running stretch ends.
-    pub(crate) fn periods_left(&self) -> u64 {
+    pub fn periods_left(&self) -> u64 {
         self.profile.periods().saturating_sub(self.k)
     }
 
     /// Periods until the stretch starts decelerating (0 once it does).
-    pub(crate) fn periods_to_decel(&self) -> u64 {
+    pub fn periods_to_decel(&self) -> u64 {
         self.profile.decel_start().saturating_sub(self.k)
     }
 
     /// Periods of the deceleration done (0 before it starts).
-    pub(crate) fn decel_periods_done(&self) -> u64 {
+    pub fn decel_periods_done(&self) -> u64 {
         self.k.saturating_sub(self.profile.decel_start())
     }
 
     /// Periods until the acceleration ends (0 once it has).
-    pub(crate) fn periods_to_cruise(&self) -> u64 {
+    pub fn periods_to_cruise(&self) -> u64 {
         u64::from(self.profile.acc_periods()).saturating_sub(self.k)
     }
 
     /// Periods the running stretch stays in its phase ([`Track::phase`]) after this one:
     /// until the end of its acceleration, the start of its deceleration, or its end.
-    pub(crate) fn periods_in_phase(&self) -> u64 {
+    pub fn periods_in_phase(&self) -> u64 {
         let p = &self.profile;
         if self.k <= u64::from(p.acc_periods()) && p.acc_periods() > 0 {
             self.periods_to_cruise()
@@ -174,7 +174,7 @@ impl Track {
     }
 
     /// Where the running stretch is.
-    pub(crate) fn phase(&self) -> Phase {
+    pub fn phase(&self) -> Phase {
         let p = &self.profile;
         if self.k <= u64::from(p.acc_periods()) && p.acc_periods() > 0 {
             if p.start_speed() > p.speed() {
@@ -191,7 +191,7 @@ impl Track {
 
     /// Whether the running stretch is the last deceleration of the whole length (a hold
     /// then changes nothing).
-    pub(crate) fn in_final_decel(&self) -> bool {
+    pub fn in_final_decel(&self) -> bool {
         self.k > self.profile.decel_start() && self.s0 + self.profile.len() >= self.len
     }
 
@@ -205,7 +205,7 @@ impl Track {
     /// A hold or a timed abort: stops from the last period's speed (times `chord`, the
     /// last period's chord over its length: 1 but on an arc) with the deceleration `dec_s`
     /// gives at the full feed ([`TickProfile::stop`]).
-    pub(crate) fn stop(&mut self, dec_s: f64, chord: f64) {
+    pub fn stop(&mut self, dec_s: f64, chord: f64) {
         let v0 = self.last_speed() * chord;
         let t = self.profile.period();
         // The full feed the deceleration is measured against: the speed the running
@@ -221,7 +221,7 @@ impl Track {
     }
 
     /// A continue after a hold: what is left, from rest, with the track's feed and ramps.
-    pub(crate) fn resume(&mut self) {
+    pub fn resume(&mut self) {
         let left = (self.len - self.dist()).max(0.0);
         let t = self.profile.period();
         let p = TickProfile::plan(
@@ -238,7 +238,7 @@ impl Track {
 
     /// An override: what is left, from the last period's speed (times `chord`, see
     /// [`Track::stop`]), at the planned feed times `ratio`.
-    pub(crate) fn retarget(&mut self, ratio: f64, chord: f64) {
+    pub fn retarget(&mut self, ratio: f64, chord: f64) {
         let feed = self.base_feed * ratio;
         let left = (self.len - self.dist()).max(0.0);
         let v0 = self.last_speed() * chord;
@@ -249,20 +249,20 @@ impl Track {
     }
 
     /// A new feed (`MCC_ChangeFeedSpeed`), at `ratio`: re-plans what is left.
-    pub(crate) fn set_base_feed(&mut self, feed: f64, ratio: f64, chord: f64) {
+    pub fn set_base_feed(&mut self, feed: f64, ratio: f64, chord: f64) {
         self.base_feed = feed;
         self.retarget(ratio, chord);
     }
 
     /// Blending: the deceleration of the running stretch becomes an S ramp (the vendor
     /// blends with S ramps whatever the curve type).
-    pub(crate) fn blend_out(&mut self) {
+    pub fn blend_out(&mut self) {
         self.fix_prev();
         self.profile = self.profile.with_shapes(self.shapes.0, Shape::S);
     }
 
     /// Blending: the acceleration of a motion that starts blended in is an S ramp.
-    pub(crate) fn blend_in(&mut self) {
+    pub fn blend_in(&mut self) {
         let dec = self.profile_shapes().1;
         self.fix_prev();
         self.profile = self.profile.with_shapes(Shape::S, dec);

@@ -333,15 +333,15 @@ impl GroupState {
         true
     }
 
-    /// Whether [`GroupState::info_key`] is still the key last published, found without
+    /// Whether `GroupState::info_key` is still the key last published, found without
     /// building it: the count of changes is the same (so no command started or ended
     /// since: each counts as a change), and the own time of the running command at the
     /// back, kept as `newest_own_time`, has not reached the
     /// end of the stretch over which its phase and feed stay as published
-    /// ([`key_holds_until`]); with no command running that end is infinite. Nothing was
+    /// (`key_holds_until`); with no command running that end is infinite. Nothing was
     /// published yet: the end is −∞, which no own time is below.
     #[inline]
-    pub(in crate::engine) fn published_key_holds(&self) -> bool {
+    pub fn published_key_holds(&self) -> bool {
         let p = &self.publishing.key;
         debug_assert_eq!(
             self.exec

@@ -252,7 +252,7 @@ impl Default for Settings {
     }
 }
 
-pub(crate) fn plan_err(e: PlanError) -> McclError {
+pub fn plan_err(e: PlanError) -> McclError {
     match e {
         PlanError::BadArc | PlanError::BadParameter(_) => McclError::Parameter,
     }

@@ -45,12 +45,7 @@ struct Run {
 
 impl CustomMove {
     /// A custom command queued from `start`, with the group's ramp shapes.
-    pub(in crate::engine) fn new(
-        spec: Arc<CustomSpec>,
-        start: Axes,
-        acc: Shape,
-        dec: Shape,
-    ) -> CustomMove {
+    pub fn new(spec: Arc<CustomSpec>, start: Axes, acc: Shape, dec: Shape) -> CustomMove {
         CustomMove {
             spec,
             start,
@@ -61,7 +56,7 @@ impl CustomMove {
     }
 
     /// Starts it from `pos`: whether it had not started yet (only then is `pos` taken).
-    pub(in crate::engine) fn start_at(&mut self, pos: Axes) -> bool {
+    pub fn start_at(&mut self, pos: Axes) -> bool {
         if self.run.started {
             return false;
         }
@@ -71,33 +66,33 @@ impl CustomMove {
     }
 
     /// Takes the total distance `start` returned and the track along it.
-    pub(in crate::engine) fn plan(&mut self, tot: f64, track: Track) {
+    pub fn plan(&mut self, tot: f64, track: Track) {
         self.run.tot = tot;
         self.run.track = Some(track);
     }
 
     /// The total distance `start` returned (0 before).
-    pub(in crate::engine) fn total(&self) -> f64 {
+    pub fn total(&self) -> f64 {
         self.run.tot
     }
 
     /// A blend with the command before, if `BlendingStart` accepts it, lasts `interval`.
-    pub(in crate::engine) fn blend_over(&mut self, interval: f64) {
+    pub fn blend_over(&mut self, interval: f64) {
         self.run.interval = interval;
     }
 
     /// What `BlendingStart` returned.
-    pub(in crate::engine) fn set_blending(&mut self, accepted: bool) {
+    pub fn set_blending(&mut self, accepted: bool) {
         self.run.blending = accepted;
     }
 
     /// Whether it blends and the blend has not ended.
-    pub(in crate::engine) fn blend_pending(&self) -> bool {
+    pub fn blend_pending(&self) -> bool {
         self.run.blending && !self.run.blend_done
     }
 
     /// Ends a blend in progress (the command failed): whether one was.
-    pub(in crate::engine) fn end_blend(&mut self) -> bool {
+    pub fn end_blend(&mut self) -> bool {
         let pending = self.blend_pending();
         self.run.blend_done |= pending;
         pending
@@ -105,7 +100,7 @@ impl CustomMove {
 
     /// The step of the coming tick along its track (None before `plan`): the distance
     /// the callback is asked for, whether it is the last.
-    pub(in crate::engine) fn next_step(&self) -> Option<Step> {
+    pub fn next_step(&self) -> Option<Step> {
         let mut next = *self.run.track.as_ref()?;
         next.step();
         let last = !self.infinite() && next.arrived();
@@ -124,7 +119,7 @@ impl CustomMove {
     /// Stores the offset `next` the callback gave for `step` and moves the track on;
     /// `ended` ends the command. Returns whether its blend ended with this step
     /// (`BlendingEnd` is due).
-    pub(in crate::engine) fn advance(&mut self, next: Axes, step: Step, ended: bool) -> bool {
+    pub fn advance(&mut self, next: Axes, step: Step, ended: bool) -> bool {
         self.run.vel = [0.0; AXES];
         self.run.offset = next;
         if let Some(t) = self.run.track.as_mut() {
@@ -147,7 +142,7 @@ impl CustomMove {
     }
 
     /// Its track, once its total distance is known.
-    pub(in crate::engine) fn track_mut(&mut self) -> Option<&mut Track> {
+    pub fn track_mut(&mut self) -> Option<&mut Track> {
         self.run.track.as_mut()
     }
 
@@ -164,7 +159,7 @@ impl CustomMove {
         )
     }
 
-    pub(in crate::engine) fn infinite(&self) -> bool {
+    pub fn infinite(&self) -> bool {
         matches!(self.spec.interp, Interp::Infinite(_))
     }
 }

@@ -75,8 +75,19 @@ impl GroupState {
     /// Queues a command; returns its index. `ABORT_NOT_FINISH_ERR` while an abort is
     /// still decelerating, `COMMAND_BUFFER_FULL_ERR` when the queue is full or the memory
     /// to grow it (doubling, up to the queue size) cannot be had.
-    pub fn enqueue(&mut self, mut cmd: Command) -> McclResult<i32> {
-        if self.homing != 0 || crate::engine::custom::in_callback() == Some(self.index) {
+    pub fn enqueue(&mut self, cmd: Command) -> McclResult<i32> {
+        self.enqueue_probed(cmd, |_| {})
+    }
+
+    /// [`GroupState::enqueue`], calling `probe("enqueue")` half-way through changing the
+    /// queue: a test that panics there checks that a panic leaves a defined state (the
+    /// library passes its fault points, which compile to nothing outside its tests).
+    pub fn enqueue_probed(
+        &mut self,
+        mut cmd: Command,
+        probe: impl FnOnce(&'static str),
+    ) -> McclResult<i32> {
+        if self.homing != 0 {
             return Err(McclError::NotAccepted);
         }
         if let Some(x) = &self.features.external {
@@ -111,7 +122,7 @@ impl GroupState {
             Plan::Blend(on) => self.queued.blend = on,
             _ => self.queued.end = cmd.target,
         }
-        crate::fault::point("enqueue");
+        probe("enqueue");
         let idx = cmd.index;
         // An arc of no length (an angle of 0): the vendor's library takes it and runs
         // nothing.
