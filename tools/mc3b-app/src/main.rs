@@ -59,16 +59,27 @@ struct Args {
     listen: SocketAddr,
 }
 
-fn args() -> Result<Option<Args>, String> {
+/// Reads the command line (`p`): the arguments, `None` for the usage.
+fn args(mut p: lexopt::Parser) -> Result<Option<Args>, String> {
+    use lexopt::prelude::*;
     let mut port = None;
     let mut listen = DEFAULT_LISTEN.to_string();
-    let mut it = std::env::args().skip(1);
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--help" | "-h" => return Ok(None),
-            "--port" => port = Some(it.next().ok_or("--port needs a path")?),
-            "--listen" => listen = it.next().ok_or("--listen needs ADDRESS:PORT")?,
-            other => return Err(format!("unknown argument '{other}' (see --help)")),
+    let text = |v: std::ffi::OsString, what: &str| {
+        v.into_string()
+            .map_err(|v| format!("{what} {v:?}: not valid text"))
+    };
+    while let Some(a) = p.next().map_err(|e| format!("{e} (see --help)"))? {
+        match a {
+            Short('h') | Long("help") => return Ok(None),
+            Long("port") => {
+                let v = p.value().map_err(|_| "--port needs a path")?;
+                port = Some(text(v, "--port")?);
+            }
+            Long("listen") => {
+                let v = p.value().map_err(|_| "--listen needs ADDRESS:PORT")?;
+                listen = text(v, "--listen")?;
+            }
+            a => return Err(format!("{} (see --help)", a.unexpected())),
         }
     }
     let listen = listen
@@ -122,7 +133,7 @@ fn run(a: Args) -> Result<(), String> {
 }
 
 fn main() {
-    match args() {
+    match args(lexopt::Parser::from_env()) {
         Ok(None) => print!("{HELP}"),
         Ok(Some(a)) => {
             if let Err(e) = run(a) {
@@ -134,5 +145,36 @@ fn main() {
             eprintln!("mc3b-app: {e}");
             std::process::exit(2);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::args;
+
+    fn parse(a: &[&str]) -> Result<Option<(Option<String>, String)>, String> {
+        args(lexopt::Parser::from_args(a.iter().copied()))
+            .map(|o| o.map(|a| (a.port, a.listen.to_string())))
+    }
+
+    #[test]
+    fn reads_the_port_and_the_address_in_either_form() {
+        assert_eq!(
+            parse(&["--port", "/dev/ttyUSB0", "--listen=127.0.0.1:9000"]),
+            Ok(Some((Some("/dev/ttyUSB0".into()), "127.0.0.1:9000".into())))
+        );
+        assert_eq!(
+            parse(&[]),
+            Ok(Some((None, super::DEFAULT_LISTEN.to_string())))
+        );
+        assert_eq!(parse(&["-h"]), Ok(None));
+    }
+
+    #[test]
+    fn refuses_what_it_cannot_use() {
+        assert_eq!(parse(&["--port"]), Err("--port needs a path".into()));
+        assert!(parse(&["--listen", "nope"]).is_err_and(|e| e.contains("not an address")));
+        assert!(parse(&["--verbose"]).is_err_and(|e| e.contains("--verbose")));
+        assert!(parse(&["stray"]).is_err_and(|e| e.contains("stray")));
     }
 }
