@@ -22,14 +22,49 @@ use crate::config::MacTable;
 use crate::config::AXES;
 use crate::machine::{Machine, SensorLevels};
 use std::fs::File;
-use std::io::{BufWriter, Write};
+
+/// A CSV file being written, which stops (once, saying why) at its first error.
+#[derive(Debug)]
+struct CsvFile {
+    out: csv::Writer<File>,
+    path: String,
+    failed: bool,
+}
+
+impl CsvFile {
+    /// Creates `path`.
+    fn create(path: String) -> std::io::Result<CsvFile> {
+        Ok(CsvFile {
+            out: csv::Writer::from_writer(File::create(&path)?),
+            path,
+            failed: false,
+        })
+    }
+
+    /// Writes one record (fields are quoted only where CSV needs it; none of the
+    /// library's does).
+    fn record<T: AsRef<[u8]>>(&mut self, what: &str, fields: impl IntoIterator<Item = T>) {
+        if self.failed {
+            return;
+        }
+        if let Err(e) = self.out.write_record(fields) {
+            eprintln!("MCCL: {what} {} stopped: {e}", self.path);
+            self.failed = true;
+        }
+    }
+
+    /// Writes buffered records out.
+    fn flush(&mut self) {
+        if !self.failed {
+            let _ = self.out.flush();
+        }
+    }
+}
 
 /// An open trace file.
 #[derive(Debug)]
 pub struct Trace {
-    out: BufWriter<File>,
-    path: String,
-    failed: bool,
+    out: CsvFile,
     events: Events,
 }
 
@@ -44,62 +79,45 @@ impl Trace {
 
     /// Creates `path` and writes the header line.
     pub fn create(path: &str) -> Result<Trace, String> {
-        let f = File::create(path).map_err(|e| format!("MCCL_TRACE={path}: {e}"))?;
+        let out =
+            CsvFile::create(path.to_string()).map_err(|e| format!("MCCL_TRACE={path}: {e}"))?;
         let ep = events_path(path);
-        let ef = File::create(&ep).map_err(|e| format!("MCCL_TRACE={path}: {ep}: {e}"))?;
+        let events =
+            CsvFile::create(ep.clone()).map_err(|e| format!("MCCL_TRACE={path}: {ep}: {e}"))?;
         let mut t = Trace {
-            out: BufWriter::new(f),
-            path: path.to_string(),
-            failed: false,
+            out,
             events: Events {
-                out: BufWriter::new(ef),
-                path: ep,
-                failed: false,
+                out: events,
                 cards: Vec::new(),
                 home: None,
             },
         };
-        t.write("time_ms,group,command,status,x,y,z,u,v,w,a,b,speed\n");
-        t.events.write_header();
+        t.out.record("trace", ROW_HEADER);
+        t.events.out.record("trace events", EVENTS_HEADER);
         Ok(t)
-    }
-
-    fn write(&mut self, s: &str) {
-        if self.failed {
-            return;
-        }
-        if let Err(e) = self.out.write_all(s.as_bytes()) {
-            eprintln!("MCCL: trace {} stopped: {e}", self.path);
-            self.failed = true;
-        }
     }
 
     /// One row for group `g` at virtual time `t_ns`.
     pub fn row(&mut self, t_ns: u128, g: &GroupState) {
         let s = g.snapshot();
-        let mut line = format!(
-            "{}.{:06},{},{},{}",
-            t_ns / 1_000_000,
-            t_ns % 1_000_000,
-            g.index(),
-            s.cmd.nCommandIndex,
-            s.status
-        );
-        for p in s.pos {
-            line.push_str(&format!(",{:.9}", p));
-        }
-        line.push_str(&format!(",{:.9}\n", s.path_speed));
-        self.write(&line);
+        let head = [
+            fmt_time(t_ns),
+            g.index().to_string(),
+            s.cmd.nCommandIndex.to_string(),
+            s.status.to_string(),
+        ];
+        let numbers = s
+            .pos
+            .iter()
+            .chain([&s.path_speed])
+            .map(|v| format!("{v:.9}"));
+        self.out.record("trace", head.into_iter().chain(numbers));
     }
 
     /// Writes buffered rows out.
     pub fn flush(&mut self) {
-        if !self.failed {
-            let _ = self.out.flush();
-        }
-        if !self.events.failed {
-            let _ = self.events.out.flush();
-        }
+        self.out.flush();
+        self.events.out.flush();
     }
 
     /// At start: turns on group `g`'s notes and writes a `config` event per mapped axis
@@ -388,9 +406,7 @@ struct CardSeen {
 /// The events file next to the trace: `time_ms,card,group,kind,detail`.
 #[derive(Debug)]
 struct Events {
-    out: BufWriter<File>,
-    path: String,
-    failed: bool,
+    out: CsvFile,
     cards: Vec<CardSeen>,
     home: Option<(i32, u8)>,
 }
@@ -398,23 +414,24 @@ struct Events {
 /// Axis names in `config` events.
 const AXIS_NAMES: [&str; AXES] = ["x", "y", "z", "u", "v", "w", "a", "b"];
 
-impl Events {
-    fn write_header(&mut self) {
-        if let Err(e) = self.out.write_all(b"time_ms,card,group,kind,detail\n") {
-            eprintln!("MCCL: trace events {} stopped: {e}", self.path);
-            self.failed = true;
-        }
-    }
+/// The trace's columns.
+const ROW_HEADER: [&str; 13] = [
+    "time_ms", "group", "command", "status", "x", "y", "z", "u", "v", "w", "a", "b", "speed",
+];
 
+/// The events file's columns.
+const EVENTS_HEADER: [&str; 5] = ["time_ms", "card", "group", "kind", "detail"];
+
+impl Events {
     fn write(&mut self, t_ns: u128, card: i64, group: i64, kind: &str, detail: &str) {
-        if self.failed {
-            return;
-        }
-        let line = format!("{},{card},{group},{kind},{detail}\n", fmt_time(t_ns));
-        if let Err(e) = self.out.write_all(line.as_bytes()) {
-            eprintln!("MCCL: trace events {} stopped: {e}", self.path);
-            self.failed = true;
-        }
+        let fields = [
+            fmt_time(t_ns),
+            card.to_string(),
+            group.to_string(),
+            kind.to_string(),
+            detail.to_string(),
+        ];
+        self.out.record("trace events", fields);
     }
 }
 
