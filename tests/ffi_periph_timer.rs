@@ -120,7 +120,7 @@ fn watchdog_expiry_resets_the_card() {
     assert_eq!(p.rio.ario[0].output(2), Ok(0));
     assert_eq!(p.rio.rio[1].output(3), Ok(0));
     assert!(!p.watchdog.enabled());
-    assert_eq!(p.watchdog.resets, 1);
+    assert_eq!(p.watchdog.resets(), 1);
     let x = x_pos(0);
     MCC_TimeDelay(5);
     assert_eq!(x_pos(0), x, "stopped where it was");

@@ -181,7 +181,7 @@ fn handshake_under(clock: &str) {
     MCC_TimeDelay(1);
     assert_eq!(shared.clock().ticks(), t0 + 1);
     assert_eq!((HSK_CALLS.load(SeqCst), HSK_SUM.load(SeqCst)), (1, 3));
-    assert_eq!(shared.periph(1).unwrap().lock().handshake.received, 2);
+    assert_eq!(shared.periph(1).unwrap().lock().handshake.received(), 2);
     // Nothing more: each request is acknowledged once.
     MCC_TimeDelay(5);
     assert_eq!(HSK_CALLS.load(SeqCst), 1);

@@ -29,13 +29,13 @@ pub extern "system" fn MCC_DisableTimer(wCardIndex: WORD) -> c_int {
 /// tick).
 #[no_mangle]
 pub extern "system" fn MCC_EnableTimerTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.timer.trigger = true) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.timer.set_trigger(true)) }
 }
 
 /// The timer's expirations no longer call the TMR routine.
 #[no_mangle]
 pub extern "system" fn MCC_DisableTimerTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.timer.trigger = false) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.timer.set_trigger(false)) }
 }
 
 /// Sets the watchdog's compare value in timer periods (1..=2^32-1): with the timer at its

@@ -70,7 +70,7 @@ impl crate::engine::Shared {
                 p.watchdog.enabled(),
                 p.watchdog.compare(),
                 p.watchdog.count(),
-                p.watchdog.resets,
+                p.watchdog.resets(),
             );
             for s in 0..2 {
                 for port in 0..4u16 {

@@ -19,7 +19,7 @@ pub struct Handshake {
     /// Host interrupts received and not yet acknowledged.
     waiting: u64,
     /// Host interrupts received since init.
-    pub received: u64,
+    received: u64,
 }
 
 impl Handshake {
@@ -32,6 +32,12 @@ impl Handshake {
     /// `MCC_SlaveInterrupt`: the card interrupts the host now.
     pub fn slave_interrupt(&mut self, p: &mut Pending) {
         p.raise(Interrupt::Handshake);
+    }
+
+    /// Host interrupts received since init (each one also acknowledged, at the tick after
+    /// it): what the card has seen of the host, for a test or a diagnostic.
+    pub fn received(&self) -> u64 {
+        self.received
     }
 
     /// Whether a request waits for its acknowledgement.
@@ -67,6 +73,6 @@ mod tests {
         let mut q = Pending::default();
         h.tick(&mut q);
         assert!(q.is_empty(), "each request acknowledged once");
-        assert_eq!(h.received, 2);
+        assert_eq!(h.received(), 2);
     }
 }

@@ -54,7 +54,7 @@ impl Peripherals {
     /// (DAC at 0 V, remote outputs at 0); the caller resets the rest of the card.
     pub fn tick(&mut self, dt_ns: u64) -> bool {
         let n = self.timer.advance(dt_ns);
-        if n > 0 && self.timer.trigger {
+        if n > 0 && self.timer.trigger() {
             self.pending.raise(Interrupt::Timer(n));
         }
         let reset = self.watchdog.advance(n);
@@ -234,7 +234,7 @@ mod tests {
             12 => p.rio.rio[set].set_output(0, (k >> 8) as u16).unwrap(),
             13 => {
                 p.timer.set_period(70_000).unwrap();
-                p.timer.trigger = true;
+                p.timer.set_trigger(true);
                 p.timer.set_enabled(k & 128 != 0);
             }
             14 => p.rio.ario[set]
@@ -323,12 +323,12 @@ mod tests {
         p.watchdog.set_enabled(true);
         assert!(!(0..20).any(|_| p.tick(2_000_000)), "timer off: no count");
         p.timer.set_enabled(true);
-        p.timer.trigger = true;
+        p.timer.set_trigger(true);
         let fired: Vec<bool> = (0..5).map(|_| p.tick(2_000_000)).collect();
         assert_eq!(fired, [false, false, false, false, true]);
         assert_eq!(p.pending.tmr[0], 10, "2 expirations per tick");
         assert_eq!(p.dac.output(3), 0.0);
         assert_eq!(p.rio.ario[0].output(5), Ok(0));
-        assert_eq!(p.watchdog.resets, 1);
+        assert_eq!(p.watchdog.resets(), 1);
     }
 }
