@@ -349,21 +349,21 @@ fn timing_under(clock: &str) {
     let after = snap(&shared);
     assert_eq!(
         (
-            before.0.divider,
-            before.0.update_ns,
-            before.1.divider,
-            before.1.update_ns
+            before.0.divider(),
+            before.0.update_ns(),
+            before.1.divider(),
+            before.1.update_ns()
         ),
         (
-            after.0.divider,
-            after.0.update_ns,
-            after.1.divider,
-            after.1.update_ns
+            after.0.divider(),
+            after.0.update_ns(),
+            after.1.divider(),
+            after.1.update_ns()
         )
     );
     assert_eq!(
-        before.2.map(|c| (c.divider, c.update_ns)),
-        after.2.map(|c| (c.divider, c.update_ns))
+        before.2.map(|c| (c.divider(), c.update_ns())),
+        after.2.map(|c| (c.divider(), c.update_ns()))
     );
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

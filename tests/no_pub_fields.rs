@@ -99,7 +99,6 @@ const NOT_YET: &[&str] = &[
     "Dac",
     "Set",
     "ArioTiming",
-    "Cadence",
 ];
 
 /// Per struct name: its fields visible outside its crate's private parts (`pub`, and

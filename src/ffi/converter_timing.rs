@@ -1,26 +1,18 @@
 //! Timing of the D/A and A/D converters and the RIO sets (vendor header, "Obsolete
 //! functions"; the manuals do not describe them): a clock divider (system clocks of 10 ns
 //! per serial bit) and an update rate (Hz, the least time between cycles), read as the
-//! ARIO setters are ([`crate::card::cadence`], docs/undocumented-functions.md).
+//! ARIO setters are ([`crate::card::cadence`], docs/undocumented-functions.md). An update
+//! rate is finite, > 0, its period `1 / rate` at most the longest time of "Ranges"
+//! (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it
+//! ([`crate::card::cadence::update_period_ns`]).
 
-use super::{finite, initialised, with_card};
+use super::{initialised, with_card};
 use crate::card::cadence::Cadence;
 use crate::card::rio::set_ix;
-use crate::error::{McclError, McclResult};
+use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-
-/// A checked update rate: finite, > 0, its period `1 / rate` at most the longest time of
-/// "Ranges" (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it.
-fn rate(r: f64) -> McclResult<f64> {
-    let r = finite(r)?;
-    if r <= 0.0 {
-        return Err(McclError::Parameter);
-    }
-    crate::config::range::time_ms(1000.0 / r)?;
-    Ok(r)
-}
 
 /// Runs `f` on the cadence `pick` chooses on card `wCardIndex` (`INITIAL_MOTION_ERR`
 /// before init, `PARAMETER_ERR` for a card not initialised).
@@ -45,15 +37,15 @@ fn set_divider(
 }
 
 /// Sets the update rate of the cadence `pick` chooses on card `wCardIndex`
-/// (`INITIAL_MOTION_ERR` before init whatever the arguments, then the rate is checked).
+/// (`INITIAL_MOTION_ERR` before init whatever the arguments; a bad rate or card is
+/// `PARAMETER_ERR`).
 fn set_update_rate(
     dfUpdateRate: f64,
     wCardIndex: WORD,
     pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
 ) -> McclResult<c_int> {
     initialised()?;
-    let r = rate(dfUpdateRate)?;
-    on_cadence(wCardIndex, pick, |t| t.set_update_rate(r))
+    on_cadence(wCardIndex, pick, |t| t.set_update_rate(dfUpdateRate))
 }
 
 /// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
@@ -112,8 +104,7 @@ pub extern "system" fn MCC_SetRIOUpdateRate(
 ) -> c_int {
     ffi_boundary! {
         initialised()?;
-        let r = rate(dfUpdateRate)?;
         let s = set_ix(wSet)?;
-        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_update_rate(r))
+        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_update_rate(dfUpdateRate))
     }
 }

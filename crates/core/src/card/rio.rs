@@ -330,11 +330,10 @@ impl ArioTiming {
     /// cycle `1 / rate` at most the longest time of [`crate::config::range::time_ms`],
     /// so `rate` >= 2.33e-7 Hz); the period is rounded to whole ns (at least 1).
     pub fn set_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
-        if !rate.is_finite() || rate <= 0.0 || set >= SETS {
+        if set >= SETS {
             return Err(McclError::Parameter);
         }
-        crate::config::range::time_ms(1000.0 / rate)?;
-        self.update_ns[set] = Some(((1e9 / rate).round() as u64).max(1));
+        self.update_ns[set] = Some(super::cadence::update_period_ns(rate)?);
         self.elapsed_ns[set] = 0;
         Ok(())
     }
@@ -660,7 +659,7 @@ mod tests {
         assert_eq!(transfers(&mut m, 12), [4, 8, 12]);
         // Set 0 keeps its own default timing.
         assert_eq!(
-            (m.rio_timing[0].divider, m.rio_timing[0].update_ns),
+            (m.rio_timing[0].divider(), m.rio_timing[0].update_ns()),
             (RIO_DEFAULT_DIVIDER, None)
         );
     }
