@@ -6,7 +6,7 @@
 //! (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it
 //! ([`crate::card::cadence::update_period_ns`]).
 
-use super::{initialised, with_card};
+use super::{card_do, initialised, with_card};
 use crate::card::cadence::Cadence;
 use crate::card::rio::set_ix;
 use crate::error::McclResult;
@@ -53,14 +53,14 @@ fn set_update_rate(
 /// per update.
 #[no_mangle]
 pub extern "system" fn MCC_SetDACClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_divider(wDivider, wCardIndex, |p| &mut p.dac.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_clock_divider(wDivider)) }
 }
 
 /// At most `dfUpdateRate` updates per second (Hz, > 0) on each D/A channel: a value
 /// written sooner than `1 / rate` after the channel's last change waits for it.
 #[no_mangle]
 pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_update_rate(dfUpdateRate, wCardIndex, |p| &mut p.dac.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_update_rate(dfUpdateRate)) }
 }
 
 /// A/D clock: one conversion clock every `wDivider` system clocks (1..65535, default

@@ -33,7 +33,7 @@ pub struct Dac {
     trig_mode: [bool; AXES],
     /// How long one channel's update takes (`MCC_SetDACClockDivider`,
     /// `MCC_SetDACUpdateRate`); only its cycle length is used.
-    pub cadence: Cadence,
+    cadence: Cadence,
     /// The DAC's time since init, ns (advanced by [`Dac::tick`]).
     now_ns: u64,
     /// When each channel's output last changed.
@@ -91,6 +91,25 @@ impl Dac {
         let v = check_voltage(v)?;
         self.write(ch, v);
         Ok(())
+    }
+
+    /// `MCC_SetDACClockDivider`: one serial bit every `divider` system clocks (1..65535;
+    /// 0 is `PARAMETER_ERR` and changes nothing), so a channel's update lasts
+    /// `16 × divider × 10 ns` and its output changes at most once per update.
+    pub fn set_clock_divider(&mut self, divider: u16) -> McclResult<()> {
+        self.cadence.set_divider(divider)
+    }
+
+    /// `MCC_SetDACUpdateRate`: at most `rate` updates per second on each channel (checked
+    /// as [`super::cadence::update_period_ns`] says; a refused rate changes nothing): a
+    /// value written sooner than `1 / rate` after the channel's last change waits for it.
+    pub fn set_update_rate(&mut self, rate: f64) -> McclResult<()> {
+        self.cadence.set_update_rate(rate)
+    }
+
+    /// The update timing as set (divider and update period).
+    pub fn cadence(&self) -> &Cadence {
+        &self.cadence
     }
 
     /// How long one channel's update lasts, ns: 16 bits at the divider, or the update
@@ -219,7 +238,7 @@ mod tests {
         // the next cycle runs from 10 ms: the tick ending at 20 ms (k = 19) applies
         // 19 / 4, the one ending at 30 ms (k = 29) 29 / 4.
         let mut d = Dac::default();
-        d.cadence.set_update_rate(100.0).unwrap();
+        d.set_update_rate(100.0).unwrap();
         assert_eq!(d.cycle_ns(), 10_000_000);
         let mut seen = Vec::new();
         for k in 0..30 {
@@ -233,7 +252,7 @@ mod tests {
         want.push(7.25);
         assert_eq!(seen, want);
         // Divider 65535: 16 x 65535 x 10 ns = 10.4856 ms, longer than 10 ms.
-        d.cadence.set_divider(65535).unwrap();
+        d.set_clock_divider(65535).unwrap();
         assert_eq!(d.cycle_ns(), 10_485_600);
         // The watchdog's reset drops what waits.
         d.set_output(0, 5.0).unwrap();

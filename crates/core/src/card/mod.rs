@@ -241,7 +241,7 @@ mod tests {
                 .set_input_trigger((k % 8) as u16, true)
                 .unwrap(),
             16 => p.dac.set_output((k >> 8) as usize % 8, 1.0).unwrap(),
-            17 => p.dac.cadence.set_update_rate(300.0).unwrap(),
+            17 => p.dac.set_update_rate(300.0).unwrap(),
             18 => p.rio.rio_timing[set].set_update_rate(700.0).unwrap(),
             19 => p.rio.rio_timing[set].set_divider(3000).unwrap(),
             _ => p
