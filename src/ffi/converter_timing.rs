@@ -25,29 +25,6 @@ fn on_cadence(
     Ok(c::NO_ERR)
 }
 
-/// Sets the clock divider of the cadence `pick` chooses on card `wCardIndex`
-/// (`INITIAL_MOTION_ERR` before init whatever the arguments).
-fn set_divider(
-    wDivider: WORD,
-    wCardIndex: WORD,
-    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
-) -> McclResult<c_int> {
-    initialised()?;
-    on_cadence(wCardIndex, pick, |t| t.set_divider(wDivider))
-}
-
-/// Sets the update rate of the cadence `pick` chooses on card `wCardIndex`
-/// (`INITIAL_MOTION_ERR` before init whatever the arguments; a bad rate or card is
-/// `PARAMETER_ERR`).
-fn set_update_rate(
-    dfUpdateRate: f64,
-    wCardIndex: WORD,
-    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
-) -> McclResult<c_int> {
-    initialised()?;
-    on_cadence(wCardIndex, pick, |t| t.set_update_rate(dfUpdateRate))
-}
-
 /// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
 /// update (16 bits) lasts `16 × wDivider × 10 ns`, and its output changes at most once
 /// per update.
@@ -68,14 +45,14 @@ pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD)
 /// count restarts at the call.
 #[no_mangle]
 pub extern "system" fn MCC_SetADCClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_divider(wDivider, wCardIndex, |p| &mut p.adc.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_clock_divider(wDivider)) }
 }
 
 /// At most `dfUpdateRate` free-running scans per second (Hz, > 0). The scan count
 /// restarts at the call.
 #[no_mangle]
 pub extern "system" fn MCC_SetADCUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_update_rate(dfUpdateRate, wCardIndex, |p| &mut p.adc.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_update_rate(dfUpdateRate)) }
 }
 
 /// Serial clock of a RIO set: one bit every `wDivider` system clocks (1..65535, default

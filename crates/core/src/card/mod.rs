@@ -94,7 +94,7 @@ impl Peripherals {
 
     /// The voltage at each ADC input now.
     pub fn adc_inputs(&self) -> [f32; AXES] {
-        std::array::from_fn(|ch| match self.adc.source[ch] {
+        std::array::from_fn(|ch| match self.adc.source(ch) {
             AdcSource::Dac(d) if d < AXES => self.dac.output(d),
             AdcSource::Dac(_) => 0.0,
             AdcSource::Constant(v) => v,
@@ -110,7 +110,7 @@ impl Peripherals {
     /// Where ADC channel `ch` reads its input (default: DAC channel `ch` of this card).
     pub fn set_adc_source(&mut self, ch: usize, src: AdcSource) {
         if ch < AXES {
-            self.adc.source[ch] = src;
+            self.adc.set_source(ch, src);
         }
     }
 
