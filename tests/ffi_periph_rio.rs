@@ -161,8 +161,8 @@ fn rio_trans_error_reports_after_the_tolerated_failed_transfers() {
     assert_eq!(MCC_EnableRIOTransTrigger(RIO_SET1, 0), NO_ERR);
     // The vendor test's value: 5 failed transfers tolerated, the 6th reported.
     assert_eq!(MCC_SetRIOTransError(5, RIO_SET1, 0), NO_ERR);
-    assert_eq!(periph(0).rio.rio[1].tolerance(), 5);
-    assert_eq!(periph(0).rio.rio[0].tolerance(), 0, "per set");
+    assert_eq!(periph(0).rio.rio_set(1).unwrap().tolerance(), 5);
+    assert_eq!(periph(0).rio.rio_set(0).unwrap().tolerance(), 0, "per set");
     MCC_TimeDelay(1);
     with_periph(0, |p| p.rio.set_slave_failed(false, 1, 2, true));
     // SAFETY: valid pointers throughout.
@@ -174,7 +174,7 @@ fn rio_trans_error_reports_after_the_tolerated_failed_transfers() {
             assert_eq!(w, 1, "failed transfer {n} tolerated");
             assert_eq!(MCC_GetRIOSlaveFail(&mut d, RIO_SET1, 0), NO_ERR);
             assert_eq!(d, 0);
-            assert_eq!(periph(0).rio.rio[1].failed_transfers(2), n);
+            assert_eq!(periph(0).rio.rio_set(1).unwrap().failed_transfers(2), n);
         }
         assert!(RIO_BYTES.lock().is_empty(), "no FAIL yet");
         MCC_TimeDelay(1);
@@ -257,7 +257,10 @@ fn ario_transfers_follow_the_update_rate_divider_and_node_delay() {
     assert_eq!(ario_in(RIO_SET1, RIO_SLAVE4), 4, "60 ms");
     // A second transmitting slave doubles the bus time: 60 ms per cycle.
     assert_eq!(MCC_EnableARIOSlaveControl(RIO_SET1, RIO_SLAVE5, 0), NO_ERR);
-    assert_eq!(periph(0).rio.ario_timing.cycle_ns(1, 0b11_0000), 60_000_000);
+    assert_eq!(
+        periph(0).rio.ario_timing().cycle_ns(1, 0b11_0000),
+        60_000_000
+    );
     // RIO sets are not ARIO: they still transfer every tick.
     assert_eq!(MCC_EnableRIOSetControl(RIO_SET1, 0), NO_ERR);
     assert_eq!(MCC_EnableRIOSlaveControl(RIO_SET1, 1, 0), NO_ERR);

@@ -117,8 +117,8 @@ fn watchdog_expiry_resets_the_card() {
     assert!(!shared.pos_ready(0));
     let p = periph(0);
     assert_eq!(p.dac.output(4), 0.0);
-    assert_eq!(p.rio.ario[0].output(2), Ok(0));
-    assert_eq!(p.rio.rio[1].output(3), Ok(0));
+    assert_eq!(p.rio.ario_set(0).unwrap().output(2), Ok(0));
+    assert_eq!(p.rio.rio_set(1).unwrap().output(3), Ok(0));
     assert!(!p.watchdog.enabled());
     assert_eq!(p.watchdog.resets(), 1);
     let x = x_pos(0);

@@ -325,7 +325,11 @@ fn timing_under(clock: &str) {
     let shared = MCCLPCI_IMP::system::active().unwrap();
     let snap = |s: &std::sync::Arc<MCCLPCI_IMP::engine::Shared>| {
         let p = s.periph(0).unwrap().lock();
-        (*p.dac.cadence(), *p.adc.cadence(), p.rio.rio_timing)
+        (
+            *p.dac.cadence(),
+            *p.adc.cadence(),
+            [0, 1].map(|s| *p.rio.rio_timing(s).unwrap()),
+        )
     };
     let before = snap(&shared);
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e-9] {

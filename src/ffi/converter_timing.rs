@@ -5,25 +5,14 @@
 //! rate is finite, > 0, its period `1 / rate` at most the longest time of "Ranges"
 //! (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it
 //! ([`crate::card::cadence::update_period_ns`]).
+//!
+//! Each setter is `INITIAL_MOTION_ERR` before init whatever the arguments, then
+//! `PARAMETER_ERR` for a card not initialised, a bad set, divider or rate (nothing
+//! changed).
 
-use super::{card_do, initialised, with_card};
-use crate::card::cadence::Cadence;
-use crate::card::rio::set_ix;
-use crate::error::McclResult;
-use crate::vendor::consts as c;
+use super::card_do;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-
-/// Runs `f` on the cadence `pick` chooses on card `wCardIndex` (`INITIAL_MOTION_ERR`
-/// before init, `PARAMETER_ERR` for a card not initialised).
-fn on_cadence(
-    wCardIndex: WORD,
-    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
-    f: impl FnOnce(&mut Cadence) -> McclResult<()>,
-) -> McclResult<c_int> {
-    with_card(wCardIndex, |p| f(pick(p)))?;
-    Ok(c::NO_ERR)
-}
 
 /// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
 /// update (16 bits) lasts `16 × wDivider × 10 ns`, and its output changes at most once
@@ -65,9 +54,7 @@ pub extern "system" fn MCC_SetRIOClockDivider(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        initialised()?;
-        let s = set_ix(wSet)?;
-        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_divider(wDivider))
+        card_do(wCardIndex, |p| p.rio.set_rio_clock_divider(usize::from(wSet), wDivider))
     }
 }
 
@@ -80,8 +67,8 @@ pub extern "system" fn MCC_SetRIOUpdateRate(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        initialised()?;
-        let s = set_ix(wSet)?;
-        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_update_rate(dfUpdateRate))
+        card_do(wCardIndex, |p| {
+            p.rio.set_rio_update_rate(usize::from(wSet), dfUpdateRate)
+        })
     }
 }

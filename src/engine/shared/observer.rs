@@ -74,7 +74,7 @@ impl crate::engine::Shared {
             );
             for s in 0..2 {
                 for port in 0..4u16 {
-                    let set = &p.rio.rio[s];
+                    let Ok(set) = p.rio.rio_set(s) else { continue };
                     v.rio_in[s][usize::from(port)] = set.input(port).unwrap_or(0);
                     v.rio_out[s][usize::from(port)] = set.output(port).unwrap_or(0);
                 }

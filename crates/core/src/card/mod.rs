@@ -217,33 +217,40 @@ mod tests {
 
     /// The same change made to both copies.
     fn change(p: &mut Peripherals, k: u64) {
+        fn rio(p: &mut Peripherals, set: usize) -> &mut rio::Set<{ rio::RIO_PORTS }> {
+            p.rio.rio_set_mut(set).unwrap()
+        }
+        fn ario(p: &mut Peripherals, set: usize) -> &mut rio::Set<{ rio::ARIO_SLAVES }> {
+            p.rio.ario_set_mut(set).unwrap()
+        }
         let set = (k / 16 % 2) as usize;
         let slave = (k / 32 % 4) as u16;
         match k % 20 {
-            0 => p.rio.ario_timing.set_update_rate(set, 300.0).unwrap(),
-            1 => p.rio.ario_timing.set_update_rate(set, 1700.0).unwrap(),
-            2 => p.rio.ario_timing.set_divider(set, 2000).unwrap(),
-            3 => p.rio.ario_timing.set_node_delay(3000),
-            4 | 5 => p.rio.ario[set].set_slave_control(slave, true).unwrap(),
-            6..=8 => p.rio.ario[set].set_slave_control(slave, false).unwrap(),
-            9 => p.rio.ario[set].set_output(slave, (k >> 8) as u16).unwrap(),
-            10 => p.rio.rio[set].control = !p.rio.rio[set].control,
-            11 => p.rio.rio[set]
-                .set_slave_control(slave, k & 64 != 0)
-                .unwrap(),
-            12 => p.rio.rio[set].set_output(0, (k >> 8) as u16).unwrap(),
+            0 => p.rio.set_ario_update_rate(set, 300.0).unwrap(),
+            1 => p.rio.set_ario_update_rate(set, 1700.0).unwrap(),
+            2 => p.rio.set_ario_clock_divider(set, 2000).unwrap(),
+            3 => p.rio.set_ario_node_delay(3000),
+            4 | 5 => ario(p, set).set_slave_control(slave, true).unwrap(),
+            6..=8 => ario(p, set).set_slave_control(slave, false).unwrap(),
+            9 => ario(p, set).set_output(slave, (k >> 8) as u16).unwrap(),
+            10 => {
+                let on = p.rio.rio_set(set).unwrap().control();
+                p.rio.set_rio_control(set, !on).unwrap();
+            }
+            11 => rio(p, set).set_slave_control(slave, k & 64 != 0).unwrap(),
+            12 => rio(p, set).set_output(0, (k >> 8) as u16).unwrap(),
             13 => {
                 p.timer.set_period(70_000).unwrap();
                 p.timer.set_trigger(true);
                 p.timer.set_enabled(k & 128 != 0);
             }
-            14 => p.rio.ario[set]
+            14 => ario(p, set)
                 .set_input_trigger((k % 8) as u16, true)
                 .unwrap(),
             16 => p.dac.set_output((k >> 8) as usize % 8, 1.0).unwrap(),
             17 => p.dac.set_update_rate(300.0).unwrap(),
-            18 => p.rio.rio_timing[set].set_update_rate(700.0).unwrap(),
-            19 => p.rio.rio_timing[set].set_divider(3000).unwrap(),
+            18 => p.rio.set_rio_update_rate(set, 700.0).unwrap(),
+            19 => p.rio.set_rio_clock_divider(set, 3000).unwrap(),
             _ => p
                 .rio
                 .set_slave_failed(true, set, usize::from(slave), k & 256 != 0),
@@ -283,9 +290,10 @@ mod tests {
                 for p in [&mut *cell.lock(), &mut plain] {
                     p.timer.set_enabled(false);
                     for set in 0..2 {
-                        p.rio.rio[set].control = false;
+                        p.rio.set_rio_control(set, false).unwrap();
                         for slave in 0..32 {
-                            p.rio.ario[set].set_slave_control(slave, false).unwrap();
+                            let ario = p.rio.ario_set_mut(set).unwrap();
+                            ario.set_slave_control(slave, false).unwrap();
                         }
                     }
                 }
@@ -319,7 +327,11 @@ mod tests {
         p.timer.set_period(100_000).unwrap(); // 1 ms
         p.watchdog.set_compare(10).unwrap(); // 10 ms
         p.dac.set_output(3, 4.0).unwrap();
-        p.rio.ario[0].set_output(5, 0xFFFF).unwrap();
+        p.rio
+            .ario_set_mut(0)
+            .unwrap()
+            .set_output(5, 0xFFFF)
+            .unwrap();
         p.watchdog.set_enabled(true);
         assert!(!(0..20).any(|_| p.tick(2_000_000)), "timer off: no count");
         p.timer.set_enabled(true);
@@ -328,7 +340,7 @@ mod tests {
         assert_eq!(fired, [false, false, false, false, true]);
         assert_eq!(p.pending.tmr[0], 10, "2 expirations per tick");
         assert_eq!(p.dac.output(3), 0.0);
-        assert_eq!(p.rio.ario[0].output(5), Ok(0));
+        assert_eq!(p.rio.ario_set(0).unwrap().output(5), Ok(0));
         assert_eq!(p.watchdog.resets(), 1);
     }
 }
