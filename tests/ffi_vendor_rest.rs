@@ -181,7 +181,7 @@ fn handshake_under(clock: &str) {
     MCC_TimeDelay(1);
     assert_eq!(shared.clock().ticks(), t0 + 1);
     assert_eq!((HSK_CALLS.load(SeqCst), HSK_SUM.load(SeqCst)), (1, 3));
-    assert_eq!(shared.periph(1).unwrap().lock().handshake.received(), 2);
+    assert_eq!(shared.periph(1).unwrap().lock().handshake().received(), 2);
     // Nothing more: each request is acknowledged once.
     MCC_TimeDelay(5);
     assert_eq!(HSK_CALLS.load(SeqCst), 1);
@@ -326,9 +326,9 @@ fn timing_under(clock: &str) {
     let snap = |s: &std::sync::Arc<MCCLPCI_IMP::engine::Shared>| {
         let p = s.periph(0).unwrap().lock();
         (
-            *p.dac.cadence(),
-            *p.adc.cadence(),
-            [0, 1].map(|s| *p.rio.rio_timing(s).unwrap()),
+            *p.dac().cadence(),
+            *p.adc().cadence(),
+            *p.remote_io().rio_timing(),
         )
     };
     let before = snap(&shared);

@@ -328,10 +328,10 @@ impl Shared {
                         let (mut p, set) = (p.lock(), usize::from(set));
                         // Set and port were checked when the command was queued.
                         let _ = if ario {
-                            let s = p.rio.ario_set_mut(set);
+                            let s = p.remote_io_mut().ario_set_mut(set);
                             s.and_then(|s| s.set_output_bits(port, mask, value))
                         } else {
-                            let s = p.rio.rio_set_mut(set);
+                            let s = p.remote_io_mut().rio_set_mut(set);
                             s.and_then(|s| s.set_output_bits(port, mask, value))
                         };
                     }

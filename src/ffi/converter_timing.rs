@@ -19,14 +19,14 @@ use std::os::raw::c_int;
 /// per update.
 #[no_mangle]
 pub extern "system" fn MCC_SetDACClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_clock_divider(wDivider)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac_mut().set_clock_divider(wDivider)) }
 }
 
 /// At most `dfUpdateRate` updates per second (Hz, > 0) on each D/A channel: a value
 /// written sooner than `1 / rate` after the channel's last change waits for it.
 #[no_mangle]
 pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_update_rate(dfUpdateRate)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac_mut().set_update_rate(dfUpdateRate)) }
 }
 
 /// A/D clock: one conversion clock every `wDivider` system clocks (1..65535, default
@@ -34,14 +34,14 @@ pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD)
 /// count restarts at the call.
 #[no_mangle]
 pub extern "system" fn MCC_SetADCClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_clock_divider(wDivider)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_clock_divider(wDivider)) }
 }
 
 /// At most `dfUpdateRate` free-running scans per second (Hz, > 0). The scan count
 /// restarts at the call.
 #[no_mangle]
 pub extern "system" fn MCC_SetADCUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_update_rate(dfUpdateRate)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_update_rate(dfUpdateRate)) }
 }
 
 /// Serial clock of a RIO set: one bit every `wDivider` system clocks (1..65535, default
@@ -54,7 +54,9 @@ pub extern "system" fn MCC_SetRIOClockDivider(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        card_do(wCardIndex, |p| p.rio.set_rio_clock_divider(usize::from(wSet), wDivider))
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_clock_divider(usize::from(wSet), wDivider)
+        })
     }
 }
 
@@ -68,7 +70,7 @@ pub extern "system" fn MCC_SetRIOUpdateRate(
 ) -> c_int {
     ffi_boundary! {
         card_do(wCardIndex, |p| {
-            p.rio.set_rio_update_rate(usize::from(wSet), dfUpdateRate)
+            p.remote_io_mut().set_rio_update_rate(usize::from(wSet), dfUpdateRate)
         })
     }
 }

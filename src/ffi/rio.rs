@@ -28,7 +28,9 @@ fn on_set<const N: usize, R>(
     f: impl FnOnce(&mut Set<N>) -> McclResult<R>,
 ) -> McclResult<R> {
     super::initialised()?;
-    with_card(wCardIndex, |p| f(pick(&mut p.rio, usize::from(wSet))?))
+    with_card(wCardIndex, |p| {
+        f(pick(p.remote_io_mut(), usize::from(wSet))?)
+    })
 }
 
 /// RIO set `set` of a card's remote I/O.
@@ -109,13 +111,21 @@ fn slave_control<const N: usize>(
 /// Starts data transfer of a RIO set.
 #[no_mangle]
 pub extern "system" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.rio.set_rio_control(usize::from(wSet), true)) }
+    ffi_boundary! {
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_control(usize::from(wSet), true)
+        })
+    }
 }
 
 /// Stops data transfer of a RIO set.
 #[no_mangle]
 pub extern "system" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.rio.set_rio_control(usize::from(wSet), false)) }
+    ffi_boundary! {
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_control(usize::from(wSet), false)
+        })
+    }
 }
 
 /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
@@ -326,7 +336,7 @@ pub extern "system" fn MCC_SetARIOUpdateRate(
 ) -> c_int {
     ffi_boundary! {
         card_do(wCardIndex, |p| {
-            p.rio.set_ario_update_rate(usize::from(wSet), dfUpdateRate)
+            p.remote_io_mut().set_ario_update_rate(usize::from(wSet), dfUpdateRate)
         })
     }
 }
@@ -342,7 +352,7 @@ pub extern "system" fn MCC_SetARIOClockDivider(
 ) -> c_int {
     ffi_boundary! {
         card_do(wCardIndex, |p| {
-            p.rio.set_ario_clock_divider(usize::from(wSet), wDivider)
+            p.remote_io_mut().set_ario_clock_divider(usize::from(wSet), wDivider)
         })
     }
 }
@@ -352,7 +362,7 @@ pub extern "system" fn MCC_SetARIOClockDivider(
 #[no_mangle]
 pub extern "system" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        card_do(wCardIndex, |p| p.rio.set_ario_node_delay(dwDelay))
+        card_do(wCardIndex, |p| p.remote_io_mut().set_ario_node_delay(dwDelay))
     }
 }
 

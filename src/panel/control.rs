@@ -169,7 +169,7 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
             let p = shared.periph(cd).ok_or_else(|| bad("no such card"))?;
             let src = value.map_or(RioInput::Loopback, RioInput::Constant);
             p.lock()
-                .rio
+                .remote_io_mut()
                 .rio_set_mut(usize::from(set))
                 .and_then(|s| s.set_input_source(port, src))
                 .map_err(|_| bad("set must be 0..1 and port 0..3"))?;

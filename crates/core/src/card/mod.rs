@@ -29,25 +29,109 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use timer::{Timer, Watchdog};
 
 /// The peripherals of one card.
+///
+/// Each part keeps its own rules through its methods; the accessors below lend a part
+/// to read or to change through those methods. What involves two parts (the ADC reading
+/// the DAC, an interrupt cause raised) is a method here.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Peripherals {
     /// The 32-bit timer.
-    pub timer: Timer,
+    timer: Timer,
     /// The watchdog.
-    pub watchdog: Watchdog,
+    watchdog: Watchdog,
     /// The D/A converter.
-    pub dac: Dac,
+    dac: Dac,
     /// The A/D converter.
-    pub adc: Adc,
+    adc: Adc,
     /// The remote I/O masters.
-    pub rio: Master,
+    rio: Master,
     /// The handshake with the host (`MCC_HostInterrupt`, `MCC_SlaveInterrupt`).
-    pub handshake: Handshake,
+    handshake: Handshake,
     /// Interrupt causes raised since the last delivery.
-    pub pending: Pending,
+    pending: Pending,
 }
 
 impl Peripherals {
+    /// The timer, to read.
+    pub fn timer(&self) -> &Timer {
+        &self.timer
+    }
+
+    /// The timer, to set (`MCC_SetTimer`, `MCC_EnableTimer`, …).
+    pub fn timer_mut(&mut self) -> &mut Timer {
+        &mut self.timer
+    }
+
+    /// The watchdog, to read.
+    pub fn watchdog(&self) -> &Watchdog {
+        &self.watchdog
+    }
+
+    /// The watchdog, to set (`MCC_SetWatchDogTimer`, `MCC_RefreshWatchDogTimer`, …).
+    pub fn watchdog_mut(&mut self) -> &mut Watchdog {
+        &mut self.watchdog
+    }
+
+    /// The D/A converter, to read.
+    pub fn dac(&self) -> &Dac {
+        &self.dac
+    }
+
+    /// The D/A converter, to set (`MCC_SetDACOutput`, `MCC_StartDACConv`, …).
+    pub fn dac_mut(&mut self) -> &mut Dac {
+        &mut self.dac
+    }
+
+    /// The A/D converter, to read.
+    pub fn adc(&self) -> &Adc {
+        &self.adc
+    }
+
+    /// The A/D converter, to set (`MCC_SetADCConvType`, `MCC_StopADCConv`, …; starting a
+    /// conversion reads the inputs: [`Peripherals::start_adc`]).
+    pub fn adc_mut(&mut self) -> &mut Adc {
+        &mut self.adc
+    }
+
+    /// The remote I/O (RIO and ARIO masters), to read.
+    pub fn remote_io(&self) -> &Master {
+        &self.rio
+    }
+
+    /// The remote I/O, to set (`MCC_Set(A)RIOOutputValue`, the set and slave controls, …).
+    pub fn remote_io_mut(&mut self) -> &mut Master {
+        &mut self.rio
+    }
+
+    /// The handshake with the host, to read (the requests received).
+    pub fn handshake(&self) -> &Handshake {
+        &self.handshake
+    }
+
+    /// `MCC_HostInterrupt`: the card receives the host's request; it acknowledges it in
+    /// its next tick with a `HANDSHAKE` cause.
+    pub fn host_interrupt(&mut self) {
+        self.handshake.host_interrupt();
+    }
+
+    /// `MCC_SlaveInterrupt`: the card interrupts the host now (one `HANDSHAKE` cause,
+    /// delivered after the next tick).
+    pub fn slave_interrupt(&mut self) {
+        self.handshake.slave_interrupt(&mut self.pending);
+    }
+
+    /// Raises an interrupt cause on the card (an encoder compare, a trigger of the
+    /// simulated machine); it is delivered with the causes of the card's next tick.
+    pub fn raise(&mut self, i: Interrupt) {
+        self.pending.raise(i);
+    }
+
+    /// The causes raised since the last delivery, taken for delivery (`None` when there
+    /// are none: nothing to deliver, nothing changed).
+    pub fn take_pending(&mut self) -> Option<Pending> {
+        (!self.pending.is_empty()).then(|| std::mem::take(&mut self.pending))
+    }
+
     /// One tick of `dt_ns`: timer, watchdog, D/A updates, A/D conversion, remote I/O
     /// transfer, handshake acknowledgements. Returns
     /// true when the watchdog expired; the card's outputs here are then reset already
@@ -234,7 +318,7 @@ mod tests {
             6..=8 => ario(p, set).set_slave_control(slave, false).unwrap(),
             9 => ario(p, set).set_output(slave, (k >> 8) as u16).unwrap(),
             10 => {
-                let on = p.rio.rio_set(set).unwrap().control();
+                let on = p.rio.rio_sets()[set].control();
                 p.rio.set_rio_control(set, !on).unwrap();
             }
             11 => rio(p, set).set_slave_control(slave, k & 64 != 0).unwrap(),
@@ -340,7 +424,7 @@ mod tests {
         assert_eq!(fired, [false, false, false, false, true]);
         assert_eq!(p.pending.tmr[0], 10, "2 expirations per tick");
         assert_eq!(p.dac.output(3), 0.0);
-        assert_eq!(p.rio.ario_set(0).unwrap().output(5), Ok(0));
+        assert_eq!(p.rio.ario_sets()[0].output(5), Ok(0));
         assert_eq!(p.watchdog.resets(), 1);
     }
 }

@@ -366,33 +366,30 @@ pub fn set_ix(w: u16) -> McclResult<usize> {
     }
 }
 
-/// Element `set` of a master's per-set array; a bad set is `PARAMETER_ERR`.
-fn at<T>(sets: &[T; SETS], set: usize) -> McclResult<&T> {
-    sets.get(set).ok_or(McclError::Parameter)
-}
-
-/// [`at`], to change it.
+/// Element `set` of a master's per-set array, to change; a bad set is `PARAMETER_ERR`.
 fn at_mut<T>(sets: &mut [T; SETS], set: usize) -> McclResult<&mut T> {
     sets.get_mut(set).ok_or(McclError::Parameter)
 }
 
 impl Master {
-    /// RIO set `set` (`RIO_SET0`, `RIO_SET1`; else `PARAMETER_ERR`), to read.
-    pub fn rio_set(&self, set: usize) -> McclResult<&Set<RIO_PORTS>> {
-        at(&self.rio, set)
+    /// The RIO sets (`RIO_SET0`, `RIO_SET1`), to read.
+    pub fn rio_sets(&self) -> &[Set<RIO_PORTS>; SETS] {
+        &self.rio
     }
 
-    /// RIO set `set` (else `PARAMETER_ERR`), to change through its methods.
+    /// RIO set `set` (`RIO_SET0`, `RIO_SET1`; else `PARAMETER_ERR`), to change through
+    /// its methods.
     pub fn rio_set_mut(&mut self, set: usize) -> McclResult<&mut Set<RIO_PORTS>> {
         at_mut(&mut self.rio, set)
     }
 
-    /// ARIO set `set` (`RIO_SET0`, `RIO_SET1`; else `PARAMETER_ERR`), to read.
-    pub fn ario_set(&self, set: usize) -> McclResult<&Set<ARIO_SLAVES>> {
-        at(&self.ario, set)
+    /// The ARIO sets (`RIO_SET0`, `RIO_SET1`), to read.
+    pub fn ario_sets(&self) -> &[Set<ARIO_SLAVES>; SETS] {
+        &self.ario
     }
 
-    /// ARIO set `set` (else `PARAMETER_ERR`), to change through its methods.
+    /// ARIO set `set` (`RIO_SET0`, `RIO_SET1`; else `PARAMETER_ERR`), to change through
+    /// its methods.
     pub fn ario_set_mut(&mut self, set: usize) -> McclResult<&mut Set<ARIO_SLAVES>> {
         at_mut(&mut self.ario, set)
     }
@@ -405,9 +402,9 @@ impl Master {
         Ok(())
     }
 
-    /// When RIO set `set` transfers (else `PARAMETER_ERR`), to read.
-    pub fn rio_timing(&self, set: usize) -> McclResult<&Cadence> {
-        at(&self.rio_timing, set)
+    /// When each RIO set transfers, to read.
+    pub fn rio_timing(&self) -> &[Cadence; SETS] {
+        &self.rio_timing
     }
 
     /// `MCC_SetRIOClockDivider`: one bit every `divider` system clocks on RIO set `set`
