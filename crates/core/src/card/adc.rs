@@ -250,7 +250,7 @@ impl Adc {
 
     /// `MCC_StartADCConv` with the inputs now: free mode starts converting (from the next
     /// tick); single mode converts the single channel now.
-    pub fn start(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
+    pub(crate) fn start(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
         if self.mode == c::ADC_MODE_FREE {
             self.running = true;
             self.cadence.restart();
@@ -273,7 +273,7 @@ impl Adc {
 
     /// One tick of `dt_ns` of free-running conversion with the inputs at its end: every
     /// enabled channel converts if a scan ended in the tick (at most once per tick).
-    pub fn tick(&mut self, dt_ns: u64, inputs: &[f32; AXES], p: &mut Pending) {
+    pub(crate) fn tick(&mut self, dt_ns: u64, inputs: &[f32; AXES], p: &mut Pending) {
         if !self.converting() {
             return;
         }

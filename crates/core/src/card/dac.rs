@@ -4,7 +4,8 @@
 //! Conversion runs from `MCC_InitSystem` on; `MCC_StopDACConv` holds every output at
 //! 0 V (the set values are kept and appear again at `MCC_StartDACConv`). In trigger mode
 //! a channel outputs its preset voltage when one of its sources fires
-//! ([`Dac::trigger`], called by the encoder compare of the channel in the source mask).
+//! ([`super::Peripherals::dac_trigger`], called by the encoder compare of the channel in
+//! the source mask).
 //!
 //! Update timing ([`Cadence`], `MCC_SetDACClockDivider`, `MCC_SetDACUpdateRate`): a
 //! channel's output changes at most once per cycle (16 bits at the divider's system
@@ -141,7 +142,7 @@ impl Dac {
 
     /// One tick of `dt_ns`: held values whose cycle ended by the tick's end reach the
     /// output; the next cycle of that channel starts where the last one ended.
-    pub fn tick(&mut self, dt_ns: u64) {
+    pub(crate) fn tick(&mut self, dt_ns: u64) {
         self.now_ns = self.now_ns.saturating_add(dt_ns);
         let period = self.cycle_ns();
         for ch in 0..AXES {
@@ -157,7 +158,7 @@ impl Dac {
     }
 
     /// `n` ticks of `dt_ns` with nothing held: only time moves.
-    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+    pub(crate) fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         self.now_ns = self.now_ns.saturating_add(n.saturating_mul(dt_ns));
     }
 
@@ -197,7 +198,7 @@ impl Dac {
 
     /// The encoder compare of channel `enc` fired: every channel in trigger mode with
     /// `DAC_TRIG_ENC<enc>` in its sources takes its preset voltage.
-    pub fn trigger(&mut self, enc: usize) {
+    pub(crate) fn trigger(&mut self, enc: usize) {
         let Some(bit) = u32::try_from(enc).ok().and_then(|e| 1u32.checked_shl(e)) else {
             return;
         };
@@ -209,7 +210,7 @@ impl Dac {
     }
 
     /// Watchdog reset: every output to 0 V.
-    pub fn reset_outputs(&mut self) {
+    pub(crate) fn reset_outputs(&mut self) {
         self.value = [0.0; AXES];
         self.held = [None; AXES];
     }

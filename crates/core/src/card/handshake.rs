@@ -46,7 +46,7 @@ impl Handshake {
     }
 
     /// One tick: every waiting request is acknowledged with a handshake to the host.
-    pub fn tick(&mut self, p: &mut Pending) {
+    pub(crate) fn tick(&mut self, p: &mut Pending) {
         for _ in 0..std::mem::take(&mut self.waiting).min(255) {
             p.raise(Interrupt::Handshake);
         }

@@ -171,7 +171,7 @@ impl Peripherals {
 
     /// `n` ticks of `dt_ns` of [idle](Peripherals::idle) peripherals: exactly what `n`
     /// calls of [`Peripherals::tick`] do then (they return false and raise nothing).
-    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+    pub(crate) fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         self.rio.idle_ticks(n, dt_ns);
         self.dac.idle_ticks(n, dt_ns);
     }
@@ -211,7 +211,7 @@ impl Peripherals {
 /// `state` holds `IDLE` when the peripherals were [idle](Peripherals::idle) as last
 /// unlocked, and in its other bits the ticks the engine counted instead of running since
 /// (an idle tick only moves the ARIO cycle timing). Whoever locks takes the count and runs
-/// those ticks first ([`Peripherals::idle_ticks`]), so every holder of the lock sees the
+/// those ticks first (`Peripherals::idle_ticks`), so every holder of the lock sees the
 /// state an engine ticking every card would have made. Both sides change `state` with one
 /// atomic operation: a tick counted before a lock is run by that lock before its holder
 /// changes anything; once the lock has taken the count (and cleared `IDLE`) the engine

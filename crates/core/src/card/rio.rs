@@ -443,7 +443,7 @@ impl Master {
 
     /// One tick of `dt_ns`: every RIO set transfers, each ARIO set if one of its cycles
     /// ended in the tick.
-    pub fn tick(&mut self, dt_ns: u64, p: &mut Pending) {
+    pub(crate) fn tick(&mut self, dt_ns: u64, p: &mut Pending) {
         for (i, s) in self.rio.iter_mut().enumerate() {
             if self.rio_timing[i].advance(dt_ns, rio_cycle_bits(s.transmitting())) {
                 s.transfer(p);
@@ -465,7 +465,7 @@ impl Master {
     /// `n` ticks of `dt_ns` of an [idle](Master::idle) master: exactly what `n` calls of
     /// [`Master::tick`] do then (the ARIO and RIO cycle timing moves on; the transfers
     /// would change nothing).
-    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+    pub(crate) fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         for (i, s) in self.rio.iter().enumerate() {
             self.rio_timing[i].advance_n(n, dt_ns, rio_cycle_bits(s.transmitting()));
         }
@@ -475,7 +475,7 @@ impl Master {
     }
 
     /// Watchdog reset: every output to 0.
-    pub fn reset_outputs(&mut self) {
+    pub(crate) fn reset_outputs(&mut self) {
         self.rio.iter_mut().for_each(Set::reset_outputs);
         self.ario.iter_mut().for_each(Set::reset_outputs);
     }

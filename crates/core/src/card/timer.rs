@@ -83,7 +83,7 @@ impl Timer {
     }
 
     /// Advances by `dt_ns`; returns how many times the timer expired.
-    pub fn advance(&mut self, dt_ns: u64) -> u64 {
+    pub(crate) fn advance(&mut self, dt_ns: u64) -> u64 {
         if !self.enabled {
             return 0;
         }
@@ -181,7 +181,7 @@ impl Watchdog {
 
     /// Counts `expirations` of the timer; true when the watchdog expired (it then
     /// disables itself).
-    pub fn advance(&mut self, expirations: u64) -> bool {
+    pub(crate) fn advance(&mut self, expirations: u64) -> bool {
         if !self.enabled {
             return false;
         }
