@@ -33,14 +33,14 @@ fn dac_output_stop_trigger_and_voltage_channels() {
     );
     assert_eq!(MCC_EnableDACTriggerMode(2, 0), VOLTAGE_COMMAND_CHANNEL_ERR);
     assert_eq!(MCC_DisableDACTriggerMode(2, 0), VOLTAGE_COMMAND_CHANNEL_ERR);
-    assert_eq!(periph(0).dac.value(2), 0.0);
+    assert_eq!(periph(0).dac().value(2), 0.0);
 
     assert_eq!(MCC_SetDACOutput(-2.5, 1, 0), NO_ERR);
-    assert_eq!(periph(0).dac.output(1), -2.5);
+    assert_eq!(periph(0).dac().output(1), -2.5);
     assert_eq!(MCC_StopDACConv(0), NO_ERR);
-    assert_eq!(periph(0).dac.output(1), 0.0);
+    assert_eq!(periph(0).dac().output(1), 0.0);
     assert_eq!(MCC_StartDACConv(0), NO_ERR);
-    assert_eq!(periph(0).dac.output(1), -2.5);
+    assert_eq!(periph(0).dac().output(1), -2.5);
 
     assert_eq!(MCC_SetDACTriggerOutput(2.0, 0, 0), NO_ERR);
     assert_eq!(
@@ -49,8 +49,8 @@ fn dac_output_stop_trigger_and_voltage_channels() {
     );
     assert_eq!(MCC_EnableDACTriggerMode(0, 0), NO_ERR);
     with_periph(0, |p| p.dac_trigger(1));
-    assert_eq!(periph(0).dac.output(0), 0.0, "not a source");
+    assert_eq!(periph(0).dac().output(0), 0.0, "not a source");
     with_periph(0, |p| p.dac_trigger(5));
-    assert_eq!(periph(0).dac.output(0), 2.0);
+    assert_eq!(periph(0).dac().output(0), 2.0);
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

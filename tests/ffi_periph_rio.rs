@@ -53,7 +53,7 @@ fn remote_io_loopback_status_and_triggers() {
         assert_eq!(w, 0, "slave 1 not transmitting");
         assert_eq!(MCC_GetARIOTransStatus(&mut w, RIO_SET0, 0), NO_ERR);
         assert_eq!(w, 1);
-        with_periph(0, |p| p.rio.set_slave_failed(true, 0, 0, true));
+        with_periph(0, |p| p.remote_io_mut().set_slave_failed(true, 0, 0, true));
         assert_eq!(MCC_GetARIOTransStatus(&mut w, RIO_SET0, 0), NO_ERR);
         assert_eq!(w, 1, "noticed at the next transfer");
         MCC_TimeDelay(1);
@@ -123,7 +123,7 @@ fn remote_io_loopback_status_and_triggers() {
         assert_eq!(&log[1][..3], &[0, 1, 1], "DI1 rose, DI2 changed");
         // Transmission failure: FAIL byte once.
         assert_eq!(MCC_EnableRIOTransTrigger(RIO_SET1, 0), NO_ERR);
-        with_periph(0, |p| p.rio.set_master_failed(false, 1, true));
+        with_periph(0, |p| p.remote_io_mut().set_master_failed(false, 1, true));
         MCC_TimeDelay(3);
         let log = RIO_BYTES.lock().clone();
         assert_eq!(log.len(), 3);
@@ -161,10 +161,14 @@ fn rio_trans_error_reports_after_the_tolerated_failed_transfers() {
     assert_eq!(MCC_EnableRIOTransTrigger(RIO_SET1, 0), NO_ERR);
     // The vendor test's value: 5 failed transfers tolerated, the 6th reported.
     assert_eq!(MCC_SetRIOTransError(5, RIO_SET1, 0), NO_ERR);
-    assert_eq!(periph(0).rio.rio[1].tolerance(), 5);
-    assert_eq!(periph(0).rio.rio[0].tolerance(), 0, "per set");
+    assert_eq!(periph(0).remote_io().rio_sets()[1].tolerance(), 5);
+    assert_eq!(
+        periph(0).remote_io().rio_sets()[0].tolerance(),
+        0,
+        "per set"
+    );
     MCC_TimeDelay(1);
-    with_periph(0, |p| p.rio.set_slave_failed(false, 1, 2, true));
+    with_periph(0, |p| p.remote_io_mut().set_slave_failed(false, 1, 2, true));
     // SAFETY: valid pointers throughout.
     unsafe {
         // One transfer per 1 ms tick: ticks 1..5 fail and are tolerated.
@@ -174,7 +178,7 @@ fn rio_trans_error_reports_after_the_tolerated_failed_transfers() {
             assert_eq!(w, 1, "failed transfer {n} tolerated");
             assert_eq!(MCC_GetRIOSlaveFail(&mut d, RIO_SET1, 0), NO_ERR);
             assert_eq!(d, 0);
-            assert_eq!(periph(0).rio.rio[1].failed_transfers(2), n);
+            assert_eq!(periph(0).remote_io().rio_sets()[1].failed_transfers(2), n);
         }
         assert!(RIO_BYTES.lock().is_empty(), "no FAIL yet");
         MCC_TimeDelay(1);
@@ -190,12 +194,14 @@ fn rio_trans_error_reports_after_the_tolerated_failed_transfers() {
         // Set 0 keeps its own tolerance (0): a failure there is reported at once.
         assert_eq!(MCC_EnableRIOSetControl(RIO_SET0, 0), NO_ERR);
         assert_eq!(MCC_EnableRIOSlaveControl(RIO_SET0, 0, 0), NO_ERR);
-        with_periph(0, |p| p.rio.set_slave_failed(false, 0, 0, true));
+        with_periph(0, |p| p.remote_io_mut().set_slave_failed(false, 0, 0, true));
         MCC_TimeDelay(1);
         assert_eq!(MCC_GetRIOSlaveFail(&mut d, RIO_SET0, 0), NO_ERR);
         assert_eq!(d, 1);
         // Recovery: the next transfer clears the report.
-        with_periph(0, |p| p.rio.set_slave_failed(false, 1, 2, false));
+        with_periph(0, |p| {
+            p.remote_io_mut().set_slave_failed(false, 1, 2, false)
+        });
         MCC_TimeDelay(1);
         assert_eq!(MCC_GetRIOTransStatus(&mut w, RIO_SET1, 0), NO_ERR);
         assert_eq!(w, 1);
@@ -257,7 +263,10 @@ fn ario_transfers_follow_the_update_rate_divider_and_node_delay() {
     assert_eq!(ario_in(RIO_SET1, RIO_SLAVE4), 4, "60 ms");
     // A second transmitting slave doubles the bus time: 60 ms per cycle.
     assert_eq!(MCC_EnableARIOSlaveControl(RIO_SET1, RIO_SLAVE5, 0), NO_ERR);
-    assert_eq!(periph(0).rio.ario_timing.cycle_ns(1, 0b11_0000), 60_000_000);
+    assert_eq!(
+        periph(0).remote_io().ario_timing().cycle_ns(1, 0b11_0000),
+        60_000_000
+    );
     // RIO sets are not ARIO: they still transfer every tick.
     assert_eq!(MCC_EnableRIOSetControl(RIO_SET1, 0), NO_ERR);
     assert_eq!(MCC_EnableRIOSlaveControl(RIO_SET1, 1, 0), NO_ERR);

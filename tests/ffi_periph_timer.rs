@@ -93,7 +93,7 @@ fn watchdog_expiry_resets_the_card() {
     assert_eq!(MCC_EnableWatchDogTimer(0), NO_ERR);
     MCC_TimeDelay(20);
     assert!(
-        periph(0).watchdog.enabled(),
+        periph(0).watchdog().enabled(),
         "counts only while the timer runs"
     );
     assert_eq!(MCC_EnableTimer(0), NO_ERR);
@@ -116,11 +116,11 @@ fn watchdog_expiry_resets_the_card() {
     assert_eq!(shared.servo_on(0), 0);
     assert!(!shared.pos_ready(0));
     let p = periph(0);
-    assert_eq!(p.dac.output(4), 0.0);
-    assert_eq!(p.rio.ario[0].output(2), Ok(0));
-    assert_eq!(p.rio.rio[1].output(3), Ok(0));
-    assert!(!p.watchdog.enabled());
-    assert_eq!(p.watchdog.resets, 1);
+    assert_eq!(p.dac().output(4), 0.0);
+    assert_eq!(p.remote_io().ario_sets()[0].output(2), Ok(0));
+    assert_eq!(p.remote_io().rio_sets()[1].output(3), Ok(0));
+    assert!(!p.watchdog().enabled());
+    assert_eq!(p.watchdog().resets(), 1);
     let x = x_pos(0);
     MCC_TimeDelay(5);
     assert_eq!(x_pos(0), x, "stopped where it was");

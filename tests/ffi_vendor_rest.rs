@@ -181,7 +181,7 @@ fn handshake_under(clock: &str) {
     MCC_TimeDelay(1);
     assert_eq!(shared.clock().ticks(), t0 + 1);
     assert_eq!((HSK_CALLS.load(SeqCst), HSK_SUM.load(SeqCst)), (1, 3));
-    assert_eq!(shared.periph(1).unwrap().lock().handshake.received, 2);
+    assert_eq!(shared.periph(1).unwrap().lock().handshake().received(), 2);
     // Nothing more: each request is acknowledged once.
     MCC_TimeDelay(5);
     assert_eq!(HSK_CALLS.load(SeqCst), 1);
@@ -325,7 +325,11 @@ fn timing_under(clock: &str) {
     let shared = MCCLPCI_IMP::system::active().unwrap();
     let snap = |s: &std::sync::Arc<MCCLPCI_IMP::engine::Shared>| {
         let p = s.periph(0).unwrap().lock();
-        (p.dac.cadence, p.adc.cadence, p.rio.rio_timing)
+        (
+            *p.dac().cadence(),
+            *p.adc().cadence(),
+            *p.remote_io().rio_timing(),
+        )
     };
     let before = snap(&shared);
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e-9] {
@@ -349,21 +353,21 @@ fn timing_under(clock: &str) {
     let after = snap(&shared);
     assert_eq!(
         (
-            before.0.divider,
-            before.0.update_ns,
-            before.1.divider,
-            before.1.update_ns
+            before.0.divider(),
+            before.0.update_ns(),
+            before.1.divider(),
+            before.1.update_ns()
         ),
         (
-            after.0.divider,
-            after.0.update_ns,
-            after.1.divider,
-            after.1.update_ns
+            after.0.divider(),
+            after.0.update_ns(),
+            after.1.divider(),
+            after.1.update_ns()
         )
     );
     assert_eq!(
-        before.2.map(|c| (c.divider, c.update_ns)),
-        after.2.map(|c| (c.divider, c.update_ns))
+        before.2.map(|c| (c.divider(), c.update_ns())),
+        after.2.map(|c| (c.divider(), c.update_ns()))
     );
     assert_eq!(MCC_CloseSystem(), NO_ERR);
 }

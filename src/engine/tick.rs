@@ -329,19 +329,15 @@ impl Shared {
                     value,
                 } => {
                     if let Some(p) = self.periph.get(card) {
-                        let mut p = p.lock();
-                        let sets = if ario { None } else { Some(&mut p.rio.rio) };
-                        let r = match sets {
-                            Some(rio) => rio.get_mut(usize::from(set)).map(|s| {
-                                let old = s.output(port).unwrap_or(0);
-                                s.set_output(port, old & !mask | value & mask)
-                            }),
-                            None => p.rio.ario.get_mut(usize::from(set)).map(|s| {
-                                let old = s.output(port).unwrap_or(0);
-                                s.set_output(port, old & !mask | value & mask)
-                            }),
+                        let (mut p, set) = (p.lock(), usize::from(set));
+                        // Set and port were checked when the command was queued.
+                        let _ = if ario {
+                            let s = p.remote_io_mut().ario_set_mut(set);
+                            s.and_then(|s| s.set_output_bits(port, mask, value))
+                        } else {
+                            let s = p.remote_io_mut().rio_set_mut(set);
+                            s.and_then(|s| s.set_output_bits(port, mask, value))
                         };
-                        let _ = r;
                     }
                 }
             }

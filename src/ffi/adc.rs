@@ -17,7 +17,7 @@ fn ch_op<D: Done>(
 ) -> McclResult<c_int> {
     super::initialised()?;
     let ch = channel(wChannel)?.0;
-    with_card(wCardIndex, |p| f(&mut p.adc, ch).done())?;
+    with_card(wCardIndex, |p| f(p.adc_mut(), ch).done())?;
     Ok(c::NO_ERR)
 }
 
@@ -34,7 +34,7 @@ unsafe fn ch_read<T>(
     super::initialised()?;
     let ch = channel(wChannel)?.0;
     // SAFETY: forwarded under this function's contract.
-    unsafe { write_out(p, || with_card(wCardIndex, |per| Ok(f(&per.adc, ch)))) }
+    unsafe { write_out(p, || with_card(wCardIndex, |per| Ok(f(per.adc(), ch)))) }
 }
 
 /// Sets a channel's conversion type: `ADC_TYPE_BIP_DIFF`/`_BIP_SING` (−5..5 V) or
@@ -114,7 +114,7 @@ pub unsafe extern "system" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardInd
         // SAFETY: forwarded under this function's contract.
         unsafe {
             write_out(pwSTatus, || {
-                with_card(wCardIndex, |p| Ok(p.adc.work_status()))
+                with_card(wCardIndex, |p| Ok(p.adc().work_status()))
             })
         }
     }
@@ -124,7 +124,7 @@ pub unsafe extern "system" fn MCC_GetADCWorkStatus(pwSTatus: *mut WORD, wCardInd
 /// free-running conversion).
 #[no_mangle]
 pub extern "system" fn MCC_SetADCConvMode(wConvMode: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_mode(wConvMode)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_mode(wConvMode)) }
 }
 
 /// Chooses the channel `ADC_MODE_SINGLE` converts.
@@ -143,7 +143,7 @@ pub extern "system" fn MCC_SetADCTagChannel(wChannel: WORD, wCardIndex: WORD) ->
 /// (`ADC_MASK_NO`..`ADC_MASK_BIT3`).
 #[no_mangle]
 pub extern "system" fn MCC_SetADCCompMask(wMask: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_comp_mask(wMask)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_comp_mask(wMask)) }
 }
 
 /// Sets a channel's comparator type: `ADC_COMP_RISE` (0), `ADC_COMP_FALL` (1) or
@@ -168,31 +168,31 @@ pub extern "system" fn MCC_StartADCConv(wCardIndex: WORD) -> c_int {
 /// Stops free-running conversion (the last values stay readable).
 #[no_mangle]
 pub extern "system" fn MCC_StopADCConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.stop()) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().stop()) }
 }
 
 /// Every completed conversion calls the ADC routine with `CONV` set.
 #[no_mangle]
 pub extern "system" fn MCC_EnableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_conv_trigger(true)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_conv_trigger(true)) }
 }
 
 /// Completed conversions no longer call the ADC routine.
 #[no_mangle]
 pub extern "system" fn MCC_DisableADCConvTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_conv_trigger(false)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_conv_trigger(false)) }
 }
 
 /// Each conversion of the tagged channel calls the ADC routine with `TAG` set.
 #[no_mangle]
 pub extern "system" fn MCC_EnableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_tag_trigger(true)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_tag_trigger(true)) }
 }
 
 /// Conversions of the tagged channel no longer call the ADC routine.
 #[no_mangle]
 pub extern "system" fn MCC_DisableADCTagTrigger(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.adc.set_tag_trigger(false)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_tag_trigger(false)) }
 }
 
 /// A comparator crossing of the channel calls the ADC routine with `COMPn` set.

@@ -1,74 +1,32 @@
 //! Timing of the D/A and A/D converters and the RIO sets (vendor header, "Obsolete
 //! functions"; the manuals do not describe them): a clock divider (system clocks of 10 ns
 //! per serial bit) and an update rate (Hz, the least time between cycles), read as the
-//! ARIO setters are ([`crate::card::cadence`], docs/undocumented-functions.md).
+//! ARIO setters are ([`crate::card::cadence`], docs/undocumented-functions.md). An update
+//! rate is finite, > 0, its period `1 / rate` at most the longest time of "Ranges"
+//! (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it
+//! ([`crate::card::cadence::update_period_ns`]).
+//!
+//! Each setter is `INITIAL_MOTION_ERR` before init whatever the arguments, then
+//! `PARAMETER_ERR` for a card not initialised, a bad set, divider or rate (nothing
+//! changed).
 
-use super::{finite, initialised, with_card};
-use crate::card::cadence::Cadence;
-use crate::card::rio::set_ix;
-use crate::error::{McclError, McclResult};
-use crate::vendor::consts as c;
+use super::card_do;
 use crate::vendor::WORD;
 use std::os::raw::c_int;
-
-/// A checked update rate: finite, > 0, its period `1 / rate` at most the longest time of
-/// "Ranges" (2³² − 1 ms), as `MCC_SetARIOUpdateRate` checks it.
-fn rate(r: f64) -> McclResult<f64> {
-    let r = finite(r)?;
-    if r <= 0.0 {
-        return Err(McclError::Parameter);
-    }
-    crate::config::range::time_ms(1000.0 / r)?;
-    Ok(r)
-}
-
-/// Runs `f` on the cadence `pick` chooses on card `wCardIndex` (`INITIAL_MOTION_ERR`
-/// before init, `PARAMETER_ERR` for a card not initialised).
-fn on_cadence(
-    wCardIndex: WORD,
-    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
-    f: impl FnOnce(&mut Cadence) -> McclResult<()>,
-) -> McclResult<c_int> {
-    with_card(wCardIndex, |p| f(pick(p)))?;
-    Ok(c::NO_ERR)
-}
-
-/// Sets the clock divider of the cadence `pick` chooses on card `wCardIndex`
-/// (`INITIAL_MOTION_ERR` before init whatever the arguments).
-fn set_divider(
-    wDivider: WORD,
-    wCardIndex: WORD,
-    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
-) -> McclResult<c_int> {
-    initialised()?;
-    on_cadence(wCardIndex, pick, |t| t.set_divider(wDivider))
-}
-
-/// Sets the update rate of the cadence `pick` chooses on card `wCardIndex`
-/// (`INITIAL_MOTION_ERR` before init whatever the arguments, then the rate is checked).
-fn set_update_rate(
-    dfUpdateRate: f64,
-    wCardIndex: WORD,
-    pick: impl FnOnce(&mut crate::card::Peripherals) -> &mut Cadence,
-) -> McclResult<c_int> {
-    initialised()?;
-    let r = rate(dfUpdateRate)?;
-    on_cadence(wCardIndex, pick, |t| t.set_update_rate(r))
-}
 
 /// D/A clock: one bit every `wDivider` system clocks (1..65535, default 10); a channel's
 /// update (16 bits) lasts `16 × wDivider × 10 ns`, and its output changes at most once
 /// per update.
 #[no_mangle]
 pub extern "system" fn MCC_SetDACClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_divider(wDivider, wCardIndex, |p| &mut p.dac.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac_mut().set_clock_divider(wDivider)) }
 }
 
 /// At most `dfUpdateRate` updates per second (Hz, > 0) on each D/A channel: a value
 /// written sooner than `1 / rate` after the channel's last change waits for it.
 #[no_mangle]
 pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_update_rate(dfUpdateRate, wCardIndex, |p| &mut p.dac.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac_mut().set_update_rate(dfUpdateRate)) }
 }
 
 /// A/D clock: one conversion clock every `wDivider` system clocks (1..65535, default
@@ -76,14 +34,14 @@ pub extern "system" fn MCC_SetDACUpdateRate(dfUpdateRate: f64, wCardIndex: WORD)
 /// count restarts at the call.
 #[no_mangle]
 pub extern "system" fn MCC_SetADCClockDivider(wDivider: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_divider(wDivider, wCardIndex, |p| &mut p.adc.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_clock_divider(wDivider)) }
 }
 
 /// At most `dfUpdateRate` free-running scans per second (Hz, > 0). The scan count
 /// restarts at the call.
 #[no_mangle]
 pub extern "system" fn MCC_SetADCUpdateRate(dfUpdateRate: f64, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_update_rate(dfUpdateRate, wCardIndex, |p| &mut p.adc.cadence) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.adc_mut().set_update_rate(dfUpdateRate)) }
 }
 
 /// Serial clock of a RIO set: one bit every `wDivider` system clocks (1..65535, default
@@ -96,9 +54,9 @@ pub extern "system" fn MCC_SetRIOClockDivider(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        initialised()?;
-        let s = set_ix(wSet)?;
-        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_divider(wDivider))
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_clock_divider(usize::from(wSet), wDivider)
+        })
     }
 }
 
@@ -111,9 +69,8 @@ pub extern "system" fn MCC_SetRIOUpdateRate(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        initialised()?;
-        let r = rate(dfUpdateRate)?;
-        let s = set_ix(wSet)?;
-        on_cadence(wCardIndex, |p| &mut p.rio.rio_timing[s], |t| t.set_update_rate(r))
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_update_rate(usize::from(wSet), dfUpdateRate)
+        })
     }
 }

@@ -24,7 +24,7 @@ fn on_channel<D: Done>(
 ) -> McclResult<c_int> {
     super::initialised()?;
     let ch = dac_channel(wChannel, wCardIndex)?;
-    with_card(wCardIndex, |p| f(&mut p.dac, ch).done())?;
+    with_card(wCardIndex, |p| f(p.dac_mut(), ch).done())?;
     Ok(c::NO_ERR)
 }
 
@@ -79,12 +79,12 @@ pub extern "system" fn MCC_DisableDACTriggerMode(wChannel: WORD, wCardIndex: WOR
 /// from `MCC_InitSystem` on.
 #[no_mangle]
 pub extern "system" fn MCC_StartDACConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_running(true)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac_mut().set_running(true)) }
 }
 
 /// Stops D/A conversion: every output is 0 V until `MCC_StartDACConv` (set voltages are
 /// kept).
 #[no_mangle]
 pub extern "system" fn MCC_StopDACConv(wCardIndex: WORD) -> c_int {
-    ffi_boundary! { card_do(wCardIndex, |p| p.dac.set_running(false)) }
+    ffi_boundary! { card_do(wCardIndex, |p| p.dac_mut().set_running(false)) }
 }

@@ -16,7 +16,7 @@ use std::os::raw::c_int;
 pub extern "system" fn MCC_HostInterrupt(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card(wCardIndex, |p| {
-            p.handshake.host_interrupt();
+            p.host_interrupt();
             Ok(c::NO_ERR)
         })
     }
@@ -29,8 +29,7 @@ pub extern "system" fn MCC_HostInterrupt(wCardIndex: WORD) -> c_int {
 pub extern "system" fn MCC_SlaveInterrupt(wCardIndex: WORD) -> c_int {
     ffi_boundary! {
         with_card(wCardIndex, |p| {
-            let crate::card::Peripherals { handshake, pending, .. } = p;
-            handshake.slave_interrupt(pending);
+            p.slave_interrupt();
             Ok(c::NO_ERR)
         })
     }

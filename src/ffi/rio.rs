@@ -8,40 +8,44 @@
 //! consecutive transfers than `MCC_SetRIOTransError` tolerates. Bad card, set, port,
 //! slave, input, value or NULL: `PARAMETER_ERR`, nothing changed.
 
-use super::{card_do_at, with_card, write_out, Done};
-use crate::card::rio::{set_ix, Master, Set, ARIO_SLAVES, RIO_PORTS, SETS};
+use super::{card_do, with_card, write_out, Done};
+use crate::card::rio::{Master, Set, ARIO_SLAVES, RIO_PORTS};
 use crate::error::McclResult;
 use crate::vendor::consts as c;
 use crate::vendor::{DWORD, WORD};
 use std::os::raw::c_int;
 
-/// Runs `f` on set `wSet` of the card's RIO (`pick` = `Master::rio`) or ARIO
-/// (`Master::ario`) sets: `INITIAL_MOTION_ERR` before init whatever the arguments, then
-/// `PARAMETER_ERR` for a bad set or card.
+/// How a card's remote I/O gives one of its RIO or ARIO sets: [`rio_sets`] or
+/// [`ario_sets`] (a bad set is `PARAMETER_ERR`).
+type Pick<const N: usize> = fn(&mut Master, usize) -> McclResult<&mut Set<N>>;
+
+/// Runs `f` on set `wSet` of the card's RIO or ARIO sets (`pick`): `INITIAL_MOTION_ERR`
+/// before init whatever the arguments, then `PARAMETER_ERR` for a bad set or card.
 fn on_set<const N: usize, R>(
-    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    pick: Pick<N>,
     wSet: WORD,
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<N>) -> McclResult<R>,
 ) -> McclResult<R> {
     super::initialised()?;
-    let s = set_ix(wSet)?;
-    with_card(wCardIndex, |p| f(&mut pick(&mut p.rio)[s]))
+    with_card(wCardIndex, |p| {
+        f(pick(p.remote_io_mut(), usize::from(wSet))?)
+    })
 }
 
-/// The RIO sets of a card's master.
-fn rio_sets(m: &mut Master) -> &mut [Set<RIO_PORTS>; SETS] {
-    &mut m.rio
+/// RIO set `set` of a card's remote I/O.
+fn rio_sets(m: &mut Master, set: usize) -> McclResult<&mut Set<RIO_PORTS>> {
+    m.rio_set_mut(set)
 }
 
-/// The ARIO sets of a card's master.
-fn ario_sets(m: &mut Master) -> &mut [Set<ARIO_SLAVES>; SETS] {
-    &mut m.ario
+/// ARIO set `set` of a card's remote I/O.
+fn ario_sets(m: &mut Master, set: usize) -> McclResult<&mut Set<ARIO_SLAVES>> {
+    m.ario_set_mut(set)
 }
 
 /// Runs setter `f` on set `wSet` of the sets `pick` chooses (see [`on_set`]); `NO_ERR`.
 fn set_do<const N: usize, D: Done>(
-    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    pick: Pick<N>,
     wSet: WORD,
     wCardIndex: WORD,
     f: impl FnOnce(&mut Set<N>) -> D,
@@ -67,7 +71,7 @@ unsafe fn read<T>(p: *mut T, get: impl FnOnce() -> McclResult<T>) -> McclResult<
 /// `p` must be NULL or point to a writable T.
 unsafe fn read_set<const N: usize, T>(
     p: *mut T,
-    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    pick: Pick<N>,
     wSet: WORD,
     wCardIndex: WORD,
     get: impl FnOnce(&mut Set<N>) -> McclResult<T>,
@@ -82,7 +86,7 @@ unsafe fn read_set<const N: usize, T>(
 /// `p` must be NULL or point to a writable T.
 unsafe fn read_status<const N: usize, T>(
     p: *mut T,
-    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    pick: Pick<N>,
     wSet: WORD,
     wCardIndex: WORD,
     status: fn(&Set<N>) -> T,
@@ -93,7 +97,7 @@ unsafe fn read_status<const N: usize, T>(
 
 /// Turns data transfer with slave `wSlave` of set `wSet` on or off (see [`set_do`]).
 fn slave_control<const N: usize>(
-    pick: fn(&mut Master) -> &mut [Set<N>; SETS],
+    pick: Pick<N>,
     wSet: WORD,
     wSlave: WORD,
     wCardIndex: WORD,
@@ -107,13 +111,21 @@ fn slave_control<const N: usize>(
 /// Starts data transfer of a RIO set.
 #[no_mangle]
 pub extern "system" fn MCC_EnableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.control = true) }
+    ffi_boundary! {
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_control(usize::from(wSet), true)
+        })
+    }
 }
 
 /// Stops data transfer of a RIO set.
 #[no_mangle]
 pub extern "system" fn MCC_DisableRIOSetControl(wSet: WORD, wCardIndex: WORD) -> c_int {
-    ffi_boundary! { set_do(rio_sets, wSet, wCardIndex, |s| s.control = false) }
+    ffi_boundary! {
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_rio_control(usize::from(wSet), false)
+        })
+    }
 }
 
 /// Starts data transfer with one slave (0..3, the slave on port n) of a RIO set.
@@ -323,11 +335,9 @@ pub extern "system" fn MCC_SetARIOUpdateRate(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        card_do_at(
-            wCardIndex,
-            || set_ix(wSet),
-            |p, s| p.rio.ario_timing.set_update_rate(s, dfUpdateRate),
-        )
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_ario_update_rate(usize::from(wSet), dfUpdateRate)
+        })
     }
 }
 
@@ -341,11 +351,9 @@ pub extern "system" fn MCC_SetARIOClockDivider(
     wCardIndex: WORD,
 ) -> c_int {
     ffi_boundary! {
-        card_do_at(
-            wCardIndex,
-            || set_ix(wSet),
-            |p, s| p.rio.ario_timing.set_divider(s, wDivider),
-        )
+        card_do(wCardIndex, |p| {
+            p.remote_io_mut().set_ario_clock_divider(usize::from(wSet), wDivider)
+        })
     }
 }
 
@@ -354,11 +362,7 @@ pub extern "system" fn MCC_SetARIOClockDivider(
 #[no_mangle]
 pub extern "system" fn MCC_SetARIONode2NodeDelay(dwDelay: DWORD, wCardIndex: WORD) -> c_int {
     ffi_boundary! {
-        card_do_at(
-            wCardIndex,
-            || Ok(()),
-            |p, ()| p.rio.ario_timing.set_node_delay(dwDelay),
-        )
+        card_do(wCardIndex, |p| p.remote_io_mut().set_ario_node_delay(dwDelay))
     }
 }
 

@@ -167,15 +167,12 @@ pub fn apply(shared: &Shared, c: &Control) -> Result<(), Refused> {
         } => {
             let cd = card_of(shared, card)?;
             let p = shared.periph(cd).ok_or_else(|| bad("no such card"))?;
-            let (s, pt) = (usize::from(set), usize::from(port));
-            let mut p = p.lock();
-            let slot = p
-                .rio
-                .rio
-                .get_mut(s)
-                .and_then(|s| s.source.get_mut(pt))
-                .ok_or_else(|| bad("set must be 0..1 and port 0..3"))?;
-            *slot = value.map_or(RioInput::Loopback, RioInput::Constant);
+            let src = value.map_or(RioInput::Loopback, RioInput::Constant);
+            p.lock()
+                .remote_io_mut()
+                .rio_set_mut(usize::from(set))
+                .and_then(|s| s.set_input_source(port, src))
+                .map_err(|_| bad("set must be 0..1 and port 0..3"))?;
         }
         Control::Hold { group } => {
             let mut g = shared.group(group).map_err(|_| bad("no such group"))?;

@@ -9,7 +9,7 @@ impl Shared {
     /// tick (or of the next one when raised between ticks). Unknown cards are ignored.
     pub fn raise(&self, card: usize, i: Interrupt) {
         if let Some(p) = self.periph.get(card) {
-            p.lock().pending.raise(i);
+            p.lock().raise(i);
         }
     }
 
@@ -51,7 +51,7 @@ impl Shared {
         let (reset, pending) = {
             let mut p = p.lock();
             let reset = p.tick(dt_ns);
-            let pending = (!p.pending.is_empty()).then(|| std::mem::take(&mut p.pending));
+            let pending = p.take_pending();
             (reset, pending)
         };
         if reset {

@@ -61,20 +61,20 @@ impl crate::engine::Shared {
             let p = p.lock();
             let inputs = p.adc_inputs();
             for (ch, cv) in v.channels.iter_mut().enumerate() {
-                cv.dac = p.dac.output(ch);
-                cv.adc = [inputs[ch], p.adc.input(ch)];
+                cv.dac = p.dac().output(ch);
+                cv.adc = [inputs[ch], p.adc().input(ch)];
             }
-            v.adc_running = p.adc.converting();
-            v.timer = (p.timer.enabled(), p.timer.period());
+            v.adc_running = p.adc().converting();
+            v.timer = (p.timer().enabled(), p.timer().period());
             v.watchdog = (
-                p.watchdog.enabled(),
-                p.watchdog.compare(),
-                p.watchdog.count(),
-                p.watchdog.resets,
+                p.watchdog().enabled(),
+                p.watchdog().compare(),
+                p.watchdog().count(),
+                p.watchdog().resets(),
             );
             for s in 0..2 {
                 for port in 0..4u16 {
-                    let set = &p.rio.rio[s];
+                    let set = &p.remote_io().rio_sets()[s];
                     v.rio_in[s][usize::from(port)] = set.input(port).unwrap_or(0);
                     v.rio_out[s][usize::from(port)] = set.output(port).unwrap_or(0);
                 }

@@ -13,13 +13,14 @@
 //!   or the last of these setters. `ADC_MODE_SINGLE`: `MCC_StartADCConv` converts the single channel
 //!   once, at once (the card needs ~8 µs, less than any tick), and its interrupts are
 //!   delivered after the next tick.
-//! - Comparator per channel on the 12-bit code of the channel's range:
-//!   `ADC_COMP_RISE` fires when the input goes from below the compare value to at or
-//!   above it between two conversions, `ADC_COMP_FALL` the other way, `ADC_COMP_LEVEL`
-//!   both; `MCC_SetADCCompMask(n)` ignores the n lowest bits of both codes. The first
-//!   conversion after the compare value, type or range changed only sets the reference.
+//! - Comparator per channel on the 12-bit code of the channel's range ([`Comparator`]):
+//!   rising, falling or both crossings of the compare value between two conversions.
 //! - Interrupts: `COMPn` (comparator of channel n, if enabled), `CONV` (a conversion
 //!   completed, if the conversion trigger is on), `TAG` (the tagged channel converted).
+
+mod comparator;
+
+pub use comparator::Comparator;
 
 use super::cadence::Cadence;
 use crate::config::AXES;
@@ -48,13 +49,6 @@ pub fn range(conv_type: u16) -> (f32, f32) {
     }
 }
 
-fn code(v: f32, conv_type: u16) -> u32 {
-    let (lo, hi) = range(conv_type);
-    let max = (1u32 << BITS) - 1;
-    let x = ((v.clamp(lo, hi) - lo) / (hi - lo) * max as f32).round();
-    (x as u32).min(max)
-}
-
 /// Serial clocks of one channel's conversion.
 pub const CONVERSION_BITS: u64 = 16;
 
@@ -62,28 +56,34 @@ pub const CONVERSION_BITS: u64 = 16;
 /// conversion takes 16 × 50 × 10 ns = 8 µs and a scan of all eight 64 µs.
 pub const DEFAULT_DIVIDER: u16 = 50;
 
-/// The A/D converter of one card.
+/// The A/D converter of one card: what converts when, the values converted, the
+/// interrupts of a conversion, and the channels' [`Comparator`]s.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Adc {
+    /// Conversion type per channel (its range).
     conv_type: [u16; AXES],
+    /// `ADC_MODE_FREE` or `ADC_MODE_SINGLE`.
     mode: u16,
+    /// Channels that convert in free mode.
     channel_on: [bool; AXES],
+    /// Free mode started (`MCC_StartADCConv`) and not stopped.
     running: bool,
+    /// The channel single mode converts.
     single: usize,
+    /// The last converted value per channel, V.
     input: [f32; AXES],
-    comp_value: [f32; AXES],
-    comp_type: [u16; AXES],
-    comp_on: [bool; AXES],
-    comp_mask: u16,
-    /// Whether the last conversion was at or above the compare value (None: no reference).
-    above: [Option<bool>; AXES],
+    /// The comparator of each channel.
+    comparator: Comparator,
+    /// A completed conversion raises `CONV`.
     conv_trigger: bool,
+    /// The tagged channel.
     tag: usize,
+    /// A conversion of the tagged channel raises `TAG`.
     tag_trigger: bool,
-    /// Input of each channel.
-    pub source: [AdcSource; AXES],
+    /// Where each channel's input comes from.
+    source: [AdcSource; AXES],
     /// When free-running scans end (`MCC_SetADCClockDivider`, `MCC_SetADCUpdateRate`).
-    pub cadence: Cadence,
+    cadence: Cadence,
 }
 
 impl Default for Adc {
@@ -95,11 +95,7 @@ impl Default for Adc {
             running: false,
             single: 0,
             input: [0.0; AXES],
-            comp_value: [0.0; AXES],
-            comp_type: [c::ADC_COMP_RISE; AXES],
-            comp_on: [false; AXES],
-            comp_mask: c::ADC_MASK_NO,
-            above: [None; AXES],
+            comparator: Comparator::default(),
             conv_trigger: false,
             tag: 0,
             tag_trigger: false,
@@ -116,7 +112,7 @@ impl Adc {
             return Err(McclError::Parameter);
         }
         self.conv_type[ch] = t;
-        self.above[ch] = None;
+        self.comparator.forget(ch);
         Ok(())
     }
 
@@ -162,47 +158,64 @@ impl Adc {
         self.input[ch]
     }
 
-    /// `MCC_SetADCCompValue` (finite, −10..10 V).
+    /// `MCC_SetADCCompValue` (finite, −10..10 V): see [`Comparator::set_value`].
     pub fn set_comp_value(&mut self, ch: usize, v: f32) -> McclResult<()> {
-        super::dac::check_voltage(v)?;
-        self.comp_value[ch] = v;
-        self.above[ch] = None;
-        Ok(())
+        self.comparator.set_value(ch, v)
     }
 
     /// `MCC_GetADCCompValue`.
     pub fn comp_value(&self, ch: usize) -> f32 {
-        self.comp_value[ch]
+        self.comparator.value(ch)
     }
 
     /// `MCC_SetADCCompType`: `ADC_COMP_RISE`, `_FALL` or `_LEVEL`.
     pub fn set_comp_type(&mut self, ch: usize, t: u16) -> McclResult<()> {
-        if t > c::ADC_COMP_LEVEL {
-            return Err(McclError::Parameter);
-        }
-        self.comp_type[ch] = t;
-        self.above[ch] = None;
-        Ok(())
+        self.comparator.set_kind(ch, t)
     }
 
     /// `MCC_SetADCCompMask`: `ADC_MASK_NO`..`ADC_MASK_BIT3`.
     pub fn set_comp_mask(&mut self, m: u16) -> McclResult<()> {
-        if m > c::ADC_MASK_BIT3 {
-            return Err(McclError::Parameter);
-        }
-        self.comp_mask = m;
-        self.above = [None; AXES];
-        Ok(())
+        self.comparator.set_mask(m)
     }
 
     /// `MCC_EnableADCCompTrigger` / `MCC_DisableADCCompTrigger`.
     pub fn set_comp_trigger(&mut self, ch: usize, on: bool) {
-        self.comp_on[ch] = on;
+        self.comparator.set_trigger(ch, on);
     }
 
     /// `MCC_EnableADCConvTrigger` / `MCC_DisableADCConvTrigger`.
     pub fn set_conv_trigger(&mut self, on: bool) {
         self.conv_trigger = on;
+    }
+
+    /// Where channel `ch`'s input comes from (the simulated wiring; channel checked by
+    /// the caller).
+    pub fn set_source(&mut self, ch: usize, src: AdcSource) {
+        self.source[ch] = src;
+    }
+
+    /// Where channel `ch`'s input comes from.
+    pub fn source(&self, ch: usize) -> AdcSource {
+        self.source[ch]
+    }
+
+    /// `MCC_SetADCClockDivider`: one conversion clock every `divider` system clocks
+    /// (1..65535; 0 is `PARAMETER_ERR` and changes nothing), so a free-running scan lasts
+    /// `16 × enabled channels × divider × 10 ns`. The scan count restarts.
+    pub fn set_clock_divider(&mut self, divider: u16) -> McclResult<()> {
+        self.cadence.set_divider(divider)
+    }
+
+    /// `MCC_SetADCUpdateRate`: at most `rate` free-running scans per second (checked as
+    /// [`super::cadence::update_period_ns`] says; a refused rate changes nothing). The
+    /// scan count restarts.
+    pub fn set_update_rate(&mut self, rate: f64) -> McclResult<()> {
+        self.cadence.set_update_rate(rate)
+    }
+
+    /// The scan timing as set (divider and update period).
+    pub fn cadence(&self) -> &Cadence {
+        &self.cadence
     }
 
     /// `MCC_SetADCTagChannel`.
@@ -221,19 +234,9 @@ impl Adc {
         let (lo, hi) = range(t);
         let v = if v.is_finite() { v.clamp(lo, hi) } else { lo };
         self.input[ch] = v;
-        let m = u32::from(self.comp_mask);
-        let above = code(v, t) >> m >= code(self.comp_value[ch], t) >> m;
-        if let Some(was) = self.above[ch] {
-            let fire = match self.comp_type[ch] {
-                c::ADC_COMP_RISE => !was && above,
-                c::ADC_COMP_FALL => was && !above,
-                _ => was != above,
-            };
-            if fire && self.comp_on[ch] {
-                p.raise(Interrupt::AdcComp(ch as u8));
-            }
+        if self.comparator.compare(ch, v, t) {
+            p.raise(Interrupt::AdcComp(ch as u8));
         }
-        self.above[ch] = Some(above);
         if self.tag_trigger && self.tag == ch {
             p.raise(Interrupt::AdcTag);
         }
@@ -247,7 +250,7 @@ impl Adc {
 
     /// `MCC_StartADCConv` with the inputs now: free mode starts converting (from the next
     /// tick); single mode converts the single channel now.
-    pub fn start(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
+    pub(crate) fn start(&mut self, inputs: &[f32; AXES], p: &mut Pending) {
         if self.mode == c::ADC_MODE_FREE {
             self.running = true;
             self.cadence.restart();
@@ -270,7 +273,7 @@ impl Adc {
 
     /// One tick of `dt_ns` of free-running conversion with the inputs at its end: every
     /// enabled channel converts if a scan ended in the tick (at most once per tick).
-    pub fn tick(&mut self, dt_ns: u64, inputs: &[f32; AXES], p: &mut Pending) {
+    pub(crate) fn tick(&mut self, dt_ns: u64, inputs: &[f32; AXES], p: &mut Pending) {
         if !self.converting() {
             return;
         }
@@ -365,7 +368,7 @@ mod tests {
         // Default: 4 channels x 16 bits x 50 clocks x 10 ns = 32 us: every tick.
         assert_eq!(scan_ticks(&mut a, 3), [1, 2, 3]);
         // Divider 12500: 4 x 16 x 12500 x 10 ns = 8 ms: ticks 8 and 16.
-        a.cadence.set_divider(12_500).unwrap();
+        a.set_clock_divider(12_500).unwrap();
         assert_eq!(scan_ticks(&mut a, 16), [8, 16]);
         // Two channels: 4 ms per scan. Counting restarts at MCC_StartADCConv.
         a.set_channel(2, false);
@@ -375,8 +378,8 @@ mod tests {
         assert_eq!(scan_ticks(&mut a, 9), [4, 8]);
         // Back to divider 50 and 250 Hz: 4 ms, rate-bound; the input converted is the
         // one at the scan's tick.
-        a.cadence.set_divider(50).unwrap();
-        a.cadence.set_update_rate(250.0).unwrap();
+        a.set_clock_divider(50).unwrap();
+        a.set_update_rate(250.0).unwrap();
         assert_eq!(scan_ticks(&mut a, 12), [4, 8, 12]);
         let mut p = Pending::default();
         a.tick(1_000_000, &[2.5; AXES], &mut p);

@@ -4,19 +4,34 @@
 //! ([`super::rio::ArioTiming`]): a unit of work (one DAC channel's update, one ADC scan,
 //! one RIO transfer cycle) moves `bits` serial bits at one bit per `divider` system
 //! clocks of 10 ns, so it lasts `bits × divider × 10 ns`; an update rate `r` (Hz) makes
-//! it last at least `1 / r`, rounded to whole ns.
+//! it last at least `1 / r`, rounded to whole ns. A rate is finite and > 0 with `1 / r` at
+//! most the longest time of [`crate::config::range::time_ms`] (2³² − 1 ms), as every
+//! update-rate setter of the card checks it ([`update_period_ns`]).
 
 use super::SYSTEM_CLOCK_NS;
 use crate::error::{McclError, McclResult};
+
+/// The least time between cycles for an update rate of `rate` Hz, ns: `1 / rate` rounded
+/// to whole ns, at least 1. `PARAMETER_ERR` unless `rate` is finite and > 0 and `1 / rate`
+/// at most the longest time (2³² − 1 ms, so `rate` >= 2.33e-7 Hz): a slower rate would
+/// hold the converter or bus for longer than any time the library accepts.
+pub fn update_period_ns(rate: f64) -> McclResult<u64> {
+    if !rate.is_finite() || rate <= 0.0 {
+        return Err(McclError::Parameter);
+    }
+    crate::config::range::time_ms(1000.0 / rate)?;
+    // `as` saturates; the period is at most 4.3e15 ns here, far from u64's end.
+    Ok(((1e9 / rate).round() as u64).max(1))
+}
 
 /// The divider and update rate of one converter or bus, and the time since its last
 /// cycle ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Cadence {
     /// System clocks per serial bit (1..65535).
-    pub divider: u16,
+    divider: u16,
     /// Least time between cycles, ns (`None`: as fast as the bits allow).
-    pub update_ns: Option<u64>,
+    update_ns: Option<u64>,
     /// Time since the last cycle ended (or the timing was set), ns.
     elapsed_ns: u64,
 }
@@ -31,16 +46,18 @@ impl Cadence {
         }
     }
 
-    /// The update rate: `rate` cycles per second at most (finite, > 0; else
-    /// `PARAMETER_ERR` and nothing changes). The cycle count restarts.
+    /// The update rate: `rate` cycles per second at most (checked by
+    /// [`update_period_ns`]; a refused rate changes nothing). The cycle count restarts.
     pub fn set_update_rate(&mut self, rate: f64) -> McclResult<()> {
-        if !rate.is_finite() || rate <= 0.0 {
-            return Err(McclError::Parameter);
-        }
-        // `as` saturates: a period beyond u64 ns waits that long.
-        self.update_ns = Some(((1e9 / rate).round() as u64).max(1));
+        self.update_ns = Some(update_period_ns(rate)?);
         self.elapsed_ns = 0;
         Ok(())
+    }
+
+    /// The least time between cycles the update rate set, ns (`None` before any rate:
+    /// cycles as fast as the bits allow).
+    pub fn update_ns(&self) -> Option<u64> {
+        self.update_ns
     }
 
     /// The clock divider, 1..65535 (0 is `PARAMETER_ERR` and changes nothing). The cycle
@@ -52,6 +69,11 @@ impl Cadence {
         self.divider = divider;
         self.elapsed_ns = 0;
         Ok(())
+    }
+
+    /// The clock divider: system clocks per serial bit.
+    pub fn divider(&self) -> u16 {
+        self.divider
     }
 
     /// Starts counting a new cycle now.
@@ -112,7 +134,16 @@ mod tests {
         c.set_divider(50_000).unwrap();
         assert_eq!(c.cycle_ns(16), 8_000_000);
         let before = c;
-        for r in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        // A cycle longer than the longest time (2^32 - 1 ms) is refused: 1 / 2.3e-7 Hz is
+        // 4.35e9 s.
+        for r in [
+            0.0,
+            -1.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::MIN_POSITIVE,
+            2.3e-7,
+        ] {
             assert_eq!(c.set_update_rate(r), Err(McclError::Parameter));
         }
         assert_eq!(c.set_divider(0), Err(McclError::Parameter));
@@ -125,7 +156,11 @@ mod tests {
             b.advance(1_000_000, 16);
         });
         assert_eq!(a, b);
-        c.set_update_rate(f64::MIN_POSITIVE).unwrap();
-        assert_eq!(c.cycle_ns(16), u64::MAX, "saturates");
+        // The slowest whole-digit rate accepted: 1 / 2.33e-7 Hz = 4.2918e15 ns.
+        c.set_update_rate(2.33e-7).unwrap();
+        assert_eq!(c.update_ns(), Some(4_291_845_493_562_232));
+        assert_eq!(c.cycle_ns(16), 4_291_845_493_562_232, "rate-bound");
+        assert_eq!(c.divider(), 50_000);
+        assert_eq!(c.cycle_ns(u64::MAX), u64::MAX, "saturates");
     }
 }

@@ -4,7 +4,8 @@
 //! Conversion runs from `MCC_InitSystem` on; `MCC_StopDACConv` holds every output at
 //! 0 V (the set values are kept and appear again at `MCC_StartDACConv`). In trigger mode
 //! a channel outputs its preset voltage when one of its sources fires
-//! ([`Dac::trigger`], called by the encoder compare of the channel in the source mask).
+//! ([`super::Peripherals::dac_trigger`], called by the encoder compare of the channel in
+//! the source mask).
 //!
 //! Update timing ([`Cadence`], `MCC_SetDACClockDivider`, `MCC_SetDACUpdateRate`): a
 //! channel's output changes at most once per cycle (16 bits at the divider's system
@@ -33,7 +34,7 @@ pub struct Dac {
     trig_mode: [bool; AXES],
     /// How long one channel's update takes (`MCC_SetDACClockDivider`,
     /// `MCC_SetDACUpdateRate`); only its cycle length is used.
-    pub cadence: Cadence,
+    cadence: Cadence,
     /// The DAC's time since init, ns (advanced by [`Dac::tick`]).
     now_ns: u64,
     /// When each channel's output last changed.
@@ -93,6 +94,25 @@ impl Dac {
         Ok(())
     }
 
+    /// `MCC_SetDACClockDivider`: one serial bit every `divider` system clocks (1..65535;
+    /// 0 is `PARAMETER_ERR` and changes nothing), so a channel's update lasts
+    /// `16 × divider × 10 ns` and its output changes at most once per update.
+    pub fn set_clock_divider(&mut self, divider: u16) -> McclResult<()> {
+        self.cadence.set_divider(divider)
+    }
+
+    /// `MCC_SetDACUpdateRate`: at most `rate` updates per second on each channel (checked
+    /// as [`super::cadence::update_period_ns`] says; a refused rate changes nothing): a
+    /// value written sooner than `1 / rate` after the channel's last change waits for it.
+    pub fn set_update_rate(&mut self, rate: f64) -> McclResult<()> {
+        self.cadence.set_update_rate(rate)
+    }
+
+    /// The update timing as set (divider and update period).
+    pub fn cadence(&self) -> &Cadence {
+        &self.cadence
+    }
+
     /// How long one channel's update lasts, ns: 16 bits at the divider, or the update
     /// period if that is longer.
     pub fn cycle_ns(&self) -> u64 {
@@ -122,7 +142,7 @@ impl Dac {
 
     /// One tick of `dt_ns`: held values whose cycle ended by the tick's end reach the
     /// output; the next cycle of that channel starts where the last one ended.
-    pub fn tick(&mut self, dt_ns: u64) {
+    pub(crate) fn tick(&mut self, dt_ns: u64) {
         self.now_ns = self.now_ns.saturating_add(dt_ns);
         let period = self.cycle_ns();
         for ch in 0..AXES {
@@ -138,7 +158,7 @@ impl Dac {
     }
 
     /// `n` ticks of `dt_ns` with nothing held: only time moves.
-    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+    pub(crate) fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         self.now_ns = self.now_ns.saturating_add(n.saturating_mul(dt_ns));
     }
 
@@ -178,7 +198,7 @@ impl Dac {
 
     /// The encoder compare of channel `enc` fired: every channel in trigger mode with
     /// `DAC_TRIG_ENC<enc>` in its sources takes its preset voltage.
-    pub fn trigger(&mut self, enc: usize) {
+    pub(crate) fn trigger(&mut self, enc: usize) {
         let Some(bit) = u32::try_from(enc).ok().and_then(|e| 1u32.checked_shl(e)) else {
             return;
         };
@@ -190,7 +210,7 @@ impl Dac {
     }
 
     /// Watchdog reset: every output to 0 V.
-    pub fn reset_outputs(&mut self) {
+    pub(crate) fn reset_outputs(&mut self) {
         self.value = [0.0; AXES];
         self.held = [None; AXES];
     }
@@ -219,7 +239,7 @@ mod tests {
         // the next cycle runs from 10 ms: the tick ending at 20 ms (k = 19) applies
         // 19 / 4, the one ending at 30 ms (k = 29) 29 / 4.
         let mut d = Dac::default();
-        d.cadence.set_update_rate(100.0).unwrap();
+        d.set_update_rate(100.0).unwrap();
         assert_eq!(d.cycle_ns(), 10_000_000);
         let mut seen = Vec::new();
         for k in 0..30 {
@@ -233,7 +253,7 @@ mod tests {
         want.push(7.25);
         assert_eq!(seen, want);
         // Divider 65535: 16 x 65535 x 10 ns = 10.4856 ms, longer than 10 ms.
-        d.cadence.set_divider(65535).unwrap();
+        d.set_clock_divider(65535).unwrap();
         assert_eq!(d.cycle_ns(), 10_485_600);
         // The watchdog's reset drops what waits.
         d.set_output(0, 5.0).unwrap();

@@ -19,7 +19,7 @@ pub struct Handshake {
     /// Host interrupts received and not yet acknowledged.
     waiting: u64,
     /// Host interrupts received since init.
-    pub received: u64,
+    received: u64,
 }
 
 impl Handshake {
@@ -34,13 +34,19 @@ impl Handshake {
         p.raise(Interrupt::Handshake);
     }
 
+    /// Host interrupts received since init (each one also acknowledged, at the tick after
+    /// it): what the card has seen of the host, for a test or a diagnostic.
+    pub fn received(&self) -> u64 {
+        self.received
+    }
+
     /// Whether a request waits for its acknowledgement.
     pub fn waiting(&self) -> bool {
         self.waiting > 0
     }
 
     /// One tick: every waiting request is acknowledged with a handshake to the host.
-    pub fn tick(&mut self, p: &mut Pending) {
+    pub(crate) fn tick(&mut self, p: &mut Pending) {
         for _ in 0..std::mem::take(&mut self.waiting).min(255) {
             p.raise(Interrupt::Handshake);
         }
@@ -67,6 +73,6 @@ mod tests {
         let mut q = Pending::default();
         h.tick(&mut q);
         assert!(q.is_empty(), "each request acknowledged once");
-        assert_eq!(h.received, 2);
+        assert_eq!(h.received(), 2);
     }
 }

@@ -29,32 +29,116 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use timer::{Timer, Watchdog};
 
 /// The peripherals of one card.
+///
+/// Each part keeps its own rules through its methods; the accessors below lend a part
+/// to read or to change through those methods. What involves two parts (the ADC reading
+/// the DAC, an interrupt cause raised) is a method here.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Peripherals {
     /// The 32-bit timer.
-    pub timer: Timer,
+    timer: Timer,
     /// The watchdog.
-    pub watchdog: Watchdog,
+    watchdog: Watchdog,
     /// The D/A converter.
-    pub dac: Dac,
+    dac: Dac,
     /// The A/D converter.
-    pub adc: Adc,
+    adc: Adc,
     /// The remote I/O masters.
-    pub rio: Master,
+    rio: Master,
     /// The handshake with the host (`MCC_HostInterrupt`, `MCC_SlaveInterrupt`).
-    pub handshake: Handshake,
+    handshake: Handshake,
     /// Interrupt causes raised since the last delivery.
-    pub pending: Pending,
+    pending: Pending,
 }
 
 impl Peripherals {
+    /// The timer, to read.
+    pub fn timer(&self) -> &Timer {
+        &self.timer
+    }
+
+    /// The timer, to set (`MCC_SetTimer`, `MCC_EnableTimer`, …).
+    pub fn timer_mut(&mut self) -> &mut Timer {
+        &mut self.timer
+    }
+
+    /// The watchdog, to read.
+    pub fn watchdog(&self) -> &Watchdog {
+        &self.watchdog
+    }
+
+    /// The watchdog, to set (`MCC_SetWatchDogTimer`, `MCC_RefreshWatchDogTimer`, …).
+    pub fn watchdog_mut(&mut self) -> &mut Watchdog {
+        &mut self.watchdog
+    }
+
+    /// The D/A converter, to read.
+    pub fn dac(&self) -> &Dac {
+        &self.dac
+    }
+
+    /// The D/A converter, to set (`MCC_SetDACOutput`, `MCC_StartDACConv`, …).
+    pub fn dac_mut(&mut self) -> &mut Dac {
+        &mut self.dac
+    }
+
+    /// The A/D converter, to read.
+    pub fn adc(&self) -> &Adc {
+        &self.adc
+    }
+
+    /// The A/D converter, to set (`MCC_SetADCConvType`, `MCC_StopADCConv`, …; starting a
+    /// conversion reads the inputs: [`Peripherals::start_adc`]).
+    pub fn adc_mut(&mut self) -> &mut Adc {
+        &mut self.adc
+    }
+
+    /// The remote I/O (RIO and ARIO masters), to read.
+    pub fn remote_io(&self) -> &Master {
+        &self.rio
+    }
+
+    /// The remote I/O, to set (`MCC_Set(A)RIOOutputValue`, the set and slave controls, …).
+    pub fn remote_io_mut(&mut self) -> &mut Master {
+        &mut self.rio
+    }
+
+    /// The handshake with the host, to read (the requests received).
+    pub fn handshake(&self) -> &Handshake {
+        &self.handshake
+    }
+
+    /// `MCC_HostInterrupt`: the card receives the host's request; it acknowledges it in
+    /// its next tick with a `HANDSHAKE` cause.
+    pub fn host_interrupt(&mut self) {
+        self.handshake.host_interrupt();
+    }
+
+    /// `MCC_SlaveInterrupt`: the card interrupts the host now (one `HANDSHAKE` cause,
+    /// delivered after the next tick).
+    pub fn slave_interrupt(&mut self) {
+        self.handshake.slave_interrupt(&mut self.pending);
+    }
+
+    /// Raises an interrupt cause on the card (an encoder compare, a trigger of the
+    /// simulated machine); it is delivered with the causes of the card's next tick.
+    pub fn raise(&mut self, i: Interrupt) {
+        self.pending.raise(i);
+    }
+
+    /// The causes raised since the last delivery, taken for delivery (`None` when there
+    /// are none: nothing to deliver, nothing changed).
+    pub fn take_pending(&mut self) -> Option<Pending> {
+        (!self.pending.is_empty()).then(|| std::mem::take(&mut self.pending))
+    }
+
     /// One tick of `dt_ns`: timer, watchdog, D/A updates, A/D conversion, remote I/O
     /// transfer, handshake acknowledgements. Returns
     /// true when the watchdog expired; the card's outputs here are then reset already
     /// (DAC at 0 V, remote outputs at 0); the caller resets the rest of the card.
     pub fn tick(&mut self, dt_ns: u64) -> bool {
         let n = self.timer.advance(dt_ns);
-        if n > 0 && self.timer.trigger {
+        if n > 0 && self.timer.trigger() {
             self.pending.raise(Interrupt::Timer(n));
         }
         let reset = self.watchdog.advance(n);
@@ -87,14 +171,14 @@ impl Peripherals {
 
     /// `n` ticks of `dt_ns` of [idle](Peripherals::idle) peripherals: exactly what `n`
     /// calls of [`Peripherals::tick`] do then (they return false and raise nothing).
-    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+    pub(crate) fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         self.rio.idle_ticks(n, dt_ns);
         self.dac.idle_ticks(n, dt_ns);
     }
 
     /// The voltage at each ADC input now.
     pub fn adc_inputs(&self) -> [f32; AXES] {
-        std::array::from_fn(|ch| match self.adc.source[ch] {
+        std::array::from_fn(|ch| match self.adc.source(ch) {
             AdcSource::Dac(d) if d < AXES => self.dac.output(d),
             AdcSource::Dac(_) => 0.0,
             AdcSource::Constant(v) => v,
@@ -110,7 +194,7 @@ impl Peripherals {
     /// Where ADC channel `ch` reads its input (default: DAC channel `ch` of this card).
     pub fn set_adc_source(&mut self, ch: usize, src: AdcSource) {
         if ch < AXES {
-            self.adc.source[ch] = src;
+            self.adc.set_source(ch, src);
         }
     }
 
@@ -127,7 +211,7 @@ impl Peripherals {
 /// `state` holds `IDLE` when the peripherals were [idle](Peripherals::idle) as last
 /// unlocked, and in its other bits the ticks the engine counted instead of running since
 /// (an idle tick only moves the ARIO cycle timing). Whoever locks takes the count and runs
-/// those ticks first ([`Peripherals::idle_ticks`]), so every holder of the lock sees the
+/// those ticks first (`Peripherals::idle_ticks`), so every holder of the lock sees the
 /// state an engine ticking every card would have made. Both sides change `state` with one
 /// atomic operation: a tick counted before a lock is run by that lock before its holder
 /// changes anything; once the lock has taken the count (and cleared `IDLE`) the engine
@@ -217,33 +301,40 @@ mod tests {
 
     /// The same change made to both copies.
     fn change(p: &mut Peripherals, k: u64) {
+        fn rio(p: &mut Peripherals, set: usize) -> &mut rio::Set<{ rio::RIO_PORTS }> {
+            p.rio.rio_set_mut(set).unwrap()
+        }
+        fn ario(p: &mut Peripherals, set: usize) -> &mut rio::Set<{ rio::ARIO_SLAVES }> {
+            p.rio.ario_set_mut(set).unwrap()
+        }
         let set = (k / 16 % 2) as usize;
         let slave = (k / 32 % 4) as u16;
         match k % 20 {
-            0 => p.rio.ario_timing.set_update_rate(set, 300.0).unwrap(),
-            1 => p.rio.ario_timing.set_update_rate(set, 1700.0).unwrap(),
-            2 => p.rio.ario_timing.set_divider(set, 2000).unwrap(),
-            3 => p.rio.ario_timing.set_node_delay(3000),
-            4 | 5 => p.rio.ario[set].set_slave_control(slave, true).unwrap(),
-            6..=8 => p.rio.ario[set].set_slave_control(slave, false).unwrap(),
-            9 => p.rio.ario[set].set_output(slave, (k >> 8) as u16).unwrap(),
-            10 => p.rio.rio[set].control = !p.rio.rio[set].control,
-            11 => p.rio.rio[set]
-                .set_slave_control(slave, k & 64 != 0)
-                .unwrap(),
-            12 => p.rio.rio[set].set_output(0, (k >> 8) as u16).unwrap(),
+            0 => p.rio.set_ario_update_rate(set, 300.0).unwrap(),
+            1 => p.rio.set_ario_update_rate(set, 1700.0).unwrap(),
+            2 => p.rio.set_ario_clock_divider(set, 2000).unwrap(),
+            3 => p.rio.set_ario_node_delay(3000),
+            4 | 5 => ario(p, set).set_slave_control(slave, true).unwrap(),
+            6..=8 => ario(p, set).set_slave_control(slave, false).unwrap(),
+            9 => ario(p, set).set_output(slave, (k >> 8) as u16).unwrap(),
+            10 => {
+                let on = p.rio.rio_sets()[set].control();
+                p.rio.set_rio_control(set, !on).unwrap();
+            }
+            11 => rio(p, set).set_slave_control(slave, k & 64 != 0).unwrap(),
+            12 => rio(p, set).set_output(0, (k >> 8) as u16).unwrap(),
             13 => {
                 p.timer.set_period(70_000).unwrap();
-                p.timer.trigger = true;
+                p.timer.set_trigger(true);
                 p.timer.set_enabled(k & 128 != 0);
             }
-            14 => p.rio.ario[set]
+            14 => ario(p, set)
                 .set_input_trigger((k % 8) as u16, true)
                 .unwrap(),
             16 => p.dac.set_output((k >> 8) as usize % 8, 1.0).unwrap(),
-            17 => p.dac.cadence.set_update_rate(300.0).unwrap(),
-            18 => p.rio.rio_timing[set].set_update_rate(700.0).unwrap(),
-            19 => p.rio.rio_timing[set].set_divider(3000).unwrap(),
+            17 => p.dac.set_update_rate(300.0).unwrap(),
+            18 => p.rio.set_rio_update_rate(set, 700.0).unwrap(),
+            19 => p.rio.set_rio_clock_divider(set, 3000).unwrap(),
             _ => p
                 .rio
                 .set_slave_failed(true, set, usize::from(slave), k & 256 != 0),
@@ -283,9 +374,10 @@ mod tests {
                 for p in [&mut *cell.lock(), &mut plain] {
                     p.timer.set_enabled(false);
                     for set in 0..2 {
-                        p.rio.rio[set].control = false;
+                        p.rio.set_rio_control(set, false).unwrap();
                         for slave in 0..32 {
-                            p.rio.ario[set].set_slave_control(slave, false).unwrap();
+                            let ario = p.rio.ario_set_mut(set).unwrap();
+                            ario.set_slave_control(slave, false).unwrap();
                         }
                     }
                 }
@@ -319,16 +411,20 @@ mod tests {
         p.timer.set_period(100_000).unwrap(); // 1 ms
         p.watchdog.set_compare(10).unwrap(); // 10 ms
         p.dac.set_output(3, 4.0).unwrap();
-        p.rio.ario[0].set_output(5, 0xFFFF).unwrap();
+        p.rio
+            .ario_set_mut(0)
+            .unwrap()
+            .set_output(5, 0xFFFF)
+            .unwrap();
         p.watchdog.set_enabled(true);
         assert!(!(0..20).any(|_| p.tick(2_000_000)), "timer off: no count");
         p.timer.set_enabled(true);
-        p.timer.trigger = true;
+        p.timer.set_trigger(true);
         let fired: Vec<bool> = (0..5).map(|_| p.tick(2_000_000)).collect();
         assert_eq!(fired, [false, false, false, false, true]);
         assert_eq!(p.pending.tmr[0], 10, "2 expirations per tick");
         assert_eq!(p.dac.output(3), 0.0);
-        assert_eq!(p.rio.ario[0].output(5), Ok(0));
-        assert_eq!(p.watchdog.resets, 1);
+        assert_eq!(p.rio.ario_sets()[0].output(5), Ok(0));
+        assert_eq!(p.watchdog.resets(), 1);
     }
 }

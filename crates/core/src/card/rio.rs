@@ -31,8 +31,11 @@
 //! slave and transfer statuses read 0, and the transfer trigger fires. Its first good
 //! transfer clears the report. A failed master is reported at once.
 
+mod ario_timing;
+
+pub use ario_timing::ArioTiming;
+
 use super::cadence::Cadence;
-use super::SYSTEM_CLOCK_NS;
 use crate::error::{McclError, McclResult};
 use crate::interrupt::{Interrupt, Pending};
 use crate::vendor::consts as c;
@@ -62,13 +65,13 @@ pub enum RioInput {
 /// One set of a master with `N` slaves.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Set<const N: usize> {
-    /// Set-level control (RIO only; ARIO sets are always on).
-    pub control: bool,
+    /// Set-level control (RIO only, [`Master::set_rio_control`]; ARIO sets are always on).
+    control: bool,
     slave_on: u32,
     outputs: [u16; N],
     inputs: [u16; N],
     /// What each slave's inputs read.
-    pub source: [RioInput; N],
+    source: [RioInput; N],
     /// Simulation: slaves whose transfers fail.
     broken: u32,
     /// Slaves reported failed: their consecutive failed transfers exceeded `tolerance`.
@@ -131,6 +134,20 @@ impl<const N: usize> Set<N> {
         Ok(())
     }
 
+    /// Whether the set transfers: its set-level control (RIO sets, off until
+    /// `MCC_EnableRIOSetControl`; ARIO sets are always on).
+    pub fn control(&self) -> bool {
+        self.control
+    }
+
+    /// Simulation: what slave `s`'s inputs read from now on (its own outputs by default);
+    /// the master latches them at the slave's next transfer. A bad slave is
+    /// `PARAMETER_ERR`.
+    pub fn set_input_source(&mut self, s: u16, src: RioInput) -> McclResult<()> {
+        self.source[Self::slave(s)?] = src;
+        Ok(())
+    }
+
     /// Slaves whose control is on.
     pub fn transmitting(&self) -> u32 {
         self.slave_on
@@ -150,6 +167,15 @@ impl<const N: usize> Set<N> {
     /// Outputs of a port/slave (`MCC_Set(A)RIOOutputValue`).
     pub fn set_output(&mut self, s: u16, v: u16) -> McclResult<()> {
         self.outputs[Self::slave(s)?] = v;
+        Ok(())
+    }
+
+    /// The bits of `mask` of a port/slave's outputs take those of `value`, the others
+    /// stay (`MCC_QueueRIOOutputValue`, `MCC_QueueARIOOutputValue` when the queue reaches
+    /// them).
+    pub fn set_output_bits(&mut self, s: u16, mask: u16, value: u16) -> McclResult<()> {
+        let out = &mut self.outputs[Self::slave(s)?];
+        *out = *out & !mask | value & mask;
         Ok(())
     }
 
@@ -296,102 +322,6 @@ impl<const N: usize> Set<N> {
     }
 }
 
-/// When the ARIO sets of a card transfer (the vendor headers: `MCC_SetARIOUpdateRate`,
-/// `MCC_SetARIOClockDivider` per set, `MCC_SetARIONode2NodeDelay` per card; the manuals
-/// say nothing more). A cycle with `n` transmitting slaves (at least 1) takes
-/// `n × (32 × divider + delay) × 10 ns`; a set with an update rate waits at least
-/// `1 / rate` between cycles. The cycle count restarts when any of the three is set.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ArioTiming {
-    /// Least time between cycles per set, ns (`MCC_SetARIOUpdateRate`); `None`: as fast
-    /// as the bus allows.
-    pub update_ns: [Option<u64>; SETS],
-    /// Serial clock divider per set: one bit takes `divider` system clocks (1..65535).
-    pub divider: [u16; SETS],
-    /// Gap after each slave's frame, system clocks (`MCC_SetARIONode2NodeDelay`).
-    pub node_delay: u32,
-    /// Time since the set's last cycle ended (or its timing was set), ns.
-    elapsed_ns: [u64; SETS],
-}
-
-impl Default for ArioTiming {
-    fn default() -> Self {
-        ArioTiming {
-            update_ns: [None; SETS],
-            divider: [ARIO_DEFAULT_DIVIDER; SETS],
-            node_delay: 0,
-            elapsed_ns: [0; SETS],
-        }
-    }
-}
-
-impl ArioTiming {
-    /// `MCC_SetARIOUpdateRate`: `rate` updates per second at most (finite, > 0, its
-    /// cycle `1 / rate` at most the longest time of [`crate::config::range::time_ms`],
-    /// so `rate` >= 2.33e-7 Hz); the period is rounded to whole ns (at least 1).
-    pub fn set_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
-        if !rate.is_finite() || rate <= 0.0 || set >= SETS {
-            return Err(McclError::Parameter);
-        }
-        crate::config::range::time_ms(1000.0 / rate)?;
-        self.update_ns[set] = Some(((1e9 / rate).round() as u64).max(1));
-        self.elapsed_ns[set] = 0;
-        Ok(())
-    }
-
-    /// `MCC_SetARIOClockDivider`: 1..65535 system clocks per bit (0 is `PARAMETER_ERR`).
-    pub fn set_divider(&mut self, set: usize, divider: u16) -> McclResult<()> {
-        if divider == 0 || set >= SETS {
-            return Err(McclError::Parameter);
-        }
-        self.divider[set] = divider;
-        self.elapsed_ns[set] = 0;
-        Ok(())
-    }
-
-    /// `MCC_SetARIONode2NodeDelay`: system clocks after each slave's frame, both sets.
-    pub fn set_node_delay(&mut self, clocks: u32) {
-        self.node_delay = clocks;
-        self.elapsed_ns = [0; SETS];
-    }
-
-    /// How long a cycle of set `set` takes with the slaves in `transmitting`, ns: the
-    /// bus time, or the update period if that is longer.
-    pub fn cycle_ns(&self, set: usize, transmitting: u32) -> u64 {
-        let n = u64::from(transmitting.count_ones().max(1));
-        let per_slave =
-            ARIO_BITS_PER_SLAVE * u64::from(self.divider[set]) + u64::from(self.node_delay);
-        let bus = n.saturating_mul(per_slave).saturating_mul(SYSTEM_CLOCK_NS);
-        bus.max(self.update_ns[set].unwrap_or(0))
-    }
-
-    /// Advances set `set` by `dt_ns`; true when a cycle ended in that time.
-    fn advance(&mut self, set: usize, dt_ns: u64, transmitting: u32) -> bool {
-        let period = self.cycle_ns(set, transmitting).max(1);
-        let e = self.elapsed_ns[set].saturating_add(dt_ns);
-        self.elapsed_ns[set] = e % period;
-        e >= period
-    }
-
-    /// `n` calls of [`ArioTiming::advance`] with the same arguments, the cycles that end
-    /// ignored: `(e + n x dt) mod period`, which is what the calls compute when nothing
-    /// saturates (each call's sum is at most this one); otherwise the calls themselves.
-    fn advance_n(&mut self, set: usize, n: u64, dt_ns: u64, transmitting: u32) {
-        let period = self.cycle_ns(set, transmitting).max(1);
-        match n
-            .checked_mul(dt_ns)
-            .and_then(|d| self.elapsed_ns[set].checked_add(d))
-        {
-            Some(e) => self.elapsed_ns[set] = e % period,
-            None => {
-                for _ in 0..n {
-                    self.advance(set, dt_ns, transmitting);
-                }
-            }
-        }
-    }
-}
-
 /// RIO clock divider before any `MCC_SetRIOClockDivider`: 10, as the ARIO's.
 pub const RIO_DEFAULT_DIVIDER: u16 = 10;
 
@@ -405,14 +335,14 @@ pub fn rio_cycle_bits(transmitting: u32) -> u64 {
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Master {
     /// RIO sets.
-    pub rio: [Set<RIO_PORTS>; SETS],
+    rio: [Set<RIO_PORTS>; SETS],
     /// ARIO sets.
-    pub ario: [Set<ARIO_SLAVES>; SETS],
+    ario: [Set<ARIO_SLAVES>; SETS],
     /// When the ARIO sets transfer.
-    pub ario_timing: ArioTiming,
+    ario_timing: ArioTiming,
     /// When each RIO set transfers (`MCC_SetRIOClockDivider`, `MCC_SetRIOUpdateRate`): a
     /// cycle moves 32 bits per transmitting slave (at least one).
-    pub rio_timing: [Cadence; SETS],
+    rio_timing: [Cadence; SETS],
 }
 
 impl Default for Master {
@@ -436,10 +366,84 @@ pub fn set_ix(w: u16) -> McclResult<usize> {
     }
 }
 
+/// Element `set` of a master's per-set array, to change; a bad set is `PARAMETER_ERR`.
+fn at_mut<T>(sets: &mut [T; SETS], set: usize) -> McclResult<&mut T> {
+    sets.get_mut(set).ok_or(McclError::Parameter)
+}
+
 impl Master {
+    /// The RIO sets (`RIO_SET0`, `RIO_SET1`), to read.
+    pub fn rio_sets(&self) -> &[Set<RIO_PORTS>; SETS] {
+        &self.rio
+    }
+
+    /// RIO set `set` (`RIO_SET0`, `RIO_SET1`; else `PARAMETER_ERR`), to change through
+    /// its methods.
+    pub fn rio_set_mut(&mut self, set: usize) -> McclResult<&mut Set<RIO_PORTS>> {
+        at_mut(&mut self.rio, set)
+    }
+
+    /// The ARIO sets (`RIO_SET0`, `RIO_SET1`), to read.
+    pub fn ario_sets(&self) -> &[Set<ARIO_SLAVES>; SETS] {
+        &self.ario
+    }
+
+    /// ARIO set `set` (`RIO_SET0`, `RIO_SET1`; else `PARAMETER_ERR`), to change through
+    /// its methods.
+    pub fn ario_set_mut(&mut self, set: usize) -> McclResult<&mut Set<ARIO_SLAVES>> {
+        at_mut(&mut self.ario, set)
+    }
+
+    /// `MCC_EnableRIOSetControl` / `MCC_DisableRIOSetControl`: RIO set `set` transfers or
+    /// not (a bad set is `PARAMETER_ERR`). Only RIO sets have this control: an ARIO set
+    /// always transfers, so the ARIO sets offer no way to turn it off.
+    pub fn set_rio_control(&mut self, set: usize, on: bool) -> McclResult<()> {
+        at_mut(&mut self.rio, set)?.control = on;
+        Ok(())
+    }
+
+    /// When each RIO set transfers, to read.
+    pub fn rio_timing(&self) -> &[Cadence; SETS] {
+        &self.rio_timing
+    }
+
+    /// `MCC_SetRIOClockDivider`: one bit every `divider` system clocks on RIO set `set`
+    /// (1..65535); a bad set or divider is `PARAMETER_ERR` and changes nothing. The cycle
+    /// count restarts.
+    pub fn set_rio_clock_divider(&mut self, set: usize, divider: u16) -> McclResult<()> {
+        at_mut(&mut self.rio_timing, set)?.set_divider(divider)
+    }
+
+    /// `MCC_SetRIOUpdateRate`: at most `rate` transfer cycles per second on RIO set `set`
+    /// (checked as [`super::cadence::update_period_ns`] says); a bad set or rate is
+    /// `PARAMETER_ERR` and changes nothing. The cycle count restarts.
+    pub fn set_rio_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
+        at_mut(&mut self.rio_timing, set)?.set_update_rate(rate)
+    }
+
+    /// When the ARIO sets transfer, to read.
+    pub fn ario_timing(&self) -> &ArioTiming {
+        &self.ario_timing
+    }
+
+    /// `MCC_SetARIOUpdateRate`: see [`ArioTiming::set_update_rate`].
+    pub fn set_ario_update_rate(&mut self, set: usize, rate: f64) -> McclResult<()> {
+        self.ario_timing.set_update_rate(set, rate)
+    }
+
+    /// `MCC_SetARIOClockDivider`: see [`ArioTiming::set_divider`].
+    pub fn set_ario_clock_divider(&mut self, set: usize, divider: u16) -> McclResult<()> {
+        self.ario_timing.set_divider(set, divider)
+    }
+
+    /// `MCC_SetARIONode2NodeDelay`: see [`ArioTiming::set_node_delay`].
+    pub fn set_ario_node_delay(&mut self, clocks: u32) {
+        self.ario_timing.set_node_delay(clocks);
+    }
+
     /// One tick of `dt_ns`: every RIO set transfers, each ARIO set if one of its cycles
     /// ended in the tick.
-    pub fn tick(&mut self, dt_ns: u64, p: &mut Pending) {
+    pub(crate) fn tick(&mut self, dt_ns: u64, p: &mut Pending) {
         for (i, s) in self.rio.iter_mut().enumerate() {
             if self.rio_timing[i].advance(dt_ns, rio_cycle_bits(s.transmitting())) {
                 s.transfer(p);
@@ -461,7 +465,7 @@ impl Master {
     /// `n` ticks of `dt_ns` of an [idle](Master::idle) master: exactly what `n` calls of
     /// [`Master::tick`] do then (the ARIO and RIO cycle timing moves on; the transfers
     /// would change nothing).
-    pub fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
+    pub(crate) fn idle_ticks(&mut self, n: u64, dt_ns: u64) {
         for (i, s) in self.rio.iter().enumerate() {
             self.rio_timing[i].advance_n(n, dt_ns, rio_cycle_bits(s.transmitting()));
         }
@@ -471,7 +475,7 @@ impl Master {
     }
 
     /// Watchdog reset: every output to 0.
-    pub fn reset_outputs(&mut self) {
+    pub(crate) fn reset_outputs(&mut self) {
         self.rio.iter_mut().for_each(Set::reset_outputs);
         self.ario.iter_mut().for_each(Set::reset_outputs);
     }
@@ -519,15 +523,23 @@ mod tests {
         s.set_slave_control(2, true).unwrap();
         step(&mut m);
         assert_eq!(m.rio[1].input(2), Ok(0), "set control off");
-        m.rio[1].control = true;
+        m.set_rio_control(1, true).unwrap();
+        assert!(m.rio[1].control());
         assert_eq!(m.rio[1].input(2), Ok(0), "not before the tick");
         step(&mut m);
         assert_eq!(m.rio[1].input(2), Ok(0xBEEF));
 
         let a = &mut m.ario[0];
-        a.set_output(31, 0x1234).unwrap();
+        a.set_output(31, 0x1004).unwrap();
+        a.set_output_bits(31, 0x0FF0, 0xF234).unwrap();
+        assert_eq!(a.output(31), Ok(0x1234), "only the masked bits change");
+        assert_eq!(a.set_output_bits(32, 1, 1), Err(McclError::Parameter));
         a.set_slave_control(31, true).unwrap();
-        a.source[31] = RioInput::Constant(0x00F0);
+        a.set_input_source(31, RioInput::Constant(0x00F0)).unwrap();
+        assert_eq!(
+            a.set_input_source(32, RioInput::Loopback),
+            Err(McclError::Parameter)
+        );
         assert_eq!(a.set_slave_control(32, true), Err(McclError::Parameter));
         step(&mut m);
         assert_eq!(m.ario[0].input(31), Ok(0x00F0));
@@ -660,7 +672,7 @@ mod tests {
         assert_eq!(transfers(&mut m, 12), [4, 8, 12]);
         // Set 0 keeps its own default timing.
         assert_eq!(
-            (m.rio_timing[0].divider, m.rio_timing[0].update_ns),
+            (m.rio_timing[0].divider(), m.rio_timing[0].update_ns()),
             (RIO_DEFAULT_DIVIDER, None)
         );
     }
@@ -712,9 +724,8 @@ mod tests {
         }
         assert_eq!(m.ario_timing, before);
         m.ario_timing.set_update_rate(0, 2.33e-7).unwrap();
-        // A very fast rate saturates at a period of 1 ns.
+        // A very fast rate saturates at a period of 1 ns (ario_timing's test).
         m.ario_timing.set_update_rate(0, 1e300).unwrap();
-        assert_eq!(m.ario_timing.update_ns[0], Some(1));
         assert!(ario_transfer_ticks(&mut m, 1).is_empty(), "bus-bound 5 ms");
     }
 }

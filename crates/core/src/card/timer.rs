@@ -21,7 +21,7 @@ pub struct Timer {
     period: u32,
     enabled: bool,
     /// `MCC_EnableTimerTrigger`: expirations raise TMRINT.
-    pub trigger: bool,
+    trigger: bool,
     /// Time since the last expiration, ns.
     elapsed_ns: u64,
 }
@@ -71,8 +71,19 @@ impl Timer {
         self.enabled
     }
 
+    /// `MCC_EnableTimerTrigger` / `MCC_DisableTimerTrigger`: whether the expirations raise
+    /// TMRINT (the timer counts either way, and the watchdog counts its periods).
+    pub fn set_trigger(&mut self, on: bool) {
+        self.trigger = on;
+    }
+
+    /// Whether the expirations raise TMRINT ([`Timer::set_trigger`]).
+    pub fn trigger(&self) -> bool {
+        self.trigger
+    }
+
     /// Advances by `dt_ns`; returns how many times the timer expired.
-    pub fn advance(&mut self, dt_ns: u64) -> u64 {
+    pub(crate) fn advance(&mut self, dt_ns: u64) -> u64 {
         if !self.enabled {
             return 0;
         }
@@ -94,7 +105,7 @@ pub struct Watchdog {
     enabled: bool,
     count: u64,
     /// How many times the watchdog has reset the card since init.
-    pub resets: u32,
+    resets: u32,
 }
 
 impl Default for Watchdog {
@@ -157,6 +168,12 @@ impl Watchdog {
         self.count
     }
 
+    /// How many times the watchdog has reset the card since init (only its expiry counts
+    /// them, so that a program or the panel can tell that a reset happened).
+    pub fn resets(&self) -> u32 {
+        self.resets
+    }
+
     /// `MCC_RefreshWatchDogTimer`.
     pub fn refresh(&mut self) {
         self.count = 0;
@@ -164,7 +181,7 @@ impl Watchdog {
 
     /// Counts `expirations` of the timer; true when the watchdog expired (it then
     /// disables itself).
-    pub fn advance(&mut self, expirations: u64) -> bool {
+    pub(crate) fn advance(&mut self, expirations: u64) -> bool {
         if !self.enabled {
             return false;
         }
@@ -210,7 +227,7 @@ mod tests {
         assert!(!w.advance(4));
         assert!(w.advance(1));
         assert!(!w.enabled());
-        assert_eq!(w.resets, 1);
+        assert_eq!(w.resets(), 1);
         assert!(!w.advance(100), "disabled after the reset");
         assert_eq!(w.set_compare(0), Err(McclError::Parameter));
         assert_eq!(w.set_reset_period(0), Err(McclError::Parameter));
