@@ -16,6 +16,11 @@ impl Channel {
         }
     }
 
+    /// Whether the channel compensates.
+    pub(in crate::machine) fn compensates(&self) -> bool {
+        self.comp.active()
+    }
+
     /// New compensation tables (`MCC_UpdateCompParam`).
     pub fn set_compensation(&mut self, p: &SYS_COMP_PARAM) {
         self.resting = false;

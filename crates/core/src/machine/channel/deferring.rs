@@ -119,6 +119,14 @@ impl Channel {
         self.deferred.active
     }
 
+    /// Tests: forgets what only deferring keeps and the last index count (kept only for
+    /// the step that passed it), so that two channels compare by what their steps left.
+    #[cfg(test)]
+    pub(in crate::machine) fn forget_deferring(&mut self) {
+        self.deferred = Deferred::NONE;
+        self.last_index_count = None;
+    }
+
     /// Brings a channel with deferred steps up to date (`steps`: their period and the
     /// number of the last): every field as the steps would have left it (but the last
     /// index count of a pulse passed before the last step, see the module). Returns

@@ -58,6 +58,13 @@ impl Channel {
         k
     }
 
+    /// The last index pulse passed, as a count of the command counter (what a latch
+    /// captures at it).
+    #[inline]
+    pub(in crate::machine) fn last_index_count(&self) -> Option<i64> {
+        self.last_index_count
+    }
+
     #[inline]
     pub(in crate::machine) fn count_index(&mut self, from: f64, to: f64) {
         self.index_events = 0;

@@ -14,7 +14,7 @@ mod stepping;
 use super::compensation::{self, Compensation};
 use super::deferred::Deferred;
 use super::index_pulses::IndexCell;
-use super::{SensorLevels, DEFAULT_PULSE_LIMIT};
+use super::{PulseLimit, SensorLevels, DEFAULT_PULSE_LIMIT};
 use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
 
 /// What the simulation configuration says about one channel.
@@ -198,6 +198,15 @@ impl Channel {
         self.max_acc
     }
 
+    /// Sets pulse limit `kind` (1..=[`MAX_PULSE_LIMIT`](super::MAX_PULSE_LIMIT), checked
+    /// by the caller).
+    pub(in crate::machine) fn set_pulse_limit(&mut self, kind: PulseLimit, x: i32) {
+        match kind {
+            PulseLimit::Speed => self.max_speed = x,
+            PulseLimit::Acc => self.max_acc = x,
+        }
+    }
+
     /// Pulses per UU (signed: negative when wPosToEncoderDir reverses the output).
     pub fn factor(&self) -> f64 {
         let f = crate::config::conv_factor(&self.mac);
@@ -281,6 +290,13 @@ impl Channel {
         self.assert_up_to_date();
         let d = self.out - self.prev_out;
         (d, d - self.prev_delta)
+    }
+
+    /// Tests: whether the last step changed nothing and another with the same command
+    /// would change nothing either (the coming step is skipped).
+    #[cfg(test)]
+    pub(in crate::machine) fn resting(&self) -> bool {
+        self.resting
     }
 
     /// New mechanism and encoder parameters (`MCC_UpdateParam`).

@@ -15,6 +15,13 @@ impl Channel {
         !self.comp.active() && !self.lags() && !self.sensors
     }
 
+    /// Tests: whether the channel is ideal, as its steps read it (kept up to date by
+    /// [`Channel::refresh_ideal`]).
+    #[cfg(test)]
+    pub(in crate::machine) fn ideal(&self) -> bool {
+        self.ideal
+    }
+
     /// Whether the plant is a first-order lag (a positive time constant).
     fn lags(&self) -> bool {
         matches!(self.spec.lag_s, Some(tau) if tau > 0.0)
