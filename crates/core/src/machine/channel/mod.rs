@@ -16,6 +16,7 @@ use super::deferred::Deferred;
 use super::index_pulses::IndexCell;
 use super::{PulseLimit, SensorLevels, DEFAULT_PULSE_LIMIT};
 use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use encoder::Encoder;
 
 /// What the simulation configuration says about one channel.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -112,13 +113,8 @@ pub struct Channel {
     /// Simulation configuration.
     spec: ChannelSpec,
     mac: SYS_MAC_PARAM,
-    enc: SYS_ENCODER_CONFIG,
-    /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
-    pub(crate) input_rate: Option<u16>,
-    /// `MCC_SetENCGearRate`.
-    pub(crate) gear_rate: f64,
-    /// Encoder count = raw count + `enc_offset`.
-    enc_offset: i64,
+    /// The encoder that follows the motor.
+    encoder: Encoder,
     /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
     /// the fields every step uses).
     comp_param: Box<SYS_COMP_PARAM>,
@@ -140,9 +136,7 @@ impl Channel {
         let mut ch = Channel {
             spec,
             mac,
-            enc,
-            input_rate: None,
-            gear_rate: 1.0,
+            encoder: Encoder::new(enc),
             cmd: 0,
             next: 0,
             resting: false,
@@ -153,7 +147,6 @@ impl Channel {
             prev_delta: 0,
             actual: 0.0,
             base: 0.0,
-            enc_offset: 0,
             comp: Compensation::default(),
             comp_param: Box::new(compensation::off()),
             forced: [None; 3],
@@ -301,12 +294,11 @@ impl Channel {
 
     /// New mechanism and encoder parameters (`MCC_UpdateParam`).
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
-        let count = self.encoder();
+        self.assert_up_to_date();
+        let motor = self.actual + self.base;
         self.mac = mac;
-        self.enc = enc;
         self.refresh_grid();
-        self.input_rate = None;
-        self.set_encoder(count);
+        self.encoder.configure(enc, motor);
         self.update_sensors();
     }
 }
