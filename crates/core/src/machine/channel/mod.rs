@@ -11,11 +11,11 @@ mod plant;
 mod sensing;
 mod stepping;
 
-use super::compensation::{self, Compensation};
 use super::deferred::Deferred;
 use super::index_pulses::IndexCell;
 use super::{PulseLimit, SensorLevels, DEFAULT_PULSE_LIMIT};
-use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use crate::vendor::{SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use compensating::GapCompensation;
 use encoder::Encoder;
 
 /// What the simulation configuration says about one channel.
@@ -108,16 +108,13 @@ pub struct Channel {
     /// Whether a sensor is placed or forced: only then do the levels follow the motor
     /// ([`Channel::refresh_sensors`]).
     sensors: bool,
-    /// Compensation tables in effect.
-    pub(super) comp: Compensation,
+    /// Gap compensation.
+    comp: GapCompensation,
     /// Simulation configuration.
     spec: ChannelSpec,
     mac: SYS_MAC_PARAM,
     /// The encoder that follows the motor.
     encoder: Encoder,
-    /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
-    /// the fields every step uses).
-    comp_param: Box<SYS_COMP_PARAM>,
     /// Physical sensor levels (before the program's wiring setting).
     raw: [bool; 3],
     /// The last index pulse passed, as a raw count.
@@ -147,8 +144,7 @@ impl Channel {
             prev_delta: 0,
             actual: 0.0,
             base: 0.0,
-            comp: Compensation::default(),
-            comp_param: Box::new(compensation::off()),
+            comp: GapCompensation::off(),
             forced: [None; 3],
             grid: (1, 0),
             sensors: false,
@@ -240,7 +236,7 @@ impl Channel {
         self.out = 0;
         self.prev_out = 0;
         self.prev_delta = 0;
-        self.comp = Compensation::new(&self.comp_param);
+        self.comp.restart();
         self.refresh_ideal();
         self.set_encoder(count);
         self.update_sensors();
