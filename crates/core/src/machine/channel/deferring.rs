@@ -53,7 +53,7 @@ impl Channel {
             window,
             passed: false,
             start: self.actual,
-            step_levels: self.step_levels,
+            step_levels: self.sensors.step_levels(),
         };
         self.index_events = 0;
         self.resting = false;
@@ -148,10 +148,10 @@ impl Channel {
         // The last step, from the state the one before it left (`begin_step`); the
         // output is the last step's already.
         let from = if last == d.first {
-            self.prev_levels = d.step_levels;
+            self.sensors.catch_up(Some(d.step_levels));
             d.start
         } else {
-            self.prev_levels = self.levels;
+            self.sensors.catch_up(None);
             history.0 as f64
         };
         self.prev_out = history.0;

@@ -13,10 +13,11 @@ mod stepping;
 
 use super::deferred::Deferred;
 use super::index_pulses::IndexCell;
-use super::{PulseLimit, SensorLevels, DEFAULT_PULSE_LIMIT};
+use super::{PulseLimit, DEFAULT_PULSE_LIMIT};
 use crate::vendor::{SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
 use compensating::GapCompensation;
 use encoder::Encoder;
+use sensing::Sensors;
 
 /// What the simulation configuration says about one channel.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -97,17 +98,11 @@ pub struct Channel {
     cell: IndexCell,
     /// Steps recorded and not yet made ([`deferred`](super::deferred)).
     pub(super) deferred: Deferred,
-    pub(super) levels: SensorLevels,
-    pub(super) prev_levels: SensorLevels,
-    /// Levels at the end of the last step: a level forced between steps shows as an edge.
-    step_levels: SensorLevels,
-    forced: [Option<bool>; 3],
+    /// The home sensor and limit switches.
+    sensors: Sensors,
     /// The index grid (spacing, phase) in x4 counts, from `spec` and `mac.dwPPR`, kept
     /// with the fields every step reads ([`Channel::refresh_grid`]).
     grid: (i64, i64),
-    /// Whether a sensor is placed or forced: only then do the levels follow the motor
-    /// ([`Channel::refresh_sensors`]).
-    sensors: bool,
     /// Gap compensation.
     comp: GapCompensation,
     /// Simulation configuration.
@@ -115,12 +110,8 @@ pub struct Channel {
     mac: SYS_MAC_PARAM,
     /// The encoder that follows the motor.
     encoder: Encoder,
-    /// Physical sensor levels (before the program's wiring setting).
-    raw: [bool; 3],
     /// The last index pulse passed, as a raw count.
     pub(crate) last_index_count: Option<i64>,
-    /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
-    pub(crate) latched: [bool; 2],
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
     pub(crate) max_speed: i32,
     /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
@@ -145,27 +136,20 @@ impl Channel {
             actual: 0.0,
             base: 0.0,
             comp: GapCompensation::off(),
-            forced: [None; 3],
             grid: (1, 0),
-            sensors: false,
-            raw: [false; 3],
             index_events: 0,
             last_index_count: None,
             last_move: (0.0, 0.0),
             cell: IndexCell::NONE,
             deferred: Deferred::NONE,
-            latched: [false; 2],
             max_speed: DEFAULT_PULSE_LIMIT,
             max_acc: DEFAULT_PULSE_LIMIT,
-            levels: SensorLevels::default(),
-            prev_levels: SensorLevels::default(),
-            step_levels: SensorLevels::default(),
+            sensors: Sensors::default(),
         };
         ch.refresh_grid();
         ch.refresh_sensors();
         ch.update_sensors();
-        ch.prev_levels = ch.levels;
-        ch.step_levels = ch.levels;
+        ch.sensors.without_edge();
         ch
     }
 

@@ -12,7 +12,7 @@ impl Channel {
 
     /// What [`Channel::ideal`] should be.
     pub(in crate::machine) fn ideal_now(&self) -> bool {
-        !self.comp.active() && !self.lags() && !self.sensors
+        !self.comp.active() && !self.lags() && !self.sensors.any()
     }
 
     /// Tests: whether the channel is ideal, as its steps read it (kept up to date by

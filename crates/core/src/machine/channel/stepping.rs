@@ -78,7 +78,7 @@ impl Channel {
         };
         self.count_index(before + self.base, self.actual + self.base);
         // Sensors only change with position if there are any (or one is forced).
-        if self.sensors {
+        if self.sensors.any() {
             self.update_sensors();
         }
         self.end_step(dt, !self.comp.active());
@@ -88,7 +88,7 @@ impl Channel {
     /// and acceleration) and `cmd` becomes the command.
     #[inline(always)]
     pub(in crate::machine) fn begin_step(&mut self, cmd: i64) {
-        self.prev_levels = self.step_levels;
+        self.sensors.begin_step();
         self.prev_delta = self.out - self.prev_out;
         self.prev_out = self.out;
         self.cmd = cmd;
@@ -106,12 +106,12 @@ impl Channel {
     /// command), so no index pulse and the same sensor levels.
     #[inline(always)]
     pub(in crate::machine) fn end_step(&mut self, dt: f64, comp_still: bool) {
-        self.step_levels = self.levels;
+        self.sensors.end_step();
         self.resting = comp_still
             && self.out == self.prev_out
             && self.prev_delta == 0
             && self.last_move.0 == self.last_move.1
-            && self.prev_levels == self.step_levels;
+            && self.sensors.unchanged();
         // Read only while resting (`step_commanded`): a moving channel skips the store.
         if self.resting {
             self.resting_dt = dt;
