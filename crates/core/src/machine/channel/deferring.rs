@@ -55,7 +55,7 @@ impl Channel {
             start: self.actual,
             step_levels: self.sensors.step_levels(),
         };
-        self.index_events = 0;
+        self.index.clear_events();
         self.resting = false;
     }
 
@@ -84,8 +84,10 @@ impl Channel {
     /// `output + base` cannot carry an output of the window out of the interval); none
     /// when the interval's bounds are not exact or too far out to subtract exactly.
     fn start_window(&mut self, start: f64) -> OutputWindow {
-        self.index_interval(start + self.base);
-        let (lo, hi) = (self.cell.lo - self.base, self.cell.hi - self.base);
+        let base = self.base;
+        self.index.interval(start + base);
+        let cell = self.index.cell();
+        let (lo, hi) = (cell.lo - base, cell.hi - base);
         let limit = CELL_LIMIT as f64;
         // (The cell of no interval has its bounds the wrong way round.)
         if !(lo > -limit && hi < limit && lo < hi) {
@@ -107,8 +109,9 @@ impl Channel {
         if self.deferred.passed {
             return;
         }
-        let start = self.index_interval(self.deferred.start + self.base);
-        if self.index_interval(out as f64 + self.base) != start {
+        let base = self.base;
+        let start = self.index.interval(self.deferred.start + base);
+        if self.index.interval(out as f64 + base) != start {
             self.deferred.passed = true;
             self.deferred.window = OutputWindow::ALL;
         }
@@ -124,7 +127,7 @@ impl Channel {
     #[cfg(test)]
     pub(in crate::machine) fn forget_deferring(&mut self) {
         self.deferred = Deferred::NONE;
-        self.last_index_count = None;
+        self.index.forget_last_count();
     }
 
     /// Brings a channel with deferred steps up to date (`steps`: their period and the
@@ -158,7 +161,8 @@ impl Channel {
         self.prev_delta = history.0 - history.1;
         self.cmd = self.out;
         self.actual = self.out as f64;
-        self.count_index(from + self.base, self.actual + self.base);
+        let base = self.base;
+        self.index.count(from + base, self.actual + base, base);
         self.end_step(dt, true);
         passed
     }

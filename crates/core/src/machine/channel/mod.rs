@@ -12,11 +12,11 @@ mod sensing;
 mod stepping;
 
 use super::deferred::Deferred;
-use super::index_pulses::IndexCell;
 use super::{PulseLimit, DEFAULT_PULSE_LIMIT};
 use crate::vendor::{SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
 use compensating::GapCompensation;
 use encoder::Encoder;
+use index::IndexPulses;
 use sensing::Sensors;
 
 /// What the simulation configuration says about one channel.
@@ -89,20 +89,12 @@ pub struct Channel {
     pub(super) actual: f64,
     /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
     base: f64,
-    /// Index pulses passed in the last step.
-    pub(crate) index_events: u32,
-    /// Motor positions (pulses, machine frame) at the start and end of the last step.
-    pub(super) last_move: (f64, f64),
-    /// The index interval of the last position looked up (`index_interval`), or
-    /// [`IndexCell::NONE`].
-    cell: IndexCell,
+    /// The index pulses of the last step and the grid they lie on.
+    index: IndexPulses,
     /// Steps recorded and not yet made ([`deferred`](super::deferred)).
     pub(super) deferred: Deferred,
     /// The home sensor and limit switches.
     sensors: Sensors,
-    /// The index grid (spacing, phase) in x4 counts, from `spec` and `mac.dwPPR`, kept
-    /// with the fields every step reads ([`Channel::refresh_grid`]).
-    grid: (i64, i64),
     /// Gap compensation.
     comp: GapCompensation,
     /// Simulation configuration.
@@ -110,8 +102,6 @@ pub struct Channel {
     mac: SYS_MAC_PARAM,
     /// The encoder that follows the motor.
     encoder: Encoder,
-    /// The last index pulse passed, as a raw count.
-    pub(crate) last_index_count: Option<i64>,
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
     pub(crate) max_speed: i32,
     /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
@@ -136,11 +126,7 @@ impl Channel {
             actual: 0.0,
             base: 0.0,
             comp: GapCompensation::off(),
-            grid: (1, 0),
-            index_events: 0,
-            last_index_count: None,
-            last_move: (0.0, 0.0),
-            cell: IndexCell::NONE,
+            index: IndexPulses::NONE,
             deferred: Deferred::NONE,
             max_speed: DEFAULT_PULSE_LIMIT,
             max_acc: DEFAULT_PULSE_LIMIT,
@@ -151,12 +137,6 @@ impl Channel {
         ch.update_sensors();
         ch.sensors.without_edge();
         ch
-    }
-
-    /// Index pulses passed in the last step.
-    #[inline]
-    pub fn index_events(&self) -> u32 {
-        self.index_events
     }
 
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).

@@ -57,7 +57,8 @@ impl Channel {
         self.out = cmd;
         let before = self.actual;
         self.actual = cmd as f64;
-        self.count_index(before + self.base, self.actual + self.base);
+        let base = self.base;
+        self.index.count(before + base, self.actual + base, base);
         self.end_step(dt, true);
     }
 
@@ -76,7 +77,8 @@ impl Channel {
             Some(tau) if tau > 0.0 => target + (self.actual - target) * (-dt / tau).exp(),
             _ => target,
         };
-        self.count_index(before + self.base, self.actual + self.base);
+        let base = self.base;
+        self.index.count(before + base, self.actual + base, base);
         // Sensors only change with position if there are any (or one is forced).
         if self.sensors.any() {
             self.update_sensors();
@@ -110,7 +112,7 @@ impl Channel {
         self.resting = comp_still
             && self.out == self.prev_out
             && self.prev_delta == 0
-            && self.last_move.0 == self.last_move.1
+            && self.index.stood_still()
             && self.sensors.unchanged();
         // Read only while resting (`step_commanded`): a moving channel skips the store.
         if self.resting {
