@@ -18,7 +18,7 @@ use std::path::Path;
 const MOST: usize = 15;
 
 /// Types over the limit, to be cut into parts. Only shrinks.
-const NOT_YET: &[&str] = &["GroupState", "Channel", "Adc"];
+const NOT_YET: &[&str] = &["GroupState", "Adc"];
 
 /// Per struct name (braced structs only): its field count and file.
 fn field_counts(dir: &Path, out: &mut BTreeMap<String, (String, usize)>) {

@@ -55,7 +55,7 @@ impl Channel {
     /// compensation), as the next step adds them.
     pub fn compensation_now(&mut self) -> i32 {
         if self.comp.active() {
-            let c = self.comp.offset(self.next);
+            let c = self.comp.offset(self.step.next());
             c.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
         } else {
             0
@@ -69,7 +69,7 @@ impl Channel {
 
     /// New compensation tables (`MCC_UpdateCompParam`).
     pub fn set_compensation(&mut self, p: &SYS_COMP_PARAM) {
-        self.resting = false;
+        self.step.wake();
         self.comp.set(p);
         self.refresh_ideal();
     }

@@ -12,7 +12,7 @@ impl Channel {
     #[inline]
     pub fn step_or_defer(&mut self, dt: f64, n: u64) -> bool {
         // (The steps of a run are consecutive: `Machine::set_deferred` asserts it.)
-        if self.ideal {
+        if self.step.ideal() {
             self.defer_step(dt, n);
             false
         } else {
@@ -28,7 +28,7 @@ impl Channel {
     #[inline]
     fn defer_step(&mut self, dt: f64, n: u64) {
         if !self.deferred.active {
-            if self.resting && self.next == self.cmd && dt == self.resting_dt {
+            if self.step.rests_at(self.step.next(), dt) {
                 return;
             }
             self.begin_deferring(n);
@@ -43,20 +43,21 @@ impl Channel {
     #[inline(never)]
     fn begin_deferring(&mut self, n: u64) {
         let mut outputs = [0; 4];
-        outputs[slot(n.wrapping_sub(1))] = self.out;
-        outputs[slot(n.wrapping_sub(2))] = self.prev_out;
-        let window = self.start_window(self.actual);
+        outputs[slot(n.wrapping_sub(1))] = self.step.out();
+        outputs[slot(n.wrapping_sub(2))] = self.step.prev_out();
+        let start = self.step.actual();
+        let window = self.start_window(start);
         self.deferred = Deferred {
             active: true,
             first: n,
             outputs,
             window,
             passed: false,
-            start: self.actual,
+            start,
             step_levels: self.sensors.step_levels(),
         };
         self.index.clear_events();
-        self.resting = false;
+        self.step.wake();
     }
 
     /// [`Channel::step_or_defer`] of a channel known to record its steps (an ideal
@@ -64,14 +65,17 @@ impl Channel {
     /// [`Recording`](crate::machine::deferred::Recording)): the step recorded without asking.
     #[inline]
     pub fn record_step(&mut self, n: u64) {
-        debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
+        debug_assert!(
+            self.step.ideal() && self.deferring(),
+            "record_step: not recording"
+        );
         self.record(n);
     }
 
     /// Records this tick's command as deferred step `n`.
     #[inline]
     fn record(&mut self, n: u64) {
-        let cmd = self.next;
+        let cmd = self.step.next();
         let d = &mut self.deferred;
         d.outputs[slot(n)] = cmd;
         if !d.window.holds(cmd) {
@@ -84,7 +88,7 @@ impl Channel {
     /// `output + base` cannot carry an output of the window out of the interval); none
     /// when the interval's bounds are not exact or too far out to subtract exactly.
     fn start_window(&mut self, start: f64) -> OutputWindow {
-        let base = self.base;
+        let base = self.step.base();
         self.index.interval(start + base);
         let cell = self.index.cell();
         let (lo, hi) = (cell.lo - base, cell.hi - base);
@@ -109,7 +113,7 @@ impl Channel {
         if self.deferred.passed {
             return;
         }
-        let base = self.base;
+        let base = self.step.base();
         let start = self.index.interval(self.deferred.start + base);
         if self.index.interval(out as f64 + base) != start {
             self.deferred.passed = true;
@@ -142,7 +146,7 @@ impl Channel {
         }
         self.deferred.active = false;
         // The last output and the two before it.
-        self.out = d.outputs[slot(last)];
+        let out = d.outputs[slot(last)];
         let history = (
             d.outputs[slot(last.wrapping_sub(1))],
             d.outputs[slot(last.wrapping_sub(2))],
@@ -157,12 +161,10 @@ impl Channel {
             self.sensors.catch_up(None);
             history.0 as f64
         };
-        self.prev_out = history.0;
-        self.prev_delta = history.0 - history.1;
-        self.cmd = self.out;
-        self.actual = self.out as f64;
-        let base = self.base;
-        self.index.count(from + base, self.actual + base, base);
+        self.step.take_outputs(out, history.0, history.1);
+        let base = self.step.base();
+        self.index
+            .count(from + base, self.step.actual() + base, base);
         self.end_step(dt, true);
         passed
     }

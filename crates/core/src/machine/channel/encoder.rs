@@ -109,25 +109,26 @@ impl Channel {
     /// The encoder count (`MCC_GetENCValue`).
     pub fn encoder(&self) -> i64 {
         self.assert_up_to_date();
-        self.encoder.count(self.actual + self.base)
+        self.encoder.count(self.step.machine_pulses())
     }
 
     /// `MCC_SetENCValue`: the count becomes `v` here.
     pub fn set_encoder(&mut self, v: i64) {
-        self.encoder.set(v, self.actual + self.base);
+        self.encoder.set(v, self.step.machine_pulses());
     }
 
     /// `MCC_SetENCInputRate`: counts per encoder cycle (1, 2 or 4; 3 also means x4);
     /// the count keeps its value at the change.
     pub fn set_input_rate(&mut self, rate: u16) {
         self.assert_up_to_date();
-        self.encoder.set_input_rate(rate, self.actual + self.base);
+        self.encoder
+            .set_input_rate(rate, self.step.machine_pulses());
     }
 
     /// `MCC_SetENCGearRate`: counts per motor pulse at x4; the count keeps its value at
     /// the change.
     pub fn set_gear_rate(&mut self, r: f64) {
         self.assert_up_to_date();
-        self.encoder.set_gear_rate(r, self.actual + self.base);
+        self.encoder.set_gear_rate(r, self.step.machine_pulses());
     }
 }

@@ -167,7 +167,7 @@ impl Channel {
     /// Index grid `(spacing, phase)`; a new one drops the cached index interval.
     pub(in crate::machine) fn set_grid(&mut self, grid: (i64, i64)) {
         if self.index.set_grid(grid) {
-            self.resting = false;
+            self.step.wake();
         }
     }
 
@@ -177,7 +177,7 @@ impl Channel {
     pub fn index_passed(&self, n: u32) -> Option<i64> {
         // (The frame's start only where there is a pulse: most calls find none.)
         let at = self.index.passed(n)?;
-        Some(at - self.base as i64)
+        Some(at - self.step.base() as i64)
     }
 
     /// Tests: the index interval of motor position `x` (pulses, machine frame).

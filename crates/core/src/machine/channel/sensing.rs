@@ -228,7 +228,7 @@ impl Channel {
 
     /// The levels where the motor is now.
     pub(in crate::machine) fn update_sensors(&mut self) {
-        self.resting = false;
+        self.step.wake();
         let x = self.position();
         self.sensors.update(x, &self.spec, &self.mac);
     }
