@@ -1,7 +1,7 @@
 //! Gap compensation on the channels: a channel's tables and the pulses they add to its
 //! output, and the machine's note of whether any channel compensates.
 
-use super::Machine;
+use super::{Channel, Machine};
 use crate::config::AXES;
 use crate::vendor::SYS_COMP_PARAM;
 
@@ -16,7 +16,7 @@ impl Machine {
                 }
             }
         }
-        self.compensating = self.cards.iter().flatten().any(|c| c.comp.active());
+        self.compensating = self.cards.iter().flatten().any(Channel::compensates);
     }
 
     /// Whether a channel compensates (`MCC_UpdateCompParam`).

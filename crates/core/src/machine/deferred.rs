@@ -169,8 +169,7 @@ mod tests {
     /// count (compared where it is read, below).
     fn shown(c: &Channel) -> String {
         let mut c = c.clone();
-        c.deferred = Deferred::NONE;
-        c.last_index_count = None;
+        c.forget_deferring();
         format!("{c:?}")
     }
 
@@ -189,7 +188,7 @@ mod tests {
             ..default_mac_param()
         };
         let mut a = Channel::new(ChannelSpec::default(), mac, default_encoder_config());
-        assert!(a.ideal);
+        assert!(a.ideal());
         let mut b = a.clone();
         let (mut seed, mut cmd) = (7u64, 0i64);
         // The engine's tick numbers the steps; starting near the end of the u64 range,
@@ -212,7 +211,7 @@ mod tests {
                 };
                 a.command(cmd);
                 a.step_commanded(0.001);
-                passed |= a.index_events > 0;
+                passed |= a.index_events() > 0;
                 b.command(cmd);
                 b.step_or_defer(0.001, n);
                 n = n.wrapping_add(1);
@@ -222,12 +221,12 @@ mod tests {
             assert!(!b.deferring());
             assert_eq!(shown(&a), shown(&b), "run {run}");
             assert_eq!(b_passed, passed, "run {run}: an index pulse passed");
-            if a.index_events > 0 {
-                assert_eq!(a.last_index_count, b.last_index_count, "run {run}");
+            if a.index_events() > 0 {
+                assert_eq!(a.last_index_count(), b.last_index_count(), "run {run}");
             }
             runs += usize::from(deferred);
             passed_runs += usize::from(passed);
-            resting_runs += usize::from(a.resting);
+            resting_runs += usize::from(a.resting());
             if run % 500 == 499 {
                 a.rezero();
                 b.rezero();
@@ -271,7 +270,7 @@ mod tests {
                     for cmd in [to, from] {
                         a.command(cmd);
                         a.step_commanded(0.001);
-                        passed |= a.index_events > 0;
+                        passed |= a.index_events() > 0;
                         b.command(cmd);
                         b.step_or_defer(0.001, n);
                         n += 1;
@@ -304,7 +303,7 @@ mod tests {
         for _ in 0..3 {
             c.step_commanded(0.001);
         }
-        assert!(c.resting);
+        assert!(c.resting());
         c.step_or_defer(0.001, 0);
         assert!(!c.deferring());
         c.command(5);

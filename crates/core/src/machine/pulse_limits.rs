@@ -25,23 +25,20 @@ impl Machine {
     /// default, so that the engine checks them.
     pub fn set_pulse_limits(&mut self, cd: usize, kind: PulseLimit, v: [i32; AXES]) {
         for (ch, x) in self.cards[cd].iter_mut().zip(v) {
-            match kind {
-                PulseLimit::Speed => ch.max_speed = x,
-                PulseLimit::Acc => ch.max_acc = x,
-            }
+            ch.set_pulse_limit(kind, x);
         }
         self.pulse_limits_set = self
             .cards
             .iter()
             .flatten()
-            .any(|c| c.max_speed < DEFAULT_PULSE_LIMIT || c.max_acc < DEFAULT_PULSE_LIMIT);
+            .any(|c| c.max_speed() < DEFAULT_PULSE_LIMIT || c.max_acc() < DEFAULT_PULSE_LIMIT);
     }
 
     /// Limit `kind` of every channel of card `cd`.
     pub fn pulse_limits(&self, cd: usize, kind: PulseLimit) -> [i32; AXES] {
         std::array::from_fn(|ch| match kind {
-            PulseLimit::Speed => self.cards[cd][ch].max_speed,
-            PulseLimit::Acc => self.cards[cd][ch].max_acc,
+            PulseLimit::Speed => self.cards[cd][ch].max_speed(),
+            PulseLimit::Acc => self.cards[cd][ch].max_acc(),
         })
     }
 }

@@ -25,14 +25,14 @@ fn shown(
     u32,
 ) {
     (
-        c.cmd,
-        c.out,
+        c.command_pulses(),
+        c.output_pulses(),
         c.encoder(),
-        c.actual,
-        c.levels,
-        c.prev_levels,
+        c.actual_pulses(),
+        c.levels(),
+        c.prev_levels(),
         c.pulse_rate(),
-        c.index_events,
+        c.index_events(),
     )
 }
 
@@ -56,21 +56,17 @@ fn a_channel_at_rest_skips_steps_that_would_change_nothing() {
         a.step_commanded(0.001);
         b.step(cmd, 0.001);
         assert_eq!(shown(&a), shown(&b), "step {n}");
-        if a.resting && first_rest.is_none() {
+        if a.resting() && first_rest.is_none() {
             first_rest = Some(n);
         }
     }
-    let n = first_rest.unwrap_or_else(|| {
-        panic!(
-            "the motor comes to rest: {:?} {:?} {} {}",
-            shown(&a),
-            a.last_move,
-            a.prev_out,
-            a.prev_delta
-        )
-    });
+    let n = first_rest.unwrap_or_else(|| panic!("the motor comes to rest: {a:?}"));
     assert!(n > 300 && n < 3000, "{n}");
-    assert!((a.actual - 1000.0).abs() < 1e-9, "{}", a.actual);
+    assert!(
+        (a.actual_pulses() - 1000.0).abs() < 1e-9,
+        "{}",
+        a.actual_pulses()
+    );
 }
 
 #[test]
@@ -86,7 +82,7 @@ fn the_ideal_step_writes_what_the_general_step_writes() {
         ..default_mac_param()
     };
     let mut a = Channel::new(ChannelSpec::default(), mac, default_encoder_config());
-    assert!(a.ideal, "no lag, no compensation, no sensor");
+    assert!(a.ideal(), "no lag, no compensation, no sensor");
     let mut b = a.clone();
     let cmds = [0, 3, 9, 17, 17, 17, 5, -7, -7, -7, 1_000_001, 1_000_001, 2];
     for (n, &cmd) in cmds.iter().enumerate() {
@@ -115,7 +111,7 @@ fn the_ideal_step_writes_what_the_general_step_writes() {
     // The restart at -7 put counter 0 at machine count -7: the last move, down from
     // counter 1,000,001 to 2 (machine -5), passed the machine's pulse at -4 last,
     // counter 3.
-    assert_eq!(a.last_index_count, Some(3));
+    assert_eq!(a.last_index_count(), Some(3));
 }
 
 #[test]
@@ -123,24 +119,24 @@ fn ideal_follows_what_a_step_depends_on() {
     // Each change that makes a step do more than the ideal path clears `ideal`, and
     // its undoing sets it again.
     let mut c = ch(ChannelSpec::default());
-    assert!(c.ideal);
+    assert!(c.ideal());
     c.set_plant_lag(Some(0.01));
-    assert!(!c.ideal, "a lagging plant");
+    assert!(!c.ideal(), "a lagging plant");
     c.set_plant_lag(None);
-    assert!(c.ideal);
+    assert!(c.ideal());
     c.force(Sensor::Home, Some(true));
-    assert!(!c.ideal, "a forced sensor");
+    assert!(!c.ideal(), "a forced sensor");
     c.force(Sensor::Home, None);
-    assert!(c.ideal);
+    assert!(c.ideal());
     c.place(Sensor::LimitPlus, 5.0, 5.0);
-    assert!(!c.ideal, "a placed sensor");
+    assert!(!c.ideal(), "a placed sensor");
     let mut d = ch(ChannelSpec::default());
     let mut comp = compensation::off();
     comp.dwInterval = 100;
     d.set_compensation(&comp);
-    assert!(!d.ideal, "compensation");
+    assert!(!d.ideal(), "compensation");
     d.set_compensation(&compensation::off());
-    assert!(d.ideal);
+    assert!(d.ideal());
 }
 
 #[test]
@@ -151,7 +147,7 @@ fn a_sensor_forced_at_rest_shows_as_one_edge() {
     for _ in 0..3 {
         c.step_commanded(0.001);
     }
-    assert!(c.resting);
+    assert!(c.resting());
     c.force(Sensor::Home, Some(true));
     c.step_commanded(0.001);
     assert!(!c.prev_levels().home && c.levels().home);
@@ -167,7 +163,7 @@ fn new_mechanism_parameters_count_index_pulses_on_the_new_grid() {
     // dwPPR 500: index pulses at counts 0, 500, ...; a motor at 10 sits in [0, 500).
     let mut c = ch(ChannelSpec::default());
     c.step(10, 0.001);
-    assert_eq!(c.index_events, 0);
+    assert_eq!(c.index_events(), 0);
     // dwPPR 4: index pulses at 0, 4, 8, 12, ...; 10 -> 13 passes the one at 12. The
     // interval cached on the old grid, [0, 500), holds both ends and must not be used.
     let mac = SYS_MAC_PARAM {
@@ -176,8 +172,8 @@ fn new_mechanism_parameters_count_index_pulses_on_the_new_grid() {
     };
     c.set_params(mac, default_encoder_config());
     c.step(13, 0.001);
-    assert_eq!(c.index_events, 1);
-    assert_eq!(c.last_index_count, Some(12));
+    assert_eq!(c.index_events(), 1);
+    assert_eq!(c.last_index_count(), Some(12));
 }
 
 #[test]
@@ -188,7 +184,7 @@ fn a_motor_standing_still_passes_no_index_pulse_on_a_new_grid() {
         ..Default::default()
     });
     c.step(600, 0.001);
-    assert_eq!((c.index_events, c.last_index_count), (2, Some(600)));
+    assert_eq!((c.index_events(), c.last_index_count()), (2, Some(600)));
     // A new grid drops the cached interval; standing at 600 (a move from 600 to 600)
     // is looked up on the new grid and still passes nothing.
     let mac = SYS_MAC_PARAM {
@@ -197,9 +193,9 @@ fn a_motor_standing_still_passes_no_index_pulse_on_a_new_grid() {
     };
     c.set_params(mac, default_encoder_config());
     c.step(600, 0.001);
-    assert_eq!((c.index_events, c.last_index_count), (0, Some(600)));
+    assert_eq!((c.index_events(), c.last_index_count()), (0, Some(600)));
     c.step(600, 0.001);
-    assert_eq!(c.index_events, 0);
+    assert_eq!(c.index_events(), 0);
 }
 
 #[test]
@@ -207,15 +203,23 @@ fn ideal_encoder_counts_one_per_pulse_at_x4() {
     let mut c = ch(ChannelSpec::default());
     c.step(1234, 0.001);
     assert_eq!(c.encoder(), 1234);
-    c.input_rate = Some(2);
-    assert_eq!(c.encoder(), 617, "x2: half");
-    c.input_rate = Some(1);
-    assert_eq!(c.encoder(), 309, "x1: a quarter (1234/4 = 308.5, rounded)");
+    // A new input rate keeps the count where the motor is; the motor's pulses then
+    // count at the new rate.
+    c.set_input_rate(2);
+    assert_eq!(c.encoder(), 1234, "the count keeps its value");
+    c.step(1234 + 400, 0.001);
+    assert_eq!(c.encoder(), 1234 + 200, "400 pulses at x2: half");
+    c.set_input_rate(1);
     c.set_encoder(0);
     assert_eq!(c.encoder(), 0);
-    c.step(1234 + 400, 0.001);
-    assert_eq!(c.encoder(), 100, "400 pulses at x1");
-    assert_eq!(c.position(), 1634.0 / 500.0);
+    c.step(1234 + 800, 0.001);
+    assert_eq!(c.encoder(), 100, "400 pulses at x1: a quarter");
+    // From 0 at x1, a raw count rounds half away from zero: 2034/4 = 508.5 counts 509,
+    // so 1 pulse more counts one more (509.25 rounds to 509).
+    c.set_encoder(0);
+    c.step(1234 + 801, 0.001);
+    assert_eq!(c.encoder(), 0, "508.5 -> 509, 508.75 -> 509");
+    assert_eq!(c.position(), 2035.0 / 500.0);
 }
 
 #[test]
@@ -260,9 +264,12 @@ fn sensors_and_wiring() {
     );
     c.step(10 * 500, 0.001); // 10 UU
     assert!(c.levels().plus && !c.levels().home);
-    assert!(c.latched[0]);
+    assert!(c.latched_limit(0));
     c.step(0, 0.001);
-    assert!(!c.levels().plus && c.latched[0], "latched until cleared");
+    assert!(
+        !c.levels().plus && c.latched_limit(0),
+        "latched until cleared"
+    );
     c.force(Sensor::LimitPlus, Some(true));
     assert!(c.levels().plus);
     c.force(Sensor::LimitPlus, None);
@@ -366,14 +373,14 @@ fn index_pulses_every_turn() {
         ..Default::default()
     });
     c.step(99, 0.001);
-    assert_eq!(c.index_events, 0);
+    assert_eq!(c.index_events(), 0);
     c.step(100, 0.001);
-    assert_eq!(c.index_events, 1);
-    assert_eq!(c.last_index_count, Some(100));
+    assert_eq!(c.index_events(), 1);
+    assert_eq!(c.last_index_count(), Some(100));
     c.step(1200, 0.001);
-    assert_eq!(c.index_events, 2);
-    assert_eq!(c.last_index_count, Some(1100));
+    assert_eq!(c.index_events(), 2);
+    assert_eq!(c.last_index_count(), Some(1100));
     c.step(50, 0.001); // down past 1100, 600 and 100
-    assert_eq!(c.index_events, 3);
-    assert_eq!(c.last_index_count, Some(100));
+    assert_eq!(c.index_events(), 3);
+    assert_eq!(c.last_index_count(), Some(100));
 }

@@ -447,7 +447,7 @@ impl CardTriggers {
     #[inline]
     pub fn tick_idle(&mut self, chans: &[Channel; AXES]) {
         for (i, ch) in chans.iter().enumerate() {
-            if ch.index_events > 0 {
+            if ch.index_events() > 0 {
                 self.index.index_status[i] = true;
             }
         }
@@ -464,7 +464,7 @@ impl CardTriggers {
     ) -> Fired {
         let mut out = Fired::default();
         for (i, ch) in chans.iter().enumerate() {
-            if ch.index_events > 0 {
+            if ch.index_events() > 0 {
                 self.index.index_status[i] = true;
             }
         }
@@ -506,7 +506,7 @@ impl CardTriggers {
                 }
             }
             let ch = &chans[i];
-            if ch.index_events > 0 && self.index.index_enabled[i] {
+            if ch.index_events() > 0 && self.index.index_enabled[i] {
                 out.interrupts.push(Interrupt::EncIndex(i as u8));
             }
             // Latch: sources are the index pulses, the limit switches and the timer.
@@ -518,8 +518,8 @@ impl CardTriggers {
             let mut latched = None;
             for n in 0..AXES {
                 let (now, before) = (chans[n].levels(), prev_levels[n]);
-                if src & (1 << n) != 0 && chans[n].index_events > 0 {
-                    latched = match chans[n].last_index_count {
+                if src & (1 << n) != 0 && chans[n].index_events() > 0 {
+                    latched = match chans[n].last_index_count() {
                         Some(at) if n == i => Some(ch.count_at(at)),
                         _ => Some(counts[i]),
                     };

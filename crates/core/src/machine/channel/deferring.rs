@@ -12,7 +12,7 @@ impl Channel {
     #[inline]
     pub fn step_or_defer(&mut self, dt: f64, n: u64) -> bool {
         // (The steps of a run are consecutive: `Machine::set_deferred` asserts it.)
-        if self.ideal {
+        if self.step.ideal() {
             self.defer_step(dt, n);
             false
         } else {
@@ -28,7 +28,7 @@ impl Channel {
     #[inline]
     fn defer_step(&mut self, dt: f64, n: u64) {
         if !self.deferred.active {
-            if self.resting && self.next == self.cmd && dt == self.resting_dt {
+            if self.step.rests_at(self.step.next(), dt) {
                 return;
             }
             self.begin_deferring(n);
@@ -43,20 +43,21 @@ impl Channel {
     #[inline(never)]
     fn begin_deferring(&mut self, n: u64) {
         let mut outputs = [0; 4];
-        outputs[slot(n.wrapping_sub(1))] = self.out;
-        outputs[slot(n.wrapping_sub(2))] = self.prev_out;
-        let window = self.start_window(self.actual);
+        outputs[slot(n.wrapping_sub(1))] = self.step.out();
+        outputs[slot(n.wrapping_sub(2))] = self.step.prev_out();
+        let start = self.step.actual();
+        let window = self.start_window(start);
         self.deferred = Deferred {
             active: true,
             first: n,
             outputs,
             window,
             passed: false,
-            start: self.actual,
-            step_levels: self.step_levels,
+            start,
+            step_levels: self.sensors.step_levels(),
         };
-        self.index_events = 0;
-        self.resting = false;
+        self.index.clear_events();
+        self.step.wake();
     }
 
     /// [`Channel::step_or_defer`] of a channel known to record its steps (an ideal
@@ -64,14 +65,17 @@ impl Channel {
     /// [`Recording`](crate::machine::deferred::Recording)): the step recorded without asking.
     #[inline]
     pub fn record_step(&mut self, n: u64) {
-        debug_assert!(self.ideal && self.deferring(), "record_step: not recording");
+        debug_assert!(
+            self.step.ideal() && self.deferring(),
+            "record_step: not recording"
+        );
         self.record(n);
     }
 
     /// Records this tick's command as deferred step `n`.
     #[inline]
     fn record(&mut self, n: u64) {
-        let cmd = self.next;
+        let cmd = self.step.next();
         let d = &mut self.deferred;
         d.outputs[slot(n)] = cmd;
         if !d.window.holds(cmd) {
@@ -84,8 +88,10 @@ impl Channel {
     /// `output + base` cannot carry an output of the window out of the interval); none
     /// when the interval's bounds are not exact or too far out to subtract exactly.
     fn start_window(&mut self, start: f64) -> OutputWindow {
-        self.index_interval(start + self.base);
-        let (lo, hi) = (self.cell.lo - self.base, self.cell.hi - self.base);
+        let base = self.step.base();
+        self.index.interval(start + base);
+        let cell = self.index.cell();
+        let (lo, hi) = (cell.lo - base, cell.hi - base);
         let limit = CELL_LIMIT as f64;
         // (The cell of no interval has its bounds the wrong way round.)
         if !(lo > -limit && hi < limit && lo < hi) {
@@ -107,8 +113,9 @@ impl Channel {
         if self.deferred.passed {
             return;
         }
-        let start = self.index_interval(self.deferred.start + self.base);
-        if self.index_interval(out as f64 + self.base) != start {
+        let base = self.step.base();
+        let start = self.index.interval(self.deferred.start + base);
+        if self.index.interval(out as f64 + base) != start {
             self.deferred.passed = true;
             self.deferred.window = OutputWindow::ALL;
         }
@@ -117,6 +124,14 @@ impl Channel {
     /// Whether steps are deferred.
     pub fn deferring(&self) -> bool {
         self.deferred.active
+    }
+
+    /// Tests: forgets what only deferring keeps and the last index count (kept only for
+    /// the step that passed it), so that two channels compare by what their steps left.
+    #[cfg(test)]
+    pub(in crate::machine) fn forget_deferring(&mut self) {
+        self.deferred = Deferred::NONE;
+        self.index.forget_last_count();
     }
 
     /// Brings a channel with deferred steps up to date (`steps`: their period and the
@@ -131,7 +146,7 @@ impl Channel {
         }
         self.deferred.active = false;
         // The last output and the two before it.
-        self.out = d.outputs[slot(last)];
+        let out = d.outputs[slot(last)];
         let history = (
             d.outputs[slot(last.wrapping_sub(1))],
             d.outputs[slot(last.wrapping_sub(2))],
@@ -140,17 +155,16 @@ impl Channel {
         // The last step, from the state the one before it left (`begin_step`); the
         // output is the last step's already.
         let from = if last == d.first {
-            self.prev_levels = d.step_levels;
+            self.sensors.catch_up(Some(d.step_levels));
             d.start
         } else {
-            self.prev_levels = self.levels;
+            self.sensors.catch_up(None);
             history.0 as f64
         };
-        self.prev_out = history.0;
-        self.prev_delta = history.0 - history.1;
-        self.cmd = self.out;
-        self.actual = self.out as f64;
-        self.count_index(from + self.base, self.actual + self.base);
+        self.step.take_outputs(out, history.0, history.1);
+        let base = self.step.base();
+        self.index
+            .count(from + base, self.step.actual() + base, base);
         self.end_step(dt, true);
         passed
     }

@@ -1,7 +1,8 @@
 //! One channel of the card and the motor, encoder and sensors behind it: what the
-//! simulation configuration says about it, its state, and its counters (command, output,
-//! motor position, following error). The rest of its behaviour is in the files below:
-//! encoder, sensors, index pulses, plant, compensation, stepping.
+//! simulation configuration says about it, the parts it is made of, and its counters
+//! (command, output, motor position, following error). Each part, and the channel's
+//! behaviour that goes with it, is in a file below: stepping (the state every step reads
+//! first), index pulses, sensors, encoder, compensation, deferred steps, plant.
 
 mod compensating;
 mod deferring;
@@ -11,11 +12,14 @@ mod plant;
 mod sensing;
 mod stepping;
 
-use super::compensation::{self, Compensation};
 use super::deferred::Deferred;
-use super::index_pulses::IndexCell;
-use super::{SensorLevels, DEFAULT_PULSE_LIMIT};
-use crate::vendor::{SYS_COMP_PARAM, SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use super::{PulseLimit, DEFAULT_PULSE_LIMIT};
+use crate::vendor::{SYS_ENCODER_CONFIG, SYS_MAC_PARAM};
+use compensating::GapCompensation;
+use encoder::Encoder;
+use index::IndexPulses;
+use sensing::Sensors;
+use stepping::StepState;
 
 /// What the simulation configuration says about one channel.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -54,136 +58,57 @@ impl ChannelSpec {
     }
 }
 
-/// One channel of the card and the motor, encoder and sensors behind it.
+/// One channel of the card and the motor, encoder and sensors behind it: its parts,
+/// each with the methods that keep it whole, and the settings several of them read.
 ///
-/// `repr(C)` with the fields every step reads and writes first, together, and the
+/// `repr(C)` with the parts every step reads and writes first, together (the step's
+/// state, its index pulses, its deferred steps, its sensors, its compensation), and the
 /// settings only setters and status calls read after them.
 #[derive(Debug, Clone)]
 #[repr(C)]
 pub struct Channel {
-    /// Pulses the program commanded (before compensation).
-    pub(super) cmd: i64,
-    /// The command for the coming step: what [`Channel::command`] set during this tick
-    /// (the group or homing driving the channel), else `cmd` (every step and counter
-    /// restart sets both), so that a channel nobody commands holds.
-    next: i64,
-    /// The last step changed nothing, and another with the same command would change
-    /// nothing either ([`Channel::step_commanded`] skips it). Cleared by whatever changes
-    /// what a step reads: the counter's frame (`restart_counter`), the sensors
-    /// (`update_sensors`, which placing, forcing and new parameters go through), the
-    /// index grid (`set_grid`), the compensation and the plant.
-    pub(super) resting: bool,
-    /// The period of the step that found the channel resting.
-    resting_dt: f64,
-    /// An ideal motor (no plant lag) with no compensation and no sensor that follows it:
-    /// a step is [`Channel::step_ideal`]. Kept by [`Channel::refresh_ideal`] wherever
-    /// the compensation, the plant or the sensors change.
-    pub(super) ideal: bool,
-    /// Pulses output (command + compensation).
-    pub(super) out: i64,
-    pub(super) prev_out: i64,
-    pub(super) prev_delta: i64,
-    /// Motor position in pulses from where the command counter was last zeroed.
-    pub(super) actual: f64,
-    /// Motor position (pulses, machine coordinates) where the counter was last zeroed.
-    base: f64,
-    /// Index pulses passed in the last step.
-    pub(crate) index_events: u32,
-    /// Motor positions (pulses, machine frame) at the start and end of the last step.
-    pub(super) last_move: (f64, f64),
-    /// The index interval of the last position looked up (`index_interval`), or
-    /// [`IndexCell::NONE`].
-    cell: IndexCell,
+    /// Command, output, motor and whether the coming step is made, and how.
+    step: StepState,
+    /// The index pulses of the last step and the grid they lie on.
+    index: IndexPulses,
     /// Steps recorded and not yet made ([`deferred`](super::deferred)).
-    pub(super) deferred: Deferred,
-    pub(super) levels: SensorLevels,
-    pub(super) prev_levels: SensorLevels,
-    /// Levels at the end of the last step: a level forced between steps shows as an edge.
-    step_levels: SensorLevels,
-    forced: [Option<bool>; 3],
-    /// The index grid (spacing, phase) in x4 counts, from `spec` and `mac.dwPPR`, kept
-    /// with the fields every step reads ([`Channel::refresh_grid`]).
-    grid: (i64, i64),
-    /// Whether a sensor is placed or forced: only then do the levels follow the motor
-    /// ([`Channel::refresh_sensors`]).
-    sensors: bool,
-    /// Compensation tables in effect.
-    pub(super) comp: Compensation,
+    deferred: Deferred,
+    /// The home sensor and limit switches.
+    sensors: Sensors,
+    /// Gap compensation.
+    comp: GapCompensation,
     /// Simulation configuration.
     spec: ChannelSpec,
+    /// Mechanism parameters.
     mac: SYS_MAC_PARAM,
-    enc: SYS_ENCODER_CONFIG,
-    /// Encoder input rate set by `MCC_SetENCInputRate` (overrides the configuration).
-    pub(crate) input_rate: Option<u16>,
-    /// `MCC_SetENCGearRate`.
-    pub(crate) gear_rate: f64,
-    /// Encoder count = raw count + `enc_offset`.
-    enc_offset: i64,
-    /// The tables last set (boxed: 2 KiB that only a reset reads, kept out of the way of
-    /// the fields every step uses).
-    comp_param: Box<SYS_COMP_PARAM>,
-    /// Physical sensor levels (before the program's wiring setting).
-    raw: [bool; 3],
-    /// The last index pulse passed, as a raw count.
-    pub(crate) last_index_count: Option<i64>,
-    /// Latched limit switch activity (`MCC_GetLatchedLimitSwitchStatus`): + and −.
-    pub(crate) latched: [bool; 2],
+    /// The encoder that follows the motor.
+    encoder: Encoder,
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
-    pub(crate) max_speed: i32,
+    max_speed: i32,
     /// Most change of pulses per period between periods (`MCC_SetMaxPulseAcc`).
-    pub(crate) max_acc: i32,
+    max_acc: i32,
 }
 
 impl Channel {
     /// A channel at position 0.
     pub fn new(spec: ChannelSpec, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) -> Channel {
         let mut ch = Channel {
+            step: StepState::AT_ZERO,
+            index: IndexPulses::NONE,
+            deferred: Deferred::NONE,
+            sensors: Sensors::default(),
+            comp: GapCompensation::off(),
             spec,
             mac,
-            enc,
-            input_rate: None,
-            gear_rate: 1.0,
-            cmd: 0,
-            next: 0,
-            resting: false,
-            resting_dt: 0.0,
-            ideal: false,
-            out: 0,
-            prev_out: 0,
-            prev_delta: 0,
-            actual: 0.0,
-            base: 0.0,
-            enc_offset: 0,
-            comp: Compensation::default(),
-            comp_param: Box::new(compensation::off()),
-            forced: [None; 3],
-            grid: (1, 0),
-            sensors: false,
-            raw: [false; 3],
-            index_events: 0,
-            last_index_count: None,
-            last_move: (0.0, 0.0),
-            cell: IndexCell::NONE,
-            deferred: Deferred::NONE,
-            latched: [false; 2],
+            encoder: Encoder::new(enc),
             max_speed: DEFAULT_PULSE_LIMIT,
             max_acc: DEFAULT_PULSE_LIMIT,
-            levels: SensorLevels::default(),
-            prev_levels: SensorLevels::default(),
-            step_levels: SensorLevels::default(),
         };
         ch.refresh_grid();
         ch.refresh_sensors();
         ch.update_sensors();
-        ch.prev_levels = ch.levels;
-        ch.step_levels = ch.levels;
+        ch.sensors.without_edge();
         ch
-    }
-
-    /// Index pulses passed in the last step.
-    #[inline]
-    pub fn index_events(&self) -> u32 {
-        self.index_events
     }
 
     /// Most pulses per interpolation period (`MCC_SetMaxPulseSpeed`).
@@ -196,6 +121,15 @@ impl Channel {
     #[inline]
     pub fn max_acc(&self) -> i32 {
         self.max_acc
+    }
+
+    /// Sets pulse limit `kind` (1..=[`MAX_PULSE_LIMIT`](super::MAX_PULSE_LIMIT), checked
+    /// by the caller).
+    pub(in crate::machine) fn set_pulse_limit(&mut self, kind: PulseLimit, x: i32) {
+        match kind {
+            PulseLimit::Speed => self.max_speed = x,
+            PulseLimit::Acc => self.max_acc = x,
+        }
     }
 
     /// Pulses per UU (signed: negative when wPosToEncoderDir reverses the output).
@@ -215,7 +149,7 @@ impl Channel {
         if f == 0.0 {
             0.0
         } else {
-            (self.actual + self.base) / f
+            self.step.machine_pulses() / f
         }
     }
 
@@ -223,22 +157,15 @@ impl Channel {
     /// motor stands; the motor, its encoder count and the sensors do not move.
     pub fn rezero(&mut self) {
         let count = self.encoder();
-        self.restart_counter(self.actual, count);
+        self.restart_counter(self.step.actual(), count);
     }
 
     /// The command counter restarts from 0 `shift` pulses up the motor's frame (the
     /// motor, its sensors and its machine position do not move); the encoder then reads
     /// `count` and compensation starts again from its home point.
     pub(super) fn restart_counter(&mut self, shift: f64, count: i64) {
-        self.resting = false;
-        self.base += shift;
-        self.actual -= shift;
-        self.cmd = 0;
-        self.next = 0;
-        self.out = 0;
-        self.prev_out = 0;
-        self.prev_delta = 0;
-        self.comp = Compensation::new(&self.comp_param);
+        self.step.restart(shift);
+        self.comp.restart();
         self.refresh_ideal();
         self.set_encoder(count);
         self.update_sensors();
@@ -249,48 +176,53 @@ impl Channel {
     /// move (a lagging one keeps its following error); compensation restarts from its
     /// home point (`wHome_No`).
     pub fn home_here(&mut self) {
-        self.restart_counter(self.out as f64, 0);
+        self.restart_counter(self.step.out() as f64, 0);
     }
 
     /// The motor's position in pulses.
     pub fn actual_pulses(&self) -> f64 {
         self.assert_up_to_date();
-        self.actual
+        self.step.actual()
     }
 
     /// Pulses output so far (command + compensation).
     pub fn output_pulses(&self) -> i64 {
-        self.out
+        self.step.out()
     }
 
     /// Pulses commanded (without compensation).
     pub fn command_pulses(&self) -> i64 {
         self.assert_up_to_date();
-        self.cmd
+        self.step.cmd()
     }
 
     /// Following error in pulses: output − motor (what `MCC_GetErrorCount` reports).
     pub fn error_count(&self) -> i64 {
         self.assert_up_to_date();
-        (self.out as f64 - self.actual).round() as i64
+        self.step.following_error()
     }
 
     /// Pulses output in the last tick, and the change from the tick before (per-period
     /// pulse speed and acceleration).
     pub fn pulse_rate(&self) -> (i64, i64) {
         self.assert_up_to_date();
-        let d = self.out - self.prev_out;
-        (d, d - self.prev_delta)
+        self.step.pulse_rate()
+    }
+
+    /// Tests: whether the last step changed nothing and another with the same command
+    /// would change nothing either (the coming step is skipped).
+    #[cfg(test)]
+    pub(in crate::machine) fn resting(&self) -> bool {
+        self.step.resting()
     }
 
     /// New mechanism and encoder parameters (`MCC_UpdateParam`).
     pub fn set_params(&mut self, mac: SYS_MAC_PARAM, enc: SYS_ENCODER_CONFIG) {
-        let count = self.encoder();
+        self.assert_up_to_date();
+        let motor = self.step.machine_pulses();
         self.mac = mac;
-        self.enc = enc;
         self.refresh_grid();
-        self.input_rate = None;
-        self.set_encoder(count);
+        self.encoder.configure(enc, motor);
         self.update_sensors();
     }
 }
