@@ -67,6 +67,10 @@ const VALUES: &[(&str, &str)] = &[
     ),
     ("Trip", "the result of a safety check"),
     ("Command", "a planned command as queued"),
+    (
+        "TickCtx",
+        "what a tick is told of time and the program's settings",
+    ),
     ("SimConfig", "the simulated machine's configuration file"),
     ("CardSim", "one card of the configuration file"),
     ("ChannelSim", "one channel of the configuration file"),

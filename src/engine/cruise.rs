@@ -63,17 +63,18 @@ impl Shared {
         if self.publishes_everything(next) && self.view.may_be_due() {
             return false;
         }
-        if h.cruise == 0 {
+        if h.state.cruise_left() == 0 {
             if h.replan_in > 0 {
                 h.replan_in -= 1;
                 return false;
             }
-            h.cruise = self.plan_cruise(h);
-            if h.cruise == 0 {
+            let ahead = self.plan_cruise(h);
+            h.state.plan_cruise(ahead);
+            if h.state.cruise_left() == 0 {
                 h.replan_in = REPLAN_AFTER;
             }
         }
-        h.cruise > 0
+        h.state.cruise_left() > 0
     }
 
     /// Whether virtual tick `n` (not the last of its run) publishes every snapshot, as
@@ -89,14 +90,16 @@ impl Shared {
     /// channels, no trace, every group quiet ahead.
     fn plan_cruise(&self, held: &mut Held<'_>) -> u32 {
         let machine = &*held.machine;
-        if self.tracer.tracing || self.safety_reads_channels(machine, false) {
+        if self.tracer.tracing
+            || crate::engine::safety::reads_channels(self.limit_check(), machine, false)
+        {
             return 0;
         }
         let cards = machine.triggers_and_settings().enumerate();
         for (card, (triggers, settings)) in cards {
             let idle = held
-                .idle_cards
-                .idle(card, || !triggers.armed(&settings.error_threshold));
+                .state
+                .card_idle(card, || !triggers.armed(&settings.error_threshold));
             if !idle {
                 return 0;
             }

@@ -11,47 +11,35 @@
 //! holds either while user code runs, so a callback may call any MCC_* function. Order:
 //! `system::SYSTEM`, the machine, then the groups.
 //!
-//! The groups themselves (planning, tracks, custom motion, kinematics, snapshots, one
-//! group and its parts) are the core's `mccl_core::engine`, re-exported here under the
-//! same names. Files here, one concept each, their uses a DAG: `custom.rs` (custom
-//! motion's process-wide count, ids and callback mark), `kinematics.rs` (registrations
-//! waiting for the next init), the types [`Shared`] holds (`isr.rs`, `cycle.rs`,
-//! `homing.rs` and `homing/`, `view.rs`, `trace.rs`, `safety.rs`), `shared/` ([`Shared`]
-//! and its methods, one concern a file), `tick.rs` (one tick of the card, the one
-//! definition of its steps), `cruise.rs` (the plan of cruise ticks), `poll.rs` (polls
-//! that let virtual time run), `running.rs` ([`Engine`]: the thread's start, loop, stop
-//! and join), `thread.rs` (real-time settings of the thread).
+//! The groups themselves and the tick (planning, tracks, custom motion, kinematics,
+//! snapshots, one group and its parts, the go home, the safety checks, one tick of a
+//! card) are the core's `mccl_core::engine`, re-exported here under the same names.
+//! Files here, one concept each, their uses a DAG: `custom.rs` (custom motion's
+//! process-wide count, ids and callback mark), `kinematics.rs` (registrations waiting
+//! for the next init), the types [`Shared`] holds (`isr.rs`, `cycle.rs`, `view.rs`,
+//! `trace.rs`), `shared/` ([`Shared`] and its methods, one concern a file), `tick.rs`
+//! (the core's tick with the locks held and this engine's hooks), `cruise.rs` (the plan
+//! of cruise ticks), `poll.rs` (polls that let virtual time run), `running.rs`
+//! ([`Engine`]: the thread's start, loop, stop and join), `thread.rs` (real-time
+//! settings of the thread).
 
 mod cruise;
 pub mod custom;
 pub mod cycle;
-pub mod homing;
 pub mod isr;
 pub mod kinematics;
 mod poll;
 mod running;
-pub mod safety;
 mod shared;
 pub mod thread;
 mod tick;
 pub mod trace;
 pub mod view;
 
-pub use mccl_core::engine::{command, custom_move, group, note, snapshot, track};
+pub use mccl_core::engine::{
+    axes_of, card, command, custom_move, group, homing, note, safety, snapshot, track,
+};
 pub use poll::SPIN_POLLS;
 pub use running::{on_retired_engine_thread, Engine};
 pub use shared::{Shared, DEFAULT_PULSE_STOCK};
 pub use tick::PUBLISH_EVERY;
-
-use crate::config::{GroupDef, MacTable, AXES};
-use command::AxisMech;
-
-/// The mechanism facts of a group's axes: mapped axes from their channel's parameters,
-/// unmapped ones from the defaults (their planning result is ignored, §2.4.4).
-pub fn axes_of(def: &GroupDef, mac: &MacTable) -> [AxisMech; AXES] {
-    std::array::from_fn(|i| match def.channels[i] {
-        Some(ch) => AxisMech::new(&mac[def.card.0][ch.0], Some((def.card.0, ch.0))),
-        None => AxisMech::new(&crate::config::default_mac_param(), None),
-    })
-    .map(|a| a.in_unit(crate::config::unit_scale(def.unit)))
-}

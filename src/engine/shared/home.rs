@@ -181,34 +181,3 @@ impl Shared {
         Some(out)
     }
 }
-
-/// Applies a tick of homing to a group that drives homed channels: their positions and
-/// speeds, the zeroing at the working home, error records, and the end of the homing.
-pub(in crate::engine) fn apply_homing(g: &mut GroupState, h: &homing::HomeTick) {
-    if g.homing() == 0 {
-        return;
-    }
-    for i in 0..AXES {
-        if g.homing() & (1 << i) == 0 {
-            continue;
-        }
-        let Some((card, ch)) = g.axes()[i].channel else {
-            continue;
-        };
-        let Some(a) = h.axes.get(ch).filter(|_| card == h.card) else {
-            continue;
-        };
-        if a.zeroed {
-            g.home_zero_axis(i);
-        }
-        if let Some((x, v)) = a.pos {
-            g.set_homing_axis(i, x, v);
-        }
-        if let Some(record) = a.record {
-            g.set_error(record);
-        }
-    }
-    if h.finished.is_some() {
-        g.end_homing();
-    }
-}

@@ -13,13 +13,11 @@ mod kinematics_stage;
 mod observer;
 mod routines;
 
-pub(super) use home::apply_homing;
-
-use super::group::{Commanded, GroupState};
+use super::group::GroupState;
 use super::snapshot::{GroupSnapshot, SnapshotCell};
 use super::{axes_of, trace};
 use crate::clock::{Clock, ClockMode};
-use crate::config::{GroupDef, MacTable, AXES, CARDS, GROUPS};
+use crate::config::{GroupDef, MacTable, AXES, GROUPS};
 use crate::error::{McclError, McclResult};
 use crate::machine::Machine;
 use parking_lot::{MappedMutexGuard, Mutex, MutexGuard};
@@ -200,7 +198,7 @@ impl Shared {
                 t.start_group(g, mac, &machine);
             }
         }
-        let commanded = commanding_axes(&gs);
+        let commanded = crate::engine::group::commanding_axes(&gs);
         for (g, c) in gs.iter_mut().zip(commanded) {
             g.set_commanded(c);
         }
@@ -334,7 +332,7 @@ impl Shared {
 
     /// Which group commands which channel, after the groups changed.
     fn remap_channels(&self, gs: &mut [GroupState]) {
-        let commanded = commanding_axes(gs);
+        let commanded = crate::engine::group::commanding_axes(gs);
         for (g, c) in gs.iter_mut().zip(commanded) {
             g.set_commanded(c);
         }
@@ -535,37 +533,6 @@ fn publish_info(cell: &SnapshotCell, g: &mut GroupState) {
 /// The length of a tick in ns, as the peripherals count it.
 fn tick_ns(period: Duration) -> u64 {
     u64::try_from(period.as_nanos()).unwrap_or(u64::MAX)
-}
-
-/// [`GroupState::commanded`] for `groups`: per group, the axes that are the last (in group
-/// order, then axis order) to map their channel, with the channel. An axis mapping
-/// another card than its group's (which `engine::axes_of` never makes) commands nothing.
-fn commanding_axes(groups: &[GroupState]) -> Vec<Commanded> {
-    let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
-    for (n, g) in groups.iter().enumerate() {
-        for (i, ax) in g.axes().iter().enumerate() {
-            if let Some((card, ch)) = ax.channel {
-                if let Some(c) = last.get_mut(card).and_then(|c| c.get_mut(ch)) {
-                    *c = Some((n, i));
-                }
-            }
-        }
-    }
-    groups
-        .iter()
-        .enumerate()
-        .map(|(n, g)| {
-            Commanded::new(
-                g.def().card.0,
-                g.axes().iter().enumerate().filter_map(|(i, ax)| {
-                    let (card, ch) = ax.channel?;
-                    let own = card == g.def().card.0;
-                    let lasts = last.get(card)?.get(ch).copied().flatten() == Some((n, i));
-                    (own && lasts).then_some((i, ch))
-                }),
-            )
-        })
-        .collect()
 }
 
 /// Locks `m` counting the caller in `wanted` while it may wait: the engine thread, which

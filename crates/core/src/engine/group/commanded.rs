@@ -1,7 +1,8 @@
 //! The channels a group commands every tick: which of its axes send their pulses to
 //! which channel of its card.
 
-use crate::config::AXES;
+use super::GroupState;
+use crate::config::{AXES, CARDS};
 
 /// The axes of a group whose pulses command a channel of the group's card, each with
 /// that channel, in axis order, and the card.
@@ -80,6 +81,37 @@ impl Commanded {
             .take(usize::from(self.len))
             .map(|&(a, ch)| (usize::from(a) % AXES, usize::from(ch) % AXES))
     }
+}
+
+/// What each of `groups` commands (`GroupState::set_commanded`): per group, the axes that are the last (in group
+/// order, then axis order) to map their channel, with the channel. An axis mapping
+/// another card than its group's (which `engine::axes_of` never makes) commands nothing.
+pub fn commanding_axes(groups: &[GroupState]) -> Vec<Commanded> {
+    let mut last = [[None::<(usize, usize)>; AXES]; CARDS];
+    for (n, g) in groups.iter().enumerate() {
+        for (i, ax) in g.axes().iter().enumerate() {
+            if let Some((card, ch)) = ax.channel {
+                if let Some(c) = last.get_mut(card).and_then(|c| c.get_mut(ch)) {
+                    *c = Some((n, i));
+                }
+            }
+        }
+    }
+    groups
+        .iter()
+        .enumerate()
+        .map(|(n, g)| {
+            Commanded::new(
+                g.def().card.0,
+                g.axes().iter().enumerate().filter_map(|(i, ax)| {
+                    let (card, ch) = ax.channel?;
+                    let own = card == g.def().card.0;
+                    let lasts = last.get(card)?.get(ch).copied().flatten() == Some((n, i));
+                    (own && lasts).then_some((i, ch))
+                }),
+            )
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -46,7 +46,7 @@ mod queue;
 mod running;
 mod status;
 
-pub use commanded::Commanded;
+pub use commanded::{commanding_axes, Commanded};
 use control::Mode;
 use external::ExternalExecutor;
 use inpos::InPosWait;

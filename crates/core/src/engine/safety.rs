@@ -3,6 +3,7 @@
 //! limit switches, tracking error, and pulse speed and acceleration limits.
 
 use super::group::GroupState;
+use crate::config::AXES;
 use crate::error::{McclError, McclResult};
 use crate::error_record::ErrorRecord;
 use crate::machine::Machine;
@@ -98,6 +99,63 @@ pub fn limit_check_mode(mode: i32) -> McclResult<i32> {
         return Err(McclError::Parameter);
     }
     Ok(mode)
+}
+
+/// Whether the safety checks read the channels this tick: a check of every moving group
+/// is on (the limit switches, an emergency stop, a pulse limit), or a group has checks of its own (`group_checks`: some
+/// group's [`GroupState::has_safety_checks`], which the tick gathers as it ticks them).
+#[inline]
+pub fn reads_channels(limit_mode: i32, machine: &Machine, group_checks: bool) -> bool {
+    group_checks || global_checks(limit_mode, machine)
+}
+
+/// The checks that need the machine, over every group: emergency stop (0xF102), hardware
+/// limit switches (0xF701 + axis in the `_GEN_ERR` modes of `limit_mode`, −1 off),
+/// tracking error (0xF801 + axis), pulse speed and acceleration limits (0xF203, 0xF204),
+/// and the in-position check of the command ending. A check that trips stops the group
+/// at once (its queue is dropped); `changed` is called for each group a check changed.
+/// With no check to make ([`reads_channels`] false) it does nothing, and the tick does
+/// not call it.
+pub fn check_groups(
+    machine: &Machine,
+    groups: &mut [GroupState],
+    limit_mode: i32,
+    dt: f64,
+    mut changed: impl FnMut(&mut GroupState),
+) {
+    // Checks every moving group needs; otherwise only groups with checks of their own
+    // (tracking error, in-position) are looked at again.
+    let global = global_checks(limit_mode, machine);
+    for g in groups.iter_mut() {
+        if !global && !g.has_safety_checks() {
+            continue;
+        }
+        if (!g.busy() && !g.has_safety_checks()) || g.homing() != 0 {
+            // Homing watches its own limit switches and emergency stop.
+            continue;
+        }
+        if g.inpos_waiting() {
+            let mask = g.inpos_mask_waiting();
+            let errs: [Option<f64>; AXES] = std::array::from_fn(|i| {
+                let (card, ch) = g.axes()[i].channel?;
+                let chan = machine.channel(card, ch)?;
+                let f = g.axes()[i].factor.abs();
+                (mask & (1 << i) != 0 && f > 0.0).then(|| chan.error_count() as f64 / f)
+            });
+            g.check_inpos(&errs, dt);
+            changed(g);
+        }
+        if let Some(code) = check(g, machine, limit_mode) {
+            g.stop_for(code.record);
+            changed(g);
+        }
+    }
+}
+
+/// Whether a check of every moving group is on: the hardware limit switches (`mode`, −1
+/// off), an emergency stop, a pulse limit.
+fn global_checks(limit_mode: i32, machine: &Machine) -> bool {
+    limit_mode >= 0 || machine.any_emergency() || machine.pulse_limits_set()
 }
 
 #[cfg(test)]

@@ -37,6 +37,7 @@ use program::RECOVER;
 pub use program::{program, uses_home_sensor, Speed, Step, Then, Until};
 
 use crate::config::AXES;
+use crate::engine::group::GroupState;
 use crate::error::{McclError, McclResult};
 use crate::machine::Channel;
 use crate::planner::Axis1D;
@@ -611,6 +612,37 @@ impl Homing {
                 }
             }
         }
+    }
+}
+
+/// Applies a tick of homing to a group that drives homed channels: their positions and
+/// speeds, the zeroing at the working home, error records, and the end of the homing.
+pub fn apply_homing(g: &mut GroupState, h: &HomeTick) {
+    if g.homing() == 0 {
+        return;
+    }
+    for i in 0..AXES {
+        if g.homing() & (1 << i) == 0 {
+            continue;
+        }
+        let Some((card, ch)) = g.axes()[i].channel else {
+            continue;
+        };
+        let Some(a) = h.axes.get(ch).filter(|_| card == h.card) else {
+            continue;
+        };
+        if a.zeroed {
+            g.home_zero_axis(i);
+        }
+        if let Some((x, v)) = a.pos {
+            g.set_homing_axis(i, x, v);
+        }
+        if let Some(record) = a.record {
+            g.set_error(record);
+        }
+    }
+    if h.finished.is_some() {
+        g.end_homing();
     }
 }
 
