@@ -11,6 +11,10 @@
 //! [`engine`] (the motion groups: planning a command, running it period by period, what
 //! a group publishes). The caller owns time: a group or a channel advances one period
 //! when asked.
+//!
+//! The façade is [`Card`]: a simulated card and its groups, to which the caller queues
+//! commands and which it ticks, one interpolation period at a time, running the same
+//! tick ([`engine::tick::tick`]) as the library's engine thread.
 
 pub mod card;
 pub mod config;
@@ -22,3 +26,5 @@ pub mod machine;
 pub mod planner;
 pub mod sim;
 pub mod vendor;
+
+pub use engine::card::Card;
