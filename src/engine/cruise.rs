@@ -25,6 +25,7 @@
 use super::homing::HOME_BUSY;
 use super::shared::Shared;
 use super::tick::{Held, PUBLISH_EVERY};
+use mccl_core::engine::tick as card_tick;
 use std::sync::atomic::Ordering;
 
 /// The most ticks one plan covers: the plan costs a few operations a group a tick at this
@@ -89,30 +90,18 @@ impl Shared {
     /// the ticks themselves. Every card idle (nothing armed), no safety check reading the
     /// channels, no trace, every group quiet ahead.
     fn plan_cruise(&self, held: &mut Held<'_>) -> u32 {
-        let machine = &*held.machine;
-        if self.tracer.tracing
-            || crate::engine::safety::reads_channels(self.limit_check(), machine, false)
-        {
+        if self.tracer.tracing {
             return 0;
         }
-        let cards = machine.triggers_and_settings().enumerate();
-        for (card, (triggers, settings)) in cards {
-            let idle = held
-                .state
-                .card_idle(card, || !triggers.armed(&settings.error_threshold));
-            if !idle {
-                return 0;
-            }
-        }
-        let dt = self.clock.period_s();
-        let mut ahead = PLAN_TICKS;
-        for g in held.groups.iter() {
-            ahead = ahead.min(g.quiet_ticks_ahead(dt, ahead));
-            if ahead == 0 {
-                break;
-            }
-        }
-        ahead
+        let h = &mut *held;
+        card_tick::cruise_ahead(
+            &h.machine,
+            &h.groups,
+            &mut h.state,
+            self.clock.period_s(),
+            self.limit_check(),
+            PLAN_TICKS,
+        )
     }
 
     /// How many ticks of this engine were cruise ticks (for tests and benchmarks).

@@ -294,6 +294,38 @@ pub fn tick<const PLAN: bool, H: TickHooks>(
     }
 }
 
+/// How many of the next ticks, up to `most`, are certain to be cruise ticks for the card
+/// (`machine` and its `groups`, ticks of `dt`): every card idle (nothing armed, known in
+/// `state`), no safety check reading the channels (`limit_mode`, −1 off), every group
+/// quiet that far ahead ([`GroupState::quiet_ticks_ahead`]). 0: the next is not. What
+/// only other threads change (a routine, the trace, a view asked for) is the caller's to
+/// rule out.
+pub fn cruise_ahead(
+    machine: &Machine,
+    groups: &[GroupState],
+    state: &mut TickState,
+    dt: f64,
+    limit_mode: i32,
+    most: u32,
+) -> u32 {
+    if safety::reads_channels(limit_mode, machine, false) {
+        return 0;
+    }
+    for (card, (triggers, settings)) in machine.triggers_and_settings().enumerate() {
+        if !state.card_idle(card, || !triggers.armed(&settings.error_threshold)) {
+            return 0;
+        }
+    }
+    let mut ahead = most;
+    for g in groups {
+        ahead = ahead.min(g.quiet_ticks_ahead(dt, ahead));
+        if ahead == 0 {
+            break;
+        }
+    }
+    ahead
+}
+
 /// The steps of an idle card's channels on a tick that defers, tick `n` of `dt`: the
 /// channels that recorded at the last tick (`known`, bit n for channel n) record again
 /// without asking; the others step or start recording. Returns whether a channel stepped
