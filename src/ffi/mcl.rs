@@ -73,7 +73,14 @@ pub extern "C" fn mcl_set_motor_maximum_velocity(
     maximum_velocity: c_int,
     direction_modifier: c_int,
 ) -> c_int {
-    ffi_boundary! { @mcl mcl::set_motor_maximum_velocity(controller_id, motor_id, maximum_velocity, direction_modifier) }
+    ffi_boundary! { @mcl
+        mcl::set_motor_maximum_velocity(
+            controller_id,
+            motor_id,
+            maximum_velocity,
+            direction_modifier,
+        )
+    }
 }
 
 /// §4.7: half steps (`true`) or full steps (`false`).
@@ -93,7 +100,13 @@ pub extern "C" fn mcl_set_motor_holding_current_control(
     motor_id: c_int,
     holding_current: bool,
 ) -> c_int {
-    ffi_boundary! { @mcl mcl::set_motor_holding_current_control(controller_id, motor_id, holding_current) }
+    ffi_boundary! { @mcl
+        mcl::set_motor_holding_current_control(
+            controller_id,
+            motor_id,
+            holding_current,
+        )
+    }
 }
 
 /// §4.9: limit switch bit (0..5, or -1 for none) and active level (`true`
@@ -107,7 +120,16 @@ pub extern "C" fn mcl_set_motor_limits(
     direction_1_limit_bit: c_int,
     direction_1_limit_level: bool,
 ) -> c_int {
-    ffi_boundary! { @mcl mcl::set_motor_limits(controller_id, motor_id, direction_0_limit_bit, direction_0_limit_level, direction_1_limit_bit, direction_1_limit_level) }
+    ffi_boundary! { @mcl
+        mcl::set_motor_limits(
+            controller_id,
+            motor_id,
+            direction_0_limit_bit,
+            direction_0_limit_level,
+            direction_1_limit_bit,
+            direction_1_limit_level,
+        )
+    }
 }
 
 /// §4.10: limit switch debounce count 1..100 (1 kHz samples).
@@ -127,7 +149,14 @@ pub extern "C" fn mcl_set_motor_current_limits(
     holding_current_limit: c_int,
     running_current_limit: c_int,
 ) -> c_int {
-    ffi_boundary! { @mcl mcl::set_motor_current_limits(controller_id, motor_id, holding_current_limit, running_current_limit) }
+    ffi_boundary! { @mcl
+        mcl::set_motor_current_limits(
+            controller_id,
+            motor_id,
+            holding_current_limit,
+            running_current_limit,
+        )
+    }
 }
 
 /// §4.12: free-run the motor in `direction` (0/1).
@@ -173,7 +202,18 @@ pub extern "C" fn mcl_synchronous_move_motor(
     motor_2_direction: c_int,
     execute: bool,
 ) -> c_int {
-    ffi_boundary! { @mcl mcl::synchronous_move_motor(controller_id, motor_0_steps, motor_0_direction, motor_1_steps, motor_1_direction, motor_2_steps, motor_2_direction, execute) }
+    ffi_boundary! { @mcl
+        mcl::synchronous_move_motor(
+            controller_id,
+            motor_0_steps,
+            motor_0_direction,
+            motor_1_steps,
+            motor_1_direction,
+            motor_2_steps,
+            motor_2_direction,
+            execute,
+        )
+    }
 }
 
 /// §4.17: chained synchronous move of `number_of_moves` (1..100) moves given
@@ -195,7 +235,18 @@ pub unsafe extern "C" fn mcl_chained_synchronous_move_motor(
 ) -> c_int {
     ffi_boundary! { @mcl
         // SAFETY: forwarded under this function's contract.
-        unsafe { mcl::chained_synchronous_move_motor(controller_id, number_of_moves, motor_0_steps, motor_0_direction, motor_1_steps, motor_1_direction, motor_2_steps, motor_2_direction) }
+        unsafe {
+            mcl::chained_synchronous_move_motor(
+                controller_id,
+                number_of_moves,
+                motor_0_steps,
+                motor_0_direction,
+                motor_1_steps,
+                motor_1_direction,
+                motor_2_steps,
+                motor_2_direction,
+            )
+        }
     }
 }
 

@@ -17,7 +17,8 @@
 //! interface, and the C header takes every prototype, names included, from the vendor
 //! table; the generated test `tests/vendor_prototypes.rs` checks each Rust signature
 //! against that table at compile time.
-// The vendor's names live here and only here: the exports and their parameters carry the vendor's names (`MCC_Line`, `dfX`, `wCardType`).
+// The vendor's names live here and only here: the exports and their parameters carry
+// the vendor's names (`MCC_Line`, `dfX`, `wCardType`).
 #![allow(non_snake_case, non_camel_case_types, non_upper_case_globals)]
 
 /// The panic boundary of an exported function: the block runs as a closure returning
@@ -61,6 +62,7 @@ pub mod trajectory;
 pub mod units;
 
 use crate::config::{CardIx, ChannelIx};
+use crate::engine::command::{Command, Ctx};
 use crate::error::{McclError, McclResult};
 use crate::vendor::WORD;
 use std::os::raw::c_int;
@@ -417,8 +419,8 @@ mod tests;
 #[cfg(test)]
 mod tests_panic;
 
-/// Runs `f` on running group `g` with its lock held, then publishes the group's state. `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group
-/// that does not run.
+/// Runs `f` on running group `g` with its lock held, then publishes the group's state.
+/// `INITIAL_MOTION_ERR` before init, `GROUP_PARAMETER_ERR` for a group that does not run.
 pub fn with_group<R>(
     g: u16,
     f: impl FnOnce(&mut crate::engine::group::GroupState) -> McclResult<R>,
@@ -458,7 +460,7 @@ pub fn update_group(
 /// "enqueue" sits half-way through changing the queue.
 pub(crate) fn enqueue(
     grp: &mut crate::engine::group::GroupState,
-    cmd: crate::engine::command::Command,
+    cmd: Command,
 ) -> McclResult<c_int> {
     if crate::engine::custom::in_callback() == Some(grp.index()) {
         return Err(McclError::NotAccepted);
@@ -468,10 +470,7 @@ pub(crate) fn enqueue(
 
 /// Plans a command with the group's context at call time and queues it; returns the
 /// command index. A degenerate arc also records error 0xF104 (user manual §2.6.3 VI).
-pub fn queue(
-    g: u16,
-    plan: impl FnOnce(&crate::engine::command::Ctx<'_>) -> McclResult<crate::engine::command::Command>,
-) -> McclResult<c_int> {
+pub fn queue(g: u16, plan: impl FnOnce(&Ctx<'_>) -> McclResult<Command>) -> McclResult<c_int> {
     with_group(g, |grp| {
         let cmd = plan(&grp.ctx())?;
         enqueue(grp, cmd)
@@ -483,9 +482,7 @@ pub fn queue(
 /// starts, as the vendor's library does.
 pub fn queue_curve(
     g: u16,
-    plan: impl FnOnce(
-        &crate::engine::command::Ctx<'_>,
-    ) -> Result<crate::planner::Path, crate::planner::PlanError>,
+    plan: impl FnOnce(&Ctx<'_>) -> Result<crate::planner::Path, crate::planner::PlanError>,
     kind: crate::engine::command::Curve,
 ) -> McclResult<c_int> {
     with_group(g, |grp| {
