@@ -9,9 +9,12 @@
 //! * `-- --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>` parses the three committed files
 //!   independently of the generator and checks every declaration against the headers and
 //!   the library's exports (see [`check`]); for a Windows DLL, the names of its export
-//!   table.
+//!   table;
+//! * `-- --exports <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>` checks that the four generated
+//!   headers declare exactly the functions the library exports (see [`export_check`]).
 
 mod check;
+mod export_check;
 mod exports;
 mod gen;
 
@@ -45,8 +48,7 @@ fn generate(root: &Path, h: &model::Header) -> Result<Vec<(PathBuf, String)>, St
     ])
 }
 
-const USAGE: &str =
-    "usage: mccl-bindings [--check | --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>]";
+const USAGE: &str = "usage: mccl-bindings [--check | --verify <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll> | --exports <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>]";
 
 /// What the command line asks for.
 #[derive(Debug, PartialEq)]
@@ -57,6 +59,8 @@ enum Mode {
     Check,
     /// Check the committed files against the headers and this library's exports.
     Verify(PathBuf),
+    /// Check that the headers declare exactly what this library exports.
+    Exports(PathBuf),
     /// Print the usage.
     Help,
 }
@@ -76,6 +80,13 @@ fn mode(mut p: lexopt::Parser) -> Result<Mode, String> {
                     })?
                     .into(),
             ),
+            Long("exports") => Mode::Exports(
+                p.value()
+                    .map_err(|_| {
+                        "usage: mccl-bindings --exports <libMCCLPCI_IMP.so | MCCLPCI_IMP.dll>"
+                    })?
+                    .into(),
+            ),
             a => {
                 let a = match a {
                     Short(c) => format!("-{c}"),
@@ -83,12 +94,12 @@ fn mode(mut p: lexopt::Parser) -> Result<Mode, String> {
                     Value(v) => v.to_string_lossy().into_owned(),
                 };
                 return Err(format!(
-                    "unknown argument {a:?}; usage: mccl-bindings [--check | --verify <lib.so | lib.dll>]"
+                    "unknown argument {a:?}; usage: mccl-bindings [--check | --verify <lib> | --exports <lib>]"
                 ));
             }
         };
         if mode != Mode::Write {
-            return Err(format!("one of --check and --verify\n{USAGE}"));
+            return Err(format!("one of --check, --verify and --exports\n{USAGE}"));
         }
         mode = next;
     }
@@ -98,11 +109,14 @@ fn mode(mut p: lexopt::Parser) -> Result<Mode, String> {
 fn run() -> Result<bool, String> {
     let mode = mode(lexopt::Parser::from_env())?;
     if mode == Mode::Help {
-        println!("{USAGE}\n\nWrites csharp/MCCL.cs, vb-bindings/MCCLPCI_IMP.bas and vb-bindings/MCCL.vb from\ninclude/MCCL.h and include/MCCL_Fun.h; --check fails if a committed file differs;\n--verify checks the committed files against the headers and the library's exports.");
+        println!("{USAGE}\n\nWrites csharp/MCCL.cs, vb-bindings/MCCLPCI_IMP.bas and vb-bindings/MCCL.vb from\ninclude/MCCL.h and include/MCCL_Fun.h; --check fails if a committed file differs;\n--verify checks the committed files against the headers and the library's exports;\n--exports checks that MCCL.h, MCCL_Fun.h, mcl.h and MCCL_Sim.h declare exactly the\nfunctions the library exports, under undecorated names.");
         return Ok(true);
     }
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let root = root.canonicalize().unwrap_or(root);
+    if let Mode::Exports(lib) = &mode {
+        return check_exports(&root, lib);
+    }
     let h = load_header(&root)?;
     match mode {
         Mode::Write | Mode::Check | Mode::Help => {
@@ -133,6 +147,7 @@ fn run() -> Result<bool, String> {
             }
             Ok(ok)
         }
+        Mode::Exports(_) => unreachable!("checked above"),
         Mode::Verify(lib) => {
             let syms = exports::exports(&lib)?;
             let files = [
@@ -157,6 +172,39 @@ fn run() -> Result<bool, String> {
             Ok(total == 0)
         }
     }
+}
+
+/// `--exports`: the functions the four generated headers declare against `lib`'s exports.
+fn check_exports(root: &Path, lib: &Path) -> Result<bool, String> {
+    let names = ["MCCL.h", "MCCL_Fun.h", "mcl.h", "MCCL_Sim.h"];
+    let paths: Vec<PathBuf> = names.iter().map(|n| root.join("include").join(n)).collect();
+    let texts = paths
+        .iter()
+        .map(|p| read(p))
+        .collect::<Result<Vec<_>, _>>()?;
+    let shown: Vec<String> = paths.iter().map(|p| p.display().to_string()).collect();
+    let files: Vec<(&str, &str)> = shown
+        .iter()
+        .zip(&texts)
+        .map(|(n, t)| (n.as_str(), t.as_str()))
+        .collect();
+    let h = model::Header::parse(&files).map_err(|e| e.to_string())?;
+    let exported = exports::exports(lib)?;
+    let r = export_check::compare(
+        h.funcs.iter().map(|f| f.name.as_str()),
+        exported.iter().map(String::as_str),
+    );
+    for p in r.problems() {
+        eprintln!("{p}");
+    }
+    let name = lib.file_name().map_or(lib.display().to_string(), |n| {
+        n.to_string_lossy().into_owned()
+    });
+    println!(
+        "exports of {name}: {} MCC_*/mcl_*/MCCL_Sim* functions exported and declared",
+        r.matched
+    );
+    Ok(r.problems().is_empty())
 }
 
 fn main() -> ExitCode {
@@ -192,5 +240,12 @@ mod tests {
             .unwrap_err()
             .starts_with("unknown argument \"x.so\""));
         assert!(m(&["--check", "--verify", "x.so"]).is_err());
+        assert_eq!(
+            m(&["--exports", "x.dll"]),
+            Ok(Mode::Exports("x.dll".into()))
+        );
+        assert!(m(&["--exports"])
+            .unwrap_err()
+            .starts_with("usage: mccl-bindings --exports"));
     }
 }
