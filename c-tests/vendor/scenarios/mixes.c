@@ -47,7 +47,7 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[17];
+static MixEvents mix_events[25];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -140,6 +140,14 @@ MIX(13, 13)
 MIX(14, 14)
 MIX(15, 15)
 MIX(16, 16)
+MIX(17, 17)
+MIX(18, 18)
+MIX(19, 19)
+MIX(20, 20)
+MIX(21, 21)
+MIX(22, 22)
+MIX(23, 23)
+MIX(24, 24)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -151,6 +159,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_11, std3, 1200, 60000), SCEN(mix_12, std3, 1200, 60000),
     SCEN(mix_13, std3, 1200, 60000), SCEN(mix_14, std3, 1200, 60000),
     SCEN(mix_15, std3, 1200, 60000), SCEN(mix_16, std3, 1200, 60000),
+    SCEN(mix_17, std3, 1200, 60000), SCEN(mix_18, std3, 1200, 60000),
+    SCEN(mix_19, std3, 1200, 60000), SCEN(mix_20, std3, 1200, 60000),
+    SCEN(mix_21, std3, 1200, 60000), SCEN(mix_22, std3, 1200, 60000),
+    SCEN(mix_23, std3, 1200, 60000), SCEN(mix_24, std3, 1200, 60000),
     SCEN_END,
 };
 
