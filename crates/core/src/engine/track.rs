@@ -69,6 +69,22 @@ impl Track {
         }
     }
 
+    /// A track running `profile` from its start, whose override re-plans scale `nominal`,
+    /// the speed it was planned at, while a continue after a hold runs at the speed the
+    /// profile cruises at: a point-to-point axis, which the vendor's library re-plans
+    /// under an override from its nominal speed [`mix_18`, `mix_23`].
+    pub fn with_nominal(
+        profile: TickProfile,
+        nominal: f64,
+        ramps: (u32, u32),
+        shapes: (Shape, Shape),
+    ) -> Track {
+        Track {
+            base_feed: nominal,
+            ..Track::new(profile, profile.speed(), ramps, shapes)
+        }
+    }
+
     /// Distance covered.
     #[inline]
     pub fn dist(&self) -> f64 {
@@ -237,14 +253,20 @@ impl Track {
     }
 
     /// An override: what is left, from the last period's speed (times `chord`, see
-    /// [`Track::stop`]), at the planned feed times `ratio`.
+    /// [`Track::stop`]), at the planned feed times `ratio`. When what is left is too short
+    /// even for the ramp from that speed (no peak speed comes out: the end of a
+    /// deceleration), the motion runs on as planned, as the vendor's library leaves it
+    /// [`mix_17`, `mix_18`, `mix_24`]; the new rate is the next motions'.
     pub fn retarget(&mut self, ratio: f64, chord: f64) {
         let feed = self.base_feed * ratio;
         let left = (self.len - self.dist()).max(0.0);
         let v0 = self.last_speed() * chord;
         let t = self.profile.period();
-        self.feed = feed;
         let p = TickProfile::plan(left, v0, feed, self.ramps.0, self.ramps.1, self.shapes, t);
+        if p.speed() <= 0.0 && left > 0.0 {
+            return;
+        }
+        self.feed = feed;
         self.restart(p);
     }
 
@@ -321,5 +343,52 @@ mod tests {
         assert_eq!(t.phase(), Phase::Accelerating);
         t.step();
         assert!((t.last_speed() - 2.9552444690265496).abs() < 1e-9);
+    }
+
+    #[test]
+    fn an_override_at_the_end_of_a_deceleration_changes_nothing() {
+        // `mix_17`: a line of 0.042 UU at 9 UU/s with S ramps of 70 and 30 ms never
+        // reaches its feed (peak 0.84 UU/s, 100 periods). 8 periods into its deceleration
+        // (period 78) it runs at 0.7086 UU/s with 0.0063 UU left: the ramp from that
+        // speed over 70 periods would take 0.0248 UU, so no re-plan fits and the vendor's
+        // library lets it decelerate as planned; 140 % is the next motions' rate.
+        let ramps = (70, 30);
+        let shapes = (Shape::S, Shape::S);
+        let p = TickProfile::plan(0.042, 0.0, 9.0, ramps.0, ramps.1, shapes, 0.001);
+        let mut t = Track::new(p, 9.0, ramps, shapes);
+        for _ in 0..78 {
+            t.step();
+        }
+        assert_eq!(t.phase(), Phase::Decelerating);
+        assert!((t.last_speed() - 0.70863).abs() < 1e-4, "{}", t.last_speed());
+        let planned = t;
+        t.retarget(1.4, 1.0);
+        assert_eq!(t, planned, "the profile runs on");
+        // While it accelerates (period 30, 0.2 UU/s, 0.039 UU left) a re-plan fits and is
+        // made.
+        let mut u = Track::new(p, 9.0, ramps, shapes);
+        for _ in 0..30 {
+            u.step();
+        }
+        let before = u;
+        u.retarget(0.5, 1.0);
+        assert_ne!(u, before);
+    }
+
+    #[test]
+    fn a_point_to_point_axis_replans_from_its_nominal_speed() {
+        // `mix_18`: an axis of 0.184247 UU at 0.5 UU/s (120 and 90 ms S ramps) cruises at
+        // 0.49931 UU/s (whole periods). Started under a 70 % override, the vendor's
+        // library plans it at 0.5 × 0.7 = 0.35 UU/s: 422 periods at speed, 0.349615 UU/s;
+        // from the rounded speed (0.34952 UU/s) it would be 423 periods at 0.348953.
+        let ramps = (120, 90);
+        let shapes = (Shape::S, Shape::S);
+        let p = TickProfile::plan(0.184247, 0.0, 0.5, ramps.0, ramps.1, shapes, 0.001);
+        let mut t = Track::with_nominal(p, 0.5, ramps, shapes);
+        t.retarget(0.7, 1.0);
+        assert_eq!(t.periods_left(), 120 + 422 + 90);
+        let mut rounded = Track::new(p, p.speed(), ramps, shapes);
+        rounded.retarget(0.7, 1.0);
+        assert_eq!(rounded.periods_left(), 120 + 423 + 90);
     }
 }

@@ -24,6 +24,9 @@ pub struct PtpMove {
     start: Axes,
     end: Axes,
     sign: Axes,
+    /// The speed each axis was planned at (before its profile rounded it to whole
+    /// periods).
+    speeds: Axes,
     profiles: [TickProfile; NUM_AXES],
     master: usize,
     sync: bool,
@@ -86,6 +89,7 @@ impl PtpMove {
             start: *start,
             end: *end,
             sign,
+            speeds: *speed,
             profiles,
             master,
             sync,
@@ -100,6 +104,13 @@ impl PtpMove {
             .map(TickProfile::periods)
             .max()
             .unwrap_or(0)
+    }
+
+    /// The speed axis `i` was planned at (`i < 8`): its maximum safe speed times the
+    /// ratio, which an override scales (its profile cruises at this speed rounded to
+    /// whole periods).
+    pub fn speed(&self, i: usize) -> f64 {
+        self.speeds[i]
     }
 
     /// The axis that sets the pace (and whose speed is the move's feed speed).

@@ -71,7 +71,7 @@ impl Running {
                 let i = p.master();
                 let prof = *p.profile(i);
                 Progress::Path {
-                    track: Track::new(prof, prof.speed(), ramps_of(&prof), shapes_of(&cmd)),
+                    track: Track::with_nominal(prof, p.speed(i), ramps_of(&prof), shapes_of(&cmd)),
                     sync: Some(i),
                 }
             }
@@ -82,7 +82,7 @@ impl Running {
                     if !prof.is_empty() {
                         moving |= 1 << i;
                     }
-                    Track::new(prof, prof.speed(), ramps_of(&prof), shapes_of(&cmd))
+                    Track::with_nominal(prof, p.speed(i), ramps_of(&prof), shapes_of(&cmd))
                 }));
                 Progress::Axes {
                     tracks,
