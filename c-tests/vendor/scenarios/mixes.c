@@ -47,7 +47,7 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[25];
+static MixEvents mix_events[33];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -148,6 +148,14 @@ MIX(21, 21)
 MIX(22, 22)
 MIX(23, 23)
 MIX(24, 24)
+MIX(25, 25)
+MIX(26, 26)
+MIX(27, 27)
+MIX(28, 28)
+MIX(29, 29)
+MIX(30, 30)
+MIX(31, 31)
+MIX(32, 32)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -163,6 +171,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_19, std3, 1200, 60000), SCEN(mix_20, std3, 1200, 60000),
     SCEN(mix_21, std3, 1200, 60000), SCEN(mix_22, std3, 1200, 60000),
     SCEN(mix_23, std3, 1200, 60000), SCEN(mix_24, std3, 1200, 60000),
+    SCEN(mix_25, std3, 1200, 60000), SCEN(mix_26, std3, 1200, 60000),
+    SCEN(mix_27, std3, 1200, 60000), SCEN(mix_28, std3, 1200, 60000),
+    SCEN(mix_29, std3, 1200, 60000), SCEN(mix_30, std3, 1200, 60000),
+    SCEN(mix_31, std3, 1200, 60000), SCEN(mix_32, std3, 1200, 60000),
     SCEN_END,
 };
 
