@@ -47,7 +47,7 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[33];
+static MixEvents mix_events[41];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -156,6 +156,14 @@ MIX(29, 29)
 MIX(30, 30)
 MIX(31, 31)
 MIX(32, 32)
+MIX(33, 33)
+MIX(34, 34)
+MIX(35, 35)
+MIX(36, 36)
+MIX(37, 37)
+MIX(38, 38)
+MIX(39, 39)
+MIX(40, 40)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -175,6 +183,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_27, std3, 1200, 60000), SCEN(mix_28, std3, 1200, 60000),
     SCEN(mix_29, std3, 1200, 60000), SCEN(mix_30, std3, 1200, 60000),
     SCEN(mix_31, std3, 1200, 60000), SCEN(mix_32, std3, 1200, 60000),
+    SCEN(mix_33, std3, 1200, 60000), SCEN(mix_34, std3, 1200, 60000),
+    SCEN(mix_35, std3, 1200, 60000), SCEN(mix_36, std3, 1200, 60000),
+    SCEN(mix_37, std3, 1200, 60000), SCEN(mix_38, std3, 1200, 60000),
+    SCEN(mix_39, std3, 1200, 60000), SCEN(mix_40, std3, 1200, 60000),
     SCEN_END,
 };
 
