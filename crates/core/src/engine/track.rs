@@ -222,7 +222,11 @@ impl Track {
     /// last period's chord over its length: 1 but on an arc) with the deceleration `dec_s`
     /// gives at the full feed ([`TickProfile::stop`]).
     pub fn stop(&mut self, dec_s: f64, chord: f64) {
-        let v0 = self.last_speed() * chord;
+        self.stop_from(self.last_speed() * chord, dec_s);
+    }
+
+    /// [`Track::stop`] from the speed `v0`.
+    pub fn stop_from(&mut self, v0: f64, dec_s: f64) {
         let t = self.profile.period();
         // The full feed the deceleration is measured against: the speed the running
         // stretch cruises at (the feed rounded to whole periods), as the vendor's library
@@ -360,7 +364,11 @@ mod tests {
             t.step();
         }
         assert_eq!(t.phase(), Phase::Decelerating);
-        assert!((t.last_speed() - 0.70863).abs() < 1e-4, "{}", t.last_speed());
+        assert!(
+            (t.last_speed() - 0.70863).abs() < 1e-4,
+            "{}",
+            t.last_speed()
+        );
         let planned = t;
         t.retarget(1.4, 1.0);
         assert_eq!(t, planned, "the profile runs on");

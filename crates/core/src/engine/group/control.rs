@@ -5,6 +5,7 @@
 use super::running::Stage;
 use super::GroupState;
 use crate::config::AXES;
+use crate::engine::command::Plan;
 use crate::engine::note::Note;
 use crate::error::{McclError, McclResult};
 
@@ -135,7 +136,7 @@ impl GroupState {
                     Some(s) => s,
                     None => r.cmd.dec_ms / 1000.0,
                 };
-                r.stop_tracks(d);
+                r.stop_tracks(d, &self.exec.vel);
             }
             r.stage = Stage::Stopping { abort };
         }
@@ -254,14 +255,15 @@ impl GroupState {
     }
 
     /// What runs at speed re-plans the rest of its length at its feed times the ratio
-    /// (not with the speed fixed).
+    /// (not with the speed fixed). A point-to-point move runs on at the rate it started
+    /// with, as in the vendor's library [`mix_33`]: the ratio is the next moves'.
     fn retarget_running(&mut self) {
         if self.rate.mode != Mode::Normal || self.rate.fixed_speed {
             return;
         }
         let k = self.speed_ratio();
         for r in self.exec.running.iter_mut() {
-            if r.stage == Stage::Moving {
+            if r.stage == Stage::Moving && !matches!(r.cmd.plan, Plan::Ptp(_)) {
                 r.retarget_tracks(k);
             }
         }

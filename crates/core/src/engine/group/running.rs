@@ -147,8 +147,20 @@ impl Running {
         matches!(self.cmd.plan, Plan::Ptp(_))
     }
 
-    /// Every track decelerates to a stop over `dec_s` ([`Track::stop`]).
-    pub(super) fn stop_tracks(&mut self, dec_s: f64) {
+    /// Every track decelerates to a stop over `dec_s` ([`Track::stop`]). A
+    /// point-to-point axis stops from the speed the group shows for it, `vel` (its
+    /// positions' difference over the period, as the vendor's library measures it: a
+    /// hair under the speed along the track on an axis moving toward −∞ [`mix_34`]).
+    pub(super) fn stop_tracks(&mut self, dec_s: f64, vel: &Axes) {
+        if let Progress::Axes { tracks, moving, .. } = &mut self.progress {
+            for (i, t) in tracks.iter_mut().enumerate() {
+                // An axis that arrived shows the speed of its last period, and stays.
+                if *moving & (1 << i) != 0 && !t.arrived() {
+                    t.stop_from(vel[i].abs(), dec_s);
+                }
+            }
+            return;
+        }
         let chord = self.chord_ratio();
         for t in self.tracks_mut() {
             t.stop(dec_s, chord);
