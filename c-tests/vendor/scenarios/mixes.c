@@ -47,7 +47,7 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[41];
+static MixEvents mix_events[49];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -164,6 +164,14 @@ MIX(37, 37)
 MIX(38, 38)
 MIX(39, 39)
 MIX(40, 40)
+MIX(41, 41)
+MIX(42, 42)
+MIX(43, 43)
+MIX(44, 44)
+MIX(45, 45)
+MIX(46, 46)
+MIX(47, 47)
+MIX(48, 48)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -187,6 +195,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_35, std3, 1200, 60000), SCEN(mix_36, std3, 1200, 60000),
     SCEN(mix_37, std3, 1200, 60000), SCEN(mix_38, std3, 1200, 60000),
     SCEN(mix_39, std3, 1200, 60000), SCEN(mix_40, std3, 1200, 60000),
+    SCEN(mix_41, std3, 1200, 60000), SCEN(mix_42, std3, 1200, 60000),
+    SCEN(mix_43, std3, 1200, 60000), SCEN(mix_44, std3, 1200, 60000),
+    SCEN(mix_45, std3, 1200, 60000), SCEN(mix_46, std3, 1200, 60000),
+    SCEN(mix_47, std3, 1200, 60000), SCEN(mix_48, std3, 1200, 60000),
     SCEN_END,
 };
 
