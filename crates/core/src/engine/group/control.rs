@@ -20,6 +20,8 @@ pub(super) struct Rate {
     /// An override set since the last period and whether it is instant
     /// (`MCC_OverrideSpeedEx`): in effect from the next period.
     pub(super) override_next: Option<(f64, bool)>,
+    /// A hold that came while two motions blend, waiting for the blend to end.
+    pub(super) hold_pending: bool,
 }
 
 impl Default for Rate {
@@ -30,6 +32,7 @@ impl Default for Rate {
             override_pct: 100.0,
             fixed_speed: false,
             override_next: None,
+            hold_pending: false,
         }
     }
 }
@@ -64,6 +67,12 @@ impl GroupState {
             }
             self.note(Note::Hold { block_end: true });
             self.rate.mode = Mode::HoldAtBlockEnd;
+            return Ok(());
+        }
+        if self.exec.running.len() > 1 {
+            // Two motions blend: the vendor's library lets the blend end and then holds
+            // the motion left [`mix_42`, `mix_48`].
+            self.rate.hold_pending = true;
             return Ok(());
         }
         let ending = self
@@ -115,6 +124,9 @@ impl GroupState {
                 self.update_status();
                 Ok(())
             }
+            // A hold still waiting for a blend to end is as a hold decelerating: the
+            // continue is refused and the hold goes on [`mix_42`].
+            Mode::Normal if self.rate.hold_pending => Err(McclError::ContiIllegal),
             _ => Ok(()),
         }
     }
@@ -232,6 +244,7 @@ impl GroupState {
         self.exec.base = self.exec.pos;
         self.queued.end = self.exec.pos;
         self.rate.mode = Mode::Normal;
+        self.rate.hold_pending = false;
     }
 
     /// `MCC_OverrideSpeedEx`: the new ratio is in effect from the next period; with

@@ -152,6 +152,7 @@ impl GroupState {
             || self.has_outputs()
             || self.has_safety_checks()
             || self.rate.override_next.is_some()
+            || self.rate.hold_pending
         {
             return 0;
         }
@@ -235,6 +236,11 @@ impl GroupState {
         }
         if self.exec.running.is_empty() && lag {
             self.exec.lag = 1;
+        }
+        if self.rate.hold_pending && self.exec.running.len() <= 1 {
+            // The blend a hold waited for has ended: the motion left stops now.
+            self.rate.hold_pending = false;
+            let _ = self.hold(false);
         }
         if let Some((d, left)) = self.exec.jump.take() {
             // A jog by pulses: the jump in its first period, then two at rest.
