@@ -327,8 +327,13 @@ def control(run, shots):
     run.wait_emu("motor 2 stopped", lambda: emu.running()[2] == "0")
     run.wait_page("motor 2 shown stopped", lambda s: s["running"][2] == "0")
     p2 = emu.pos()[2]
+    # The model starts and stops the motor when the app sends the command, the emulator
+    # when it reads it off the pty: on an idle host the two agree to a step or two, on a
+    # loaded 2-core host the pty can deliver tens of ms late (a step a ms at 1000
+    # steps/s). 50 steps still tells a stopped estimate from one still running (it would
+    # be off by 1000 a second).
     s = run.wait_page("motor 2's estimate where the emulator stopped",
-                      lambda s: abs(s["pos"][2] - p2) <= 2)
+                      lambda s: abs(s["pos"][2] - p2) <= 50)
     log(f"run/stop of motor 2: emulator {p2}, page ≈{s['pos'][2]}")
     # Home: refused without a limit switch in that direction, nothing sent.
     h = emu.received()["H"]
