@@ -430,6 +430,28 @@ static void fix_speed(int t)
         CD(MCC_OverrideSpeed, 50, 0);
 }
 
+/* A hold that meets a delay: in its middle, in its last period, and with nothing queued
+ * after it; each continued later. A delay of 100 ms is periods 1..100, then a line. */
+#define DELAY_HOLD_CASE(name, hold_at, then_line)                                          \
+    static void name(int t)                                                                \
+    {                                                                                      \
+        if (t == 0) {                                                                      \
+            vd_profile('T', 100, 100, 10);                                                 \
+            CI(MCC_DelayMotion, 100, 0);                                                   \
+            if (then_line)                                                                 \
+                LINE(0, 1, 0, 0);                                                          \
+        }                                                                                  \
+        if (t == (hold_at))                                                                \
+            CI(MCC_HoldMotion, 0, 0);                                                      \
+        if (t == 160)                                                                      \
+            CI(MCC_ContiMotion, 0);                                                        \
+    }
+
+DELAY_HOLD_CASE(hold_delay_mid, 50, 1)
+DELAY_HOLD_CASE(hold_delay_last, 100, 1)
+DELAY_HOLD_CASE(hold_delay_before_last, 99, 1)
+DELAY_HOLD_CASE(hold_delay_alone, 50, 0)
+
 const Scenario vd_control[] = {
     SCEN(hold_acc_t, std3, 300, 4000),
     SCEN(arc_hold_cruise_t, std3, 400, 4000),
@@ -481,5 +503,9 @@ const Scenario vd_control[] = {
     SCEN(sys_max_speed, std3, 0, 4000),
     SCEN(change_feed, std3, 150, 4000),
     SCEN(fix_speed, std3, 150, 4000),
+    SCEN(hold_delay_mid, std3, 200, 4000),
+    SCEN(hold_delay_last, std3, 200, 4000),
+    SCEN(hold_delay_before_last, std3, 200, 4000),
+    SCEN(hold_delay_alone, std3, 200, 4000),
     SCEN_END,
 };
