@@ -85,6 +85,13 @@ impl GroupState {
         }
         self.note(Note::Hold { block_end: false });
         self.rate.mode = Mode::Held;
+        for r in self.exec.running.iter_mut() {
+            // A hold pauses a delay, also one whose last period just ran: it stays the
+            // current command until the continue [`hold_delay_*`, `mix_39`].
+            if r.is_delay() {
+                r.finished = None;
+            }
+        }
         self.stop_tracks(false, None);
         Ok(())
     }
@@ -117,6 +124,11 @@ impl GroupState {
                             continue;
                         }
                         r.stage = Stage::Moving;
+                        if r.delay_done() {
+                            // A delay held after its last period goes at once.
+                            r.finished = Some(false);
+                            continue;
+                        }
                         r.resume_tracks();
                     }
                 }

@@ -226,7 +226,17 @@ impl Running {
 
     /// Whether a hold stops it: it moves along tracks (its own or its stage's).
     pub(super) fn holds(&self) -> bool {
-        self.has_tracks() || matches!(self.cmd.plan, Plan::Custom(_))
+        self.has_tracks() || matches!(self.cmd.plan, Plan::Custom(_) | Plan::Delay(_))
+    }
+
+    /// Whether it is a delay (`MCC_DelayMotion`).
+    pub(super) fn is_delay(&self) -> bool {
+        matches!(self.cmd.plan, Plan::Delay(_))
+    }
+
+    /// Whether it is a delay with no time left.
+    pub(super) fn delay_done(&self) -> bool {
+        matches!(self.progress, Progress::Delay { left: 0 })
     }
 
     /// Where it has taken the axes (its own start plus its displacement).

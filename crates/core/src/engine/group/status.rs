@@ -7,7 +7,7 @@ use super::track::Phase;
 use super::GroupState;
 use super::Mode;
 use crate::config::AXES;
-use crate::engine::command::{ctype, Plan};
+use crate::engine::command::ctype;
 use crate::engine::snapshot::{whole_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
 use crate::machine::Channel;
 use crate::vendor::consts as c;
@@ -61,10 +61,13 @@ impl GroupState {
             || self.in_pos.wait.is_some_and(|w| w.blocks())
             || self.features.external.as_ref().is_some_and(|x| x.active())
             || self.post_active();
-        let held_shown =
-            self.exec.running.iter().any(
-                |r| matches!(r.stage, Stage::Held { periods, .. } if periods >= HOLD_SHOWN_AFTER),
-            );
+        // A held motion reads held from its third held period, a held delay from its
+        // second (the vendor's library shows the first as running) [`hold_delay_*`].
+        let held_shown = self.exec.running.iter().any(|r| match r.stage {
+            Stage::Held { periods, .. } if r.is_delay() => periods >= 2,
+            Stage::Held { periods, .. } => periods >= HOLD_SHOWN_AFTER,
+            _ => false,
+        });
         self.status = if !active {
             if matches!(
                 self.rate.mode,
@@ -86,10 +89,12 @@ impl GroupState {
             // Held and at rest, or commands waiting that an error, a hold at a block's
             // end or single-block mode keeps back.
             c::GMS_HOLD
-        } else if matches!(
-            self.exec.running.front().map(|r| &r.cmd.plan),
-            Some(Plan::Delay(_))
-        ) {
+        } else if self
+            .exec
+            .running
+            .front()
+            .is_some_and(|r| r.is_delay() && r.stage == Stage::Moving)
+        {
             c::GMS_DELAYING
         } else {
             c::GMS_RUNNING
