@@ -47,7 +47,7 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[49];
+static MixEvents mix_events[57];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -172,6 +172,14 @@ MIX(45, 45)
 MIX(46, 46)
 MIX(47, 47)
 MIX(48, 48)
+MIX(49, 49)
+MIX(50, 50)
+MIX(51, 51)
+MIX(52, 52)
+MIX(53, 53)
+MIX(54, 54)
+MIX(55, 55)
+MIX(56, 56)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -199,6 +207,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_43, std3, 1200, 60000), SCEN(mix_44, std3, 1200, 60000),
     SCEN(mix_45, std3, 1200, 60000), SCEN(mix_46, std3, 1200, 60000),
     SCEN(mix_47, std3, 1200, 60000), SCEN(mix_48, std3, 1200, 60000),
+    SCEN(mix_49, std3, 1200, 60000), SCEN(mix_50, std3, 1200, 60000),
+    SCEN(mix_51, std3, 1200, 60000), SCEN(mix_52, std3, 1200, 60000),
+    SCEN(mix_53, std3, 1200, 60000), SCEN(mix_54, std3, 1200, 60000),
+    SCEN(mix_55, std3, 1200, 60000), SCEN(mix_56, std3, 1200, 60000),
     SCEN_END,
 };
 
