@@ -154,8 +154,9 @@ impl Running {
     pub(super) fn stop_tracks(&mut self, dec_s: f64, vel: &Axes) {
         if let Progress::Axes { tracks, moving, .. } = &mut self.progress {
             for (i, t) in tracks.iter_mut().enumerate() {
-                // An axis that arrived shows the speed of its last period, and stays.
-                if *moving & (1 << i) != 0 && !t.arrived() {
+                // An axis that arrived shows the speed of its last period, and stays; one
+                // in its own final deceleration keeps it, as a motion does [`mix_49`].
+                if *moving & (1 << i) != 0 && !t.arrived() && !t.in_final_decel() {
                     t.stop_from(vel[i].abs(), dec_s);
                 }
             }
@@ -188,7 +189,9 @@ impl Running {
             self.quiet_end = true;
         }
         for t in self.tracks_mut() {
-            if !t.arrived() {
+            // A track the hold let keep its final deceleration goes on with it
+            // [`mix_49`].
+            if !t.arrived() && !t.in_final_decel() {
                 t.resume();
             }
         }
