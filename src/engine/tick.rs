@@ -12,7 +12,7 @@ use super::{command, isr};
 use crate::interrupt::Interrupt;
 use crate::machine::Machine;
 use mccl_core::engine::tick::{self as card_tick, TickCtx, TickHooks, TickState, CRUISE, FULL};
-use parking_lot::{MutexGuard, MutexGuard as Guard};
+use parking_lot::MutexGuard;
 use std::sync::atomic::Ordering;
 
 /// Under a virtual clock, a long run of ticks publishes snapshots this often (and at its
@@ -254,7 +254,7 @@ pub(super) fn release(held: &mut Option<Held<'_>>) {
 struct EngineHooks<'s, 'i> {
     shared: &'s Shared,
     /// The trace, locked for the tick while tracing.
-    trace: Option<Guard<'s, Option<Trace>>>,
+    trace: Option<MutexGuard<'s, Option<Trace>>>,
     /// Where the peripherals' tick collects the interrupts to deliver.
     interrupts: &'i mut isr::Collected,
 }
@@ -299,8 +299,9 @@ impl TickHooks for EngineHooks<'_, '_> {
 
     fn trace_group(&mut self, ctx: &TickCtx, g: &mut GroupState) {
         if let Some(t) = self.trace.as_deref_mut().and_then(Option::as_mut) {
-            t.row(ctx.end_ns(), g);
-            t.group_events(ctx.end_ns(), g);
+            let t_ns = ctx.end_ns();
+            t.row(t_ns, g);
+            t.group_events(t_ns, g);
         }
     }
 
@@ -324,9 +325,10 @@ impl TickHooks for EngineHooks<'_, '_> {
 
     fn trace_machine(&mut self, ctx: &TickCtx, machine: &Machine, homed: Option<&HomeTick>) {
         if let Some(t) = self.trace.as_deref_mut().and_then(Option::as_mut) {
-            t.machine_events(ctx.end_ns(), machine);
+            let t_ns = ctx.end_ns();
+            t.machine_events(t_ns, machine);
             if let Some(h) = homed {
-                t.home_events(ctx.end_ns(), h.card, h.phase.0, h.phase.1, h.finished);
+                t.home_events(t_ns, h.card, h.phase.0, h.phase.1, h.finished);
             }
         }
     }
