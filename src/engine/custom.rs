@@ -5,9 +5,7 @@
 
 pub use mccl_core::engine::custom::*;
 
-use crate::vendor::{CUSTOM_CLEANUP, CUSTOM_START_MOTION};
 use std::cell::Cell;
-use std::os::raw::c_void;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 
 /// Custom motion commands alive anywhere (queued, running or awaiting cleanup): while
@@ -20,32 +18,14 @@ pub(in crate::engine) fn live() -> bool {
 }
 static NEXT_ID: AtomicU64 = AtomicU64::new(1);
 
-/// A spec with a fresh id, counted as alive until dropped ([`CustomSpec::new`]).
-#[allow(clippy::too_many_arguments)]
-pub fn new_spec(
-    start: CUSTOM_START_MOTION,
-    interp: Interp,
-    cleanup: CUSTOM_CLEANUP,
-    blending: Option<Blending>,
-    buffer: *mut c_void,
-    override_motion: bool,
-    mask: u32,
-    absolute: bool,
-) -> Option<CustomSpec> {
-    // No id is used up by a refused spec.
-    start?;
-    CustomSpec::new(
-        NEXT_ID.fetch_add(1, Ordering::Relaxed),
-        &LIVE,
-        start,
-        interp,
-        cleanup,
-        blending,
-        buffer,
-        override_motion,
-        mask,
-        absolute,
-    )
+/// A fresh id for a custom command ([`CustomSpec::new`]).
+pub fn next_id() -> u64 {
+    NEXT_ID.fetch_add(1, Ordering::Relaxed)
+}
+
+/// The count of custom commands alive that every [`CustomSpec`] is counted in.
+pub fn live_count() -> &'static AtomicUsize {
+    &LIVE
 }
 
 thread_local! {

@@ -3,7 +3,7 @@
 //! library's speed profile. The engine's side is in `engine/custom.rs`.
 
 use super::queue;
-use crate::engine::custom::{custom_interp, infinite_interp, Blending, Interp};
+use crate::engine::custom::{custom_interp, infinite_interp, Blending, CustomSpec, Interp};
 use crate::engine::group::custom::command;
 use crate::error::{McclError, McclResult};
 use crate::vendor::{
@@ -33,7 +33,9 @@ fn custom(
         return Err(McclError::Parameter);
     }
     queue(g, |ctx| {
-        let spec = crate::engine::custom::new_spec(
+        let spec = CustomSpec::new(
+            crate::engine::custom::next_id(),
+            crate::engine::custom::live_count(),
             start,
             interp,
             cleanup,
