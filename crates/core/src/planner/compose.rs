@@ -20,16 +20,30 @@ pub fn composed_length(start: &Axes, end: &Axes, mask: u32) -> f64 {
 
 /// The path (tangential) speed of axis velocities `vel` composed over `mask`, by the
 /// rule of [`composed_length`]: what `MCC_GetCurFeedSpeed` reports.
+///
+/// Inlined where it is called (every group's period computes it) as far as the default
+/// composition goes; the rest is out of line.
+#[inline]
 pub fn composed_speed(vel: &Axes, mask: u32) -> f64 {
+    if mask == XYZ_MASK {
+        let inside = xyz_norm(vel);
+        if inside > 0.0 {
+            return inside;
+        }
+    }
     composed_norm(vel, mask)
 }
 
-#[inline]
+/// The default composition, without the mask's branches: the same sum in the same order
+/// as [`composed_norm`]'s (0 + x² is x² exactly).
+#[inline(always)]
+fn xyz_norm(d: &Axes) -> f64 {
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+}
+
 fn composed_norm(d: &Axes, mask: u32) -> f64 {
     if mask == XYZ_MASK {
-        // The default composition, without the mask's branches: the same sum in the
-        // same order (0 + x² is x² exactly).
-        let inside = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        let inside = xyz_norm(d);
         if inside > 0.0 {
             return inside;
         }

@@ -35,7 +35,7 @@ pub use path_move::PathMove;
 pub use profile::Profile;
 pub use ptp::{ptp_axis_speed, PtpMove};
 pub use ramp::RateRamp;
-pub use ticks::{ramp_periods, smoothstep, whole_ms, TickProfile};
+pub use ticks::{periods_f64, ramp_periods, smoothstep, whole_ms, SteadyFraction, TickProfile};
 
 /// Positions (or velocities) of the eight axes X, Y, Z, U, V, W, A, B (index 0..8).
 pub type Axes = [f64; 8];

@@ -173,6 +173,15 @@ impl Path {
         p
     }
 
+    /// The line this path is, when it is one of some length: [`Path::point_at`] of a
+    /// fraction strictly between 0 and 1 is then [`LineSeg::axis_at`] of every axis.
+    pub fn as_line(&self) -> Option<&LineSeg> {
+        match self {
+            Path::Line(l) if l.length > 0.0 => Some(l),
+            _ => None,
+        }
+    }
+
     /// The point at fraction `f` of the path (0 the start, 1 the end): [`Path::point`]
     /// of `f·length()`, computed from the fraction itself (a line: `start + delta·f`), as
     /// the vendor's library computes it.
@@ -188,8 +197,8 @@ impl Path {
         match self {
             Path::Cone(c) => return c.point(f * len),
             Path::Line(l) => {
-                for i in 0..NUM_AXES {
-                    p[i] = start[i] + l.delta[i] * f;
+                for (i, pi) in p.iter_mut().enumerate() {
+                    *pi = l.axis_at(i, f);
                 }
             }
             Path::Arc(a) | Path::Helix(a) => {

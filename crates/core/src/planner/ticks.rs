@@ -294,6 +294,24 @@ impl TickProfile {
         self.units(k) / total
     }
 
+    /// The periods at the constant speed, before the last period (which reaches 1), as a
+    /// [`SteadyFraction`]; `None` when there are none or the profile has no distance in
+    /// units (its fractions are then periods over periods).
+    pub fn steady(&self) -> Option<SteadyFraction> {
+        let total = self.total_units;
+        if total.is_nan() || total <= 0.0 {
+            return None;
+        }
+        let na = u64::from(self.na);
+        let last = self.decel_start().min(self.periods().saturating_sub(1));
+        (last > na).then_some(SteadyFraction {
+            acc_units: self.acc_units,
+            na,
+            last,
+            total_units: total,
+        })
+    }
+
     /// The distance after `k` periods in units of one period at the constant speed.
     #[inline]
     fn units(&self, k: u64) -> f64 {
@@ -307,11 +325,60 @@ impl TickProfile {
             return u0 * kf + (1.0 - u0) * ramp_units(self.acc, f64::from(self.na), kf);
         }
         if k <= na + self.nc {
-            return acc_units + (k - na) as f64;
+            return steady_units(acc_units, k - na);
         }
         let n = self.periods();
         let end = acc_units + self.nc as f64 + 0.5 * f64::from(self.nd);
         end - ramp_units(self.dec, f64::from(self.nd), (n - k) as f64)
+    }
+}
+
+/// The units of distance after `at_speed` periods at the constant speed that follow
+/// `acc_units` of acceleration: [`TickProfile::fraction`] and [`SteadyFraction::at`] both
+/// compute it here, so they give the same doubles.
+#[inline(always)]
+fn steady_units(acc_units: f64, at_speed: u64) -> f64 {
+    acc_units + periods_f64(at_speed)
+}
+
+/// A count of periods as a double: `n as f64` exactly, in one signed conversion for
+/// counts below 2^63 (all of them in practice), where x86-64 converts an unsigned one in
+/// several instructions. Every cruise period converts counts.
+#[inline(always)]
+pub fn periods_f64(n: u64) -> f64 {
+    match i64::try_from(n) {
+        Ok(i) => i as f64,
+        Err(_) => n as f64,
+    }
+}
+
+/// The periods of a profile at its constant speed ([`TickProfile::steady`]), whose
+/// fractions ([`TickProfile::fraction`]) are a sum and a division each: what a period
+/// along them computes without asking where on the profile it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyFraction {
+    acc_units: f64,
+    na: u64,
+    last: u64,
+    total_units: f64,
+}
+
+impl SteadyFraction {
+    /// The fraction after `k` periods, `k` in `first()..=last()`: exactly
+    /// [`TickProfile::fraction`] of `k`.
+    #[inline(always)]
+    pub fn at(&self, k: u64) -> f64 {
+        steady_units(self.acc_units, k.wrapping_sub(self.na)) / self.total_units
+    }
+
+    /// The first period it covers.
+    pub fn first(&self) -> u64 {
+        self.na + 1
+    }
+
+    /// The last period it covers.
+    pub fn last(&self) -> u64 {
+        self.last
     }
 }
 

@@ -19,6 +19,23 @@ pub struct LineSeg {
 }
 
 impl LineSeg {
+    /// Axis `i` (below [`NUM_AXES`]) at fraction `f` of the line, `f` strictly between 0
+    /// and 1: `start + delta·f`, as [`Path::point_at`] computes it.
+    #[inline(always)]
+    pub fn axis_at(&self, i: usize, f: f64) -> f64 {
+        self.start[i] + self.delta[i] * f
+    }
+
+    /// Where the line starts.
+    pub fn start(&self) -> &Axes {
+        &self.start
+    }
+
+    /// `end − start`, per axis.
+    pub fn delta(&self) -> &Axes {
+        &self.delta
+    }
+
     /// [`Path::point_velocity_into`] for this line.
     #[inline(always)]
     pub(super) fn point_velocity_into(&self, s: f64, v: f64, pos: &mut Axes, vel: &mut Axes) {
