@@ -16,11 +16,13 @@ use code::code_of;
 
 use std::path::{Path, PathBuf};
 
-/// The steps of a tick, as called: a group's period, its channels commanded, the
-/// machine's channels stepped or deferred, the safety checks.
+/// The steps of a tick, as called: a group's period, its channels commanded (all, or
+/// along a cruise plan's line the moving axes' alone), the machine's channels stepped or
+/// deferred, the safety checks.
 const STEPS: &[&str] = &[
     ".cruise_period(",
     ".command_channels(",
+    ".command_moving_channels(",
     "defer_idle_card(",
     ".step_commanded(",
     ".set_deferred(",

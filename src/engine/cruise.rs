@@ -96,7 +96,7 @@ impl Shared {
         let h = &mut *held;
         card_tick::cruise_ahead(
             &h.machine,
-            &h.groups,
+            &mut h.groups,
             &mut h.state,
             self.clock.period_s(),
             self.limit_check(),

@@ -91,6 +91,13 @@ pub fn whole_pulses(x: f64) -> i64 {
     }
 }
 
+/// The pulses of an axis at position `pos` (user coordinates) with its reference
+/// `offset` and pulses per UU `factor`: [`whole_pulses`] of the reference position.
+#[inline(always)]
+pub fn axis_pulses(pos: f64, offset: f64, factor: f64) -> i64 {
+    whole_pulses((pos + offset) * factor)
+}
+
 /// A pulse count in user units: what `MCC_GetCurPos` reads (the vendor's library reports
 /// whole pulses); a position of an axis with no pulses per unit stays as it is.
 #[inline]

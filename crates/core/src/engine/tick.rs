@@ -194,7 +194,10 @@ pub fn tick<const PLAN: bool, H: TickHooks>(
         }
         // Dry run: the plan runs, nothing is sent to the channels (§2.6.3 IV).
         if !ctx.dry_run {
-            g.command_channels(machine.cards_mut());
+            // A cruise period along a line commands the moving axes' channels alone.
+            if !(cruise && g.command_moving_channels(machine.cards_mut())) {
+                g.command_channels(machine.cards_mut());
+            }
             if !cruise && (machine.compensating() || g.comp_pulses() != [0; AXES]) {
                 g.read_compensation(machine.cards_mut());
                 hooks.compensation(g);
@@ -299,10 +302,11 @@ pub fn tick<const PLAN: bool, H: TickHooks>(
 /// `state`), no safety check reading the channels (`limit_mode`, −1 off), every group
 /// quiet that far ahead ([`GroupState::quiet_ticks_ahead`]). 0: the next is not. What
 /// only other threads change (a routine, the trace, a view asked for) is the caller's to
-/// rule out.
+/// rule out. For the ticks it finds, each group copies what its periods along a line
+/// compute from ([`GroupState::prepare_cruise`]).
 pub fn cruise_ahead(
     machine: &Machine,
-    groups: &[GroupState],
+    groups: &mut [GroupState],
     state: &mut TickState,
     dt: f64,
     limit_mode: i32,
@@ -317,11 +321,14 @@ pub fn cruise_ahead(
         }
     }
     let mut ahead = most;
-    for g in groups {
+    for g in groups.iter() {
         ahead = ahead.min(g.quiet_ticks_ahead(dt, ahead));
         if ahead == 0 {
-            break;
+            return 0;
         }
+    }
+    for g in groups.iter_mut() {
+        g.prepare_cruise(dt, ahead);
     }
     ahead
 }

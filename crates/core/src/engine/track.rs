@@ -3,7 +3,7 @@
 //! what is left of it (the vendor's library, measured: docs/decisions.md "Motion as the
 //! vendor's library runs it").
 
-use crate::planner::{Shape, TickProfile};
+use crate::planner::{Shape, SteadyFraction, TickProfile};
 
 /// Where a track is on its profile, as `COMMAND_INFO.nMotionPhase` shows it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -109,6 +109,23 @@ impl Track {
         }
     }
 
+    /// The periods of its first plan at the constant speed, when it runs that plan
+    /// ([`TickProfile::steady`]): [`Track::fraction`] after `k` periods is then
+    /// [`SteadyFraction::at`] of `k`, for `k` inside them.
+    pub fn steady(&self) -> Option<SteadyFraction> {
+        if self.s0 == 0.0 && self.profile.len() == self.len {
+            self.profile.steady()
+        } else {
+            None
+        }
+    }
+
+    /// Periods of the running stretch done.
+    #[inline]
+    pub fn periods_done(&self) -> u64 {
+        self.k
+    }
+
     /// Whether the running stretch has ended.
     #[inline]
     pub fn stretch_done(&self) -> bool {
@@ -118,6 +135,15 @@ impl Track {
     /// Whether the whole length is covered (and the stretch ended).
     pub fn arrived(&self) -> bool {
         self.stretch_done() && self.s0 + self.profile.len() >= self.len
+    }
+
+    /// [`Track::step`] of a track whose running stretch has not ended (a plan made
+    /// sure): it moves one period on.
+    #[inline(always)]
+    pub fn step_within(&mut self) {
+        debug_assert!(!self.stretch_done(), "the stretch runs on");
+        self.prev = Prev::PeriodBefore;
+        self.k += 1;
     }
 
     /// Moves one period on. Returns whether it moved.

@@ -59,6 +59,8 @@ pub(super) struct Execution {
     pub(super) offset: Axes,
     /// Compensation pulses per axis ([`GroupState::read_compensation`]).
     pub(super) comp: [i32; AXES],
+    /// What the cruise plan's periods along a line compute from (`group/cruise.rs`).
+    pub(super) cruise: Option<super::cruise::CruiseLine>,
 }
 
 impl Execution {
@@ -78,6 +80,7 @@ impl Execution {
             vel: [0.0; AXES],
             offset: [0.0; AXES],
             comp: [0; AXES],
+            cruise: None,
         }
     }
 }
@@ -102,6 +105,8 @@ impl GroupState {
     /// One interpolation period of `dt` seconds.
     pub fn tick(&mut self, dt: f64) {
         self.exec.lag_shown = false;
+        // Only cruise periods follow a cruise plan's line.
+        self.exec.cruise = None;
         if self.exec.running.is_empty()
             && self.queued.commands.is_empty()
             && self.exec.jump.is_none()
@@ -412,7 +417,7 @@ impl GroupState {
         self.exec.lag_shown = false;
         if self.exec.running.is_empty() {
             self.vel_hold_idle();
-        } else if !self.one_path_period(dt, false) {
+        } else if !self.cruise_line_period(dt) && !self.one_path_period(dt, false) {
             self.tick(dt);
         }
         #[cfg(debug_assertions)]
@@ -425,7 +430,7 @@ impl GroupState {
     /// The period of [`GroupState::tick_one_path`]; `status`: whether to update the
     /// status (a cruise period knows it stays).
     #[inline(always)]
-    fn one_path_period(&mut self, dt: f64, status: bool) -> bool {
+    pub(super) fn one_path_period(&mut self, dt: f64, status: bool) -> bool {
         let (Some(r), 1) = (self.exec.running.front(), self.exec.running.len()) else {
             return false;
         };

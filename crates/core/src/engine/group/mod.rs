@@ -31,6 +31,7 @@ use crate::vendor::consts as c;
 
 mod commanded;
 mod control;
+mod cruise;
 pub mod custom;
 mod emitted;
 mod execution;

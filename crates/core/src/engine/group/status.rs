@@ -8,7 +8,7 @@ use super::GroupState;
 use super::Mode;
 use crate::config::AXES;
 use crate::engine::command::ctype;
-use crate::engine::snapshot::{whole_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
+use crate::engine::snapshot::{axis_pulses, GroupSnapshot, Info, Motion, SnapshotCell};
 use crate::machine::Channel;
 use crate::vendor::consts as c;
 use crate::vendor::COMMAND_INFO;
@@ -120,7 +120,7 @@ impl GroupState {
     /// offset) times the pulses per UU, rounded halves away from zero.
     #[inline]
     fn pulses_at(&self, i: usize, pos: f64) -> i64 {
-        whole_pulses((pos + self.exec.offset[i]) * self.mech.axes[i].factor)
+        axis_pulses(pos, self.exec.offset[i], self.mech.axes[i].factor)
     }
 
     /// Commands the channels this group commands (`commanded`: axes each with a channel
