@@ -288,12 +288,19 @@ impl TickHooks for EngineHooks<'_, '_> {
         self.shared.publish_or_status(g, full);
     }
 
+    /// The motion part when `full`; a status, which a cruise period leaves as it is, is
+    /// published already (by the tick before the plan, or the one before that).
     #[inline(always)]
     fn publish_cruise(&mut self, g: &GroupState, full: bool) {
         if full {
             self.shared.publish_motion(g);
         } else {
-            self.shared.store_status(g);
+            debug_assert_eq!(
+                self.shared.published_status(g.index()),
+                Some(g.status()),
+                "group {}: the status a cruise period keeps is published",
+                g.index()
+            );
         }
     }
 

@@ -438,6 +438,12 @@ impl Shared {
         }
     }
 
+    /// The status published for the group at `index`.
+    pub(super) fn published_status(&self, index: usize) -> Option<i32> {
+        let s = self.published.status.get(index)?;
+        Some(s.load(Ordering::Acquire))
+    }
+
     /// Stores a group's status where status calls read it without the snapshot.
     #[inline(always)]
     pub(super) fn store_status(&self, g: &GroupState) {

@@ -108,7 +108,7 @@ pub trait TickHooks {
     #[inline(always)]
     fn publish(&mut self, _g: &mut GroupState, _full: bool) {}
     /// Group `g` after a cruise period (its info known unchanged): its motion when
-    /// `full`, else its status.
+    /// `full`. Its status, which a cruise period keeps, was published before the plan.
     #[inline(always)]
     fn publish_cruise(&mut self, _g: &GroupState, _full: bool) {}
     /// Group `g`'s row and events at the end of the tick `ctx` (while tracing).
