@@ -63,6 +63,9 @@ pub struct TickState {
     /// How many more ticks the groups cruise for certain, as planned since the last tick
     /// that was not a cruise tick.
     cruise: u32,
+    /// Per card, the channels its cruise ticks pass over (bit n for channel n): those at
+    /// rest that no group commands ([`cruise_ahead`]).
+    quiet: [u8; CARDS],
 }
 
 impl TickState {
@@ -76,6 +79,13 @@ impl TickState {
     #[inline]
     pub fn cruise_left(&self) -> u32 {
         self.cruise
+    }
+
+    /// The channels of `card` its cruise ticks pass over: at rest, and commanded by no
+    /// group.
+    #[inline]
+    fn quiet_channels(&self, card: usize) -> u8 {
+        self.quiet.get(card).copied().unwrap_or(0)
     }
 
     /// The next `ticks` ticks are cruise ticks for certain, as a plan found; any tick
@@ -245,7 +255,12 @@ pub fn tick<const PLAN: bool, H: TickHooks>(
         let idle = cruise || state.card_idle(card, || !triggers.armed(&settings.error_threshold));
         // Whether a channel of the card stepped (its index pulses to note).
         let stepped = if defer && idle {
-            let (stepped, now) = defer_idle_card(chans, recorded.card(card), dt, n);
+            let quiet = if cruise {
+                state.quiet_channels(card)
+            } else {
+                0
+            };
+            let (stepped, now) = defer_idle_card(chans, recorded.card(card), quiet, dt, n);
             recording.set_card(card, now);
             deferred = true;
             stepped
@@ -303,7 +318,8 @@ pub fn tick<const PLAN: bool, H: TickHooks>(
 /// quiet that far ahead ([`GroupState::quiet_ticks_ahead`]). 0: the next is not. What
 /// only other threads change (a routine, the trace, a view asked for) is the caller's to
 /// rule out. For the ticks it finds, each group copies what its periods along a line
-/// compute from ([`GroupState::prepare_cruise`]).
+/// compute from ([`GroupState::prepare_cruise`]), and `state` notes the channels that
+/// stand (at rest, commanded by no group), which those ticks pass over.
 pub fn cruise_ahead(
     machine: &Machine,
     groups: &mut [GroupState],
@@ -327,18 +343,40 @@ pub fn cruise_ahead(
             return 0;
         }
     }
+    // The channels no group commands, at rest: nothing changes them while the groups
+    // cruise.
+    let mut commanded = [0u8; CARDS];
     for g in groups.iter_mut() {
         g.prepare_cruise(dt, ahead);
+        let (card, mask) = g.commanded_channels();
+        if let Some(c) = commanded.get_mut(card) {
+            *c |= mask;
+        }
+    }
+    state.quiet = [0; CARDS];
+    for ((quiet, chans), commanded) in state.quiet.iter_mut().zip(machine.cards()).zip(commanded) {
+        for (ch, chan) in chans.iter().enumerate() {
+            if commanded >> ch & 1 == 0 && chan.stays_at_rest(dt) {
+                *quiet |= 1 << ch;
+            }
+        }
     }
     ahead
 }
 
 /// The steps of an idle card's channels on a tick that defers, tick `n` of `dt`: the
 /// channels that recorded at the last tick (`known`, bit n for channel n) record again
-/// without asking; the others step or start recording. Returns whether a channel stepped
+/// without asking; those of `quiet` (at rest, commanded by no group, on a cruise tick) are
+/// passed over; the others step or start recording. Returns whether a channel stepped
 /// (its index pulses to note) and the channels recording now.
 #[inline(always)]
-fn defer_idle_card(chans: &mut [Channel; AXES], known: u8, dt: f64, n: u64) -> (bool, u8) {
+fn defer_idle_card(
+    chans: &mut [Channel; AXES],
+    known: u8,
+    quiet: u8,
+    dt: f64,
+    n: u64,
+) -> (bool, u8) {
     let (mut stepped, mut now) = (false, known);
     if known == 0xFF {
         // Every channel records (the card's whole machine moving): a loop of its own,
@@ -348,15 +386,24 @@ fn defer_idle_card(chans: &mut [Channel; AXES], known: u8, dt: f64, n: u64) -> (
             chan.record_step(n);
         }
     } else {
-        for (ch, chan) in chans.iter_mut().enumerate() {
-            if known >> ch & 1 == 1 {
-                chan.record_step(n);
-            } else {
-                stepped |= chan.step_or_defer(dt, n);
-                if chan.deferring() {
-                    now |= 1 << ch;
-                }
+        debug_assert!(
+            (0..AXES).all(|ch| quiet >> ch & 1 == 0 || chans[ch].stays_at_rest(dt)),
+            "a quiet channel stays at rest"
+        );
+        // The channels of each kind, one set bit at a time (channels do not meet).
+        let mut record = known;
+        while record != 0 {
+            chans[record.trailing_zeros() as usize % AXES].record_step(n);
+            record &= record - 1;
+        }
+        let mut ask = !(known | quiet);
+        while ask != 0 {
+            let ch = ask.trailing_zeros() as usize % AXES;
+            stepped |= chans[ch].step_or_defer(dt, n);
+            if chans[ch].deferring() {
+                now |= 1 << ch;
             }
+            ask &= ask - 1;
         }
     }
     (stepped, now)

@@ -66,6 +66,11 @@ impl Commanded {
         self.len == 0
     }
 
+    /// The channels, one bit each (bit n for channel n).
+    pub fn channel_mask(&self) -> u8 {
+        self.pairs().fold(0, |m, (_, ch)| m | 1 << ch)
+    }
+
     /// The card of the channels.
     pub fn card(&self) -> usize {
         usize::from(self.card)

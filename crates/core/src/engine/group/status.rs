@@ -123,6 +123,13 @@ impl GroupState {
         axis_pulses(pos, self.exec.offset[i], self.mech.axes[i].factor)
     }
 
+    /// The card of the channels this group commands and those channels, one bit each
+    /// (what [`GroupState::command_channels`] may set).
+    pub fn commanded_channels(&self) -> (usize, u8) {
+        let c = &self.mech.commanded;
+        (c.card(), c.channel_mask())
+    }
+
     /// Commands the channels this group commands (`commanded`: axes each with a channel
     /// of its card) with their axes' pulses this tick ([`GroupState::pulses`]); `cards`
     /// are the machine's channels. A card not in `cards` is passed over.

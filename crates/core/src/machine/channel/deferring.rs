@@ -21,6 +21,13 @@ impl Channel {
         }
     }
 
+    /// Whether [`Channel::step_or_defer`] of `dt` would change nothing as long as its
+    /// command stays: an ideal channel not deferring, at rest at its command.
+    #[inline]
+    pub fn stays_at_rest(&self, dt: f64) -> bool {
+        self.step.ideal() && !self.deferred.active && self.step.rests_at(self.step.next(), dt)
+    }
+
     /// Records a step of `dt` to the command set this tick instead of making it (a channel
     /// at rest held at its command records nothing, as it would not step). Nothing of
     /// the channel moves on: its output, command and motor follow the recorded steps
