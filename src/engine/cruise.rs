@@ -28,9 +28,9 @@ use super::tick::{Held, PUBLISH_EVERY};
 use mccl_core::engine::tick as card_tick;
 use std::sync::atomic::Ordering;
 
-/// The most ticks one plan covers: the plan costs a few operations a group a tick at this
-/// length.
-const PLAN_TICKS: u32 = 64;
+/// The most ticks one plan covers: the plan (which copies each group's line,
+/// `GroupState::prepare_cruise`) costs about one operation a group a tick at this length.
+const PLAN_TICKS: u32 = 256;
 
 /// After a plan that found no cruise tick ahead, the quiet ticks that pass before the next
 /// plan: a group that cannot cruise (starting, blending, ramping its rate, checking its
