@@ -31,7 +31,11 @@ const STEPS: &[&str] = &[
 
 /// What the engine's hooks do for the tick: the peripherals, the publication of a
 /// cruising group, the go home.
-const HOOKED: &[&str] = &[".tick_peripherals(", ".publish_motion(", ".tick_homing("];
+const HOOKED: &[&str] = &[
+    ".tick_peripherals(",
+    ".publish_cruise_motion(",
+    ".tick_homing(",
+];
 
 /// Who runs a tick: the engine and the core's card.
 const RUN: &str = "tick::<";

@@ -291,17 +291,16 @@ impl TickHooks for EngineHooks<'_, '_> {
     /// The motion part when `full`; a status, which a cruise period leaves as it is, is
     /// published already (by the tick before the plan, or the one before that).
     #[inline(always)]
-    fn publish_cruise(&mut self, g: &GroupState, full: bool) {
+    fn publish_cruise(&mut self, g: &mut GroupState, full: bool) {
         if full {
-            self.shared.publish_motion(g);
-        } else {
-            debug_assert_eq!(
-                self.shared.published_status(g.index()),
-                Some(g.status()),
-                "group {}: the status a cruise period keeps is published",
-                g.index()
-            );
+            self.shared.publish_cruise_motion(g);
         }
+        debug_assert_eq!(
+            self.shared.published_status(g.index()),
+            Some(g.status()),
+            "group {}: the status a cruise period keeps is published",
+            g.index()
+        );
     }
 
     fn trace_group(&mut self, ctx: &TickCtx, g: &mut GroupState) {

@@ -412,20 +412,20 @@ impl Shared {
             .ok_or(McclError::Group)
     }
 
-    /// Publishes the motion part and the status of a group whose info is known unchanged
-    /// since it was published (its key holds; call with its lock held): what
-    /// [`Shared::publish`] does then, without looking.
+    /// Publishes the motion part of a group after a cruise period (call with its lock
+    /// held): its info is known unchanged since it was published (its key holds), and
+    /// its status too (a cruise period keeps it), so what [`Shared::publish`] does then,
+    /// without looking: the motion part ([`GroupState::store_cruise_motion`]).
     #[inline(always)]
-    pub fn publish_motion(&self, g: &GroupState) {
+    pub fn publish_cruise_motion(&self, g: &mut GroupState) {
         debug_assert!(
             g.published_key_holds(),
             "group {}: info unchanged",
             g.index()
         );
         if let Some(cell) = self.published.snaps.get(g.index()) {
-            g.store_motion(cell);
+            g.store_cruise_motion(cell);
         }
-        self.store_status(g);
     }
 
     /// Publishes `g` on a tick that publishes everything, else its status.

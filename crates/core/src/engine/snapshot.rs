@@ -2,6 +2,7 @@
 //! engine: a sequence lock over plain atomic words (one writer at a time: whoever holds
 //! the group's lock; any number of readers, which retry while a write is in progress).
 
+use crate::config::AXES;
 use crate::planner::Axes;
 use crate::vendor::COMMAND_INFO;
 use std::sync::atomic::{fence, AtomicU64, Ordering};
@@ -301,6 +302,22 @@ impl SnapshotCell {
         self.motion.store_by(|w| {
             w[0].store(status as u32 as u64, Ordering::Relaxed);
             for k in 0..8 {
+                w[1 + k].store(pos[k].to_bits(), Ordering::Relaxed);
+                w[9 + k].store(vel[k].to_bits(), Ordering::Relaxed);
+            }
+            w[17].store(feed.to_bits(), Ordering::Relaxed);
+        });
+    }
+
+    /// Publishes the words of the motion part that a period of `axes` alone changes:
+    /// their positions and speeds (of `pos` and `vel`) and the feed speed. The status
+    /// and the other axes' words stay as the last publication left them, which must be
+    /// this motion's. Callers must be serialised.
+    #[inline]
+    pub fn store_moving_parts(&self, axes: &[u8], pos: &Axes, vel: &Axes, feed: f64) {
+        self.motion.store_by(|w| {
+            for &a in axes {
+                let k = usize::from(a) % AXES;
                 w[1 + k].store(pos[k].to_bits(), Ordering::Relaxed);
                 w[9 + k].store(vel[k].to_bits(), Ordering::Relaxed);
             }

@@ -120,7 +120,7 @@ pub trait TickHooks {
     /// Group `g` after a cruise period (its info known unchanged): its motion when
     /// `full`. Its status, which a cruise period keeps, was published before the plan.
     #[inline(always)]
-    fn publish_cruise(&mut self, _g: &GroupState, _full: bool) {}
+    fn publish_cruise(&mut self, _g: &mut GroupState, _full: bool) {}
     /// Group `g`'s row and events at the end of the tick `ctx` (while tracing).
     fn trace_group(&mut self, _ctx: &TickCtx, _g: &mut GroupState) {}
     /// Whether this tick copies a view of the card for an observer (decided once, so

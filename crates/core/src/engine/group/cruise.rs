@@ -10,7 +10,7 @@ use super::GroupState;
 use crate::config::AXES;
 
 use crate::engine::command::Plan;
-use crate::engine::snapshot::axis_pulses;
+use crate::engine::snapshot::{axis_pulses, SnapshotCell};
 use crate::machine::Channel;
 use crate::planner::compose::{composed_speed, XYZ_MASK};
 use crate::planner::{periods_f64, Axes, LineSeg, SteadyFraction};
@@ -65,6 +65,9 @@ pub(super) struct CruiseLine {
     channels: [Commanding; AXES],
     commanding: u8,
     all_commanded: bool,
+    /// Whether a period of the plan has published the whole motion part (from then on
+    /// only the moving axes' words and the feed speed change).
+    all_published: bool,
 }
 
 impl CruiseLine {
@@ -174,6 +177,7 @@ impl GroupState {
             channels: [Commanding::default(); AXES],
             commanding: 0,
             all_commanded: false,
+            all_published: false,
         };
         for i in 0..AXES {
             if self.exec.base[i] != line.start()[i] {
@@ -229,6 +233,33 @@ impl GroupState {
             chans[usize::from(c.channel) % AXES].command(axis_pulses(pos, c.offset, c.factor));
         }
         true
+    }
+
+    /// Publishes the motion part after a cruise period ([`GroupState::store_motion`]):
+    /// along a cruise plan's line, once a period of the plan has published all of it,
+    /// only the words a period changes (the moving axes' and the feed speed).
+    #[inline(always)]
+    pub fn store_cruise_motion(&mut self, cell: &SnapshotCell) {
+        match &mut self.exec.cruise {
+            Some(plan) if plan.all_published => {
+                let moving = &plan.axes[..usize::from(plan.moving).min(AXES)];
+                cell.store_moving_parts(moving, &self.exec.pos, &self.exec.vel, self.exec.feed_now);
+                // What readers find is all of the motion (the status too), to the bit.
+                #[cfg(debug_assertions)]
+                {
+                    let bits = |m: &crate::engine::snapshot::Motion| {
+                        let (p, v) = (m.pos.map(f64::to_bits), m.vel.map(f64::to_bits));
+                        (m.status, p, v, m.feed.to_bits())
+                    };
+                    assert_eq!(bits(&cell.load_motion()), bits(&self.motion()));
+                }
+            }
+            Some(plan) => {
+                plan.all_published = true;
+                self.store_motion(cell);
+            }
+            None => self.store_motion(cell),
+        }
     }
 
     /// A cruise period along the line of [`GroupState::prepare_cruise`]: what
