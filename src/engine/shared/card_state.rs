@@ -18,7 +18,7 @@ impl Shared {
 
     /// Number of cards passed to `MCC_InitSystem`.
     pub fn cards(&self) -> usize {
-        self.periph.len()
+        self.periph.cells().len()
     }
 
     /// The peripherals of card `card` (timer, watchdog, converters, remote I/O), if any.
@@ -28,7 +28,7 @@ impl Shared {
 
     /// The peripherals of every card, in card order.
     pub fn periphs(&self) -> &[PeriphCell] {
-        &self.periph
+        self.periph.cells()
     }
 
     /// What an observer (the browser panel) sees beyond the snapshots.

@@ -26,14 +26,15 @@ impl Shared {
         groups: &mut [crate::engine::group::GroupState],
     ) -> bool {
         out.clear();
+        // The idle cards' tick, counted for all of them at once; it runs when a card is
+        // next locked (see `PeriphCells`).
+        let counted = self.periph.count_idle_tick();
         let mut idle = true;
-        for (card, p) in self.periph.iter().enumerate() {
-            if p.count_idle_tick() {
-                // Runs when the card is next locked (see `PeriphCell`).
-                continue;
+        for (card, p) in self.periph.cells().iter().enumerate() {
+            if counted >> card & 1 == 0 {
+                idle = false;
+                self.tick_busy_card(card, p, dt_ns, out, groups);
             }
-            idle = false;
-            self.tick_busy_card(card, p, dt_ns, out, groups);
         }
         idle
     }

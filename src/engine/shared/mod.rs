@@ -40,7 +40,7 @@ pub struct Shared {
     /// ([`super::running`]), lets them go at the next tick when this is not 0.
     pub(super) lock_wanted: AtomicU32,
     /// Timer, watchdog, DAC, ADC and remote I/O per card (`crate::card`).
-    pub(super) periph: Vec<crate::card::PeriphCell>,
+    pub(super) periph: crate::card::PeriphCells,
     /// What an observer (the browser panel) sees beyond the snapshots (`view.rs`).
     pub(super) view: super::view::ViewCell,
     /// The running groups.
@@ -208,9 +208,7 @@ impl Shared {
             tick_len_ns: tick_ns(period),
             machine: Mutex::new(machine),
             lock_wanted: AtomicU32::new(0),
-            periph: (0..cards)
-                .map(|_| crate::card::PeriphCell::new(tick_ns(period)))
-                .collect(),
+            periph: crate::card::PeriphCells::new(cards, tick_ns(period)),
             view: super::view::ViewCell::default(),
             table: GroupTable {
                 slots,

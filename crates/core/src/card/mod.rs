@@ -1,7 +1,8 @@
 //! The card's peripherals that do not depend on the simulated machine: timer and
 //! watchdog, D/A and A/D converters, remote I/O; and the interrupt causes raised on the
 //! card (the library's engine delivers them to the program's routines). One
-//! [`Peripherals`] per card, behind its own mutex ([`PeriphCell`]).
+//! [`Peripherals`] per card, behind its own mutex ([`PeriphCell`]); every card's together
+//! with the word that counts the engine's ticks of the idle ones ([`PeriphCells`]).
 //!
 //! Lock order: a group's lock may be held while a card's peripherals are locked (the
 //! encoder compare of a group's tick calls [`Peripherals::dac_trigger`]), never the
@@ -9,6 +10,7 @@
 
 pub mod adc;
 pub mod cadence;
+mod cell;
 pub mod dac;
 pub mod handshake;
 pub mod rio;
@@ -21,11 +23,10 @@ pub const SYSTEM_CLOCK_NS: u64 = 10;
 use crate::config::AXES;
 use crate::interrupt::{Interrupt, Pending};
 use adc::{Adc, AdcSource};
+pub use cell::{PeriphCell, PeriphCells, PeriphGuard};
 use dac::Dac;
 use handshake::Handshake;
-use parking_lot::{Mutex, MutexGuard};
 use rio::Master;
-use std::sync::atomic::{AtomicU64, Ordering};
 use timer::{Timer, Watchdog};
 
 /// The peripherals of one card.
@@ -205,190 +206,9 @@ impl Peripherals {
     }
 }
 
-/// One card's [`Peripherals`] behind their mutex, and what lets the engine skip the tick
-/// of an idle card without taking the lock.
-///
-/// `state` holds `IDLE` when the peripherals were [idle](Peripherals::idle) as last
-/// unlocked, and in its other bits the ticks the engine counted instead of running since
-/// (an idle tick only moves the ARIO cycle timing). Whoever locks takes the count and runs
-/// those ticks first (`Peripherals::idle_ticks`), so every holder of the lock sees the
-/// state an engine ticking every card would have made. Both sides change `state` with one
-/// atomic operation: a tick counted before a lock is run by that lock before its holder
-/// changes anything; once the lock has taken the count (and cleared `IDLE`) the engine
-/// counts no more and ticks the card under the lock.
-#[derive(Debug)]
-pub struct PeriphCell {
-    periph: Mutex<Peripherals>,
-    state: AtomicU64,
-    /// The tick length the counted ticks have, ns.
-    dt_ns: u64,
-}
-
-/// [`PeriphCell::state`]: the peripherals are idle.
-const IDLE: u64 = 1 << 63;
-
-impl PeriphCell {
-    /// Default peripherals, for an engine whose ticks last `dt_ns`.
-    pub fn new(dt_ns: u64) -> PeriphCell {
-        PeriphCell {
-            periph: Mutex::new(Peripherals::default()),
-            state: AtomicU64::new(0),
-            dt_ns,
-        }
-    }
-
-    /// Locks the peripherals (after running the ticks counted while they were idle).
-    pub fn lock(&self) -> PeriphGuard<'_> {
-        let mut periph = self.periph.lock();
-        let n = self.state.swap(0, Ordering::AcqRel) & !IDLE;
-        if n > 0 {
-            periph.idle_ticks(n, self.dt_ns);
-        }
-        PeriphGuard { cell: self, periph }
-    }
-
-    /// The engine's tick of an idle card: counts it instead of running it and returns
-    /// true; false (nothing counted) when the card is not idle or is locked.
-    pub fn count_idle_tick(&self) -> bool {
-        let mut s = self.state.load(Ordering::Acquire);
-        loop {
-            // Not idle, or (never in practice) the count is full: tick under the lock.
-            if s & IDLE == 0 || s & !IDLE == !IDLE {
-                return false;
-            }
-            match self
-                .state
-                .compare_exchange_weak(s, s + 1, Ordering::AcqRel, Ordering::Acquire)
-            {
-                Ok(_) => return true,
-                Err(now) => s = now,
-            }
-        }
-    }
-}
-
-/// The locked peripherals of a [`PeriphCell`]; unlocking records whether they are idle.
-#[derive(Debug)]
-pub struct PeriphGuard<'a> {
-    cell: &'a PeriphCell,
-    periph: MutexGuard<'a, Peripherals>,
-}
-
-impl std::ops::Deref for PeriphGuard<'_> {
-    type Target = Peripherals;
-    fn deref(&self) -> &Peripherals {
-        &self.periph
-    }
-}
-
-impl std::ops::DerefMut for PeriphGuard<'_> {
-    fn deref_mut(&mut self) -> &mut Peripherals {
-        &mut self.periph
-    }
-}
-
-impl Drop for PeriphGuard<'_> {
-    fn drop(&mut self) {
-        // Still locked here (the mutex guard drops after this).
-        let idle = if self.periph.idle() { IDLE } else { 0 };
-        self.cell.state.store(idle, Ordering::Release);
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The same change made to both copies.
-    fn change(p: &mut Peripherals, k: u64) {
-        fn rio(p: &mut Peripherals, set: usize) -> &mut rio::Set<{ rio::RIO_PORTS }> {
-            p.rio.rio_set_mut(set).unwrap()
-        }
-        fn ario(p: &mut Peripherals, set: usize) -> &mut rio::Set<{ rio::ARIO_SLAVES }> {
-            p.rio.ario_set_mut(set).unwrap()
-        }
-        let set = (k / 16 % 2) as usize;
-        let slave = (k / 32 % 4) as u16;
-        match k % 20 {
-            0 => p.rio.set_ario_update_rate(set, 300.0).unwrap(),
-            1 => p.rio.set_ario_update_rate(set, 1700.0).unwrap(),
-            2 => p.rio.set_ario_clock_divider(set, 2000).unwrap(),
-            3 => p.rio.set_ario_node_delay(3000),
-            4 | 5 => ario(p, set).set_slave_control(slave, true).unwrap(),
-            6..=8 => ario(p, set).set_slave_control(slave, false).unwrap(),
-            9 => ario(p, set).set_output(slave, (k >> 8) as u16).unwrap(),
-            10 => {
-                let on = p.rio.rio_sets()[set].control();
-                p.rio.set_rio_control(set, !on).unwrap();
-            }
-            11 => rio(p, set).set_slave_control(slave, k & 64 != 0).unwrap(),
-            12 => rio(p, set).set_output(0, (k >> 8) as u16).unwrap(),
-            13 => {
-                p.timer.set_period(70_000).unwrap();
-                p.timer.set_trigger(true);
-                p.timer.set_enabled(k & 128 != 0);
-            }
-            14 => ario(p, set)
-                .set_input_trigger((k % 8) as u16, true)
-                .unwrap(),
-            16 => p.dac.set_output((k >> 8) as usize % 8, 1.0).unwrap(),
-            17 => p.dac.set_update_rate(300.0).unwrap(),
-            18 => p.rio.set_rio_update_rate(set, 700.0).unwrap(),
-            19 => p.rio.set_rio_clock_divider(set, 3000).unwrap(),
-            _ => p
-                .rio
-                .set_slave_failed(true, set, usize::from(slave), k & 256 != 0),
-        }
-    }
-
-    #[test]
-    fn counted_idle_ticks_give_the_state_of_ticking_every_time() {
-        // `plain` ticks every time; `cell` as the engine does: an idle card's tick is
-        // counted and run when the card is next locked.
-        let dt = 1_000_000;
-        let cell = PeriphCell::new(dt);
-        let mut plain = Peripherals::default();
-        let mut seed: u64 = 99;
-        let mut counted = 0;
-        for n in 0..50_000 {
-            let fired = if cell.count_idle_tick() {
-                counted += 1;
-                Pending::default()
-            } else {
-                let mut p = cell.lock();
-                assert!(!p.tick(dt));
-                std::mem::take(&mut p.pending)
-            };
-            assert!(!plain.tick(dt));
-            assert_eq!(fired, std::mem::take(&mut plain.pending), "tick {n}");
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            // Changes now and then, long idle stretches in between.
-            if (seed >> 33) % 40 == 0 {
-                let k = seed >> 20;
-                change(&mut cell.lock(), k);
-                change(&mut plain, k);
-            } else if (seed >> 33) % 300 == 1 {
-                // Back to idle (the ARIO timing keeps its phase and settings).
-                for p in [&mut *cell.lock(), &mut plain] {
-                    p.timer.set_enabled(false);
-                    for set in 0..2 {
-                        p.rio.set_rio_control(set, false).unwrap();
-                        for slave in 0..32 {
-                            let ario = p.rio.ario_set_mut(set).unwrap();
-                            ario.set_slave_control(slave, false).unwrap();
-                        }
-                    }
-                }
-            }
-            if n % 101 == 0 {
-                assert_eq!(*cell.lock(), plain, "tick {n}");
-            }
-        }
-        assert_eq!(*cell.lock(), plain);
-        assert!(counted > 10_000, "idle stretches were counted ({counted})");
-    }
 
     #[test]
     fn adc_reads_the_dac_by_default_and_a_set_source() {
