@@ -447,6 +447,52 @@ static void fix_speed(int t)
             CI(MCC_ContiMotion, 0);                                                        \
     }
 
+/* A PtP (1 UU in X and Y at the default PtP speed) held at period 500 and continued at
+ * 700, under overrides: set before it starts (`start_pct`, 100 none), changed while it
+ * runs or while it is held (`at`, -1 never, to `pct`). What speed does the continue run
+ * at? [`mix_60`] */
+#define PTP_HOLD_OVERRIDE_CASE(name, start_pct, at, pct)                                    \
+    static void name(int t)                                                                \
+    {                                                                                      \
+        if (t == 0) {                                                                      \
+            vd_profile('T', 100, 100, 10);                                                 \
+            if ((start_pct) != 100)                                                        \
+                CD(MCC_OverrideSpeed, start_pct, 0);                                       \
+            PTP(0, 1, -1, 0);                                                              \
+        }                                                                                  \
+        if (t == (at))                                                                     \
+            CD(MCC_OverrideSpeed, pct, 0);                                                 \
+        if (t == 500)                                                                      \
+            CI(MCC_HoldMotion, 0, 0);                                                      \
+        if (t == 700)                                                                      \
+            CI(MCC_ContiMotion, 0);                                                        \
+    }
+
+PTP_HOLD_OVERRIDE_CASE(ptp_hold_ovr_running, 100, 300, 150)
+PTP_HOLD_OVERRIDE_CASE(ptp_hold_ovr_started, 50, -1, 50)
+PTP_HOLD_OVERRIDE_CASE(ptp_hold_ovr_both, 50, 300, 80)
+PTP_HOLD_OVERRIDE_CASE(ptp_hold_ovr_held, 100, 600, 150)
+
+/* Two lines blended (S, 120 ms ramps, 8 UU/s): 1 UU in X, then 1 UU in Y; an override to
+ * `pct` at period `at`, during the blend (which starts near period 66) or before it.
+ * [`mix_61`] */
+#define BLEND_OVERRIDE_CASE(name, at, pct)                                                 \
+    static void name(int t)                                                                \
+    {                                                                                      \
+        if (t == 0) {                                                                      \
+            vd_profile('S', 120, 120, 8);                                                  \
+            CI(MCC_EnableBlend, 0);                                                        \
+            LINE(0, 1, 0, 0);                                                              \
+            LINE(0, 1, 1, 0);                                                              \
+        }                                                                                  \
+        if (t == (at))                                                                     \
+            CD(MCC_OverrideSpeed, pct, 0);                                                 \
+    }
+
+BLEND_OVERRIDE_CASE(blend_ovr_mid, 150, 50)
+BLEND_OVERRIDE_CASE(blend_ovr_up, 150, 130)
+BLEND_OVERRIDE_CASE(blend_ovr_before, 100, 50)
+
 DELAY_HOLD_CASE(hold_delay_mid, 50, 1)
 DELAY_HOLD_CASE(hold_delay_last, 100, 1)
 DELAY_HOLD_CASE(hold_delay_before_last, 99, 1)
@@ -507,5 +553,12 @@ const Scenario vd_control[] = {
     SCEN(hold_delay_last, std3, 200, 4000),
     SCEN(hold_delay_before_last, std3, 200, 4000),
     SCEN(hold_delay_alone, std3, 200, 4000),
+    SCEN(ptp_hold_ovr_running, std3, 800, 6000),
+    SCEN(ptp_hold_ovr_started, std3, 800, 6000),
+    SCEN(ptp_hold_ovr_both, std3, 800, 6000),
+    SCEN(ptp_hold_ovr_held, std3, 800, 6000),
+    SCEN(blend_ovr_mid, std3, 300, 4000),
+    SCEN(blend_ovr_up, std3, 300, 4000),
+    SCEN(blend_ovr_before, std3, 300, 4000),
     SCEN_END,
 };

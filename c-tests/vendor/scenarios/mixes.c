@@ -180,6 +180,14 @@ MIX(53, 53)
 MIX(54, 54)
 MIX(55, 55)
 MIX(56, 56)
+MIX(57, 57)
+MIX(58, 58)
+MIX(59, 59)
+MIX(60, 60)
+MIX(61, 61)
+MIX(62, 62)
+MIX(63, 63)
+MIX(64, 64)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -211,6 +219,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_51, std3, 1200, 60000), SCEN(mix_52, std3, 1200, 60000),
     SCEN(mix_53, std3, 1200, 60000), SCEN(mix_54, std3, 1200, 60000),
     SCEN(mix_55, std3, 1200, 60000), SCEN(mix_56, std3, 1200, 60000),
+    SCEN(mix_57, std3, 1200, 60000), SCEN(mix_58, std3, 1200, 60000),
+    SCEN(mix_59, std3, 1200, 60000), SCEN(mix_60, std3, 1200, 60000),
+    SCEN(mix_61, std3, 1200, 60000), SCEN(mix_62, std3, 1200, 60000),
+    SCEN(mix_63, std3, 1200, 60000), SCEN(mix_64, std3, 1200, 60000),
     SCEN_END,
 };
 
