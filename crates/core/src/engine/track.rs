@@ -268,17 +268,23 @@ impl Track {
 
     /// A continue after a hold: what is left, from rest, with the track's feed and ramps.
     pub fn resume(&mut self) {
+        self.resume_at(self.feed);
+    }
+
+    /// A continue after a hold of a point-to-point axis: what is left, from rest, at the
+    /// speed it was planned at times `ratio`, the override now in effect. The vendor's
+    /// library re-plans a PtP's rest so at a continue, also when the override changed
+    /// while it ran (which it ran on at its rate) or while it was held
+    /// [`ptp_hold_ovr_*`, `mix_60`].
+    pub fn resume_nominal(&mut self, ratio: f64) {
+        self.feed = self.base_feed * ratio;
+        self.resume_at(self.feed);
+    }
+
+    fn resume_at(&mut self, feed: f64) {
         let left = (self.len - self.dist()).max(0.0);
         let t = self.profile.period();
-        let p = TickProfile::plan(
-            left,
-            0.0,
-            self.feed,
-            self.ramps.0,
-            self.ramps.1,
-            self.shapes,
-            t,
-        );
+        let p = TickProfile::plan(left, 0.0, feed, self.ramps.0, self.ramps.1, self.shapes, t);
         self.restart(p);
     }
 

@@ -114,6 +114,7 @@ impl GroupState {
             Mode::Held | Mode::HoldAtBlockEnd => {
                 self.note(Note::Continue);
                 self.rate.mode = Mode::Normal;
+                let ratio = self.speed_ratio();
                 for r in self.exec.running.iter_mut() {
                     if matches!(r.stage, Stage::Stopping { .. } | Stage::Held { .. }) {
                         if r.is_ptp() && r.arrived() {
@@ -129,7 +130,7 @@ impl GroupState {
                             r.finished = Some(false);
                             continue;
                         }
-                        r.resume_tracks();
+                        r.resume_tracks(ratio);
                     }
                 }
                 self.info_touched();

@@ -182,17 +182,23 @@ impl Running {
         }
     }
 
-    /// Every track runs what is left from rest ([`Track::resume`]); one held where it
-    /// arrived ends quietly.
-    pub(super) fn resume_tracks(&mut self) {
+    /// Every track runs what is left from rest ([`Track::resume`]; a PtP's at its
+    /// planned speed times `ratio`, the override in effect, [`Track::resume_nominal`]);
+    /// one held where it arrived ends quietly.
+    pub(super) fn resume_tracks(&mut self, ratio: f64) {
         if self.has_tracks() && self.arrived() {
             self.quiet_end = true;
         }
+        let ptp = self.is_ptp();
         for t in self.tracks_mut() {
             // A track the hold let keep its final deceleration goes on with it
             // [`mix_49`].
             if !t.arrived() && !t.in_final_decel() {
-                t.resume();
+                if ptp {
+                    t.resume_nominal(ratio);
+                } else {
+                    t.resume();
+                }
             }
         }
     }
