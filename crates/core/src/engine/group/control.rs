@@ -22,6 +22,9 @@ pub(super) struct Rate {
     pub(super) override_next: Option<(f64, bool)>,
     /// A hold that came while two motions blend, waiting for the blend to end.
     pub(super) hold_pending: bool,
+    /// An override (or a fixed speed let go) that came while two motions blend: the
+    /// motion left re-plans when the blend ends.
+    pub(super) retarget_pending: bool,
 }
 
 impl Default for Rate {
@@ -33,6 +36,7 @@ impl Default for Rate {
             fixed_speed: false,
             override_next: None,
             hold_pending: false,
+            retarget_pending: false,
         }
     }
 }
@@ -258,6 +262,7 @@ impl GroupState {
         self.queued.end = self.exec.pos;
         self.rate.mode = Mode::Normal;
         self.rate.hold_pending = false;
+        self.rate.retarget_pending = false;
     }
 
     /// `MCC_OverrideSpeedEx`: the new ratio is in effect from the next period; with
@@ -282,9 +287,15 @@ impl GroupState {
 
     /// What runs at speed re-plans the rest of its length at its feed times the ratio
     /// (not with the speed fixed). A point-to-point move runs on at the rate it started
-    /// with, as in the vendor's library [`mix_33`]: the ratio is the next moves'.
-    fn retarget_running(&mut self) {
+    /// with, as in the vendor's library [`mix_33`]: the ratio is the next moves'. Two
+    /// motions blending run on as they are, and the motion left re-plans when the blend
+    /// ends [`blend_ovr_*`, `mix_61`].
+    pub(super) fn retarget_running(&mut self) {
         if self.rate.mode != Mode::Normal || self.rate.fixed_speed {
+            return;
+        }
+        if self.exec.running.len() > 1 {
+            self.rate.retarget_pending = true;
             return;
         }
         let k = self.speed_ratio();

@@ -137,6 +137,7 @@ impl GroupState {
             || dt <= 0.0
             || self.exec.jump.is_some()
             || self.rate.override_next.is_some()
+            || self.rate.retarget_pending
             || self.exec.rezero != super::Rezero::No
             || self.limits.over_travel != [false; AXES]
         {

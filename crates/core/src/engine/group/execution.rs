@@ -158,6 +158,7 @@ impl GroupState {
             || self.has_safety_checks()
             || self.rate.override_next.is_some()
             || self.rate.hold_pending
+            || self.rate.retarget_pending
         {
             return 0;
         }
@@ -226,6 +227,12 @@ impl GroupState {
         let mut before = self.exec.pos;
         let mut vel_mask: u32 = 0;
         let mut zero_mask: u32 = 0;
+        if self.rate.retarget_pending && self.exec.running.len() <= 1 {
+            // The blend an override waited for ended a period ago (that period ran as
+            // planned): the motion left re-plans now [`blend_ovr_*`].
+            self.rate.retarget_pending = false;
+            self.retarget_running();
+        }
         self.apply_override();
         // What ended in the last period goes.
         let mut i = 0;
@@ -440,6 +447,7 @@ impl GroupState {
             && !r.arrived()
             && self.exec.jump.is_none()
             && self.rate.override_next.is_none()
+            && !self.rate.retarget_pending
             && self.exec.rezero == super::Rezero::No
             && self.limits.over_travel == [false; AXES];
         if !plain {

@@ -285,6 +285,7 @@ impl GroupState {
         self.clear_error();
         self.rate.override_pct = 100.0;
         self.rate.override_next = None;
+        self.rate.retarget_pending = false;
         self.queued.index = CommandIndex::default();
         self.exec.offset = [0.0; AXES];
         self.queued.end = [0.0; AXES];
