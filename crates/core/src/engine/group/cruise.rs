@@ -350,28 +350,15 @@ impl GroupState {
 
 #[cfg(test)]
 mod tests {
+    use super::super::test_group;
     use super::*;
-    use crate::config::GroupDef;
-    use crate::engine::command::AxisMech;
 
-    /// 1 ms periods.
+    /// 1 ms periods, as the test group's.
     const DT: f64 = 0.001;
 
-    /// A group of eight unmapped axes, 1000 pulses per UU, feed 10 UU/s, 100 ms
-    /// acceleration and deceleration, running a line to `to` from 0.
+    /// [`test_group`] running a line to `to` from 0.
     fn group_on_line(to: Axes) -> GroupState {
-        let def = GroupDef::new([0, 1, 2, 3, 4, 5, 6, 7], 0, 10).expect("group");
-        let axis = AxisMech {
-            channel: None,
-            factor: 1000.0,
-            safe_speed: 1.0,
-            high: 1e9,
-            low: -1e9,
-        };
-        let mut g = GroupState::new(0, def, [axis; AXES], DT);
-        g.settings.feed = 10.0;
-        g.settings.acc_ms = 100.0;
-        g.settings.dec_ms = 100.0;
+        let mut g = test_group();
         let cmd = g.ctx().line(to).expect("line");
         g.enqueue(cmd).expect("queued");
         g

@@ -509,3 +509,22 @@ impl GroupState {
         Ok(())
     }
 }
+
+/// A group of eight unmapped axes, 1000 pulses per UU, feed 10 UU/s, 100 ms
+/// acceleration and deceleration, 1 ms periods (the groups' unit tests).
+#[cfg(test)]
+fn test_group() -> GroupState {
+    let def = GroupDef::new([0, 1, 2, 3, 4, 5, 6, 7], 0, 10).expect("group");
+    let axis = AxisMech {
+        channel: None,
+        factor: 1000.0,
+        safe_speed: 1.0,
+        high: 1e9,
+        low: -1e9,
+    };
+    let mut g = GroupState::new(0, def, [axis; AXES], 0.001);
+    g.settings.feed = 10.0;
+    g.settings.acc_ms = 100.0;
+    g.settings.dec_ms = 100.0;
+    g
+}

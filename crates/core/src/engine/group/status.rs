@@ -472,27 +472,7 @@ fn info_feed(r: &Running, period_s: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::config::GroupDef;
-    use crate::engine::command::AxisMech;
-
-    /// A group of eight unmapped axes, 1000 pulses per UU, feed 10 UU/s, 100 ms
-    /// acceleration and deceleration.
-    fn group() -> GroupState {
-        let def = GroupDef::new([0, 1, 2, 3, 4, 5, 6, 7], 0, 10).expect("group");
-        let axis = AxisMech {
-            channel: None,
-            factor: 1000.0,
-            safe_speed: 1.0,
-            high: 1e9,
-            low: -1e9,
-        };
-        let mut g = GroupState::new(0, def, [axis; AXES], 0.001);
-        g.settings.feed = 10.0;
-        g.settings.acc_ms = 100.0;
-        g.settings.dec_ms = 100.0;
-        g
-    }
+    use super::super::test_group;
 
     #[test]
     fn the_published_key_holds_exactly_while_the_info_stays_the_same() {
@@ -502,7 +482,7 @@ mod tests {
         // info changes (and must be published) when the line starts, at 0.1 s (phase
         // 0 -> 1), at 1.0 s (1 -> 2) and when it ends; on every other tick the key must
         // be found to hold without being built.
-        let mut g = group();
+        let mut g = test_group();
         let mut target = g.ctx().from;
         target[0] = 10.0;
         let cmd = g.ctx().line(target).expect("line");
