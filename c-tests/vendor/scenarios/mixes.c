@@ -47,7 +47,9 @@ typedef struct {
     int conti_at;
 } MixEvents;
 
-static MixEvents mix_events[57];
+/* The highest mix number; each MIX(k, seed) below checks that k fits. */
+#define MIX_MAX 64
+static MixEvents mix_events[MIX_MAX + 1];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
 static void mix_queue(unsigned seed, MixEvents *ev)
@@ -123,6 +125,7 @@ static void mix_script(int k, unsigned seed, int t)
 }
 
 #define MIX(k, seed)                                                                       \
+    _Static_assert((k) <= MIX_MAX, "mix_" #k ": raise MIX_MAX");                           \
     static void mix_##k(int t) { mix_script(k, seed, t); }
 MIX(1, 1)
 MIX(2, 2)
