@@ -48,7 +48,7 @@ typedef struct {
 } MixEvents;
 
 /* The highest mix number; each MIX(k, seed) below checks that k fits. */
-#define MIX_MAX 64
+#define MIX_MAX 72
 static MixEvents mix_events[MIX_MAX + 1];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
@@ -191,6 +191,14 @@ MIX(61, 61)
 MIX(62, 62)
 MIX(63, 63)
 MIX(64, 64)
+MIX(65, 65)
+MIX(66, 66)
+MIX(67, 67)
+MIX(68, 68)
+MIX(69, 69)
+MIX(70, 70)
+MIX(71, 71)
+MIX(72, 72)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -226,6 +234,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_59, std3, 1200, 60000), SCEN(mix_60, std3, 1200, 60000),
     SCEN(mix_61, std3, 1200, 60000), SCEN(mix_62, std3, 1200, 60000),
     SCEN(mix_63, std3, 1200, 60000), SCEN(mix_64, std3, 1200, 60000),
+    SCEN(mix_65, std3, 1200, 60000), SCEN(mix_66, std3, 1200, 60000),
+    SCEN(mix_67, std3, 1200, 60000), SCEN(mix_68, std3, 1200, 60000),
+    SCEN(mix_69, std3, 1200, 60000), SCEN(mix_70, std3, 1200, 60000),
+    SCEN(mix_71, std3, 1200, 60000), SCEN(mix_72, std3, 1200, 60000),
     SCEN_END,
 };
 
