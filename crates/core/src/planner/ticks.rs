@@ -115,8 +115,12 @@ impl TickProfile {
         let nc = if len > ramps && feed > 0.0 && t > 0.0 {
             // The periods at speed: the move's periods at the feed less the ramps', in
             // that order (as the vendor's library gets whole numbers: 0.2 UU at 0.5 UU/s
-            // over 1 ms is 400 periods, 300 with two ramps of 100, not 300.00000000000006).
-            let total = len / feed / t;
+            // over 1 ms is 400 periods, 300 with two ramps of 100, not 300.00000000000006),
+            // its time counted in milliseconds, `len / feed × 1000`, over the period in
+            // milliseconds: 1.394 UU at 0.5 UU/s takes 2788.0000000000005 ms, so 2724
+            // periods at speed besides ramps of 90 and 40 where `len / feed / t` gives
+            // 2788 and 2723 [`mix_67`].
+            let total = len / feed * 1000.0 / (t * 1000.0);
             let at_speed = total - 0.5 * f64::from(na) * (1.0 + v0 / feed) - 0.5 * f64::from(nd);
             let periods = at_speed.ceil();
             if periods >= 1.0 {
@@ -425,6 +429,20 @@ mod tests {
         ] {
             assert_eq!(ramp_periods(a, d, p), want, "({a}, {d}) at {p} ms");
         }
+    }
+
+    #[test]
+    fn a_moves_time_is_counted_in_milliseconds() {
+        // mix_67: a PtP axis from −0.89 to 0.504 (1.3940000000000001 UU) at 0.5 UU/s,
+        // ramps of 90 and 40 ms at 1 ms. Its time is 2.7880000000000003 s, which is
+        // 2788.0000000000005 ms (× 1000) but 2788 periods (÷ 0.001): the vendor's library
+        // takes the milliseconds, so ceil(2788.0000000000005 − 45 − 20) = 2724 periods at
+        // speed, and the speed that covers the length in 45 + 2724 + 20 periods:
+        // 1.394 / 2.789 = 0.49982072427... UU/s (the trace's Y speed).
+        let len = 0.504 - -0.89;
+        let p = TickProfile::plan(len, 0.0, 0.5, 90, 40, (Shape::T, Shape::T), 0.001);
+        assert_eq!(p.periods(), 90 + 2724 + 40);
+        assert_eq!(p.speed(), len / 2.789);
     }
 
     #[test]
