@@ -48,7 +48,7 @@ typedef struct {
 } MixEvents;
 
 /* The highest mix number; each MIX(k, seed) below checks that k fits. */
-#define MIX_MAX 72
+#define MIX_MAX 80
 static MixEvents mix_events[MIX_MAX + 1];
 
 /* Queues the mix of `seed` for group 0 and fixes its timed events in `ev`. */
@@ -199,6 +199,14 @@ MIX(69, 69)
 MIX(70, 70)
 MIX(71, 71)
 MIX(72, 72)
+MIX(73, 73)
+MIX(74, 74)
+MIX(75, 75)
+MIX(76, 76)
+MIX(77, 77)
+MIX(78, 78)
+MIX(79, 79)
+MIX(80, 80)
 
 /* The script's last event is before period 1200; a mix runs at most 60 s. */
 const Scenario vd_mixes[] = {
@@ -238,6 +246,10 @@ const Scenario vd_mixes[] = {
     SCEN(mix_67, std3, 1200, 60000), SCEN(mix_68, std3, 1200, 60000),
     SCEN(mix_69, std3, 1200, 60000), SCEN(mix_70, std3, 1200, 60000),
     SCEN(mix_71, std3, 1200, 60000), SCEN(mix_72, std3, 1200, 60000),
+    SCEN(mix_73, std3, 1200, 60000), SCEN(mix_74, std3, 1200, 60000),
+    SCEN(mix_75, std3, 1200, 60000), SCEN(mix_76, std3, 1200, 60000),
+    SCEN(mix_77, std3, 1200, 60000), SCEN(mix_78, std3, 1200, 60000),
+    SCEN(mix_79, std3, 1200, 60000), SCEN(mix_80, std3, 1200, 60000),
     SCEN_END,
 };
 
