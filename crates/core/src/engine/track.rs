@@ -271,11 +271,10 @@ impl Track {
         self.resume_at(self.feed);
     }
 
-    /// A continue after a hold of a point-to-point axis: what is left, from rest, at the
-    /// speed it was planned at times `ratio`, the override now in effect. The vendor's
-    /// library re-plans a PtP's rest so at a continue, also when the override changed
-    /// while it ran (which it ran on at its rate) or while it was held
-    /// [`ptp_hold_ovr_*`, `mix_60`].
+    /// A continue after a hold: what is left, from rest, at the speed it was planned at
+    /// times `ratio`, the override now in effect. The vendor's library re-plans the rest
+    /// so at a continue, also when the override changed while it was held, or, for a
+    /// PtP, while it ran on at its rate [`ptp_hold_ovr_*`, `mix_60`, `mix_73`].
     pub fn resume_nominal(&mut self, ratio: f64) {
         self.feed = self.base_feed * ratio;
         self.resume_at(self.feed);

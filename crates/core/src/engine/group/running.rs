@@ -182,19 +182,19 @@ impl Running {
         }
     }
 
-    /// Every track runs what is left from rest ([`Track::resume`]; a PtP's at its
-    /// planned speed times `ratio`, the override in effect, [`Track::resume_nominal`]);
-    /// one held where it arrived ends quietly.
+    /// Every track runs what is left from rest, at the speed it was planned at times
+    /// `ratio`, the override in effect ([`Track::resume_nominal`]); a custom motion's
+    /// at its own feed ([`Track::resume`]). One held where it arrived ends quietly.
     pub(super) fn resume_tracks(&mut self, ratio: f64) {
         if self.has_tracks() && self.arrived() {
             self.quiet_end = true;
         }
-        let ptp = self.is_ptp();
+        let nominal = !matches!(self.cmd.plan, Plan::Custom(_));
         for t in self.tracks_mut() {
             // A track the hold let keep its final deceleration goes on with it
             // [`mix_49`].
             if !t.arrived() && !t.in_final_decel() {
-                if ptp {
+                if nominal {
                     t.resume_nominal(ratio);
                 } else {
                     t.resume();
