@@ -37,8 +37,11 @@ int main(int argc, char **argv)
     char path[512], epath[512];
     FILE *f;
     size_t n;
-    snprintf(path, sizeof path, "%s/trace_events.csv", dir);
-    snprintf(epath, sizeof epath, "%s/trace_events.events.csv", dir);
+    /* A file of its own for each clock: CTest runs the fast and the stepped run at the
+     * same time, in the same folder. */
+    const char *clock_name = getenv("MCCL_CLOCK") ? getenv("MCCL_CLOCK") : "default";
+    snprintf(path, sizeof path, "%s/trace_events_%s.csv", dir, clock_name);
+    snprintf(epath, sizeof epath, "%s/trace_events_%s.events.csv", dir, clock_name);
     setenv("MCCL_TRACE", path, 1);
     memset(card, 0, sizeof card);
     card[0].wCardType = IMP_III_8_AXIS_PCI_CARD;
