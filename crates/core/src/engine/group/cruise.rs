@@ -5,10 +5,9 @@
 //! [`CruiseLine`] and each period computes only the moving axes' positions and speeds
 //! and the feed speed, as the ordinary period computes them, to the bit.
 
-use super::running::{Progress, Stage};
+use super::running::Progress;
 use super::GroupState;
 use crate::config::AXES;
-
 use crate::engine::command::Plan;
 use crate::engine::snapshot::{axis_pulses, SnapshotCell};
 use crate::machine::Channel;
@@ -95,9 +94,9 @@ impl CruiseLine {
         if !(f > 0.0 && f < 1.0) {
             return None;
         }
-        // X², Y², Z² (axes 0 to 2) summed in axis order as the speeds are computed, which is the sum
-        // `composed_speed` makes of them (the axes left out add +0 exactly): the feed
-        // speed without reading back the speeds just stored.
+        // X², Y², Z² (axes 0 to 2) summed in axis order as the speeds are computed, which
+        // is the sum `composed_speed` makes of them (the axes left out add +0 exactly):
+        // the feed speed without reading back the speeds just stored.
         let mut xyz = 0.0;
         for &a in &self.axes[..usize::from(self.moving).min(AXES)] {
             let i = usize::from(a) % AXES;
@@ -132,25 +131,14 @@ impl GroupState {
     /// constant speed, with nothing else to do (what `GroupState::one_path_period`
     /// asks).
     fn cruise_line(&self, dt: f64, ticks: u32) -> Option<CruiseLine> {
-        if self.exec.running.len() != 1
-            || dt.is_nan()
-            || dt <= 0.0
-            || self.exec.jump.is_some()
-            || self.rate.override_next.is_some()
-            || self.rate.retarget_pending
-            || self.exec.rezero != super::Rezero::No
-            || self.limits.over_travel != [false; AXES]
-        {
+        if dt.is_nan() || dt <= 0.0 {
             return None;
         }
-        let r = self.exec.running.front()?;
+        let r = self.plain_running()?;
         let (Progress::Path { track, sync: None }, Plan::Path(m)) = (&r.progress, &r.cmd.plan)
         else {
             return None;
         };
-        if r.finished.is_some() || r.stage != Stage::Moving {
-            return None;
-        }
         let line = m.path.as_line()?;
         let fraction = track.steady()?;
         let done = track.periods_done();

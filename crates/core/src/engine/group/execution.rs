@@ -434,23 +434,33 @@ impl GroupState {
         }
     }
 
-    /// The period of [`GroupState::tick_one_path`]; `status`: whether to update the
-    /// status (a cruise period knows it stays).
+    /// The one running command, when its next period has nothing to do but move it on:
+    /// nothing else runs, it is neither finished nor stopping, and no jog jump, override,
+    /// pending re-plan, re-zeroing or over-travel check waits. What a one-path period and
+    /// a cruise along a line (`GroupState::cruise_line`) both need.
     #[inline(always)]
-    pub(super) fn one_path_period(&mut self, dt: f64, status: bool) -> bool {
+    pub(super) fn plain_running(&self) -> Option<&Running> {
         let (Some(r), 1) = (self.exec.running.front(), self.exec.running.len()) else {
-            return false;
+            return None;
         };
         let plain = r.finished.is_none()
             && r.stage == Stage::Moving
-            && matches!(r.progress, Progress::Path { .. })
-            && !r.arrived()
             && self.exec.jump.is_none()
             && self.rate.override_next.is_none()
             && !self.rate.retarget_pending
             && self.exec.rezero == super::Rezero::No
             && self.limits.over_travel == [false; AXES];
-        if !plain {
+        plain.then_some(r)
+    }
+
+    /// The period of [`GroupState::tick_one_path`]; `status`: whether to update the
+    /// status (a cruise period knows it stays).
+    #[inline(always)]
+    pub(super) fn one_path_period(&mut self, dt: f64, status: bool) -> bool {
+        let Some(r) = self.plain_running() else {
+            return false;
+        };
+        if !matches!(r.progress, Progress::Path { .. }) || r.arrived() {
             return false;
         }
         let before = self.exec.pos;
